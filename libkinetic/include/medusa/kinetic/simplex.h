@@ -1,0 +1,88 @@
+// A simplex of the Delaunay triangulation / alpha complex: up to four sorted vertex ids.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <utility>
+#include <initializer_list>
+#include <ostream>
+
+namespace medusa::kinetic {
+
+// Index of a trajectory (a medusa vertex). A CompuCell3D cell id maps to one trajectory, or to
+// several when the cell is missing from intermediate frames (MATH.md 2.1).
+using VertexId = std::int32_t;
+
+// A finite simplex of dimension 0..3, vertices sorted ascending.
+class Simplex {
+public:
+  Simplex() = default;
+  Simplex(std::initializer_list<VertexId> vertices) {
+    for (VertexId v : vertices)
+      v_[size_++] = v;
+    sort();
+  }
+  template <class It> static Simplex from_range(It first, It last) {
+    Simplex s;
+    for (; first != last; ++first)
+      s.v_[s.size_++] = *first;
+    s.sort();
+    return s;
+  }
+
+  int dim() const { return static_cast<int>(size_) - 1; }
+  std::size_t size() const { return size_; }
+  VertexId operator[](std::size_t i) const { return v_[i]; }
+  const VertexId* begin() const { return v_.data(); }
+  const VertexId* end() const { return v_.data() + size_; }
+  bool contains(VertexId x) const { return std::find(begin(), end(), x) != end(); }
+
+  // The facet without the i-th vertex.
+  Simplex facet(std::size_t i) const {
+    Simplex s;
+    for (std::size_t j = 0; j < size_; ++j)
+      if (j != i)
+        s.v_[s.size_++] = v_[j];
+    return s;
+  }
+
+  friend bool operator==(const Simplex& a, const Simplex& b) { return a.size_ == b.size_ && a.v_ == b.v_; }
+  friend bool operator!=(const Simplex& a, const Simplex& b) { return !(a == b); }
+  // Order by dimension, then lexicographically: the canonical order of MATH.md 5.2 and 7.2.
+  friend bool operator<(const Simplex& a, const Simplex& b) {
+    if (a.size_ != b.size_)
+      return a.size_ < b.size_;
+    return a.v_ < b.v_;
+  }
+  friend std::ostream& operator<<(std::ostream& os, const Simplex& s) {
+    os << '[';
+    for (std::size_t i = 0; i < s.size_; ++i)
+      os << (i ? " " : "") << s.v_[i];
+    return os << ']';
+  }
+
+private:
+  // Insertion sort: at most four elements (std::sort trips GCC 12's -Warray-bounds here).
+  void sort() {
+    for (std::size_t i = 1; i < size_; ++i)
+      for (std::size_t j = i; j > 0 && v_[j - 1] > v_[j]; --j)
+        std::swap(v_[j - 1], v_[j]);
+  }
+
+  std::array<VertexId, 4> v_{{-1, -1, -1, -1}};
+  std::uint8_t size_ = 0;
+};
+
+struct SimplexHash {
+  std::size_t operator()(const Simplex& s) const {
+    std::size_t h = s.size();
+    for (VertexId v : s)
+      h = h * 0x9E3779B97F4A7C15ULL + static_cast<std::size_t>(v) + (h >> 29);
+    return h;
+  }
+};
+
+} // namespace medusa::kinetic
