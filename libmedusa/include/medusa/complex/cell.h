@@ -1,0 +1,51 @@
+// A medusa cell: one maximal lifetime interval of an alpha simplex, or an instant cell
+// (MATH.md 6.1-6.3).
+#pragma once
+
+#include "medusa/kinetic/simplex.h"
+
+#include <cstdint>
+#include <tuple>
+#include <vector>
+
+namespace medusa::complex {
+
+using kinetic::VertexId;
+using CellId = std::uint64_t;
+
+// Virtual time (MATH.md 6.2): the batch index orders exact event times (equal times are one batch),
+// the rank orders the steps inside a batch. `time` is a double approximation, for output only.
+struct VirtualTime {
+  std::uint64_t batch = 0;
+  std::uint32_t rank = 0;
+  double time = 0.0;
+
+  friend bool operator<(const VirtualTime& a, const VirtualTime& b) {
+    return std::tie(a.batch, a.rank) < std::tie(b.batch, b.rank);
+  }
+  friend bool operator==(const VirtualTime& a, const VirtualTime& b) {
+    return a.batch == b.batch && a.rank == b.rank;
+  }
+  friend bool operator!=(const VirtualTime& a, const VirtualTime& b) { return !(a == b); }
+  friend bool operator<=(const VirtualTime& a, const VirtualTime& b) { return !(b < a); }
+};
+
+enum class CellKind : std::uint8_t {
+  regular = 0, // a maximal lifetime interval of a simplex of K(t)
+  flip = 1,    // the 4-simplex of a finite flip with R_S <= rho (instant)
+  join = 2,    // sigma + {p} at an insertion or deletion of p (instant)
+  repair = 3   // a subset of a degenerate group found by a static repair (instant)
+};
+
+struct Cell {
+  CellId id = 0;
+  std::vector<VertexId> vertices; // sorted; dimension = vertices.size() - 1 (MATH.md 6.1)
+  VirtualTime birth;
+  VirtualTime death; // closed lifetime [birth, death]; birth == death for instant cells
+  CellKind kind = CellKind::regular;
+  std::vector<CellId> facets; // ids of the facet cells, one per vertex removed (empty for vertices)
+
+  int dim() const { return static_cast<int>(vertices.size()) - 1; }
+};
+
+} // namespace medusa::complex
