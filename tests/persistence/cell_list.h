@@ -1,0 +1,80 @@
+// Builds medusa cell lists for the persistence tests from (vertices, birth, death) triples: ids are
+// deliberately not consecutive, facets are looked up by vertex tuple and lifetime.
+#pragma once
+
+#include "medusa/complex/cell.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
+
+namespace medusa::persistence::test {
+
+using complex::Cell;
+using complex::VirtualTime;
+
+inline VirtualTime vt(std::uint64_t batch, std::uint32_t rank, double time) { return {batch, rank, time}; }
+
+struct CellSpec {
+  std::vector<kinetic::VertexId> vertices;
+  VirtualTime birth;
+  VirtualTime death;
+  complex::CellKind kind = complex::CellKind::regular;
+};
+
+// Ids are 1000 + 7 * (position in the list), descending order would work as well: the library maps
+// them. The facet of a cell is the cell of the facet simplex whose lifetime contains the cell's
+// (MATH.md 6.4).
+inline std::vector<Cell> make_cells(const std::vector<CellSpec>& specs) {
+  std::vector<Cell> cells;
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    Cell c;
+    c.id = 1000 + 7 * i;
+    c.vertices = specs[i].vertices;
+    std::sort(c.vertices.begin(), c.vertices.end());
+    c.birth = specs[i].birth;
+    c.death = specs[i].death;
+    c.kind = specs[i].kind;
+    cells.push_back(std::move(c));
+  }
+  for (Cell& c : cells) {
+    if (c.vertices.size() < 2)
+      continue;
+    for (std::size_t k = 0; k < c.vertices.size(); ++k) {
+      std::vector<kinetic::VertexId> facet = c.vertices;
+      facet.erase(facet.begin() + static_cast<std::ptrdiff_t>(k));
+      bool found = false;
+      for (const Cell& f : cells)
+        if (f.vertices == facet && f.birth <= c.birth && c.death <= f.death) {
+          c.facets.push_back(f.id);
+          found = true;
+          break;
+        }
+      if (!found)
+        throw std::logic_error("test cell list: a facet is missing");
+    }
+  }
+  return cells;
+}
+
+// Every subset of `vertices` with at least one element, as cell specs with one lifetime.
+inline void add_closure(std::vector<CellSpec>& specs, std::vector<kinetic::VertexId> vertices,
+                        VirtualTime birth, VirtualTime death) {
+  const std::size_t n = vertices.size();
+  for (std::size_t size = 1; size <= n; ++size)
+    for (unsigned mask = 1; mask < (1u << n); ++mask) {
+      if (static_cast<std::size_t>(__builtin_popcount(mask)) != size)
+        continue;
+      std::vector<kinetic::VertexId> s;
+      for (std::size_t k = 0; k < n; ++k)
+        if (mask & (1u << k))
+          s.push_back(vertices[k]);
+      bool present = false;
+      for (const auto& existing : specs)
+        present = present || existing.vertices == s;
+      if (!present)
+        specs.push_back({s, birth, death});
+    }
+}
+
+} // namespace medusa::persistence::test

@@ -1,0 +1,263 @@
+// Diagrams of hand-derived small medusas (MATH.md 7.2-7.6): every expected pair is derived by hand in
+// the comment above its case.
+#include "cell_list.h"
+#include "medusa/kinetic/error.h"
+#include "medusa/persistence/diagram.h"
+#include "medusa/persistence/diagram_text.h"
+#include "medusa/persistence/euler.h"
+
+#include <catch2/catch.hpp>
+#include <phat/algorithms/chunk_reduction.h>
+#include <phat/algorithms/row_reduction.h>
+#include <phat/algorithms/standard_reduction.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <tuple>
+
+using namespace medusa;
+using namespace medusa::persistence;
+using namespace medusa::persistence::test;
+
+namespace {
+
+const double inf = std::numeric_limits<double>::infinity();
+
+// (dim, birth, death) of the pairs of positive length and the essential classes, sorted.
+std::vector<std::tuple<int, double, double>> points_of(const Diagram& d) {
+  std::vector<std::tuple<int, double, double>> result;
+  for (const auto& p : d.pairs)
+    if (!p.zero_length)
+      result.emplace_back(p.dim, p.birth, p.death);
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
+std::size_t zero_length_count(const Diagram& d) {
+  std::size_t n = 0;
+  for (const auto& p : d.pairs)
+    n += p.zero_length;
+  return n;
+}
+
+Diagram forward_diagram(const std::vector<Cell>& cells) {
+  const Filtration f = make_filtration(cells, Direction::forward);
+  Diagram d = compute_diagram(cells, f);
+  check_euler(d, f);
+  return d;
+}
+
+Diagram reverse_diagram(const std::vector<Cell>& cells) {
+  const Filtration f = make_filtration(cells, Direction::reverse);
+  Diagram d = compute_diagram(cells, f);
+  check_euler(d, f);
+  return d;
+}
+
+// Vertices a=0, b=1, c=2 at t=0; edges ab at 1, bc at 2, ca at 3; triangle abc at 4; all die at 5.
+// Batches 0..5 are the times 0..5.
+std::vector<Cell> filled_triangle() {
+  std::vector<CellSpec> s;
+  for (int v = 0; v < 3; ++v)
+    s.push_back({{v}, vt(0, 0, 0), vt(5, 0, 5)});
+  s.push_back({{0, 1}, vt(1, 0, 1), vt(5, 0, 5)});
+  s.push_back({{1, 2}, vt(2, 0, 2), vt(5, 0, 5)});
+  s.push_back({{0, 2}, vt(3, 0, 3), vt(5, 0, 5)});
+  s.push_back({{0, 1, 2}, vt(4, 0, 4), vt(5, 0, 5)});
+  return make_cells(s);
+}
+
+} // namespace
+
+// Forward: vertices 0,1,2 at t=0. Edge ab (t=1) kills the younger of a, b: b, pair (0,1); bc (t=2)
+// kills c, pair (0,2); a is essential (0,+inf). Edge ca (t=3) closes a loop filled by abc (t=4):
+// H1 pair (3,4). Reverse: every cell dies at t=5, so everything enters in one batch: all pairs have
+// zero length and one essential H0 class is born at 5 with death -inf.
+TEST_CASE("A filled triangle appearing over time has the hand-derived forward and reverse diagrams") {
+  const auto cells = filled_triangle();
+  const Diagram f = forward_diagram(cells);
+  CHECK(points_of(f) ==
+        std::vector<std::tuple<int, double, double>>{{0, 0, 1}, {0, 0, 2}, {0, 0, inf}, {1, 3, 4}});
+  CHECK(zero_length_count(f) == 0);
+  const auto h1 = pairs_in_dimension(f, 1);
+  REQUIRE(h1.size() == 1);
+  CHECK(h1[0].birth_vertices == std::vector<kinetic::VertexId>{0, 2});
+  CHECK(h1[0].death_vertices == std::vector<kinetic::VertexId>{0, 1, 2});
+  CHECK(h1[0].birth_cell == 1000 + 7 * 5);
+  CHECK(h1[0].death_cell == 1000 + 7 * 6);
+  CHECK(h1[0].birth_time == vt(3, 0, 3));
+  CHECK(h1[0].death_time == vt(4, 0, 4));
+
+  const Diagram r = reverse_diagram(cells);
+  CHECK(points_of(r) == std::vector<std::tuple<int, double, double>>{{0, 5, -inf}});
+  CHECK(zero_length_count(r) == 3);
+  CHECK(without_zero_length(r).pairs.size() == 1);
+}
+
+// Boundary of the tetrahedron abcd: vertices and edges at t=0; triangles abc, abd, acd, bcd at t=1..4;
+// the interior abcd at t=6; everything dies at t=10. Forward: three of the six edges kill vertices
+// (zero length), the other three open loops at 0 that abc, abd, acd fill at 1, 2, 3. bcd closes the
+// sphere at 4 and abcd fills it at 6: H2 pair (4, 6), born by triangle bcd, killed by abcd.
+TEST_CASE("A sphere whose interior fills later has an H2 class from its closing to its filling") {
+  std::vector<CellSpec> s;
+  add_closure(s, {0, 1}, vt(0, 0, 0), vt(6, 0, 10));
+  add_closure(s, {0, 2}, vt(0, 0, 0), vt(6, 0, 10));
+  add_closure(s, {0, 3}, vt(0, 0, 0), vt(6, 0, 10));
+  add_closure(s, {1, 2}, vt(0, 0, 0), vt(6, 0, 10));
+  add_closure(s, {1, 3}, vt(0, 0, 0), vt(6, 0, 10));
+  add_closure(s, {2, 3}, vt(0, 0, 0), vt(6, 0, 10));
+  s.push_back({{0, 1, 2}, vt(1, 0, 1), vt(6, 0, 10)});
+  s.push_back({{0, 1, 3}, vt(2, 0, 2), vt(6, 0, 10)});
+  s.push_back({{0, 2, 3}, vt(3, 0, 3), vt(6, 0, 10)});
+  s.push_back({{1, 2, 3}, vt(4, 0, 4), vt(6, 0, 10)});
+  s.push_back({{0, 1, 2, 3}, vt(5, 0, 6), vt(6, 0, 10)});
+  const auto cells = make_cells(s);
+  const Diagram f = forward_diagram(cells);
+  CHECK(points_of(f) == std::vector<std::tuple<int, double, double>>{
+                            {0, 0, inf}, {1, 0, 1}, {1, 0, 2}, {1, 0, 3}, {2, 4, 6}});
+  CHECK(zero_length_count(f) == 3);
+  const auto h2 = pairs_in_dimension(f, 2);
+  REQUIRE(h2.size() == 1);
+  CHECK(h2[0].birth_vertices == std::vector<kinetic::VertexId>{1, 2, 3});
+  CHECK(h2[0].death_vertices == std::vector<kinetic::VertexId>{0, 1, 2, 3});
+  CHECK(euler_characteristic(make_filtration(cells, Direction::forward)) == 1);
+}
+
+// Square a=0,b=1,c=2,d=3 with edges ab, bc, cd at t=0; da closes the circle at t=3; the diagonal ac and
+// the triangle abc enter together at t=5 (ac's loop dies at once: zero length); acd fills the circle
+// at t=7. Forward H1: (3, 7) plus the zero-length (5, 5). All die at t=10.
+TEST_CASE("A circle that closes and later fills has an H1 class from closing to filling") {
+  std::vector<CellSpec> s;
+  add_closure(s, {0, 1}, vt(0, 0, 0), vt(4, 0, 10));
+  add_closure(s, {1, 2}, vt(0, 0, 0), vt(4, 0, 10));
+  add_closure(s, {2, 3}, vt(0, 0, 0), vt(4, 0, 10));
+  s.push_back({{0, 3}, vt(1, 0, 3), vt(4, 0, 10)});
+  s.push_back({{0, 2}, vt(2, 0, 5), vt(4, 0, 10)});
+  s.push_back({{0, 1, 2}, vt(2, 0, 5), vt(4, 0, 10)});
+  s.push_back({{0, 2, 3}, vt(3, 0, 7), vt(4, 0, 10)});
+  const auto cells = make_cells(s);
+  const Diagram f = forward_diagram(cells);
+  CHECK(points_of(f) == std::vector<std::tuple<int, double, double>>{{0, 0, inf}, {1, 3, 7}});
+  const auto all_h1 = pairs_in_dimension(f, 1, true);
+  REQUIRE(all_h1.size() == 2);
+  CHECK(all_h1[1].zero_length);
+  CHECK(all_h1[1].birth == 5);
+  CHECK(all_h1[1].death == 5);
+  CHECK(all_h1[1].birth_vertices == std::vector<kinetic::VertexId>{0, 2});
+  CHECK(pairs_in_dimension(f, 1).size() == 1);
+}
+
+// Time-symmetric on [0, 10]: vertices and edges ab, bc live [0,10], edge ca [2,8], triangle abc [4,6];
+// t -> 10 - t maps the set of lifetimes onto itself. Forward H1 (2, 4); the reverse diagram is the
+// forward one with t -> 10 - t: H1 (8, 6) and the essential H0 class born at 10.
+TEST_CASE("Forward and reverse filtrations of a time-symmetric medusa give mirrored diagrams") {
+  std::vector<CellSpec> s;
+  add_closure(s, {0, 1}, vt(0, 0, 0), vt(5, 0, 10));
+  add_closure(s, {1, 2}, vt(0, 0, 0), vt(5, 0, 10));
+  s.push_back({{0, 2}, vt(1, 0, 2), vt(4, 0, 8)});
+  s.push_back({{0, 1, 2}, vt(2, 0, 4), vt(3, 0, 6)});
+  const auto cells = make_cells(s);
+  const Diagram f = forward_diagram(cells);
+  const Diagram r = reverse_diagram(cells);
+  CHECK(points_of(f) == std::vector<std::tuple<int, double, double>>{{0, 0, inf}, {1, 2, 4}});
+  CHECK(points_of(r) == std::vector<std::tuple<int, double, double>>{{0, 10, -inf}, {1, 8, 6}});
+  auto mirrored = points_of(f);
+  for (auto& [dim, b, d] : mirrored) {
+    b = 10 - b;
+    d = 10 - d;
+  }
+  std::sort(mirrored.begin(), mirrored.end());
+  CHECK(mirrored == points_of(r));
+}
+
+// MATH.md Appendix B (one 2-3 flip): a..e = 0..4, t* = 96.7774 is batch 1 rank 1, t_end = 100 is
+// batch 2. Forward: one essential H0 class at 0, all other pairs zero length; at t* de opens a loop
+// killed by ade, bde and cde open H2 classes killed by abde and acde, bcde (last in tuple order) opens
+// the H3 class of the five tetrahedra, killed by the 4-simplex. chi = 5 - 10 + 10 - 5 + 1 = 1.
+TEST_CASE("The flip of MATH.md Appendix B gives one essential class and only zero-length pairs") {
+  const double ts = 96.7774;
+  const auto t0 = vt(0, 0, 0), tstar = vt(1, 1, ts), tend = vt(2, 0, 100);
+  std::vector<CellSpec> s;
+  for (std::vector<kinetic::VertexId> tri :
+       {std::vector<kinetic::VertexId>{0, 1, 3}, {1, 2, 3}, {0, 2, 3}, {0, 1, 4}, {1, 2, 4}, {0, 2, 4}})
+    add_closure(s, tri, t0, tend);
+  s.push_back({{0, 1, 2}, t0, tstar});
+  s.push_back({{0, 1, 2, 3}, t0, tstar});
+  s.push_back({{0, 1, 2, 4}, t0, tstar});
+  s.push_back({{3, 4}, tstar, tend});
+  for (kinetic::VertexId v : {0, 1, 2})
+    s.push_back({{v, 3, 4}, tstar, tend});
+  s.push_back({{0, 1, 3, 4}, tstar, tend});
+  s.push_back({{1, 2, 3, 4}, tstar, tend});
+  s.push_back({{0, 2, 3, 4}, tstar, tend});
+  s.push_back({{0, 1, 2, 3, 4}, tstar, tstar, complex::CellKind::flip});
+  const auto cells = make_cells(s);
+  REQUIRE(cells.size() == 31);
+  const Diagram f = forward_diagram(cells);
+  CHECK(points_of(f) == std::vector<std::tuple<int, double, double>>{{0, 0, inf}});
+  CHECK(f.pairs.size() == 16);
+  const auto h3 = pairs_in_dimension(f, 3, true);
+  REQUIRE(h3.size() == 1);
+  CHECK(h3[0].birth_vertices == std::vector<kinetic::VertexId>{1, 2, 3, 4});
+  CHECK(h3[0].death_vertices == std::vector<kinetic::VertexId>{0, 1, 2, 3, 4});
+  CHECK(h3[0].birth == ts);
+  const auto h2 = pairs_in_dimension(f, 2, true);
+  // At t0 seven triangles meet five independent loops: two open the zero-length H2 classes filled by
+  // abcd and abce; at t* bde and cde open the two filled by abde and acde.
+  CHECK(h2.size() == 4);
+  const Diagram r = reverse_diagram(cells);
+  CHECK(points_of(r) == std::vector<std::tuple<int, double, double>>{{0, 100, -inf}});
+}
+
+TEST_CASE("The Euler check compares the essential classes with chi and rejects a mismatch") {
+  const auto cells = filled_triangle();
+  const Filtration f = make_filtration(cells, Direction::forward);
+  Diagram d = compute_diagram(cells, f);
+  CHECK(euler_characteristic(f) == 1);
+  CHECK(essential_euler_characteristic(d) == 1);
+  CHECK_NOTHROW(check_euler(d, f));
+  d.pairs.back().essential = false;
+  for (auto& p : d.pairs)
+    p.essential = false;
+  CHECK_THROWS_AS(check_euler(d, f), InternalError);
+}
+
+TEST_CASE("Every PHAT representation and reduction algorithm gives the same diagram") {
+  std::vector<CellSpec> s;
+  add_closure(s, {0, 1, 2, 3}, vt(0, 0, 0), vt(3, 0, 3));
+  add_closure(s, {2, 3, 4}, vt(1, 0, 1), vt(2, 0, 2));
+  const auto cells = make_cells(s);
+  for (Direction dir : {Direction::forward, Direction::reverse}) {
+    const Filtration f = make_filtration(cells, dir);
+    std::ostringstream a, b, c, d;
+    write_diagram_text(a, compute_diagram(cells, f));
+    write_diagram_text(b, compute_diagram<phat::vector_vector, phat::standard_reduction>(cells, f));
+    write_diagram_text(c, compute_diagram<phat::heap_pivot_column, phat::chunk_reduction>(cells, f));
+    write_diagram_text(d, compute_diagram<phat::sparse_pivot_column, phat::row_reduction>(cells, f));
+    CHECK(a.str() == b.str());
+    CHECK(a.str() == c.str());
+    CHECK(a.str() == d.str());
+  }
+}
+
+TEST_CASE("The same cells in any input order give a byte-identical serialized diagram") {
+  std::vector<CellSpec> s;
+  add_closure(s, {0, 1, 2, 3}, vt(0, 0, 0), vt(4, 0, 4));
+  add_closure(s, {3, 4, 5}, vt(1, 0, 0.25), vt(3, 2, 3.5));
+  add_closure(s, {0, 5}, vt(2, 0, 1.0 / 3), vt(3, 1, 3.5));
+  auto cells = make_cells(s);
+  std::ostringstream reference;
+  write_diagram_text(reference, forward_diagram(cells));
+  const unsigned seed = 20240611;
+  CAPTURE(seed);
+  std::mt19937 rng(seed);
+  for (int round = 0; round < 5; ++round) {
+    std::shuffle(cells.begin(), cells.end(), rng);
+    std::ostringstream again;
+    write_diagram_text(again, forward_diagram(cells));
+    CHECK(again.str() == reference.str());
+  }
+  CHECK(reference.str().find("0.33333333333333331") != std::string::npos);
+}

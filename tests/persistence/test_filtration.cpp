@@ -1,0 +1,95 @@
+// Forward and reverse filtrations and sub-medusas (MATH.md 7.2-7.4).
+#include "cell_list.h"
+#include "medusa/kinetic/error.h"
+#include "medusa/persistence/filtration.h"
+
+#include <catch2/catch.hpp>
+
+using namespace medusa;
+using namespace medusa::persistence;
+using namespace medusa::persistence::test;
+
+namespace {
+
+// Vertices 0, 1, 2; edge 01 born at (1,0); edge 12 at (1,1); edge 02 at (2,0); vertex 2 dies first.
+std::vector<Cell> small_complex() {
+  return make_cells({
+      {{2}, vt(0, 0, 0), vt(3, 0, 3)},    // 1000
+      {{0}, vt(0, 0, 0), vt(4, 0, 4)},    // 1007
+      {{1}, vt(0, 0, 0), vt(4, 0, 4)},    // 1014
+      {{1, 2}, vt(1, 1, 1), vt(2, 5, 2)}, // 1021
+      {{0, 1}, vt(1, 0, 1), vt(4, 0, 4)}, // 1028
+      {{0, 2}, vt(2, 0, 2), vt(2, 5, 2)}, // 1035
+  });
+}
+
+std::vector<complex::CellId> ids_in_order(const std::vector<Cell>& cells, const Filtration& f) {
+  std::vector<complex::CellId> ids;
+  for (std::size_t pos : f.cells)
+    ids.push_back(cells[pos].id);
+  return ids;
+}
+
+} // namespace
+
+TEST_CASE("The forward filtration orders cells by birth batch, birth rank, dimension and vertex tuple") {
+  const auto cells = small_complex();
+  const Filtration f = make_filtration(cells, Direction::forward);
+  // Vertices (0,0) by tuple 0,1,2; then 01 (1,0), 12 (1,1), 02 (2,0).
+  CHECK(ids_in_order(cells, f) == std::vector<complex::CellId>{1007, 1014, 1000, 1028, 1021, 1035});
+  CHECK(f.dims == std::vector<int>{0, 0, 0, 1, 1, 1});
+  CHECK(f.columns[3] == std::vector<std::int64_t>{0, 1});
+  CHECK(f.columns[4] == std::vector<std::int64_t>{1, 2});
+  CHECK(f.columns[5] == std::vector<std::int64_t>{0, 2});
+  CHECK(f.cell_type == all_types);
+}
+
+TEST_CASE("The reverse filtration orders cells by latest death first, then dimension and vertex tuple") {
+  const auto cells = small_complex();
+  const Filtration f = make_filtration(cells, Direction::reverse);
+  // Deaths: 0,1,01 at (4,0); 2 at (3,0); 12, 02 at (2,5).
+  CHECK(ids_in_order(cells, f) == std::vector<complex::CellId>{1007, 1014, 1028, 1000, 1035, 1021});
+  CHECK(f.columns[2] == std::vector<std::int64_t>{0, 1});
+  CHECK(f.columns[4] == std::vector<std::int64_t>{0, 3});
+  CHECK(f.columns[5] == std::vector<std::int64_t>{1, 3});
+}
+
+TEST_CASE("A sub-medusa keeps the cells whose vertices all have the type, re-indexed consecutively") {
+  const auto cells = small_complex();
+  const std::vector<int> types{1, 2, 1}; // vertices 0 and 2 have type 1
+  const Filtration f = make_type_filtration(cells, types, 1, Direction::forward);
+  CHECK(ids_in_order(cells, f) == std::vector<complex::CellId>{1007, 1000, 1035});
+  CHECK(f.columns[2] == std::vector<std::int64_t>{0, 1});
+  CHECK(f.cell_type == 1);
+  const Filtration g = make_type_filtration(cells, types, 2, Direction::reverse);
+  CHECK(ids_in_order(cells, g) == std::vector<complex::CellId>{1014});
+  CHECK(make_type_filtration(cells, types, 7, Direction::forward).size() == 0);
+}
+
+TEST_CASE("A facet that does not precede its coface is an internal error") {
+  auto cells = small_complex();
+  cells[0].birth = vt(3, 0, 3); // vertex 2 born after its edges 12 and 02
+  CHECK_THROWS_AS(make_filtration(cells, Direction::forward), InternalError);
+  auto reverse_cells = small_complex();
+  reverse_cells[3].death = vt(3, 1, 3); // edge 12 outlives its vertex 2
+  CHECK_THROWS_AS(make_filtration(reverse_cells, Direction::reverse), InternalError);
+}
+
+TEST_CASE("A facet with the wrong vertices or a wrong facet count is an internal error") {
+  auto cells = small_complex();
+  cells[5].facets = {1007, 1014}; // 02 naming vertex 1
+  CHECK_THROWS_AS(make_filtration(cells, Direction::forward), InternalError);
+  auto short_cells = small_complex();
+  short_cells[5].facets = {1007};
+  CHECK_THROWS_AS(make_filtration(short_cells, Direction::forward), InternalError);
+}
+
+TEST_CASE("An unknown facet id, a duplicate cell id or a vertex outside the type table is an input error") {
+  auto unknown = small_complex();
+  unknown[4].facets[0] = 99;
+  CHECK_THROWS_AS(make_filtration(unknown, Direction::forward), InputError);
+  auto duplicate = small_complex();
+  duplicate[1].id = duplicate[0].id;
+  CHECK_THROWS_AS(make_filtration(duplicate, Direction::forward), InputError);
+  CHECK_THROWS_AS(make_type_filtration(small_complex(), {1, 1}, 1, Direction::forward), InputError);
+}
