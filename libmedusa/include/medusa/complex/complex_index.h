@@ -1,0 +1,43 @@
+// K_t from a medusa: stabbing queries over the cell lifetimes (MATH.md 6.6).
+#pragma once
+
+#include "medusa/complex/interval_tree.h"
+#include "medusa/complex/medusa.h"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace medusa::complex {
+
+// Answers "which cells form K at this time" for a whole medusa or for the sub-medusa of one cell type
+// (MATH.md 7.4). Conventions of MATH.md 6.6: at batch b, K(b+) = cells with birth <= (b, +inf) <
+// death, i.e. birth batch <= b < death batch; K(b-) = cells with birth < (b, 0) <= death, i.e. birth
+// batch < b <= death batch. Instant cells belong to neither. The medusa must outlive the index.
+class ComplexIndex {
+public:
+  explicit ComplexIndex(const Medusa& medusa, std::optional<int> type = std::nullopt);
+
+  // Cell ids, increasing.
+  std::vector<CellId> after(std::uint64_t batch) const;  // K(b+)
+  std::vector<CellId> before(std::uint64_t batch) const; // K(b-)
+  // The state reported at frame k (MATH.md conventions): K(t_k+) for k before the last frame, and
+  // K(t_end-) at the last frame. Needs the input's frame count; throws InputError when out of range.
+  std::vector<CellId> at_frame(std::size_t k) const;
+  // The batch after which frame k is reached: its frame batch, or the last batch before it.
+  std::uint64_t frame_batch(std::size_t k) const;
+  // The state at real time t: K(t+) after the last batch whose (approximate) time is <= t, or
+  // K(t_end-) at t >= t_end. Throws InputError for t before t_0.
+  std::vector<CellId> at_time(double t) const;
+
+  const Medusa& medusa() const { return medusa_; }
+  std::optional<int> type() const { return type_; }
+
+private:
+  const Medusa& medusa_;
+  std::optional<int> type_;
+  IntervalTree after_;
+  IntervalTree before_;
+};
+
+} // namespace medusa::complex

@@ -1,0 +1,19 @@
+// Run metadata recorded in the store next to the medusa (docs/FORMAT.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace medusa::complex {
+
+// What produced a medusa: the parameters and provenance a reader needs to interpret it. The grid
+// scale and the dimension come with the input (kinetic::Trajectories).
+struct RunInfo {
+  double radius = 0.0;                   // rho, as a double (for output)
+  std::string radius_text;               // rho exactly as the user gave it (decimal text)
+  std::vector<std::string> source_files; // the CompuCell3D files read
+  std::string command_line;
+  std::string software_version;
+};
+
+} // namespace medusa::complex

@@ -1,0 +1,43 @@
+// Streams a medusa into an HDF5 store (docs/FORMAT.md) while the builder runs (MATH.md 6.5).
+#pragma once
+
+#include "medusa/complex/cell_sink.h"
+#include "medusa/complex/medusa.h"
+
+#include <memory>
+#include <string>
+
+namespace medusa::complex {
+
+// The version written into every store; read_store accepts exactly this version.
+inline constexpr std::int64_t store_format_version = 1;
+
+// Writes to `<path>.tmp-<pid>` and renames to `path` only in finish(), after the attribute `complete`
+// (written last). Destroying an unfinished writer deletes the temporary file; a killed writer leaves
+// at most the temporary file, which the reader rejects. Every failure (cannot create, disk full)
+// throws StoreError naming the path; after one the writer is unusable.
+class StoreWriter : public CellSink {
+public:
+  explicit StoreWriter(const std::string& path);
+  ~StoreWriter() override;
+  StoreWriter(const StoreWriter&) = delete;
+  StoreWriter& operator=(const StoreWriter&) = delete;
+
+  void run(const RunInfo& info, const kinetic::Trajectories& input) override;
+  void batch(const BatchRecord& batch) override;
+  void frame(const FrameRecord& frame) override;
+  void cell(const Cell& cell) override;
+  void finish(const VirtualTime& end) override;
+
+  const std::string& path() const;
+  const std::string& temporary_path() const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Writes a whole in-memory medusa (e.g. one read back) as a store at `path`.
+void write_store(const std::string& path, const Medusa& medusa);
+
+} // namespace medusa::complex

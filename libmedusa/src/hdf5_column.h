@@ -1,0 +1,58 @@
+// An extendible, chunked, compressed and checksummed dataset written by appending rows (docs/FORMAT.md:
+// every dataset of the store is one of these). Rows are buffered and written a chunk at a time, so a
+// store is written while the medusa streams.
+#pragma once
+
+#include "hdf5_handle.h"
+#include "hdf5_types.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace medusa::complex::h5 {
+
+class ColumnBase {
+public:
+  // Creates the dataset `name` under `location`, of shape (0) or (0, width), unlimited rows.
+  ColumnBase(hid_t location, const std::string& name, hid_t file_type, hid_t memory_type, std::size_t width,
+             const std::string& path);
+  std::size_t rows() const { return written_; }
+  const std::string& name() const { return name_; }
+
+protected:
+  void write(const void* data, std::size_t rows);
+  std::size_t width_ = 1;
+  std::size_t chunk_rows_ = 0;
+
+private:
+  Handle dataset_;
+  hid_t memory_type_ = -1;
+  std::string name_;
+  std::string path_;
+  std::size_t written_ = 0;
+};
+
+template <class T> class Column : public ColumnBase {
+public:
+  Column(hid_t location, const std::string& name, const std::string& path, std::size_t width = 1)
+      : ColumnBase(location, name, TypeOf<T>::file(), TypeOf<T>::memory(), width, path) {}
+
+  void push(T value) {
+    buffer_.push_back(value);
+    if (buffer_.size() >= chunk_rows_ * width_)
+      flush();
+  }
+  void flush() {
+    if (buffer_.empty())
+      return;
+    write(buffer_.data(), buffer_.size() / width_);
+    buffer_.clear();
+  }
+  std::size_t size() const { return rows() + buffer_.size() / width_; }
+
+private:
+  std::vector<T> buffer_;
+};
+
+} // namespace medusa::complex::h5

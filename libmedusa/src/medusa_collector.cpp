@@ -1,0 +1,33 @@
+#include "medusa/complex/medusa.h"
+
+#include "medusa/kinetic/error.h"
+
+#include <algorithm>
+#include <string>
+
+namespace medusa::complex {
+
+bool Medusa::has_type(const Cell& c, int type) const {
+  for (VertexId v : c.vertices)
+    if (v < 0 || static_cast<std::size_t>(v) >= input.cells.size() ||
+        input.cells[static_cast<std::size_t>(v)].type != type)
+      return false;
+  return true;
+}
+
+void MedusaCollector::run(const RunInfo& info, const kinetic::Trajectories& input) {
+  medusa_.run = info;
+  medusa_.input = input;
+}
+
+void MedusaCollector::finish(const VirtualTime& end) {
+  medusa_.end = end;
+  std::sort(medusa_.cells.begin(), medusa_.cells.end(),
+            [](const Cell& a, const Cell& b) { return a.id < b.id; });
+  for (std::size_t i = 0; i < medusa_.cells.size(); ++i)
+    if (medusa_.cells[i].id != i)
+      throw InternalError("medusa collector: cell ids are not 0.." +
+                          std::to_string(medusa_.cells.size() - 1));
+}
+
+} // namespace medusa::complex

@@ -1,0 +1,76 @@
+#include "medusa/complex/signatures.h"
+
+#include "medusa/complex/homology.h"
+#include "medusa/kinetic/error.h"
+
+#include <string>
+#include <unordered_map>
+
+namespace medusa::complex {
+
+Signature signature_of(const Medusa& medusa, const std::vector<CellId>& cells) {
+  Signature s;
+  std::unordered_map<CellId, std::size_t> local;
+  local.reserve(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    local.emplace(cells[i], i);
+  ChainComplex complex;
+  complex.dims.reserve(cells.size());
+  complex.facets.reserve(cells.size());
+  for (CellId id : cells) {
+    const Cell& c = medusa.cell(id);
+    if (c.dim() < 0 || c.dim() > 3)
+      throw InternalError("medusa signature: cell " + std::to_string(id) + " of dimension " +
+                          std::to_string(c.dim()) + " in K_t");
+    ++s.f[static_cast<std::size_t>(c.dim())];
+    std::vector<std::size_t> facets;
+    for (CellId f : c.facets) {
+      auto it = local.find(f);
+      if (it == local.end())
+        throw InternalError("medusa signature: facet cell " + std::to_string(f) + " of cell " +
+                            std::to_string(id) + " is not in K_t");
+      facets.push_back(it->second);
+    }
+    complex.dims.push_back(c.dim());
+    complex.facets.push_back(std::move(facets));
+  }
+  s.euler = static_cast<long long>(s.f[0]) - static_cast<long long>(s.f[1]) + static_cast<long long>(s.f[2]) -
+            static_cast<long long>(s.f[3]);
+  const std::vector<std::size_t> betti = betti_numbers(complex);
+  for (std::size_t k = 0; k < betti.size(); ++k)
+    s.betti[k] = betti[k];
+  return s;
+}
+
+std::vector<SignatureSample> signatures_over_time(const ComplexIndex& index) {
+  const Medusa& m = index.medusa();
+  std::vector<SignatureSample> samples;
+  std::unordered_map<std::uint64_t, std::size_t> by_batch;
+  for (const BatchRecord& b : m.batches) {
+    SignatureSample s;
+    s.batch = b.batch;
+    s.time = b.time;
+    s.signature = signature_of(m, index.after(b.batch));
+    by_batch.emplace(b.batch, samples.size());
+    samples.push_back(std::move(s));
+  }
+  SignatureSample end;
+  end.batch = m.end.batch;
+  end.before = true;
+  end.time = m.end.time;
+  end.signature = signature_of(m, index.before(m.end.batch));
+  samples.push_back(std::move(end));
+  for (std::size_t k = 0; k < m.input.frames(); ++k) {
+    if (k + 1 == m.input.frames()) {
+      samples.back().frames.push_back(k);
+      continue;
+    }
+    auto it = by_batch.find(index.frame_batch(k));
+    if (it == by_batch.end())
+      throw InternalError("medusa signature: frame " + std::to_string(k) + " maps to no batch");
+    samples[it->second].frames.push_back(k);
+  }
+  return samples;
+}
+
+} // namespace medusa::complex
