@@ -1,0 +1,98 @@
+// Building medusas from recorded streams, and comparing them, for the medusa tests.
+#pragma once
+
+#include "medusa/complex/cell_sink.h"
+#include "medusa/complex/complex_index.h"
+#include "medusa/complex/medusa.h"
+#include "medusa/complex/medusa_builder.h"
+#include "stream.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+
+namespace medusa::test {
+
+inline complex::RunInfo test_run_info() {
+  complex::RunInfo info;
+  info.radius = 1.05;
+  info.radius_text = "1.05";
+  info.source_files = {"run/Step_0000.vtk.gz", "run/Step_0010.vtk.gz"};
+  info.command_line = "medusa run --radius 1.05 run";
+  info.software_version = "0.1.0-test";
+  return info;
+}
+
+// Plays the stream into a builder feeding `sink`, with the test run metadata and a dummy input.
+inline void play_into(const Stream& stream, complex::CellSink& sink, std::size_t vertices,
+                      std::size_t frames) {
+  complex::MedusaBuilder builder(sink);
+  builder.set_run(test_run_info(), dummy_input(vertices, frames, {}));
+  stream.play(builder);
+}
+
+inline complex::Medusa collect(const Stream& stream, std::size_t vertices, std::size_t frames) {
+  complex::MedusaCollector collector;
+  play_into(stream, collector, vertices, frames);
+  return collector.take();
+}
+
+inline SimplexSet tuples(const complex::Medusa& m, const std::vector<complex::CellId>& ids) {
+  SimplexSet out;
+  for (complex::CellId id : ids)
+    out.insert(m.cell(id).vertices);
+  return out;
+}
+
+// A fresh path in the temporary directory, unique per process and name.
+inline std::string temp_path(const std::string& name) {
+  return (std::filesystem::temp_directory_path() /
+          ("medusa-test-" + std::to_string(static_cast<long long>(::getpid())) + "-" + name))
+      .string();
+}
+
+inline bool same_cell(const complex::Cell& a, const complex::Cell& b) {
+  return a.id == b.id && a.vertices == b.vertices && a.birth == b.birth && a.death == b.death &&
+         a.birth.time == b.birth.time && a.death.time == b.death.time && a.kind == b.kind &&
+         a.facets == b.facets;
+}
+
+inline bool same_medusa(const complex::Medusa& a, const complex::Medusa& b) {
+  if (a.cells.size() != b.cells.size() || a.batches.size() != b.batches.size() ||
+      a.frames.size() != b.frames.size())
+    return false;
+  for (std::size_t i = 0; i < a.cells.size(); ++i)
+    if (!same_cell(a.cells[i], b.cells[i]))
+      return false;
+  for (std::size_t i = 0; i < a.batches.size(); ++i) {
+    const auto &x = a.batches[i], &y = b.batches[i];
+    if (x.batch != y.batch || x.slab != y.slab || x.u != y.u || x.time != y.time ||
+        x.at_frame != y.at_frame || x.ranks != y.ranks)
+      return false;
+  }
+  for (std::size_t i = 0; i < a.frames.size(); ++i)
+    if (a.frames[i].frame != b.frames[i].frame || a.frames[i].batch != b.frames[i].batch ||
+        a.frames[i].time != b.frames[i].time)
+      return false;
+  if (a.end != b.end || a.end.time != b.end.time)
+    return false;
+  if (a.run.radius != b.run.radius || a.run.radius_text != b.run.radius_text ||
+      a.run.source_files != b.run.source_files || a.run.command_line != b.run.command_line ||
+      a.run.software_version != b.run.software_version)
+    return false;
+  if (a.input.scale != b.input.scale || a.input.dimension != b.input.dimension ||
+      a.input.frame_times != b.input.frame_times || a.input.type_names != b.input.type_names ||
+      a.input.cells.size() != b.input.cells.size())
+    return false;
+  for (std::size_t i = 0; i < a.input.cells.size(); ++i) {
+    const auto &x = a.input.cells[i], &y = b.input.cells[i];
+    if (x.cell_id != y.cell_id || x.type != y.type || x.first_frame != y.first_frame ||
+        x.positions != y.positions)
+      return false;
+  }
+  return true;
+}
+
+} // namespace medusa::test
