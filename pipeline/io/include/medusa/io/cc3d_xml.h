@@ -1,0 +1,25 @@
+// The few facts medusa needs from a CompuCell3D CC3DML file (Simulation/*.xml): lattice size,
+// boundary conditions and type names. Not a general XML parser: it looks for the Potts tags.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace medusa::io {
+
+struct Cc3dSimulation {
+  std::string path;
+  std::array<std::int64_t, 3> dimensions{}; // <Dimensions x= y= z=/>
+  std::array<bool, 3> periodic{};           // <Boundary_x>Periodic</Boundary_x> etc.
+  std::vector<std::string> type_names;      // <CellType TypeName= TypeId=/>, index = type id
+};
+
+// Throws InputError naming the file if it cannot be read or has no <Dimensions x= y= z=/>.
+Cc3dSimulation read_cc3d_xml(const std::string& path);
+
+// "x", "x,y", ... for the periodic axes; empty if none.
+std::string periodic_axes(const Cc3dSimulation& sim);
+
+} // namespace medusa::io

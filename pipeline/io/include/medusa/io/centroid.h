@@ -1,0 +1,30 @@
+// VTK centroids X / n on the grid (MATH.md 1.3): exact when n divides X, otherwise snapped to the
+// nearest grid point (policy R) only on explicit opt-in.
+#pragma once
+
+#include "medusa/kinetic/trajectories.h"
+
+#include <array>
+#include <cstdint>
+
+namespace medusa::io {
+
+// What policy R did to a run (written into output headers by the caller, MATH.md 1.1).
+struct SnapReport {
+  bool snapped = false;   // policy R was allowed (the caller opted in)
+  std::int64_t moved = 0; // positions (cell, frame) with at least one coordinate moved
+  // Largest displacement of one coordinate, in grid units, as the exact fraction num / den (<= 1/2).
+  std::int64_t max_displacement_num = 0;
+  std::int64_t max_displacement_den = 1;
+  double max_displacement() const { return double(max_displacement_num) / double(max_displacement_den); }
+};
+
+// True if n divides every component of X (the centroid X / n is a grid point).
+bool centroid_on_grid(const std::array<std::int64_t, 3>& scaled_sum, std::int64_t n);
+
+// X / n rounded per coordinate to the nearest integer, ties to even (policy R); records the move
+// in `report`. n must be positive.
+kinetic::GridPoint snap_centroid(const std::array<std::int64_t, 3>& scaled_sum, std::int64_t n,
+                                 SnapReport& report);
+
+} // namespace medusa::io

@@ -1,0 +1,59 @@
+// Reading a whole CompuCell3D run (output folder or CSV file) into trajectories (MATH.md 1, 2).
+#pragma once
+
+#include "medusa/io/cc3d_xml.h"
+#include "medusa/io/cell_volumes.h"
+#include "medusa/io/centroid.h"
+#include "medusa/io/csv_reader.h"
+#include "medusa/kinetic/trajectories.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace medusa::io {
+
+enum class RunSource {
+  automatic, // VTK snapshots if the folder has any, else cells.csv(.gz)
+  vtk,       // LatticeData/Step_*.vtk(.gz): exact voxel centroids (MATH.md 1.3)
+  csv        // cells.csv(.gz): CC3D's centres rounded to 6 decimals (MATH.md 1.2)
+};
+
+struct RunOptions {
+  std::int64_t scale = 1000000; // grid scale S = 10^m (MATH.md 1.1)
+  RunSource source = RunSource::automatic;
+  bool snap = false;                   // policy R for VTK centroids off the grid (CLI: --snap)
+  bool allow_periodic_as_open = false; // read a periodic run as if its boundaries were open
+  CsvColumns csv_columns;
+  // Lattice z extent if the caller knows it; otherwise taken from Simulation/*.xml or the VTK header.
+  // z extent 1 makes the run planar (dimension 2; z kept).
+  std::optional<std::int64_t> z_extent;
+};
+
+struct RunData {
+  kinetic::Trajectories trajectories;
+  std::vector<std::string> warnings;
+  CellVolumes volumes;              // volumes[i][f] of trajectory i at frame first_frame + f
+  std::vector<std::string> sources; // files read, in order (VTK snapshots by MCS, or the CSV)
+  RunSource used = RunSource::csv;  // vtk or csv
+  SnapReport snap;                  // policy R bookkeeping (VTK only)
+  // How positions were obtained, for output headers: "csv-centres" (CC3D's centres, 6 decimals) or
+  // "vtk-centroids-voxel-corner" (exact voxel means, voxel (i,j,k) at origin + spacing*(i,j,k)).
+  std::string position_convention;
+  std::optional<Cc3dSimulation> simulation; // the run's CC3DML facts, when found
+};
+
+// Reads a CC3D output folder (LatticeData/Step_*.vtk[.gz], Simulation/*.xml, cells.csv[.gz]) or a
+// .csv/.csv.gz file (its folder's Simulation/*.xml is used when present). Throws InputError for a
+// periodic run unless options.allow_periodic_as_open (then a warning is recorded), for VTK centroids
+// off the grid unless options.snap, and for every malformed input (naming file, line, cell).
+RunData read_run(const std::string& path, const RunOptions& options = {});
+
+// The pieces of read_run, for callers that already know their files.
+RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& options,
+                     const std::optional<Cc3dSimulation>& simulation = std::nullopt);
+RunData read_csv_run(const std::string& path, const RunOptions& options,
+                     const std::optional<Cc3dSimulation>& simulation = std::nullopt);
+
+} // namespace medusa::io

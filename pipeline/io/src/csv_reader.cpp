@@ -1,0 +1,134 @@
+#include "medusa/io/csv_reader.h"
+
+#include "medusa/io/decimal.h"
+#include "medusa/io/gzip_reader.h"
+#include "medusa/kinetic/error.h"
+
+#include <map>
+#include <optional>
+#include <string_view>
+#include <unordered_map>
+
+namespace medusa::io {
+
+namespace {
+
+std::vector<std::string_view> split_commas(std::string_view line) {
+  std::vector<std::string_view> fields;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = line.find(',', start);
+    fields.push_back(
+        line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    if (comma == std::string_view::npos)
+      return fields;
+    start = comma + 1;
+  }
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
+    s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
+    s.remove_suffix(1);
+  return s;
+}
+
+bool blank(std::string_view s) { return trim(s).empty(); }
+
+struct PairHash {
+  std::size_t operator()(const std::pair<std::int64_t, std::int64_t>& p) const {
+    return std::hash<std::int64_t>()(p.first * 1000003 ^ p.second);
+  }
+};
+
+} // namespace
+
+CsvContents read_csv(const std::string& path, const CsvOptions& options) {
+  scale_decimals(options.scale);
+  GzipReader in(path);
+  CsvContents out;
+  std::string line;
+  if (!in.next_line(line))
+    throw InputError(path + ": empty file (expected a header line)");
+  const std::vector<std::string_view> header = split_commas(line);
+  const auto column = [&](const std::string& name, bool required) -> std::optional<std::size_t> {
+    if (name.empty())
+      return std::nullopt;
+    for (std::size_t k = 0; k < header.size(); ++k)
+      if (trim(header[k]) == name)
+        return k;
+    if (required)
+      throw InputError(path + ":" + std::to_string(in.line()) + ": missing column '" + name +
+                       "' in header '" + line + "'");
+    return std::nullopt;
+  };
+  const CsvColumns& c = options.columns;
+  const std::size_t col_mcs = *column(c.mcs, true), col_id = *column(c.cell_id, true),
+                    col_type = *column(c.type, true);
+  const std::size_t col_xyz[3] = {*column(c.x, true), *column(c.y, true), *column(c.z, true)};
+  const std::optional<std::size_t> col_volume = column(c.volume, false),
+                                   col_name = column(c.type_name, false);
+  const std::vector<std::string> column_names = {c.x, c.y, c.z};
+  out.has_volume = col_volume.has_value();
+  const std::size_t n_fields = header.size();
+
+  std::unordered_map<std::pair<std::int64_t, std::int64_t>, std::int64_t, PairHash> seen; // (mcs,id) -> line
+  std::unordered_map<std::int64_t, std::pair<int, std::int64_t>> cell_type; // id -> (type, line)
+  std::map<int, std::pair<std::string, std::int64_t>> type_name;            // type -> (name, line)
+
+  while (in.next_line(line)) {
+    if (blank(line))
+      continue;
+    const std::string at = path + ":" + std::to_string(in.line());
+    const std::vector<std::string_view> f = split_commas(line);
+    if (f.size() != n_fields)
+      throw InputError(at + ": expected " + std::to_string(n_fields) + " fields as in the header, found " +
+                       std::to_string(f.size()));
+    CellSample s;
+    s.line = in.line();
+    s.cell_id = parse_integer(f[col_id], at + ": column " + c.cell_id);
+    const std::string cell = at + ": cell " + std::to_string(s.cell_id);
+    if (s.cell_id <= 0)
+      throw InputError(cell + ": cell ids must be positive (medium has no row)");
+    s.mcs = parse_integer(f[col_mcs], cell + ": column " + c.mcs);
+    const std::int64_t type = parse_integer(f[col_type], cell + ": column " + c.type);
+    if (type <= 0 || type > 1000000)
+      throw InputError(cell + ": type " + std::to_string(type) + " is not a cell type (must be 1, 2, ...)");
+    s.type = static_cast<int>(type);
+    for (int a = 0; a < 3; ++a)
+      s.position[a] =
+          parse_scaled_decimal(f[col_xyz[a]], options.scale, cell + ": column " + column_names[a]);
+    if (col_volume) {
+      s.volume = parse_integer(f[*col_volume], cell + ": column " + c.volume);
+      if (s.volume < 0)
+        throw InputError(cell + ": negative volume " + std::to_string(s.volume));
+    }
+    const auto [dup, fresh] = seen.emplace(std::make_pair(s.mcs, s.cell_id), s.line);
+    if (!fresh)
+      throw InputError(cell + ": duplicate row for MCS " + std::to_string(s.mcs) + " (first at line " +
+                       std::to_string(dup->second) + ")");
+    const auto [known, new_cell] = cell_type.emplace(s.cell_id, std::make_pair(s.type, s.line));
+    if (!new_cell && known->second.first != s.type)
+      throw InputError(cell + ": type changes from " + std::to_string(known->second.first) + " (line " +
+                       std::to_string(known->second.second) + ") to " + std::to_string(s.type));
+    if (col_name) {
+      const std::string name(trim(f[*col_name]));
+      const auto [named, new_type] = type_name.emplace(s.type, std::make_pair(name, s.line));
+      if (!new_type && named->second.first != name)
+        throw InputError(cell + ": type " + std::to_string(s.type) + " is named '" + name + "' but '" +
+                         named->second.first + "' at line " + std::to_string(named->second.second));
+    }
+    out.samples.push_back(s);
+  }
+  if (out.samples.empty())
+    throw InputError(path + ": no data rows after the header");
+  for (const auto& [type, name] : type_name) {
+    if (out.type_names.size() <= static_cast<std::size_t>(type))
+      out.type_names.resize(type + 1);
+    out.type_names[type] = name.first;
+  }
+  return out;
+}
+
+} // namespace medusa::io

@@ -1,0 +1,233 @@
+#include "medusa/io/run_reader.h"
+
+#include "medusa/io/trajectory_assembly.h"
+#include "medusa/io/vtk_reader.h"
+#include "medusa/kinetic/error.h"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace medusa::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+bool is_csv_name(const std::string& name) { return ends_with(name, ".csv") || ends_with(name, ".csv.gz"); }
+
+// The run's CC3DML: the first Simulation/*.xml (by name) that has <Dimensions>.
+std::optional<Cc3dSimulation> find_simulation(const fs::path& run, std::vector<std::string>& warnings) {
+  const fs::path folder = run / "Simulation";
+  std::vector<std::string> xmls;
+  std::error_code ec;
+  if (fs::is_directory(folder, ec))
+    for (const auto& entry : fs::directory_iterator(folder))
+      if (entry.is_regular_file() && entry.path().extension() == ".xml")
+        xmls.push_back(entry.path().string());
+  std::sort(xmls.begin(), xmls.end());
+  for (const std::string& xml : xmls) {
+    try {
+      return read_cc3d_xml(xml);
+    } catch (const InputError& e) {
+      warnings.push_back(std::string("skipping ") + e.what());
+    }
+  }
+  warnings.push_back("no CC3DML file with <Dimensions> in " + folder.string() +
+                     ": lattice size and boundary conditions unknown (assumed non-periodic)");
+  return std::nullopt;
+}
+
+void check_periodic(const std::optional<Cc3dSimulation>& sim, const RunOptions& options, RunData& run) {
+  if (!sim)
+    return;
+  const std::string axes = periodic_axes(*sim);
+  if (axes.empty())
+    return;
+  if (!options.allow_periodic_as_open)
+    throw InputError(sim->path + ": the run is periodic along " + axes +
+                     "; medusa needs open boundaries (rerun with --periodic-as-open to treat them as open)");
+  run.warnings.push_back("periodic boundaries along " + axes + " (" + sim->path +
+                         ") treated as open: a cell crossing a seam jumps across the lattice");
+}
+
+void name_types(RunData& run, const std::vector<std::string>& from_source) {
+  std::vector<std::string>& names = run.trajectories.type_names;
+  names = from_source;
+  if (run.simulation) {
+    const std::vector<std::string>& xml = run.simulation->type_names;
+    if (names.size() < xml.size())
+      names.resize(xml.size());
+    for (std::size_t t = 0; t < xml.size(); ++t)
+      if (names[t].empty())
+        names[t] = xml[t];
+  }
+}
+
+void take_assembly(RunData& run, AssembledRun&& assembled) {
+  run.trajectories = std::move(assembled.trajectories);
+  run.volumes = std::move(assembled.volumes);
+  run.warnings.insert(run.warnings.end(), assembled.warnings.begin(), assembled.warnings.end());
+}
+
+} // namespace
+
+RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& options,
+                     const std::optional<Cc3dSimulation>& simulation) {
+  RunData run;
+  run.used = RunSource::vtk;
+  run.simulation = simulation;
+  run.position_convention = "vtk-centroids-voxel-corner";
+  run.snap.snapped = options.snap;
+  check_periodic(simulation, options, run);
+  if (files.empty())
+    throw InputError("no VTK snapshots to read");
+  std::vector<std::pair<std::int64_t, std::string>> by_mcs;
+  for (const std::string& f : files)
+    by_mcs.emplace_back(vtk_step_mcs(f), f);
+  std::sort(by_mcs.begin(), by_mcs.end());
+  for (std::size_t k = 1; k < by_mcs.size(); ++k)
+    if (by_mcs[k].first == by_mcs[k - 1].first)
+      throw InputError(by_mcs[k].second + ": same MCS " + std::to_string(by_mcs[k].first) + " as " +
+                       by_mcs[k - 1].second);
+
+  std::vector<CellSample> samples;
+  std::vector<std::int64_t> frame_times;
+  std::array<std::int64_t, 3> dims{};
+  for (std::size_t k = 0; k < by_mcs.size(); ++k) {
+    const auto& [mcs, file] = by_mcs[k];
+    const VtkSnapshot snap = read_vtk_snapshot(file, options.scale);
+    if (k == 0) {
+      dims = snap.dimensions;
+      if (simulation && simulation->dimensions != dims)
+        throw InputError(file + ": DIMENSIONS " + std::to_string(dims[0]) + " " + std::to_string(dims[1]) +
+                         " " + std::to_string(dims[2]) + " differ from the lattice of " + simulation->path);
+    } else if (snap.dimensions != dims) {
+      throw InputError(file + ": DIMENSIONS differ from those of " + by_mcs[0].second);
+    }
+    run.sources.push_back(file);
+    frame_times.push_back(mcs);
+    if (snap.cells.empty())
+      run.warnings.push_back(file + ": no cells (all medium)");
+    for (const VtkCell& c : snap.cells) {
+      CellSample s;
+      s.mcs = mcs;
+      s.cell_id = c.id;
+      s.type = c.type;
+      s.volume = c.voxels;
+      s.source = k;
+      if (centroid_on_grid(c.scaled_sum, c.voxels)) {
+        for (int a = 0; a < 3; ++a)
+          s.position[a] = c.scaled_sum[a] / c.voxels;
+      } else if (options.snap) {
+        s.position = snap_centroid(c.scaled_sum, c.voxels, run.snap);
+      } else {
+        throw InputError(
+            file + ": cell " + std::to_string(c.id) + ": its voxel centroid (" + std::to_string(c.voxels) +
+            " voxels) is not on the grid of scale " + std::to_string(options.scale) +
+            "; rerun with --snap to round VTK centroids to the nearest grid point (MATH.md 1.3)");
+      }
+      samples.push_back(s);
+    }
+  }
+  const std::int64_t z_extent = options.z_extent.value_or(dims[2]);
+  if (z_extent != dims[2])
+    throw InputError(by_mcs[0].second + ": z extent " + std::to_string(dims[2]) + " but the caller says " +
+                     std::to_string(z_extent));
+  take_assembly(run, assemble_trajectories(std::move(samples), run.sources, options.scale,
+                                           dims[2] == 1 ? 2 : 3, frame_times));
+  name_types(run, {});
+  if (run.snap.moved > 0)
+    run.warnings.push_back("snapped " + std::to_string(run.snap.moved) +
+                           " VTK centroids to the grid (policy R, MATH.md 1.3); largest move " +
+                           std::to_string(run.snap.max_displacement_num) + "/" +
+                           std::to_string(run.snap.max_displacement_den) + " grid units");
+  run.trajectories.validate();
+  return run;
+}
+
+RunData read_csv_run(const std::string& path, const RunOptions& options,
+                     const std::optional<Cc3dSimulation>& simulation) {
+  RunData run;
+  run.used = RunSource::csv;
+  run.simulation = simulation;
+  run.position_convention = "csv-centres";
+  check_periodic(simulation, options, run);
+  CsvContents csv = read_csv(path, CsvOptions{options.csv_columns, options.scale});
+  run.sources.push_back(path);
+
+  std::optional<std::int64_t> z_extent = options.z_extent;
+  if (!z_extent && simulation)
+    z_extent = simulation->dimensions[2];
+  const CellSample& first = csv.samples.front();
+  const auto differing = std::find_if(csv.samples.begin(), csv.samples.end(), [&](const CellSample& s) {
+    return s.position[2] != first.position[2];
+  });
+  int dimension = 3;
+  if (z_extent && *z_extent == 1) {
+    if (differing != csv.samples.end())
+      throw InputError(path + ":" + std::to_string(differing->line) + ": cell " +
+                       std::to_string(differing->cell_id) + ": z differs from line " +
+                       std::to_string(first.line) + " in a run with lattice z extent 1");
+    dimension = 2;
+  } else if (differing == csv.samples.end()) {
+    run.warnings.push_back(path + ": every z is equal but the lattice z extent is " +
+                           (z_extent ? std::to_string(*z_extent) : std::string("unknown")) +
+                           "; read as 3D (planar input is degenerate in 3D)");
+  }
+  take_assembly(run, assemble_trajectories(std::move(csv.samples), run.sources, options.scale, dimension));
+  name_types(run, csv.type_names);
+  run.trajectories.validate();
+  return run;
+}
+
+RunData read_run(const std::string& path, const RunOptions& options) {
+  const fs::path p(path);
+  std::error_code ec;
+  std::vector<std::string> warnings;
+  RunData run;
+  if (fs::is_regular_file(p, ec)) {
+    if (!is_csv_name(p.filename().string()))
+      throw InputError(path + ": expected a CC3D output folder or a .csv/.csv.gz file of cell centres");
+    if (options.source == RunSource::vtk)
+      throw InputError(path + ": VTK snapshots requested but the input is a CSV file");
+    std::optional<Cc3dSimulation> sim;
+    if (fs::is_directory(p.parent_path() / "Simulation", ec))
+      sim = find_simulation(p.parent_path(), warnings);
+    run = read_csv_run(path, options, sim);
+  } else if (fs::is_directory(p, ec)) {
+    const std::optional<Cc3dSimulation> sim = find_simulation(p, warnings);
+    std::vector<std::string> vtks;
+    if (fs::is_directory(p / "LatticeData", ec))
+      for (const auto& entry : fs::directory_iterator(p / "LatticeData"))
+        if (entry.is_regular_file() && is_vtk_step_name(entry.path().filename().string()))
+          vtks.push_back(entry.path().string());
+    std::string csv;
+    for (const char* name : {"cells.csv.gz", "cells.csv"})
+      if (csv.empty() && fs::is_regular_file(p / name, ec))
+        csv = (p / name).string();
+    const bool use_vtk =
+        options.source == RunSource::vtk || (options.source == RunSource::automatic && !vtks.empty());
+    if (use_vtk) {
+      if (vtks.empty())
+        throw InputError(path + ": no LatticeData/Step_<MCS>.vtk(.gz) snapshots");
+      run = read_vtk_run(vtks, options, sim);
+    } else {
+      if (csv.empty())
+        throw InputError(path +
+                         (options.source == RunSource::csv
+                              ? ": no cells.csv.gz or cells.csv"
+                              : ": neither LatticeData/Step_<MCS>.vtk(.gz) snapshots nor cells.csv(.gz)"));
+      run = read_csv_run(csv, options, sim);
+    }
+  } else {
+    throw InputError(path + ": no such file or folder");
+  }
+  run.warnings.insert(run.warnings.begin(), warnings.begin(), warnings.end());
+  return run;
+}
+
+} // namespace medusa::io

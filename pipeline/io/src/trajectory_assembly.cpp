@@ -1,0 +1,100 @@
+#include "medusa/io/trajectory_assembly.h"
+
+#include "medusa/kinetic/error.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace medusa::io {
+
+namespace {
+
+std::string location(const CellSample& s, const std::vector<std::string>& sources) {
+  std::string where = s.source < sources.size() ? sources[s.source] : std::string("<input>");
+  if (s.line > 0)
+    where += ":" + std::to_string(s.line);
+  return where;
+}
+
+} // namespace
+
+AssembledRun assemble_trajectories(std::vector<CellSample> samples, const std::vector<std::string>& sources,
+                                   std::int64_t scale, int dimension, std::vector<std::int64_t> frame_times) {
+  AssembledRun run;
+  kinetic::Trajectories& t = run.trajectories;
+  t.scale = scale;
+  t.dimension = dimension;
+  if (frame_times.empty())
+    for (const CellSample& s : samples)
+      frame_times.push_back(s.mcs);
+  std::sort(frame_times.begin(), frame_times.end());
+  frame_times.erase(std::unique(frame_times.begin(), frame_times.end()), frame_times.end());
+  t.frame_times = frame_times;
+
+  std::sort(samples.begin(), samples.end(), [](const CellSample& a, const CellSample& b) {
+    return std::tie(a.cell_id, a.mcs, a.source, a.line) < std::tie(b.cell_id, b.mcs, b.source, b.line);
+  });
+  const bool have_volumes =
+      !samples.empty() &&
+      std::all_of(samples.begin(), samples.end(), [](const CellSample& s) { return s.volume >= 0; });
+
+  std::vector<std::int64_t> single_frame_ids;
+  std::size_t i = 0;
+  while (i < samples.size()) {
+    const CellSample& first = samples[i];
+    std::size_t previous_frame = 0;
+    bool open = false;
+    for (; i < samples.size() && samples[i].cell_id == first.cell_id; ++i) {
+      const CellSample& s = samples[i];
+      const auto at = std::lower_bound(frame_times.begin(), frame_times.end(), s.mcs);
+      if (at == frame_times.end() || *at != s.mcs)
+        throw InputError(location(s, sources) + ": cell " + std::to_string(s.cell_id) + " at MCS " +
+                         std::to_string(s.mcs) + " which is not a frame of the run");
+      const std::size_t frame = static_cast<std::size_t>(at - frame_times.begin());
+      if (s.type != first.type)
+        throw InputError(location(s, sources) + ": cell " + std::to_string(s.cell_id) + " has type " +
+                         std::to_string(s.type) + " at MCS " + std::to_string(s.mcs) + " but type " +
+                         std::to_string(first.type) + " at MCS " + std::to_string(first.mcs) + " (" +
+                         location(first, sources) + ")");
+      if (open && frame == previous_frame)
+        throw InputError(location(s, sources) + ": duplicate entry for cell " + std::to_string(s.cell_id) +
+                         " at MCS " + std::to_string(s.mcs) + " (first at " +
+                         location(samples[i - 1], sources) + ")");
+      if (!open || frame != previous_frame + 1) {
+        if (open)
+          run.warnings.push_back("cell " + std::to_string(s.cell_id) + " is missing from MCS " +
+                                 std::to_string(frame_times[previous_frame + 1]) + " to " +
+                                 std::to_string(frame_times[frame - 1]) +
+                                 ": split into separate trajectories (MATH.md 2.1)");
+        kinetic::Trajectory traj;
+        traj.cell_id = s.cell_id;
+        traj.type = s.type;
+        traj.first_frame = frame;
+        t.cells.push_back(std::move(traj));
+        if (have_volumes)
+          run.volumes.emplace_back();
+        open = true;
+      }
+      t.cells.back().positions.push_back(s.position);
+      if (have_volumes)
+        run.volumes.back().push_back(s.volume);
+      previous_frame = frame;
+    }
+  }
+  for (const kinetic::Trajectory& c : t.cells)
+    if (c.positions.size() == 1 && frame_times.size() > 1)
+      single_frame_ids.push_back(c.cell_id);
+  if (!single_frame_ids.empty()) {
+    std::string ids;
+    for (std::size_t k = 0; k < single_frame_ids.size() && k < 10; ++k)
+      ids += (k ? ", " : "") + std::to_string(single_frame_ids[k]);
+    if (single_frame_ids.size() > 10)
+      ids += ", ...";
+    run.warnings.push_back(std::to_string(single_frame_ids.size()) +
+                           " trajectories are present on a single frame (cells " + ids +
+                           "): inserted and deleted in the same frame batch (MATH.md 2.1, 5.6)");
+  }
+  return run;
+}
+
+} // namespace medusa::io

@@ -1,0 +1,105 @@
+#include "io_test_support.h"
+#include "medusa/io/csv_reader.h"
+
+#include <fstream>
+
+using namespace medusa;
+using namespace medusa::io;
+using Catch::Matchers::Contains;
+
+namespace {
+std::string csv_error(const std::string& fixture) {
+  return test::input_error([&] { read_csv(test::data("io/" + fixture)); });
+}
+} // namespace
+
+TEST_CASE("The CSV reader gives exact grid positions, types, names and volumes", "[io][csv]") {
+  const CsvContents c = read_csv(test::data("io/gap.csv"));
+  REQUIRE(c.samples.size() == 9);
+  CHECK(c.has_volume);
+  const CellSample& s = c.samples[1];
+  CHECK(s.mcs == 0);
+  CHECK(s.cell_id == 2);
+  CHECK(s.type == 2);
+  CHECK(s.position == kinetic::GridPoint{4500000, 5250000, 6125000});
+  CHECK(s.volume == 120);
+  CHECK(s.line == 3);
+  CHECK(c.samples[8].position == kinetic::GridPoint{-1000001, 1, 10000000});
+  CHECK(c.type_names == std::vector<std::string>{"", "Condensing", "NonCondensing"});
+}
+
+TEST_CASE("CSV column names are configurable and volume and type name are optional", "[io][csv]") {
+  test::TempDir dir;
+  std::ofstream(dir.file("renamed.csv")) << "t,id,x,y,z,kind\n5,9,1.5,2,3,1\n";
+  CsvOptions o;
+  o.columns = {"t", "id", "kind", "x", "y", "z", "", ""};
+  const CsvContents c = read_csv(dir.file("renamed.csv"), o);
+  REQUIRE(c.samples.size() == 1);
+  CHECK(c.samples[0].mcs == 5);
+  CHECK(c.samples[0].cell_id == 9);
+  CHECK(c.samples[0].type == 1);
+  CHECK(c.samples[0].position == kinetic::GridPoint{1500000, 2000000, 3000000});
+  CHECK(c.samples[0].volume == -1);
+  CHECK_FALSE(c.has_volume);
+  CHECK(c.type_names.empty());
+}
+
+TEST_CASE("A CSV without a required column names the column and the file", "[io][csv]") {
+  CHECK_THAT(csv_error("missing_column.csv"), Contains("missing_column.csv:1") && Contains("'zCOM'"));
+}
+
+TEST_CASE("A non-numeric CSV value names file, line, cell and column", "[io][csv]") {
+  CHECK_THAT(csv_error("non_numeric.csv"),
+             Contains("non_numeric.csv:3") && Contains("cell 2") && Contains("xCOM") && Contains("'abc'"));
+}
+
+TEST_CASE("A NaN CSV value names file, line and cell", "[io][csv]") {
+  CHECK_THAT(csv_error("nan.csv"), Contains("nan.csv:4") && Contains("cell 3") && Contains("yCOM") &&
+                                       Contains("not a finite number"));
+}
+
+TEST_CASE("A CSV value with more than six decimals is refused at scale 10^6", "[io][csv]") {
+  CHECK_THAT(csv_error("too_many_decimals.csv"),
+             Contains("too_many_decimals.csv:3") && Contains("cell 2") && Contains("7 decimals"));
+  CsvOptions finer;
+  finer.scale = 10000000;
+  const CsvContents c = read_csv(test::data("io/too_many_decimals.csv"), finer);
+  CHECK(c.samples[1].position[0] == 40000005);
+}
+
+TEST_CASE("A duplicate (MCS, cell) row in a CSV names both lines", "[io][csv]") {
+  CHECK_THAT(csv_error("duplicate.csv"),
+             Contains("duplicate.csv:5") && Contains("cell 2") && Contains("MCS 0") && Contains("line 3"));
+}
+
+TEST_CASE("A cell that changes type in a CSV is refused", "[io][csv]") {
+  CHECK_THAT(csv_error("type_change.csv"), Contains("type_change.csv:5") && Contains("cell 2") &&
+                                               Contains("type changes from 2 (line 3) to 1"));
+}
+
+TEST_CASE("A CSV row with the wrong number of fields names file and line", "[io][csv]") {
+  CHECK_THAT(csv_error("wrong_fields.csv"),
+             Contains("wrong_fields.csv:3") && Contains("expected 9 fields") && Contains("found 8"));
+}
+
+TEST_CASE("A truncated gzip CSV is refused naming the file", "[io][csv]") {
+  CHECK_THAT(csv_error("truncated.csv.gz"), Contains("truncated.csv.gz") && Contains("truncated"));
+}
+
+TEST_CASE("A corrupt gzip CSV is refused naming the file", "[io][csv]") {
+  CHECK_THAT(csv_error("corrupt.csv.gz"), Contains("corrupt.csv.gz") && Contains("corrupt"));
+}
+
+TEST_CASE("An unreadable CSV is refused naming the file", "[io][csv]") {
+  CHECK_THAT(csv_error("no_such_file.csv"), Contains("no_such_file.csv") && Contains("cannot open"));
+}
+
+TEST_CASE("A header-only or empty CSV is refused", "[io][csv]") {
+  test::TempDir dir;
+  std::ofstream(dir.file("empty.csv")) << "";
+  std::ofstream(dir.file("header.csv")) << "mcs,cell_id,cluster_id,type_id,type_name,xCOM,yCOM,zCOM,volume\n";
+  CHECK_THAT(test::input_error([&] { read_csv(dir.file("empty.csv")); }),
+             Contains("empty.csv") && Contains("empty"));
+  CHECK_THAT(test::input_error([&] { read_csv(dir.file("header.csv")); }),
+             Contains("header.csv") && Contains("no data"));
+}

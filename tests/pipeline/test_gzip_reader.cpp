@@ -1,0 +1,110 @@
+#include "io_test_support.h"
+#include "medusa/io/gzip_reader.h"
+
+#include <fstream>
+#include <zlib.h>
+
+using namespace medusa;
+using namespace medusa::io;
+using Catch::Matchers::Contains;
+
+namespace {
+void write_gzip(const std::string& path, const std::string& text) {
+  gzFile f = gzopen(path.c_str(), "wb");
+  REQUIRE(f != nullptr);
+  REQUIRE(gzwrite(f, text.data(), static_cast<unsigned>(text.size())) == static_cast<int>(text.size()));
+  REQUIRE(gzclose(f) == Z_OK);
+}
+} // namespace
+
+TEST_CASE("Plain and gzip files read the same lines and tokens", "[io][gzip]") {
+  test::TempDir dir;
+  const std::string text = "a,b\r\n  12 34\n\nlast line without newline";
+  { std::ofstream(dir.file("plain.txt"), std::ios::binary) << text; }
+  write_gzip(dir.file("packed.txt.gz"), text);
+  for (const std::string name : {"plain.txt", "packed.txt.gz"}) {
+    CAPTURE(name);
+    GzipReader lines(dir.file(name));
+    std::string line;
+    REQUIRE(lines.next_line(line));
+    CHECK(line == "a,b");
+    REQUIRE(lines.next_line(line));
+    CHECK(line == "  12 34");
+    REQUIRE(lines.next_line(line));
+    CHECK(line.empty());
+    REQUIRE(lines.next_line(line));
+    CHECK(line == "last line without newline");
+    CHECK(lines.line() == 4);
+    CHECK_FALSE(lines.next_line(line));
+
+    GzipReader tokens(dir.file(name));
+    std::vector<std::pair<std::string, std::int64_t>> got;
+    std::string_view t;
+    while (tokens.next_token(t))
+      got.emplace_back(std::string(t), tokens.line());
+    const std::vector<std::pair<std::string, std::int64_t>> expected = {
+        {"a,b", 1}, {"12", 2}, {"34", 2}, {"last", 4}, {"line", 4}, {"without", 4}, {"newline", 4}};
+    CHECK(got == expected);
+  }
+}
+
+TEST_CASE("Tokens spanning buffer refills come out whole", "[io][gzip]") {
+  test::TempDir dir;
+  std::string text;
+  for (int k = 0; k < 100000; ++k)
+    text += std::to_string(k) + (k % 9 == 8 ? " \n" : " ");
+  write_gzip(dir.file("many.gz"), text);
+  GzipReader in(dir.file("many.gz"));
+  std::string_view t;
+  int k = 0;
+  while (in.next_token(t)) {
+    REQUIRE(t == std::to_string(k));
+    ++k;
+  }
+  CHECK(k == 100000);
+}
+
+TEST_CASE("A truncated gzip file is an error naming the file", "[io][gzip]") {
+  const std::string path = test::data("io/truncated.csv.gz");
+  const std::string m = test::input_error([&] {
+    GzipReader in(path);
+    std::string line;
+    while (in.next_line(line)) {
+    }
+  });
+  CHECK_THAT(m, Contains(path) && Contains("truncated"));
+}
+
+TEST_CASE("A corrupt gzip file is an error naming the file", "[io][gzip]") {
+  const std::string path = test::data("io/corrupt.csv.gz");
+  const std::string m = test::input_error([&] {
+    GzipReader in(path);
+    std::string line;
+    while (in.next_line(line)) {
+    }
+  });
+  CHECK_THAT(m, Contains(path) && Contains("corrupt"));
+}
+
+TEST_CASE("A missing file is an error naming it", "[io][gzip]") {
+  CHECK_THAT(test::input_error([] { GzipReader in("/nonexistent/cells.csv.gz"); }),
+             Contains("/nonexistent/cells.csv.gz") && Contains("cannot open"));
+}
+
+TEST_CASE("Raw bytes follow a text line exactly", "[io][gzip]") {
+  test::TempDir dir;
+  const std::string text = std::string("HEAD 3\n") + std::string("\x00\n\xff", 3) + "\nTAIL";
+  write_gzip(dir.file("b.gz"), text);
+  GzipReader in(dir.file("b.gz"));
+  std::string line;
+  REQUIRE(in.next_line(line));
+  char bytes[3];
+  in.read_bytes(bytes, 3);
+  CHECK(bytes[0] == '\0');
+  CHECK(bytes[1] == '\n');
+  CHECK(static_cast<unsigned char>(bytes[2]) == 0xff);
+  std::string_view t;
+  REQUIRE(in.next_token(t));
+  CHECK(t == "TAIL");
+  CHECK_THAT(test::input_error([&] { in.read_bytes(bytes, 1); }), Contains("b.gz"));
+}

@@ -1,0 +1,182 @@
+#include "io_test_support.h"
+#include "medusa/io/run_reader.h"
+
+#include <fstream>
+
+using namespace medusa;
+using namespace medusa::io;
+using Catch::Matchers::Contains;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::int64_t S = 1000000;
+
+void write(const std::string& path, const std::string& text) {
+  fs::create_directories(fs::path(path).parent_path());
+  std::ofstream(path) << text;
+}
+
+std::string xml(const std::string& dims, const std::string& extra = "") {
+  return "<CompuCell3D>\n  <Potts>\n    <Dimensions " + dims + "/>\n" + extra +
+         "  </Potts>\n  <Plugin Name=\"CellType\">\n    <CellType TypeName=\"Medium\" TypeId=\"0\"/>\n"
+         "    <CellType TypeName=\"A\" TypeId=\"1\"/>\n    <CellType TypeName=\"B\" TypeId=\"2\"/>\n"
+         "  </Plugin>\n</CompuCell3D>\n";
+}
+
+bool has_warning(const RunData& r, const std::string& part) {
+  for (const std::string& w : r.warnings)
+    if (w.find(part) != std::string::npos)
+      return true;
+  return false;
+}
+
+} // namespace
+
+TEST_CASE("A CSV run becomes trajectories and a cell missing from a middle frame is split", "[io][run]") {
+  const RunData r = read_run(test::data("io/gap.csv"));
+  const kinetic::Trajectories& t = r.trajectories;
+  CHECK(r.used == RunSource::csv);
+  CHECK(r.position_convention == "csv-centres");
+  CHECK(r.sources == std::vector<std::string>{test::data("io/gap.csv")});
+  CHECK(t.dimension == 3);
+  CHECK(t.scale == S);
+  CHECK(t.frame_times == std::vector<std::int64_t>{0, 100, 200});
+  REQUIRE(t.cells.size() == 5);
+  const std::vector<std::int64_t> ids = {t.cells[0].cell_id, t.cells[1].cell_id, t.cells[2].cell_id,
+                                         t.cells[3].cell_id, t.cells[4].cell_id};
+  CHECK(ids == std::vector<std::int64_t>{1, 2, 3, 3, 4});
+  CHECK(t.cells[0].positions == std::vector<kinetic::GridPoint>{{1000000, 2000000, 3000000},
+                                                                {1500000, 2000000, 3000000},
+                                                                {2000000, 2500000, 3000000}});
+  CHECK(t.cells[1].type == 2);
+  CHECK(t.cells[2].first_frame == 0);
+  CHECK(t.cells[2].positions == std::vector<kinetic::GridPoint>{{7000000, 8000000, 9000000}});
+  CHECK(t.cells[3].first_frame == 2);
+  CHECK(t.cells[3].positions == std::vector<kinetic::GridPoint>{{7000000, 8500000, 9000000}});
+  CHECK(t.cells[4].first_frame == 2);
+  CHECK(t.cells[4].positions == std::vector<kinetic::GridPoint>{{-1000001, 1, 10000000}});
+  CHECK(r.volumes == CellVolumes{{125, 126, 124}, {120, 119, 121}, {130}, {131}, {20}});
+  CHECK(t.type_names == std::vector<std::string>{"", "Condensing", "NonCondensing"});
+  CHECK(has_warning(r, "cell 3 is missing from MCS 100 to 100"));
+  CHECK(has_warning(r, "3 trajectories are present on a single frame (cells 3, 3, 4)"));
+}
+
+TEST_CASE("A cell changing type between VTK frames is refused naming the file and cell", "[io][run]") {
+  const std::string m = test::input_error([] { read_run(test::data("io/run_type_change")); });
+  CHECK_THAT(m,
+             Contains("Step_10.vtk") && Contains("cell 1") && Contains("type 2") && Contains("Step_0.vtk"));
+}
+
+TEST_CASE("VTK centroids off the grid need the snap option", "[io][run]") {
+  test::TempDir dir;
+  fs::create_directories(dir.path() / "LatticeData");
+  fs::copy_file(test::data("io/vtk_split_cell.vtk"), dir.path() / "LatticeData" / "Step_0.vtk");
+  fs::copy_file(test::data("io/vtk_split_cell.vtk"), dir.path() / "LatticeData" / "Step_3.vtk");
+  const std::string m = test::input_error([&] { read_run(dir.path().string()); });
+  CHECK_THAT(m, Contains("Step_0.vtk") && Contains("cell 2") && Contains("3 voxels") && Contains("--snap"));
+
+  RunOptions snap;
+  snap.snap = true;
+  const RunData r = read_run(dir.path().string(), snap);
+  CHECK(r.used == RunSource::vtk);
+  CHECK(r.position_convention == "vtk-centroids-voxel-corner");
+  CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 3});
+  REQUIRE(r.trajectories.cells.size() == 2);
+  CHECK(r.trajectories.cells[0].positions ==
+        std::vector<kinetic::GridPoint>(2, kinetic::GridPoint{1000000, 800000, 200000}));
+  CHECK(r.trajectories.cells[1].positions ==
+        std::vector<kinetic::GridPoint>(2, kinetic::GridPoint{2666667, 333333, 333333}));
+  CHECK(r.volumes == CellVolumes{{5, 5}, {3, 3}});
+  CHECK(r.snap.snapped);
+  CHECK(r.snap.moved == 2);
+  CHECK(r.snap.max_displacement_num == 1);
+  CHECK(r.snap.max_displacement_den == 3);
+  CHECK(has_warning(r, "snapped 2 VTK centroids"));
+}
+
+TEST_CASE("A VTK run whose centroids lie on the grid needs no snapping", "[io][run]") {
+  test::TempDir dir;
+  fs::create_directories(dir.path() / "LatticeData");
+  fs::copy_file(test::data("io/vtk_split_cell_exact.vtk"), dir.path() / "LatticeData" / "Step_5.vtk");
+  write(dir.file("Simulation/run.xml"), xml("x=\"4\" y=\"3\" z=\"2\""));
+  const RunData r = read_run(dir.path().string());
+  REQUIRE(r.trajectories.cells.size() == 1);
+  CHECK(r.trajectories.cells[0].positions == std::vector<kinetic::GridPoint>{{1000000, 800000, 200000}});
+  CHECK(r.trajectories.type_names == std::vector<std::string>{"Medium", "A", "B"});
+  CHECK(r.snap.moved == 0);
+  CHECK(r.simulation.has_value());
+}
+
+TEST_CASE("A VTK run whose lattice differs from the CC3DML is refused", "[io][run]") {
+  test::TempDir dir;
+  fs::create_directories(dir.path() / "LatticeData");
+  fs::copy_file(test::data("io/vtk_split_cell_exact.vtk"), dir.path() / "LatticeData" / "Step_5.vtk");
+  write(dir.file("Simulation/run.xml"), xml("x=\"4\" y=\"3\" z=\"3\""));
+  CHECK_THAT(test::input_error([&] { read_run(dir.path().string()); }),
+             Contains("Step_5.vtk") && Contains("differ") && Contains("run.xml"));
+}
+
+TEST_CASE("A periodic run is refused unless periodic-as-open is allowed", "[io][run]") {
+  test::TempDir dir;
+  fs::copy_file(test::data("io/gap.csv"), dir.path() / "cells.csv");
+  write(dir.file("Simulation/run.xml"),
+        xml("x=\"20\" y=\"20\" z=\"20\"",
+            "    <Boundary_x>Periodic</Boundary_x>\n    <Boundary_z>Periodic</Boundary_z>\n"));
+  CHECK_THAT(test::input_error([&] { read_run(dir.path().string()); }),
+             Contains("run.xml") && Contains("periodic along x,z"));
+  RunOptions open;
+  open.allow_periodic_as_open = true;
+  const RunData r = read_run(dir.path().string(), open);
+  CHECK(r.trajectories.cells.size() == 5);
+  CHECK(has_warning(r, "periodic boundaries along x,z"));
+}
+
+TEST_CASE("A run with lattice z extent 1 is planar", "[io][run]") {
+  test::TempDir dir;
+  write(dir.file("cells.csv"),
+        "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n0,1,1,1.5,2,0\n0,2,2,3,4,0\n10,1,1,1,2,0\n"
+        "10,2,2,3,4.25,0\n");
+  write(dir.file("Simulation/run.xml"), xml("x=\"10\" y=\"10\" z=\"1\""));
+  const RunData r = read_run(dir.path().string());
+  CHECK(r.trajectories.dimension == 2);
+  CHECK(r.trajectories.cells.size() == 2);
+  CHECK(r.volumes.empty());
+  // Without the lattice the same data stays 3D, with a warning.
+  RunOptions o;
+  o.z_extent = 60;
+  const RunData r3 = read_run(dir.file("cells.csv"), o);
+  CHECK(r3.trajectories.dimension == 3);
+  CHECK(has_warning(r3, "every z is equal"));
+}
+
+TEST_CASE("A planar run with differing z is refused naming the line and cell", "[io][run]") {
+  test::TempDir dir;
+  write(dir.file("cells.csv"), "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n0,1,1,1.5,2,0\n0,2,2,3,4,0.5\n");
+  RunOptions o;
+  o.z_extent = 1;
+  CHECK_THAT(test::input_error([&] { read_run(dir.file("cells.csv"), o); }),
+             Contains("cells.csv:3") && Contains("cell 2") && Contains("z extent 1"));
+}
+
+TEST_CASE("The source option chooses between VTK snapshots and the CSV", "[io][run]") {
+  test::TempDir dir;
+  fs::create_directories(dir.path() / "LatticeData");
+  fs::copy_file(test::data("io/vtk_split_cell_exact.vtk"), dir.path() / "LatticeData" / "Step_5.vtk");
+  fs::copy_file(test::data("io/gap.csv"), dir.path() / "cells.csv");
+  CHECK(read_run(dir.path().string()).used == RunSource::vtk);
+  RunOptions csv;
+  csv.source = RunSource::csv;
+  const RunData r = read_run(dir.path().string(), csv);
+  CHECK(r.used == RunSource::csv);
+  CHECK(r.trajectories.cells.size() == 5);
+  CHECK(has_warning(r, "no CC3DML file"));
+}
+
+TEST_CASE("A folder with neither snapshots nor CSV, or a missing path, is refused", "[io][run]") {
+  test::TempDir dir;
+  CHECK_THAT(test::input_error([&] { read_run(dir.path().string()); }), Contains(dir.path().string()));
+  CHECK_THAT(test::input_error([] { read_run("/nonexistent/run"); }), Contains("/nonexistent/run"));
+  CHECK_THAT(test::input_error([] { read_run(test::data("io/vtk_split_cell.vtk")); }),
+             Contains("vtk_split_cell.vtk") && Contains("folder"));
+}
