@@ -141,13 +141,19 @@ Medusa read_store(const std::string& path) {
   if (!file.valid())
     h5::fail(path, "cannot open it (missing, not an HDF5 file, truncated or corrupt)");
   const hid_t f = file.get();
-  if (H5Aexists(f, L::format) <= 0 || h5::read_string_attribute(f, L::format, path) != L::format_name)
+  const htri_t has_format = H5Aexists(f, L::format);
+  if (has_format < 0)
+    h5::fail(path, "cannot read the root group");
+  if (has_format == 0 || h5::read_string_attribute(f, L::format, path) != L::format_name)
     corrupt(path, "not a medusa store (no format attribute \"medusa-store\")");
   const std::int64_t version = h5::read_int_attribute(f, L::format_version, path);
   if (version != store_format_version)
     corrupt(path, "format version " + std::to_string(version) + " is not supported (expected " +
                       std::to_string(store_format_version) + ")");
-  if (H5Aexists(f, L::complete) <= 0 || h5::read_int_attribute(f, L::complete, path) != 1)
+  const htri_t has_complete = H5Aexists(f, L::complete);
+  if (has_complete < 0)
+    h5::fail(path, "cannot read the root group");
+  if (has_complete == 0 || h5::read_int_attribute(f, L::complete, path) != 1)
     corrupt(path, "incomplete (the writer did not finish)");
 
   Medusa m;

@@ -214,7 +214,8 @@ struct Generator {
           continue;
         bool ok = true;
         for (std::size_t i = 0; i < s.size() && ok; ++i) {
-          std::vector<VertexId> v(s.facet(i).begin(), s.facet(i).end());
+          const Simplex tau = s.facet(i);
+          std::vector<VertexId> v(tau.begin(), tau.end());
           v.push_back(p);
           ok = added.count(s.facet(i)) || (v.size() <= 4 && k.count(Simplex::from_range(v.begin(), v.end())));
         }
