@@ -15,6 +15,14 @@ bool Medusa::has_type(const Cell& c, int type) const {
   return true;
 }
 
+std::vector<CellId> Medusa::cells_of_dimension(int k) const {
+  std::vector<CellId> out;
+  for (const Cell& c : cells)
+    if (c.dim() == k)
+      out.push_back(c.id);
+  return out;
+}
+
 void MedusaCollector::run(const RunInfo& info, const kinetic::Trajectories& input) {
   medusa_.run = info;
   medusa_.input = input;

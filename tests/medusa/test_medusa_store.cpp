@@ -239,23 +239,6 @@ TEST_CASE("a store with flipped bytes is rejected or read unchanged and never re
   CHECK(rejected > unchanged);
 }
 
-TEST_CASE("an unfinished writer leaves no file at the final name", "[medusa][store][sanitize]") {
-  const std::string path = temp_path("unfinished.h5");
-  std::string temporary;
-  {
-    StoreWriter writer(path);
-    temporary = writer.temporary_path();
-    MedusaBuilder builder(writer);
-    builder.set_run(test_run_info(), dummy_input(5, 2));
-    const Stream s = appendix_b_stream();
-    builder.initial(s.t0, s.initial);
-    CHECK(fs::exists(temporary));
-    CHECK_FALSE(fs::exists(path));
-  }
-  CHECK_FALSE(fs::exists(path));
-  CHECK_FALSE(fs::exists(temporary));
-}
-
 TEST_CASE("a writer killed mid-write leaves no file at the final name and an unreadable temporary",
           "[medusa][store]") {
   const std::string path = temp_path("killed.h5");
@@ -282,16 +265,6 @@ TEST_CASE("a writer killed mid-write leaves no file at the final name and an unr
   Cleanup cleanup{{temporary}};
   REQUIRE(fs::exists(temporary));
   CHECK_THROWS_AS(read_store(temporary), medusa::StoreError);
-}
-
-TEST_CASE("a store that cannot be created raises a StoreError naming the path", "[medusa][store][sanitize]") {
-  const std::string path = temp_path("no-such-dir") + "/out.h5";
-  try {
-    StoreWriter writer(path);
-    FAIL("created a store in a missing directory");
-  } catch (const medusa::StoreError& e) {
-    CHECK(std::string(e.what()).find(path) != std::string::npos);
-  }
 }
 
 TEST_CASE("stores of another format version or without the complete flag are rejected",

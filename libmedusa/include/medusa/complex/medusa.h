@@ -21,6 +21,10 @@ struct Medusa {
   std::vector<Cell> cells;          // cells[i].id == i
 
   const Cell& cell(CellId id) const { return cells.at(static_cast<std::size_t>(id)); }
+  // The boundary of a cell over Z/2: its facet cells, whose lifetimes contain its own (MATH.md 6.4).
+  const std::vector<CellId>& boundary(CellId id) const { return cell(id).facets; }
+  // The ids of the cells of dimension k, increasing.
+  std::vector<CellId> cells_of_dimension(int k) const;
   // The type of every vertex of `c` is `type` (MATH.md 7.4); needs the input.
   bool has_type(const Cell& c, int type) const;
 };
