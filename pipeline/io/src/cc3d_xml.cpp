@@ -4,8 +4,6 @@
 #include "medusa/io/gzip_reader.h"
 #include "medusa/kinetic/error.h"
 
-#include <regex>
-
 namespace medusa::io {
 
 namespace {
@@ -18,11 +16,62 @@ std::string without_comments(std::string text) {
   return text;
 }
 
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+// Attribute text of every tag `<name ...>` (name followed by a blank, so <CellTypeX> is not <CellType>).
+std::vector<std::string> tags(const std::string& text, const std::string& name) {
+  std::vector<std::string> found;
+  const std::string open = "<" + name;
+  for (std::size_t at = text.find(open); at != std::string::npos; at = text.find(open, at + 1)) {
+    const std::size_t start = at + open.size();
+    if (start >= text.size() || !is_blank(text[start]))
+      continue;
+    const std::size_t close = text.find('>', start);
+    if (close == std::string::npos)
+      break;
+    found.push_back(text.substr(start, close - start));
+  }
+  return found;
+}
+
 // Value of attribute `name` in the attribute text of one tag, or "" if absent.
 std::string attribute(const std::string& attributes, const std::string& name) {
-  const std::regex pattern("(^|\\s)" + name + "\\s*=\\s*[\"']([^\"']*)[\"']");
-  std::smatch m;
-  return std::regex_search(attributes, m, pattern) ? m[2].str() : std::string();
+  for (std::size_t at = attributes.find(name); at != std::string::npos; at = attributes.find(name, at + 1)) {
+    if (at > 0 && !is_blank(attributes[at - 1]))
+      continue;
+    std::size_t k = at + name.size();
+    while (k < attributes.size() && is_blank(attributes[k]))
+      ++k;
+    if (k >= attributes.size() || attributes[k] != '=')
+      continue;
+    ++k;
+    while (k < attributes.size() && is_blank(attributes[k]))
+      ++k;
+    if (k >= attributes.size() || (attributes[k] != '"' && attributes[k] != '\''))
+      continue;
+    const std::size_t end = attributes.find(attributes[k], k + 1);
+    if (end == std::string::npos)
+      return {};
+    return attributes.substr(k + 1, end - k - 1);
+  }
+  return {};
+}
+
+// Trimmed text between <name> and the next '<', or "" if the element is absent.
+std::string element_text(const std::string& text, const std::string& name) {
+  const std::string open = "<" + name + ">";
+  const std::size_t at = text.find(open);
+  if (at == std::string::npos)
+    return {};
+  std::size_t start = at + open.size();
+  std::size_t end = text.find('<', start);
+  if (end == std::string::npos)
+    end = text.size();
+  while (start < end && is_blank(text[start]))
+    ++start;
+  while (end > start && is_blank(text[end - 1]))
+    --end;
+  return text.substr(start, end - start);
 }
 
 } // namespace
@@ -35,25 +84,19 @@ Cc3dSimulation read_cc3d_xml(const std::string& path) {
   text = without_comments(text);
   Cc3dSimulation sim;
   sim.path = path;
-  std::smatch m;
-  if (!std::regex_search(text, m, std::regex(R"(<Dimensions\s([^>]*)>)")))
+  const std::vector<std::string> dimensions = tags(text, "Dimensions");
+  if (dimensions.empty())
     throw InputError(path + ": no <Dimensions x=\"..\" y=\"..\" z=\"..\"/> in the CC3DML file");
-  const std::string dims = m[1].str();
   const char* axes[3] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
-    const std::string v = attribute(dims, axes[a]);
+    const std::string v = attribute(dimensions.front(), axes[a]);
     // CC3D treats a missing dimension as 1.
     sim.dimensions[a] = v.empty() ? 1 : parse_integer(v, path + ": <Dimensions " + axes[a] + "=>");
     if (sim.dimensions[a] <= 0)
       throw InputError(path + ": <Dimensions> " + axes[a] + " must be positive");
+    sim.periodic[a] = element_text(text, std::string("Boundary_") + axes[a]) == "Periodic";
   }
-  const std::regex boundary(R"(<Boundary_([xyz])>\s*([A-Za-z]+)\s*</Boundary_[xyz]>)");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), boundary); it != std::sregex_iterator(); ++it)
-    sim.periodic[(*it)[1].str()[0] - 'x'] = (*it)[2].str() == "Periodic";
-  const std::regex cell_type(R"(<CellType\s([^>]*)>)");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), cell_type); it != std::sregex_iterator();
-       ++it) {
-    const std::string attrs = (*it)[1].str();
+  for (const std::string& attrs : tags(text, "CellType")) {
     const std::string name = attribute(attrs, "TypeName"), id = attribute(attrs, "TypeId");
     if (name.empty() || id.empty())
       continue;

@@ -41,7 +41,8 @@ std::optional<Cc3dSimulation> find_simulation(const fs::path& run, std::vector<s
   return std::nullopt;
 }
 
-void check_periodic(const std::optional<Cc3dSimulation>& sim, const RunOptions& options, RunData& run) {
+void check_periodic(const std::optional<Cc3dSimulation>& sim, const RunOptions& options, RunData& run,
+                    const std::string& consequence) {
   if (!sim)
     return;
   const std::string axes = periodic_axes(*sim);
@@ -51,7 +52,7 @@ void check_periodic(const std::optional<Cc3dSimulation>& sim, const RunOptions& 
     throw InputError(sim->path + ": the run is periodic along " + axes +
                      "; medusa needs open boundaries (rerun with --periodic-as-open to treat them as open)");
   run.warnings.push_back("periodic boundaries along " + axes + " (" + sim->path +
-                         ") treated as open: a cell crossing a seam jumps across the lattice");
+                         ") treated as open: " + consequence);
 }
 
 void name_types(RunData& run, const std::vector<std::string>& from_source) {
@@ -82,7 +83,8 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
   run.simulation = simulation;
   run.position_convention = "vtk-centroids-voxel-corner";
   run.snap.snapped = options.snap;
-  check_periodic(simulation, options, run);
+  check_periodic(simulation, options, run,
+                 "a cell straddling a seam gets the plain mean of its voxels, far from its body");
   if (files.empty())
     throw InputError("no VTK snapshots to read");
   std::vector<std::pair<std::int64_t, std::string>> by_mcs;
@@ -155,7 +157,8 @@ RunData read_csv_run(const std::string& path, const RunOptions& options,
   run.used = RunSource::csv;
   run.simulation = simulation;
   run.position_convention = "csv-centres";
-  check_periodic(simulation, options, run);
+  check_periodic(simulation, options, run,
+                 "CC3D wraps centres into the lattice, so a cell crossing a seam jumps");
   CsvContents csv = read_csv(path, CsvOptions{options.csv_columns, options.scale});
   run.sources.push_back(path);
 

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cstring>
 #include <optional>
-#include <regex>
 #include <unordered_map>
 
 namespace medusa::io {
@@ -309,8 +308,19 @@ VtkSnapshot read_vtk_snapshot(const std::string& path, std::int64_t scale) {
 }
 
 bool is_vtk_step_name(const std::string& filename) {
-  static const std::regex pattern(R"(Step_[0-9]+\.vtk(\.gz)?)");
-  return std::regex_match(filename, pattern);
+  const std::string prefix = "Step_";
+  std::size_t end = filename.size();
+  if (filename.size() > 3 && filename.compare(end - 3, 3, ".gz") == 0)
+    end -= 3;
+  if (end < 4 || filename.compare(end - 4, 4, ".vtk") != 0)
+    return false;
+  end -= 4;
+  if (filename.compare(0, prefix.size(), prefix) != 0 || end <= prefix.size())
+    return false;
+  for (std::size_t k = prefix.size(); k < end; ++k)
+    if (filename[k] < '0' || filename[k] > '9')
+      return false;
+  return true;
 }
 
 std::int64_t vtk_step_mcs(const std::string& path) {
