@@ -79,7 +79,7 @@ TEST_CASE("A cell that changes type in a CSV is refused", "[io][csv]") {
 
 TEST_CASE("A CSV row with the wrong number of fields names file and line", "[io][csv]") {
   CHECK_THAT(csv_error("wrong_fields.csv"),
-             Contains("wrong_fields.csv:3") && Contains("expected 9 fields") && Contains("found 8"));
+             Contains("wrong_fields.csv:3 (cell 2)") && Contains("expected 9 fields") && Contains("found 8"));
 }
 
 TEST_CASE("A truncated gzip CSV is refused naming the file", "[io][csv]") {

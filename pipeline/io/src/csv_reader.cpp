@@ -82,9 +82,13 @@ CsvContents read_csv(const std::string& path, const CsvOptions& options) {
       continue;
     const std::string at = path + ":" + std::to_string(in.line());
     const std::vector<std::string_view> f = split_commas(line);
-    if (f.size() != n_fields)
-      throw InputError(at + ": expected " + std::to_string(n_fields) + " fields as in the header, found " +
-                       std::to_string(f.size()));
+    if (f.size() != n_fields) {
+      std::int64_t id = 0;
+      const std::string which =
+          f.size() > col_id && try_parse_integer(f[col_id], id) ? " (cell " + std::to_string(id) + ")" : "";
+      throw InputError(at + which + ": expected " + std::to_string(n_fields) +
+                       " fields as in the header, found " + std::to_string(f.size()));
+    }
     CellSample s;
     s.line = in.line();
     s.cell_id = parse_integer(f[col_id], at + ": column " + c.cell_id);
