@@ -2,6 +2,7 @@
 // the comment above its case.
 #include "cell_list.h"
 #include "medusa/kinetic/error.h"
+#include "medusa/persistence/degree_check.h"
 #include "medusa/persistence/diagram.h"
 #include "medusa/persistence/diagram_text.h"
 #include "medusa/persistence/euler.h"
@@ -207,8 +208,28 @@ TEST_CASE("The flip of MATH.md Appendix B gives one essential class and only zer
   // At t0 seven triangles meet five independent loops: two open the zero-length H2 classes filled by
   // abcd and abce; at t* bde and cde open the two filled by abde and acde.
   CHECK(h2.size() == 4);
+  CHECK_NOTHROW(check_homology_degrees(f));
   const Diagram r = reverse_diagram(cells);
   CHECK(points_of(r) == std::vector<std::tuple<int, double, double>>{{0, 100, -inf}});
+  CHECK_NOTHROW(check_homology_degrees(r));
+}
+
+// The boundary of a 5-simplex whose last 4-face comes later: that face closes a 4-sphere, an
+// essential H4 class no medusa can have (MATH.md 7.6).
+TEST_CASE("A class of degree above 3 that is essential or of positive length fails the degree audit") {
+  std::vector<CellSpec> s;
+  for (int skip : {1, 2, 3, 4, 5, 0}) {
+    std::vector<kinetic::VertexId> face;
+    for (int v = 0; v < 6; ++v)
+      if (v != skip)
+        face.push_back(v);
+    add_closure(s, face, skip == 0 ? vt(1, 0, 1) : vt(0, 0, 0), vt(2, 0, 2));
+  }
+  const auto cells = make_cells(s);
+  const Diagram f = forward_diagram(cells);
+  REQUIRE(pairs_in_dimension(f, 4).size() == 1);
+  CHECK(pairs_in_dimension(f, 4)[0].essential);
+  CHECK_THROWS_AS(check_homology_degrees(f), InternalError);
 }
 
 TEST_CASE("The Euler check compares the essential classes with chi and rejects a mismatch") {
