@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <random>
 
 namespace medusa::persistence {
 namespace detail {
@@ -118,7 +119,7 @@ bool feasible(const std::vector<Point>& a, const std::vector<Point>& b, double r
 
 } // namespace
 
-double bottleneck_finite(const std::vector<Point>& a, const std::vector<Point>& b) {
+double bottleneck_finite(const std::vector<Point>& a, const std::vector<Point>& b, std::size_t sort_limit) {
   // Matching every point to the diagonal costs the largest half persistence: an upper bound, and
   // only ground distances below it can be the answer.
   double upper = 0;
@@ -126,29 +127,52 @@ double bottleneck_finite(const std::vector<Point>& a, const std::vector<Point>& 
     upper = std::max(upper, half_persistence(x));
   for (const Point& y : b)
     upper = std::max(upper, half_persistence(y));
-  std::vector<double> candidates{0.0, upper};
-  for (const Point& x : a)
-    candidates.push_back(half_persistence(x));
-  for (const Point& y : b)
-    candidates.push_back(half_persistence(y));
-  for (const Point& x : a)
-    for (const Point& y : b) {
-      const double d = linf(x, y);
-      if (d < upper)
-        candidates.push_back(d);
-    }
+  // The optimum is a candidate (0, a half persistence or a ground distance) and feasibility is
+  // monotone in r. The answer stays in (lo, hi] with hi feasible. There are n*m ground distances, so
+  // they are not stored while too many remain: a candidate drawn uniformly from the open interval
+  // (reservoir sampling) splits it, as in quickselect, until few enough remain to sort.
+  auto for_each_candidate = [&](auto&& f) {
+    f(0.0);
+    for (const Point& x : a)
+      f(half_persistence(x));
+    for (const Point& y : b)
+      f(half_persistence(y));
+    for (const Point& x : a)
+      for (const Point& y : b)
+        f(linf(x, y));
+  };
+  double lo = -1, hi = upper;
+  std::mt19937_64 rng(0x6d65647573610001ULL);
+  for (;;) {
+    std::size_t count = 0;
+    double pivot = hi;
+    for_each_candidate([&](double c) {
+      if (lo < c && c < hi && std::uniform_int_distribution<std::size_t>(0, count++)(rng) == 0)
+        pivot = c;
+    });
+    if (count == 0)
+      return hi;
+    if (count <= sort_limit)
+      break;
+    (feasible(a, b, pivot) ? hi : lo) = pivot;
+  }
+  std::vector<double> candidates;
+  for_each_candidate([&](double c) {
+    if (lo < c && c < hi)
+      candidates.push_back(c);
+  });
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  // The optimum is one of the candidates, and feasibility is monotone in r.
-  std::size_t lo = 0, hi = candidates.size() - 1; // candidates[hi] is feasible
-  while (lo < hi) {
-    const std::size_t mid = lo + (hi - lo) / 2;
+  candidates.push_back(hi);
+  std::size_t first = 0, last = candidates.size() - 1; // candidates[last] is feasible
+  while (first < last) {
+    const std::size_t mid = first + (last - first) / 2;
     if (feasible(a, b, candidates[mid]))
-      hi = mid;
+      last = mid;
     else
-      lo = mid + 1;
+      first = mid + 1;
   }
-  return candidates[hi];
+  return candidates[last];
 }
 
 DistanceResult bottleneck_distance(const PointDiagram& a, const PointDiagram& b, bool ignore_essential) {

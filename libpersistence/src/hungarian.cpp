@@ -11,6 +11,16 @@ double hungarian_cost(const AugmentedProblem& problem) {
   std::vector<double> u(N + 1, 0.0), v(N + 1, 0.0), minv(N + 1);
   std::vector<std::size_t> owner(N + 1, 0), way(N + 1, 0);
   std::vector<char> used(N + 1);
+  // The O(N^3) inner loop reads each cost about N times: tabulate them when the table is modest.
+  const bool tabulate = N <= 3000;
+  std::vector<double> table;
+  if (tabulate) {
+    table.resize(N * N);
+    for (std::size_t i = 0; i < N; ++i)
+      for (std::size_t j = 0; j < N; ++j)
+        table[i * N + j] = problem.cost(i, j);
+  }
+  auto cost = [&](std::size_t i, std::size_t j) { return tabulate ? table[i * N + j] : problem.cost(i, j); };
   for (std::size_t i = 1; i <= N; ++i) {
     owner[0] = i;
     std::size_t j0 = 0;
@@ -24,7 +34,7 @@ double hungarian_cost(const AugmentedProblem& problem) {
       for (std::size_t j = 1; j <= N; ++j) {
         if (used[j])
           continue;
-        const double cur = problem.cost(i0 - 1, j - 1) - u[i0] - v[j];
+        const double cur = cost(i0 - 1, j - 1) - u[i0] - v[j];
         if (cur < minv[j]) {
           minv[j] = cur;
           way[j] = j0;
@@ -52,7 +62,7 @@ double hungarian_cost(const AugmentedProblem& problem) {
   }
   double total = 0;
   for (std::size_t j = 1; j <= N; ++j)
-    total += problem.cost(owner[j] - 1, j - 1);
+    total += cost(owner[j] - 1, j - 1);
   return total;
 }
 

@@ -135,6 +135,7 @@ TEST_CASE("Bottleneck and exact Wasserstein distances equal brute-force enumerat
       const auto [db, wp] = brute_force(a, b, p);
       CHECK(bottleneck_finite(a, b) == db);
       CHECK(bottleneck_finite(b, a) == db);
+      CHECK(bottleneck_finite(a, b, 1) == db); // the pivot selection path
       CHECK(close(wasserstein_finite_exact(a, b, p), wp, 1e-12));
       CHECK(close(wasserstein_finite_exact(b, a, p), wp, 1e-12));
       ++cases;
@@ -279,6 +280,9 @@ TEST_CASE("Large diagrams use the certified auction and report its error bound")
   CHECK(approx.relative_error <= 0.01);
   CHECK(approx.total >= exact.total * (1 - 1e-12));
   CHECK(approx.total <= exact.total * 1.01 * (1 + 1e-12));
+  const double db = bottleneck_distance(a, b).total;
+  CHECK(bottleneck_finite(a.finite, b.finite, 16) == db);
+  CHECK(bottleneck_finite(b.finite, a.finite, 1) == db);
 }
 
 TEST_CASE("Invalid points and orders are input errors") {
