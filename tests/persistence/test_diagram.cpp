@@ -6,6 +6,7 @@
 #include "medusa/persistence/diagram.h"
 #include "medusa/persistence/diagram_text.h"
 #include "medusa/persistence/euler.h"
+#include "medusa/persistence/medusa_diagrams.h"
 
 #include <catch2/catch.hpp>
 #include <phat/algorithms/chunk_reduction.h>
@@ -281,4 +282,30 @@ TEST_CASE("The same cells in any input order give a byte-identical serialized di
     CHECK(again.str() == reference.str());
   }
   CHECK(reference.str().find("0.33333333333333331") != std::string::npos);
+}
+
+// The time-symmetric example with vertex 2 of type 2 and vertices 0, 1 of type 1: M_1 is the edge 01
+// (one essential H0 class each way), M_2 the vertex 2.
+TEST_CASE("All diagrams of a run come whole and per type, forward and reverse, in a fixed order") {
+  std::vector<CellSpec> s;
+  add_closure(s, {0, 1}, vt(0, 0, 0), vt(5, 0, 10));
+  add_closure(s, {1, 2}, vt(0, 0, 0), vt(5, 0, 10));
+  s.push_back({{0, 2}, vt(1, 0, 2), vt(4, 0, 8)});
+  s.push_back({{0, 1, 2}, vt(2, 0, 4), vt(3, 0, 6)});
+  const auto cells = make_cells(s);
+  const auto diagrams = compute_medusa_diagrams(cells, {1, 1, 2}, {1, 2});
+  REQUIRE(diagrams.size() == 6);
+  const std::vector<std::pair<Direction, int>> expected{
+      {Direction::forward, all_types}, {Direction::reverse, all_types}, {Direction::forward, 1},
+      {Direction::reverse, 1},         {Direction::forward, 2},         {Direction::reverse, 2}};
+  for (std::size_t k = 0; k < 6; ++k) {
+    CAPTURE(k);
+    CHECK(diagrams[k].direction == expected[k].first);
+    CHECK(diagrams[k].cell_type == expected[k].second);
+  }
+  CHECK(points_of(diagrams[0]) == std::vector<std::tuple<int, double, double>>{{0, 0, inf}, {1, 2, 4}});
+  CHECK(points_of(diagrams[1]) == std::vector<std::tuple<int, double, double>>{{0, 10, -inf}, {1, 8, 6}});
+  CHECK(points_of(diagrams[2]) == std::vector<std::tuple<int, double, double>>{{0, 0, inf}});
+  CHECK(points_of(diagrams[5]) == std::vector<std::tuple<int, double, double>>{{0, 10, -inf}});
+  CHECK(diagrams[4].pairs.size() == 1);
 }
