@@ -130,6 +130,7 @@ struct KineticAlphaComplex::Impl {
   std::vector<std::pair<int, std::uint32_t>> pending_radius; // (certificate, version)
 
   std::size_t batch_index = 0;
+  std::size_t batches_since_audit = 0;
 
   Impl(const Trajectories& t, KineticOptions o) : traj(t), options(std::move(o)) {
     P = options.rho2.num;
@@ -354,10 +355,7 @@ struct KineticAlphaComplex::Impl {
     for (const Simplex& t : added) {
       tri.add_tet(t);
       if (is_finite(t)) {
-        int s = sign_plus_now([&](auto tag) {
-          using NT = decltype(tag);
-          return certificate::orientation<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(t[3]));
-        });
+        int s = orientation_sign_plus(t);
         if (s == 0) {
           std::ostringstream os;
           os << "cells " << t << " stay coplanar but form a Delaunay tetrahedron";
@@ -375,6 +373,8 @@ struct KineticAlphaComplex::Impl {
         kill_cert(it->second.cert);
         faces.erase(it);
       } else if (present && it == faces.end()) {
+        if (f.size() == 2 && slab + 1 < traj.frames())
+          check_collision(f);
         Face& face = faces[f];
         face.is_short = compute_short(f);
         install_radius(f);
@@ -382,6 +382,13 @@ struct KineticAlphaComplex::Impl {
     }
     for (const Simplex& f : touched_facets)
       install_facet(f);
+  }
+
+  int orientation_sign_plus(const Simplex& t) {
+    return sign_plus_now([&](auto tag) {
+      using NT = decltype(tag);
+      return certificate::orientation<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(t[3]));
+    });
   }
 
   bool gabriel_now(const Simplex& s) {
@@ -480,6 +487,29 @@ struct KineticAlphaComplex::Impl {
       }
     }
     bool hull = std::find(group.begin(), group.end(), infinite_vertex) != group.end();
+    for (const Simplex& t : added)
+      if (is_finite(t) && orientation_sign_plus(t) == 0) {
+        // A new tetrahedron would stay flat: no elementary flip resolves this degenerate group
+        // (e.g. four points coplanar through the slab); MATH.md 5.2 step 3 asks for a static repair.
+        if (!now.is_rational()) {
+          std::ostringstream os;
+          os << "degenerate simultaneous event in slab " << slab << " at t ~ " << event_time(false).time
+             << " involving cells";
+          for (VertexId v : group)
+            if (v != infinite_vertex)
+              os << ' ' << traj.cells[static_cast<std::size_t>(v)].cell_id;
+          os << ": a static repair at an irrational time is not supported yet";
+          throw GeometryError(os.str());
+        }
+        Step repair;
+        repair.kind = StepKind::repair;
+        std::unordered_map<Simplex, bool, SimplexHash> old_k;
+        rebuild_static(old_k);
+        settle_membership(old_k, repair);
+        repair.rank = steps.size() + 1;
+        steps.push_back(std::move(repair));
+        return;
+      }
     step.kind = hull ? StepKind::hull_flip : (three_two ? StepKind::flip32 : StepKind::flip23);
     if (!hull) {
       // The 4-simplex is an instant cell iff R_S <= rho and the old tetrahedra are in K (MATH.md 6.3).
@@ -593,41 +623,41 @@ struct KineticAlphaComplex::Impl {
                             std::to_string(traj.frame_times[k]) + ")");
   }
 
-  // Collision inside the slab (MATH.md 2.5): p_i(u) = p_j(u) for some u in (0, 1), tested on the
-  // Delaunay edges at the slab start.
-  void check_collisions_in_slab() const {
-    for (const auto& kv : faces) {
-      const Simplex& e = kv.first;
-      if (e.size() != 2)
+  // Collision inside the slab (MATH.md 2.5): p_i(u) = p_j(u) for some u in (now, 1). Tested on the
+  // Delaunay edges at the slab start and on every edge when it is created: colliding cells are
+  // joined by a Delaunay edge just before they meet.
+  void check_collision(const Simplex& e) const {
+    const MovingPoint &p = pt(e[0]), &q = pt(e[1]);
+    bool has = true, fixed = false;
+    mpq_class root(-1);
+    for (int i = 0; i < 3 && has; ++i) {
+      std::int64_t da = p.a[i] - q.a[i], db = p.b[i] - q.b[i];
+      if (db == 0) {
+        has = da == 0;
         continue;
-      const MovingPoint &p = pt(e[0]), &q = pt(e[1]);
-      // Solve (ap - aq) + u (bp - bq) = 0 per coordinate; rational common root in (0, 1].
-      bool has = true;
-      mpq_class root(-1);
-      bool fixed = false;
-      for (int i = 0; i < 3 && has; ++i) {
-        std::int64_t da = p.a[i] - q.a[i], db = p.b[i] - q.b[i];
-        if (db == 0) {
-          has = da == 0;
-          continue;
-        }
-        mpq_class r(mpz_class(-da), mpz_class(db));
-        r.canonicalize();
-        if (!fixed) {
-          root = r;
-          fixed = true;
-        } else if (root != r) {
-          has = false;
-        }
       }
-      if (has && fixed && root > 0 && root < 1) {
-        double t = double(traj.frame_times[slab]) +
-                   root.get_d() * double(traj.frame_times[slab + 1] - traj.frame_times[slab]);
-        throw GeometryError("cells " + std::to_string(traj.cells[e[0]].cell_id) + " and " +
-                            std::to_string(traj.cells[e[1]].cell_id) + " collide at time " +
-                            std::to_string(t));
+      mpq_class r(mpz_class(-da), mpz_class(db));
+      r.canonicalize();
+      if (!fixed) {
+        root = r;
+        fixed = true;
+      } else if (root != r) {
+        has = false;
       }
     }
+    if (!has || !fixed || root <= 0 || root >= 1 || !(now < SlabTime(Rational(root.get_mpq_t()))))
+      return;
+    double t = double(traj.frame_times[slab]) +
+               root.get_d() * double(traj.frame_times[slab + 1] - traj.frame_times[slab]);
+    throw GeometryError("cells " + std::to_string(traj.cells[static_cast<std::size_t>(e[0])].cell_id) +
+                        " and " + std::to_string(traj.cells[static_cast<std::size_t>(e[1])].cell_id) +
+                        " collide at time " + std::to_string(t));
+  }
+
+  void check_collisions_in_slab() const {
+    for (const auto& kv : faces)
+      if (kv.first.size() == 2)
+        check_collision(kv.first);
   }
 
   // Rebuilds Del of the current vertex set at now+ with CGAL and replaces the differing tetrahedra.
@@ -635,7 +665,7 @@ struct KineticAlphaComplex::Impl {
     ++stats.static_rebuilds;
     std::vector<VertexId> ids = alive_ids();
     int dimension = 0;
-    std::vector<Simplex> tets = detail::delaunay_just_after(static_input(ids), dimension);
+    std::vector<Simplex> tets = detail::delaunay_just_after(static_input(ids), now.rational(), dimension);
     if (dimension < 3) {
       if (ids.size() < 4)
         throw GeometryError("fewer than 4 cells are present at frame " + std::to_string(slab) +
@@ -773,8 +803,10 @@ struct KineticAlphaComplex::Impl {
       std::vector<Step> steps;
       process_batch(steps);
       emit_batch(observer, steps, false);
-      if (options.audit)
+      if (options.audit && ++batches_since_audit >= options.audit_stride) {
+        batches_since_audit = 0;
         audit();
+      }
     }
   }
 
@@ -839,6 +871,8 @@ struct KineticAlphaComplex::Impl {
     check_collisions_in_slab();
     emit_batch(observer, steps, true);
     observer.frame(k, event_time(true));
+    if (options.audit)
+      audit();
   }
 
   void record_tet_changes(Step& step, std::unordered_map<Simplex, bool, SimplexHash>& old_k) {

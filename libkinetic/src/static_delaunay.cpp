@@ -50,7 +50,7 @@ std::vector<Simplex> triangulate(const std::vector<std::pair<typename K::Point_3
 
 } // namespace
 
-std::vector<Simplex> delaunay_just_after(const StaticInput& input, int& dimension) {
+std::vector<Simplex> delaunay_just_after(const StaticInput& input, const CGAL::Gmpq& u, int& dimension) {
   // delta = 2^-k with the largest k <= 24 such that every coordinate 2^k a + b is an exact double;
   // invalid certificates left by a too large delta are repaired by flips at 0+ by the caller.
   double amax = 1, bmax = 1;
@@ -62,7 +62,7 @@ std::vector<Simplex> delaunay_just_after(const StaticInput& input, int& dimensio
   int k = 24;
   while (k > 0 && std::ldexp(amax, k) + bmax >= std::ldexp(1.0, 52))
     --k;
-  if (k >= 8) {
+  if (u == 0 && k >= 8) {
     using K = CGAL::Exact_predicates_inexact_constructions_kernel;
     std::vector<std::pair<K::Point_3, VertexId>> pts;
     for (std::size_t i = 0; i < input.ids.size(); ++i) {
@@ -75,7 +75,8 @@ std::vector<Simplex> delaunay_just_after(const StaticInput& input, int& dimensio
     return triangulate<K>(pts, dimension);
   }
   using K = CGAL::Exact_predicates_exact_constructions_kernel;
-  const CGAL::Gmpq delta(1, CGAL::Gmpz(1) << 40);
+  // Exact rational points at u + 2^-40 (used at interior rational times and for huge coordinates).
+  const CGAL::Gmpq delta = u + CGAL::Gmpq(1, CGAL::Gmpz(1) << 40);
   std::vector<std::pair<K::Point_3, VertexId>> pts;
   for (std::size_t i = 0; i < input.ids.size(); ++i) {
     const MovingPoint& m = input.motion[i];

@@ -17,10 +17,10 @@ struct StaticInput {
   std::vector<MovingPoint> motion;
 };
 
-// Tetrahedra (infinite vertex = -1) of the Delaunay triangulation of the points a + delta b for a
-// small dyadic delta > 0 chosen so that the coordinates stay exact. Returns the affine dimension of
-// the point set in `dimension` (the tetrahedra are empty when it is below 3).
-std::vector<Simplex> delaunay_just_after(const StaticInput& input, int& dimension);
+// Tetrahedra (infinite vertex = -1) of the Delaunay triangulation of the points a + (u + delta) b
+// for the rational u and a small dyadic delta > 0 chosen so that the coordinates stay exact. Returns the
+// affine dimension of the point set in `dimension` (the tetrahedra are empty when it is below 3).
+std::vector<Simplex> delaunay_just_after(const StaticInput& input, const CGAL::Gmpq& u, int& dimension);
 
 // The finite simplices (all dimensions) of the fixed-radius alpha complex of the points a + u b,
 // u rational, radius^2 = rho2 (grid units), computed with CGAL's Delaunay_triangulation_3 and

@@ -25,7 +25,8 @@ SquaredRadius squared_radius_from_decimal(const std::string& rho, std::int64_t s
 
 struct KineticOptions {
   SquaredRadius rho2;
-  bool audit = false; // check the structure against static CGAL computations after every batch
+  bool audit = false;           // check the structure against static CGAL computations (audit())
+  std::size_t audit_stride = 1; // audit after every audit_stride-th event batch, and at every frame
 };
 
 struct KineticStatistics {
