@@ -29,7 +29,8 @@ void Trajectories::validate() const {
     for (std::size_t f = 0; f < c.positions.size(); ++f)
       for (int a = 0; a < 3; ++a)
         if (c.positions[f][a] >= limit || c.positions[f][a] <= -limit)
-          throw InputError("cell " + std::to_string(c.cell_id) + " at frame " + std::to_string(c.first_frame + f) +
+          throw InputError("cell " + std::to_string(c.cell_id) + " at frame " +
+                           std::to_string(c.first_frame + f) +
                            ": coordinate out of range for the grid scale " + std::to_string(scale));
   }
 }

@@ -15,7 +15,9 @@ Trajectories two_frames() {
 }
 } // namespace
 
-TEST_CASE("a consistent run validates", "[kinetic][trajectories]") { REQUIRE_NOTHROW(two_frames().validate()); }
+TEST_CASE("a consistent run validates", "[kinetic][trajectories]") {
+  REQUIRE_NOTHROW(two_frames().validate());
+}
 
 TEST_CASE("frame times that do not increase are rejected with the frame named", "[kinetic][trajectories]") {
   Trajectories t = two_frames();

@@ -20,10 +20,10 @@ namespace medusa::kinetic {
 // events without comparing doubles.
 struct EventTime {
   std::size_t batch = 0;
-  std::size_t slab = 0;   // slab k: t in [t_k, t_{k+1}]
-  double u = 0.0;         // double approximation of the slab parameter u* in [0, 1]
-  double time = 0.0;      // double approximation of t* = t_k + u* (t_{k+1} - t_k)
-  bool at_frame = false;  // u* = 0 exactly: a frame batch (MATH.md 5.6), or the final time
+  std::size_t slab = 0;  // slab k: t in [t_k, t_{k+1}]
+  double u = 0.0;        // double approximation of the slab parameter u* in [0, 1]
+  double time = 0.0;     // double approximation of t* = t_k + u* (t_{k+1} - t_k)
+  bool at_frame = false; // u* = 0 exactly: a frame batch (MATH.md 5.6), or the final time
 };
 
 enum class StepKind {
@@ -57,13 +57,13 @@ struct DegenerateGroup {
 struct Step {
   std::size_t rank = 0;
   StepKind kind = StepKind::settle;
-  std::vector<Simplex> entered; // L_r \ L_{r-1}, in increasing dimension
-  std::vector<Simplex> left;    // L_{r-1} \ L_r, in increasing dimension
-  std::optional<FlipGroup> flip;               // for flip23 / flip32
-  std::vector<DegenerateGroup> groups;         // for repair
-  VertexId vertex = -1;                        // the inserted or deleted vertex
-  std::vector<Simplex> delaunay_removed;       // finite Delaunay tetrahedra removed by the step
-  std::vector<Simplex> delaunay_created;       // finite Delaunay tetrahedra created by the step
+  std::vector<Simplex> entered;          // L_r \ L_{r-1}, in increasing dimension
+  std::vector<Simplex> left;             // L_{r-1} \ L_r, in increasing dimension
+  std::optional<FlipGroup> flip;         // for flip23 / flip32
+  std::vector<DegenerateGroup> groups;   // for repair
+  VertexId vertex = -1;                  // the inserted or deleted vertex
+  std::vector<Simplex> delaunay_removed; // finite Delaunay tetrahedra removed by the step
+  std::vector<Simplex> delaunay_created; // finite Delaunay tetrahedra created by the step
 };
 
 // Receives the stream. All callbacks have empty defaults, so an observer overrides what it needs.

@@ -6,9 +6,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <utility>
 #include <initializer_list>
 #include <ostream>
+#include <utility>
 
 namespace medusa::kinetic {
 

@@ -25,8 +25,8 @@ struct Trajectory {
 
 // A whole run: frame times shared by all cells, and the trajectories. Vertex id = index into cells.
 struct Trajectories {
-  int dimension = 3;                   // 3, or 2 for planar runs (z ignored)
-  std::int64_t scale = 1000000;        // grid scale S (MATH.md 1.1)
+  int dimension = 3;                     // 3, or 2 for planar runs (z ignored)
+  std::int64_t scale = 1000000;          // grid scale S (MATH.md 1.1)
   std::vector<std::int64_t> frame_times; // strictly increasing (MCS)
   std::vector<Trajectory> cells;
   std::vector<std::string> type_names; // index = type id; may be empty

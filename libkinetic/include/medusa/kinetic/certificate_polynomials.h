@@ -1,0 +1,107 @@
+// The certificate polynomials of MATH.md 3.1, written once for any number type NT (exact mpz_class
+// or a certified interval type). All are translation invariant and computed from coordinates
+// relative to the first point (MATH.md 1.5), so every input difference is an exact integer.
+#pragma once
+
+#include "medusa/kinetic/moving_point.h"
+#include "medusa/kinetic/polynomial.h"
+
+#include <array>
+
+namespace medusa::kinetic::certificate {
+
+template <class NT> using Vec = std::array<Poly<NT>, 3>;
+
+// q(u) - p(u) as three linear polynomials.
+template <class NT> Vec<NT> difference(const MovingPoint& p, const MovingPoint& q) {
+  Vec<NT> r;
+  for (int i = 0; i < 3; ++i)
+    r[i] = Poly<NT>(NT(static_cast<double>(q.a[i] - p.a[i])), NT(static_cast<double>(q.b[i] - p.b[i])));
+  return r;
+}
+
+template <class NT> Poly<NT> dot(const Vec<NT>& x, const Vec<NT>& y) {
+  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
+
+template <class NT> Vec<NT> cross(const Vec<NT>& x, const Vec<NT>& y) {
+  return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+}
+
+template <class NT> Poly<NT> det3(const Vec<NT>& x, const Vec<NT>& y, const Vec<NT>& z) {
+  return dot(x, cross(y, z));
+}
+
+// O(p0,p1,p2,p3) = det[p1-p0; p2-p0; p3-p0]: the sign of CGAL::orientation. Degree <= 3.
+template <class NT>
+Poly<NT> orientation(const MovingPoint& p0, const MovingPoint& p1, const MovingPoint& p2,
+                     const MovingPoint& p3) {
+  return det3(difference<NT>(p0, p1), difference<NT>(p0, p2), difference<NT>(p0, p3));
+}
+
+// InS(p0,p1,p2,p3; y) = det[(p_i - y, |p_i - y|^2)], degree <= 5. For O(p0..p3) > 0 it is < 0 iff y
+// is strictly inside the circumsphere (MATH.md conventions).
+template <class NT>
+Poly<NT> in_sphere(const MovingPoint& p0, const MovingPoint& p1, const MovingPoint& p2, const MovingPoint& p3,
+                   const MovingPoint& y) {
+  const Vec<NT> q[4] = {difference<NT>(y, p0), difference<NT>(y, p1), difference<NT>(y, p2),
+                        difference<NT>(y, p3)};
+  Poly<NT> w[4];
+  for (int i = 0; i < 4; ++i)
+    w[i] = dot(q[i], q[i]);
+  // Expansion along the last column: det = sum_i (-1)^(i+3) w_i det(minor_i).
+  Poly<NT> result = w[3] * det3(q[0], q[1], q[2]) - w[2] * det3(q[0], q[1], q[3]);
+  result = result + w[1] * det3(q[0], q[2], q[3]);
+  return result - w[0] * det3(q[1], q[2], q[3]);
+}
+
+// R1: Q|p-q|^2 - 4P <= 0 iff the edge is short (R <= rho, rho^2 = P/Q). Degree <= 2.
+template <class NT>
+Poly<NT> edge_radius(const MovingPoint& p, const MovingPoint& q, const NT& P, const NT& Q) {
+  Vec<NT> d = difference<NT>(p, q);
+  return Q * dot(d, d) - Poly<NT>(NT(4) * P);
+}
+
+// R2: Q|a|^2|b|^2|a-b|^2 - 4P|a x b|^2, the degree-6 form of seed 000 (MATH.md 3.3).
+template <class NT>
+Poly<NT> triangle_radius(const MovingPoint& p0, const MovingPoint& p1, const MovingPoint& p2, const NT& P,
+                         const NT& Q) {
+  Vec<NT> a = difference<NT>(p0, p1), b = difference<NT>(p0, p2), c = difference<NT>(p1, p2);
+  Vec<NT> n = cross(a, b);
+  return Q * (dot(a, a) * dot(b, b) * dot(c, c)) - (NT(4) * P) * dot(n, n);
+}
+
+// R3: Q|N|^2 - 4P D^2 with N = |a|^2 (b x c) + |b|^2 (c x a) + |c|^2 (a x b), D = det(a,b,c). Degree <= 8.
+template <class NT>
+Poly<NT> tetrahedron_radius(const MovingPoint& p0, const MovingPoint& p1, const MovingPoint& p2,
+                            const MovingPoint& p3, const NT& P, const NT& Q) {
+  Vec<NT> a = difference<NT>(p0, p1), b = difference<NT>(p0, p2), c = difference<NT>(p0, p3);
+  Vec<NT> bc = cross(b, c), ca = cross(c, a), ab = cross(a, b);
+  Poly<NT> la = dot(a, a), lb = dot(b, b), lc = dot(c, c);
+  Vec<NT> N;
+  for (int i = 0; i < 3; ++i)
+    N[i] = la * bc[i] + lb * ca[i] + lc * ab[i];
+  Poly<NT> D = dot(a, bc);
+  return Q * dot(N, N) - (NT(4) * P) * (D * D);
+}
+
+// G1: (x-p).(x-q) >= 0 iff x is not strictly inside the diametral ball of pq. Degree <= 2.
+template <class NT> Poly<NT> gabriel_edge(const MovingPoint& p, const MovingPoint& q, const MovingPoint& x) {
+  return dot(difference<NT>(p, x), difference<NT>(q, x));
+}
+
+// G2: |n|^2 |X|^2 - X.(w x n) >= 0 iff x is not strictly inside the smallest circumball of p0p1p2,
+// with a = p1-p0, b = p2-p0, n = a x b, w = |a|^2 b - |b|^2 a, X = x - p0. Degree <= 6.
+template <class NT>
+Poly<NT> gabriel_triangle(const MovingPoint& p0, const MovingPoint& p1, const MovingPoint& p2,
+                          const MovingPoint& x) {
+  Vec<NT> a = difference<NT>(p0, p1), b = difference<NT>(p0, p2), X = difference<NT>(p0, x);
+  Vec<NT> n = cross(a, b);
+  Poly<NT> la = dot(a, a), lb = dot(b, b);
+  Vec<NT> w;
+  for (int i = 0; i < 3; ++i)
+    w[i] = la * b[i] - lb * a[i];
+  return dot(n, n) * dot(X, X) - dot(X, cross(w, n));
+}
+
+} // namespace medusa::kinetic::certificate

@@ -1,0 +1,22 @@
+// Certified sign filters on interval polynomials (MATH.md 3.8). They decide "no root" or "sign at a
+// point" without exact arithmetic whenever the enclosures allow it; otherwise they answer 0 and the
+// caller falls back to exact arithmetic. Callers must hold a CGAL::Protect_FPU_rounding guard.
+#pragma once
+
+#include "medusa/kinetic/polynomial.h"
+
+#include <CGAL/Interval_nt.h>
+
+namespace medusa::kinetic {
+
+using Interval = CGAL::Interval_nt_advanced;
+using IntervalPoly = Poly<Interval>;
+
+// +1 if f > 0 on [lo, 1], -1 if f < 0 on [lo, 1], 0 if the Bernstein enclosures do not decide.
+// lo in [0, 1] is a double (any double is an exact dyadic rational).
+int bernstein_sign(const IntervalPoly& f, double lo);
+
+// +1 / -1 if f keeps that sign on the whole interval [lo, hi], 0 if undecided.
+int interval_sign(const IntervalPoly& f, double lo, double hi);
+
+} // namespace medusa::kinetic

@@ -1,0 +1,65 @@
+// The kinetic Delaunay triangulation and fixed-radius alpha complex of moving cell centres
+// (MATH.md 2-5). Run it over a whole set of trajectories; it reports every change to an Observer.
+#pragma once
+
+#include "medusa/kinetic/observer.h"
+#include "medusa/kinetic/trajectories.h"
+
+#include <gmpxx.h>
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace medusa::kinetic {
+
+// rho^2 in grid units as an exact rational P/Q (MATH.md 1.4).
+struct SquaredRadius {
+  mpz_class num = 1;
+  mpz_class den = 1;
+};
+
+// Parses a decimal radius (e.g. "3.1") in physical units into rho_g^2 = (S rho)^2, exactly.
+SquaredRadius squared_radius_from_decimal(const std::string& rho, std::int64_t scale);
+
+struct KineticOptions {
+  SquaredRadius rho2;
+  bool audit = false;           // check the structure against static CGAL computations (audit())
+  std::size_t audit_stride = 1; // audit after every audit_stride-th event batch, and at every frame
+};
+
+struct KineticStatistics {
+  std::size_t batches = 0, frame_batches = 0;
+  std::size_t flips23 = 0, flips32 = 0, hull_flips = 0, radius_events = 0;
+  std::size_t insertions = 0, deletions = 0, static_rebuilds = 0;
+  std::size_t certificates_built = 0; // certificates created (Delaunay and radius)
+  std::size_t filter_settled = 0;     // settled by the interval Bernstein filter
+  std::size_t exact_settled = 0;      // needed exact arithmetic (GMP and root isolation)
+  std::size_t sign_evaluations = 0, sign_evaluations_exact = 0;
+  std::size_t audits = 0, audits_compared_with_cgal = 0;
+  std::vector<double> seconds_per_frame;
+};
+
+class KineticAlphaComplex {
+public:
+  KineticAlphaComplex(const Trajectories& trajectories, KineticOptions options);
+  ~KineticAlphaComplex();
+  KineticAlphaComplex(const KineticAlphaComplex&) = delete;
+  KineticAlphaComplex& operator=(const KineticAlphaComplex&) = delete;
+
+  // Processes the whole run, reporting to the observer.
+  void run(Observer& observer);
+
+  const KineticStatistics& statistics() const;
+
+  // The alpha complex at the current moment (finite simplices, sorted by dimension then vertices);
+  // callable from inside Observer callbacks, where it is the state after the reported batch.
+  std::vector<Simplex> current_complex() const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace medusa::kinetic

@@ -1,0 +1,83 @@
+#include "medusa/kinetic/interval_filter.h"
+
+#include <array>
+
+namespace medusa::kinetic {
+
+namespace {
+
+int sign_of(const Interval& x) {
+  if (x.inf() > 0)
+    return 1;
+  if (x.sup() < 0)
+    return -1;
+  return 0;
+}
+
+int degree_of(const IntervalPoly& f) {
+  int n = f.degree_bound();
+  // Trailing coefficients that are exactly zero do not count (they come from cancellations of
+  // exact products, e.g. stationary points).
+  while (n > 0 && f[n].inf() == 0 && f[n].sup() == 0)
+    --n;
+  return n;
+}
+
+} // namespace
+
+int bernstein_sign(const IntervalPoly& f, double lo) {
+  int n = degree_of(f);
+  if (n < 0)
+    return 0;
+  std::array<Interval, IntervalPoly::max_degree + 1> g{};
+  for (int i = 0; i <= n; ++i)
+    g[i] = f[i];
+  if (lo != 0.0) {
+    // Taylor shift h(v) = f(lo + v) by repeated synthetic division, then scale by (1 - lo)^i so that
+    // g(v) = f(lo + (1 - lo) v) on v in [0, 1] (MATH.md 3.8, restriction to [u_lo, 1]).
+    const Interval l(lo);
+    for (int k = 0; k < n; ++k)
+      for (int i = n - 1; i >= k; --i)
+        g[i] += l * g[i + 1];
+    const Interval s = Interval(1) - l;
+    Interval p(1);
+    for (int i = 1; i <= n; ++i) {
+      p *= s;
+      g[i] *= p;
+    }
+  }
+  // beta_j = sum_{i<=j} C(n-i, j-i) g_i have the signs of the Bernstein coefficients.
+  static const double binom[9][9] = {{1},
+                                     {1, 1},
+                                     {1, 2, 1},
+                                     {1, 3, 3, 1},
+                                     {1, 4, 6, 4, 1},
+                                     {1, 5, 10, 10, 5, 1},
+                                     {1, 6, 15, 20, 15, 6, 1},
+                                     {1, 7, 21, 35, 35, 21, 7, 1},
+                                     {1, 8, 28, 56, 70, 56, 28, 8, 1}};
+  int common = 0;
+  for (int j = 0; j <= n; ++j) {
+    Interval beta(0);
+    for (int i = 0; i <= j; ++i)
+      beta += Interval(binom[n - i][j - i]) * g[i];
+    int s = sign_of(beta);
+    if (s == 0 || (common != 0 && s != common))
+      return 0;
+    common = s;
+  }
+  return common;
+}
+
+int interval_sign(const IntervalPoly& f, double lo, double hi) {
+  int n = degree_of(f);
+  if (n < 0)
+    return 0;
+  const Interval u(lo, hi);
+  Interval acc = f[n];
+  for (int i = n - 1; i >= 0; --i)
+    acc = acc * u + f[i];
+  return sign_of(acc);
+}
+
+} // namespace medusa::kinetic

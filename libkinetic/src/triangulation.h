@@ -1,0 +1,48 @@
+// The combinatorial Delaunay triangulation augmented with the infinite vertex: tetrahedra as sorted
+// vertex tuples (the infinite vertex is -1 and sorts first), facets with their two apices, and the
+// tetrahedra incident to each vertex. Geometry lives elsewhere: certificates decide validity, this
+// structure only records the combinatorics (flips are set operations, MATH.md 4.5).
+#pragma once
+
+#include "medusa/kinetic/simplex.h"
+
+#include <array>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+constexpr VertexId infinite_vertex = -1;
+
+inline bool is_finite(const Simplex& s) { return s[0] != infinite_vertex; }
+
+class Triangulation {
+public:
+  void clear();
+  bool has_tet(const Simplex& t) const { return tets_.count(t) != 0; }
+  void add_tet(const Simplex& t);
+  void remove_tet(const Simplex& t);
+
+  // The apices of facet f (the vertices completing it to its two tetrahedra); count is 2 in a
+  // valid triangulation.
+  struct Apices {
+    std::array<VertexId, 2> v{{0, 0}};
+    int count = 0;
+  };
+  const Apices* apices(const Simplex& facet) const;
+  VertexId other_apex(const Simplex& facet, VertexId apex) const;
+
+  const std::unordered_set<Simplex, SimplexHash>& tets() const { return tets_; }
+  const std::unordered_map<Simplex, Apices, SimplexHash>& facets() const { return facets_; }
+  // Tetrahedra containing every vertex of s.
+  std::vector<Simplex> tets_containing(const Simplex& s) const;
+  const std::vector<Simplex>& tets_of(VertexId v) const;
+
+private:
+  std::unordered_set<Simplex, SimplexHash> tets_;
+  std::unordered_map<Simplex, Apices, SimplexHash> facets_;
+  std::unordered_map<VertexId, std::vector<Simplex>> incident_;
+};
+
+} // namespace medusa::kinetic::detail

@@ -1,0 +1,44 @@
+#include "medusa/kinetic/interval_filter.h"
+
+#include <CGAL/FPU.h>
+#include <catch2/catch.hpp>
+
+using namespace medusa::kinetic;
+
+namespace {
+IntervalPoly poly(std::initializer_list<double> c) {
+  IntervalPoly f;
+  IntervalPoly mono{Interval(1)};
+  const IntervalPoly u{Interval(0), Interval(1)};
+  for (double x : c) {
+    f = f + IntervalPoly{Interval(x)} * mono;
+    mono = mono * u;
+  }
+  return f;
+}
+} // namespace
+
+TEST_CASE("the Bernstein filter proves the worked example's orientation certificate positive",
+          "[kinetic][filter]") {
+  // O(b,a,d,e) = 320 - 240u of MATH.md Appendix B: Bernstein (320, 80), positive on [0, 1].
+  CGAL::Protect_FPU_rounding<true> guard;
+  REQUIRE(bernstein_sign(poly({320, -240}), 0.0) == 1);
+  REQUIRE(bernstein_sign(poly({-320, 240}), 0.0) == -1);
+}
+
+TEST_CASE("the Bernstein filter refuses to decide a polynomial with a root in the slab",
+          "[kinetic][filter]") {
+  // 32u^2 - 94u + 61 has a root at u ~ 0.9678 (MATH.md Appendix B).
+  CGAL::Protect_FPU_rounding<true> guard;
+  REQUIRE(bernstein_sign(poly({61, -94, 32}), 0.0) == 0);
+  // On [0.97, 1] it is negative throughout.
+  REQUIRE(bernstein_sign(poly({61, -94, 32}), 0.97) == -1);
+}
+
+TEST_CASE("interval evaluation decides the sign away from roots only", "[kinetic][filter]") {
+  CGAL::Protect_FPU_rounding<true> guard;
+  IntervalPoly f = poly({-1, 2}); // root at 1/2
+  REQUIRE(interval_sign(f, 0.75, 0.8) == 1);
+  REQUIRE(interval_sign(f, 0.1, 0.2) == -1);
+  REQUIRE(interval_sign(f, 0.4, 0.6) == 0);
+}

@@ -1,0 +1,215 @@
+// The kinetic engine with the audit on: hand-built cases derived on paper, then randomised runs
+// whose every batch is audited against CGAL's static Delaunay_triangulation_3 + Fixed_alpha_shape_3.
+#include "kinetic_test_support.h"
+#include "medusa/kinetic/error.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace medusa::kinetic;
+using medusa::kinetic::testing::ReplayObserver;
+
+namespace {
+
+Trajectories appendix_b() {
+  // MATH.md Appendix B: a, b, c on x^2 + y^2 = 25, d above, e moving through the sphere.
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100};
+  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p}}); };
+  still(1, {5, 0, 0});
+  still(2, {-3, 4, 0});
+  still(3, {-3, -4, 0});
+  still(4, {0, 0, 10});
+  t.cells.push_back({5, 2, 0, {{-2, 1, -6}, {2, 1, -2}}});
+  return t;
+}
+
+KineticOptions with_radius(long rho2, bool audit = true) {
+  KineticOptions o;
+  o.rho2.num = rho2;
+  o.audit = audit;
+  return o;
+}
+
+} // namespace
+
+TEST_CASE("the worked example flips abc into de at u* = (47 - sqrt 257)/32 with a 4-simplex",
+          "[kinetic][engine]") {
+  Trajectories t = appendix_b();
+  KineticAlphaComplex engine(t, with_radius(49));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  const KineticStatistics& s = engine.statistics();
+  REQUIRE(s.flips23 == 1);
+  REQUIRE(s.flips32 == 0);
+  REQUIRE(obs.flips_in_alpha == 1);
+  REQUIRE(obs.times.size() == 1);
+  REQUIRE(obs.times[0] == Approx(100 * (47 - std::sqrt(257.0)) / 32).epsilon(1e-12));
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  // After the flip: edge de (vertex ids 3, 4) is in K and triangle abc (0, 1, 2) is not.
+  REQUIRE(obs.complex().count(Simplex{3, 4}) == 1);
+  REQUIRE(obs.complex().count(Simplex{0, 1, 2}) == 0);
+  REQUIRE(obs.complex().count(Simplex{0, 3, 4}) == 1);
+  REQUIRE(obs.complex().size() == 5 + 10 + 9 + 3); // all but abc, abcd, abce; plus de, 3 triangles, 3 tets
+}
+
+TEST_CASE("with rho = 6 the worked example's flip adds no 4-simplex", "[kinetic][engine]") {
+  Trajectories t = appendix_b();
+  KineticAlphaComplex engine(t, with_radius(36));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  REQUIRE(engine.statistics().flips23 == 1);
+  REQUIRE(obs.flips_in_alpha == 0);
+  REQUIRE(obs.mismatches == 0);
+}
+
+TEST_CASE("two cells approaching make their edge short exactly at the predicted time", "[kinetic][engine]") {
+  // Four fixed cells far apart and one cell moving towards cell 1 at (0,0,0) from (40,0,0) to
+  // (10,0,0) over [0, 100]: |pq| = 40 - 30u; with rho = 10 the edge is short when |pq| <= 20, so at
+  // u = 2/3, t = 200/3.
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100};
+  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p}}); };
+  still(1, {0, 0, 0});
+  still(2, {0, 100, 3});
+  still(3, {-7, -100, 5});
+  still(4, {1, 2, 100});
+  t.cells.push_back({5, 1, 0, {{40, 0, 0}, {10, 0, 0}}});
+  KineticAlphaComplex engine(t, with_radius(100));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  REQUIRE(engine.statistics().radius_events >= 1);
+  REQUIRE(!obs.times.empty());
+  REQUIRE(obs.times.front() == Approx(200.0 / 3).epsilon(1e-12));
+  REQUIRE(obs.complex().count(Simplex{0, 4}) == 1);
+  REQUIRE(obs.mismatches == 0);
+}
+
+TEST_CASE("random walks keep the audit green between every pair of events", "[kinetic][engine][random]") {
+  // Coordinates on a fine grid (spacing 1000 units per cell diameter) so that no four cells stay
+  // coplanar through a slab by chance; audit after every batch for the small runs, sampled for the
+  // large ones (the CGAL oracle is exact and costly).
+  auto [seed, n, frames, stride] = GENERATE(table<std::uint64_t, int, int, int>(
+      {{1, 20, 10, 1}, {2, 40, 10, 1}, {3, 60, 12, 1}, {5, 30, 50, 1}, {4, 200, 6, 25}, {6, 500, 3, 100}}));
+  CAPTURE(seed, n, frames, stride);
+  const int box = static_cast<int>(1000 * std::cbrt(double(n)) * 2);
+  Trajectories t = testing::random_walk(seed, n, frames, box, 600);
+  KineticOptions options = with_radius(1200 * 1200);
+  options.audit_stride = static_cast<std::size_t>(stride);
+  KineticAlphaComplex engine(t, options);
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  const KineticStatistics& s = engine.statistics();
+  CAPTURE(s.flips23, s.flips32, s.hull_flips, s.radius_events, s.audits, s.audits_compared_with_cgal);
+  REQUIRE(s.flips23 + s.flips32 > 0);
+  REQUIRE(s.radius_events > 0);
+  REQUIRE(s.audits_compared_with_cgal > 0);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(obs.not_closed == 0);
+}
+
+TEST_CASE("cells on an integer lattice start from the triangulation just after t0",
+          "[kinetic][engine][degenerate]") {
+  // A 4x4x4 lattice (every cube cospherical) with small random steps: the audit checks Del(t0+).
+  // Steps are large against the lattice spacing (10000) so no degeneracy survives past t0.
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> d(-2000, 2000);
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100, 200, 300};
+  int id = 1;
+  for (int x = 0; x < 4; ++x)
+    for (int y = 0; y < 4; ++y)
+      for (int z = 0; z < 4; ++z) {
+        Trajectory c;
+        c.cell_id = id++;
+        c.type = 1;
+        GridPoint p{10000 * x, 10000 * y, 10000 * z};
+        for (int k = 0; k < 4; ++k) {
+          c.positions.push_back(p);
+          for (auto& v : p)
+            v += d(rng);
+        }
+        t.cells.push_back(c);
+      }
+  KineticAlphaComplex engine(t, with_radius(7000 * 7000));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(engine.statistics().audits > 0);
+  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
+}
+
+TEST_CASE("stationary cells on a lattice produce no events", "[kinetic][engine][degenerate]") {
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100, 200};
+  int id = 1;
+  for (int x = 0; x < 3; ++x)
+    for (int y = 0; y < 3; ++y)
+      for (int z = 0; z < 3; ++z) {
+        GridPoint p{5 * x, 5 * y, 5 * z};
+        t.cells.push_back({id++, 1, 0, {p, p, p}});
+      }
+  KineticAlphaComplex engine(t, with_radius(9));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  REQUIRE(engine.statistics().batches == 0);
+  // rho = 3: axis edges (length 5, R = 2.5) are short and Gabriel; face diagonals (R = 3.54) and
+  // everything larger are long. K = 27 vertices + 3 * 2 * 3 * 3 = 54 axis edges.
+  REQUIRE(obs.complex().size() == 27 + 54);
+}
+
+TEST_CASE("cells in one plane are reported clearly, never a crash", "[kinetic][engine]") {
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100};
+  for (int i = 0; i < 6; ++i)
+    t.cells.push_back({i + 1, 1, 0, {{i * 3, (i * i) % 7, 0}, {i * 3 + 1, (i * i) % 7, 0}}});
+  Observer none;
+  KineticAlphaComplex first(t, with_radius(16));
+  REQUIRE_THROWS_AS(first.run(none), medusa::GeometryError);
+  KineticAlphaComplex second(t, with_radius(16));
+  REQUIRE_THROWS_WITH(second.run(none), Catch::Contains("one plane"));
+}
+
+TEST_CASE("colliding cells are an error naming both cells and the time", "[kinetic][engine]") {
+  Trajectories t = appendix_b();
+  t.cells.push_back({6, 1, 0, {{20, 20, 20}, {-20, -20, -20}}});
+  t.cells.push_back({7, 1, 0, {{-20, -20, -20}, {20, 20, 20}}});
+  Observer none;
+  KineticAlphaComplex first(t, with_radius(49));
+  REQUIRE_THROWS_AS(first.run(none), medusa::GeometryError);
+  KineticAlphaComplex second(t, with_radius(49));
+  REQUIRE_THROWS_WITH(second.run(none),
+                      Catch::Contains("6") && Catch::Contains("7") && Catch::Contains("50"));
+}
+
+TEST_CASE("cells inserted and deleted in the middle of a run keep the audit green", "[kinetic][engine]") {
+  Trajectories t = testing::random_walk(21, 40, 8, 50, 5);
+  // Cell 41 appears at frame 3; cell 1 disappears after frame 4.
+  Trajectory born;
+  born.cell_id = 41;
+  born.type = 2;
+  born.first_frame = 3;
+  for (int k = 3; k < 8; ++k)
+    born.positions.push_back({25 + k, 26, 27 - k});
+  t.cells.push_back(born);
+  t.cells[0].positions.resize(5);
+  KineticAlphaComplex engine(t, with_radius(100));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  REQUIRE(engine.statistics().insertions == 1);
+  REQUIRE(engine.statistics().deletions == 1);
+  REQUIRE(obs.step_counts[static_cast<int>(StepKind::insertion)] == 1);
+  REQUIRE(obs.step_counts[static_cast<int>(StepKind::deletion)] == 1);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(obs.complex().count(Simplex{0}) == 0);
+  REQUIRE(obs.complex().count(Simplex{40}) == 1);
+}
