@@ -1,18 +1,65 @@
-// The `medusa` command-line tool. Exit codes are documented in the README.
+// The `medusa` command-line tool. Exit codes are documented in the README; every error is one line
+// `medusa: <message>` on stderr.
+#include "commands.h"
+#include "interrupt.h"
+
 #include "medusa/kinetic/error.h"
 
 #include <CLI/CLI.hpp>
 
+#include <exception>
 #include <iostream>
+#include <new>
+
+namespace {
+
+int fail(const std::string& message, int code) {
+  std::cerr << "medusa: " << message << std::endl;
+  return code;
+}
+
+std::string joined(int argc, char** argv) {
+  std::string line;
+  for (int i = 0; i < argc; ++i)
+    line += (i > 0 ? " " : "") + std::string(argv[i]);
+  return line;
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"medusa: topology of cell-sorting simulations (kinetic alpha complex, alpha medusa, persistence)"};
-  app.require_subcommand(0, 1);
+  CLI::App app{
+      "medusa: topology of cell-sorting simulations (kinetic alpha complex, alpha medusa, persistence)"};
+  app.require_subcommand(1, 1);
+  medusa::cli::add_run_command(app, joined(argc, argv));
+  medusa::cli::add_info_command(app);
+  medusa::cli::add_diagrams_command(app);
+  medusa::cli::add_barcode_command(app);
+  medusa::cli::install_interrupt_handlers();
   try {
     app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
+    return 0;
+  } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0)
+      return app.exit(e);
+    return fail(e.what(), 2);
+  } catch (const medusa::cli::Interrupted&) {
+    return fail("interrupted; no partial output left", 130);
+  } catch (const medusa::InputError& e) {
+    return fail(e.what(), 3);
+  } catch (const medusa::GeometryError& e) {
+    return fail(e.what(), 4);
+  } catch (const medusa::StoreError& e) {
+    return fail(e.what(), 5);
+  } catch (const medusa::InternalError& e) {
+    return fail(std::string("internal error (please report): ") + e.what(), 1);
+  } catch (const std::bad_alloc&) {
+    return fail("out of memory", 1);
+  } catch (const std::exception& e) {
+    return fail(std::string("internal error (please report): ") + e.what(), 1);
   }
-  std::cout << app.help();
-  return 0;
 }

@@ -1,0 +1,63 @@
+// `medusa barcode`: export diagrams as GUDHI .pers, CSV, JSON or an SVG barcode.
+#include "atomic_file.h"
+#include "commands.h"
+#include "diagram_export.h"
+#include "diagram_selection.h"
+#include "svg_plot.h"
+
+#include "medusa/complex/store_reader.h"
+
+#include <iostream>
+#include <memory>
+
+namespace medusa::cli {
+namespace {
+
+struct BarcodeArguments {
+  std::string store;
+  std::string format = "pers";
+  std::string output;
+  DiagramSelection selection;
+};
+
+void barcode_command(const BarcodeArguments& args) {
+  const complex::Medusa medusa = complex::read_store(args.store);
+  const std::vector<persistence::Diagram> diagrams = selected_diagrams(medusa, args.selection);
+  const double t0 =
+      medusa.input.frame_times.empty() ? 0.0 : static_cast<double>(medusa.input.frame_times.front());
+  const double t_end =
+      medusa.input.frame_times.empty() ? 0.0 : static_cast<double>(medusa.input.frame_times.back());
+  auto write = [&](std::ostream& out) {
+    if (args.format == "pers")
+      write_pers(out, diagrams);
+    else if (args.format == "csv")
+      write_csv(out, diagrams);
+    else if (args.format == "json")
+      write_json(out, diagrams);
+    else
+      write_barcode_svg(out, diagrams, t0, t_end);
+  };
+  if (args.output.empty() || args.output == "-")
+    write(std::cout);
+  else
+    write_file_atomically(args.output, write);
+}
+
+} // namespace
+
+void add_barcode_command(CLI::App& app) {
+  auto args = std::make_shared<BarcodeArguments>();
+  CLI::App* barcode =
+      app.add_subcommand("barcode", "Export persistence diagrams (pers, csv, json) or an SVG barcode");
+  barcode->add_option("store", args->store, "HDF5 store written by `medusa run`")->required();
+  barcode
+      ->add_option("--format", args->format,
+                   "pers (GUDHI: dim birth death), csv (birth,death,dimension,type,direction), json, svg")
+      ->check(CLI::IsMember({"pers", "csv", "json", "svg"}))
+      ->capture_default_str();
+  barcode->add_option("-o,--output", args->output, "output file (default: stdout)");
+  add_selection_options(*barcode, args->selection);
+  barcode->callback([args] { barcode_command(*args); });
+}
+
+} // namespace medusa::cli

@@ -1,0 +1,55 @@
+// `medusa info`: what a store holds (docs/FORMAT.md).
+#include "commands.h"
+#include "diagram_selection.h"
+
+#include "medusa/complex/store_reader.h"
+
+#include <iostream>
+#include <memory>
+
+namespace medusa::cli {
+namespace {
+
+void info_command(const std::string& path) {
+  const complex::Medusa medusa = complex::read_store(path);
+  const kinetic::Trajectories& input = medusa.input;
+  std::cout << "store: " << path << "\n"
+            << "software version: " << medusa.run.software_version << "\n"
+            << "command line: " << medusa.run.command_line << "\n"
+            << "radius: " << medusa.run.radius_text << "\n"
+            << "source files: " << medusa.run.source_files.size() << "\n";
+  for (const std::string& f : medusa.run.source_files)
+    std::cout << "  " << f << "\n";
+  std::cout << "dimension: " << input.dimension << "\n"
+            << "grid scale: " << input.scale << "\n"
+            << "cells: " << input.cells.size() << "\n"
+            << "frames: " << input.frames() << "\n";
+  if (!input.frame_times.empty())
+    std::cout << "MCS: " << input.frame_times.front() << " to " << input.frame_times.back() << "\n";
+  std::cout << "batches: " << medusa.batches.size() << "\n"
+            << "medusa cells: " << medusa.cells.size() << "\n";
+  for (int k = 0; k <= 4; ++k)
+    std::cout << "  dimension " << k << ": " << medusa.cells_of_dimension(k).size() << "\n";
+  const std::vector<int> types = vertex_types(medusa);
+  std::cout << "cell types:";
+  for (int t : distinct_types(types)) {
+    std::size_t count = 0;
+    for (int v : types)
+      count += v == t ? 1 : 0;
+    const auto index = static_cast<std::size_t>(t);
+    const std::string name = index < input.type_names.size() ? input.type_names[index] : "";
+    std::cout << " " << t << (name.empty() ? "" : " (" + name + ")") << ": " << count << ";";
+  }
+  std::cout << "\n";
+}
+
+} // namespace
+
+void add_info_command(CLI::App& app) {
+  auto path = std::make_shared<std::string>();
+  CLI::App* info = app.add_subcommand("info", "Describe what a medusa store holds");
+  info->add_option("store", *path, "HDF5 store written by `medusa run`")->required();
+  info->callback([path] { info_command(*path); });
+}
+
+} // namespace medusa::cli

@@ -1,0 +1,58 @@
+#include "diagram_export.h"
+
+#include "diagram_selection.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+namespace medusa::cli {
+
+std::string format_time(double t) {
+  if (std::isinf(t))
+    return t > 0 ? "inf" : "-inf";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.17g", t);
+  return buffer;
+}
+
+void write_pairs_text(std::ostream& out, const std::vector<persistence::Diagram>& diagrams) {
+  for (const persistence::Diagram& d : diagrams) {
+    out << "# type " << type_label(d.cell_type) << ", " << direction_name(d.direction) << ", "
+        << d.pairs.size() << " pairs (birth death dim)\n";
+    for (const persistence::PersistencePair& p : d.pairs)
+      out << format_time(p.birth) << ' ' << format_time(p.death) << ' ' << p.dim << '\n';
+  }
+}
+
+void write_pers(std::ostream& out, const std::vector<persistence::Diagram>& diagrams) {
+  for (const persistence::Diagram& d : diagrams)
+    for (const persistence::PersistencePair& p : d.pairs)
+      out << p.dim << ' ' << format_time(p.birth) << ' ' << format_time(p.death) << '\n';
+}
+
+void write_csv(std::ostream& out, const std::vector<persistence::Diagram>& diagrams) {
+  out << "birth,death,dimension,type,direction\n";
+  for (const persistence::Diagram& d : diagrams)
+    for (const persistence::PersistencePair& p : d.pairs)
+      out << format_time(p.birth) << ',' << format_time(p.death) << ',' << p.dim << ','
+          << type_label(d.cell_type) << ',' << direction_name(d.direction) << '\n';
+}
+
+void write_json(std::ostream& out, const std::vector<persistence::Diagram>& diagrams) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const persistence::Diagram& d : diagrams) {
+    nlohmann::json pairs = nlohmann::json::array();
+    for (const persistence::PersistencePair& p : d.pairs) {
+      nlohmann::json death =
+          std::isinf(p.death) ? nlohmann::json(format_time(p.death)) : nlohmann::json(p.death);
+      pairs.push_back({{"dimension", p.dim}, {"birth", p.birth}, {"death", death}});
+    }
+    list.push_back(
+        {{"type", type_label(d.cell_type)}, {"direction", direction_name(d.direction)}, {"pairs", pairs}});
+  }
+  out << nlohmann::json{{"diagrams", list}}.dump(1) << '\n';
+}
+
+} // namespace medusa::cli

@@ -1,0 +1,70 @@
+#include "diagram_selection.h"
+
+#include "medusa/kinetic/error.h"
+#include "medusa/persistence/medusa_diagrams.h"
+
+#include <algorithm>
+
+namespace medusa::cli {
+
+void add_selection_options(CLI::App& command, DiagramSelection& selection) {
+  command.add_option("--filtration", selection.filtration, "forward, reverse or both (MATH.md 7.2, 7.3)")
+      ->check(CLI::IsMember({"forward", "reverse", "both"}))
+      ->capture_default_str();
+  command.add_option("--type", selection.type, "only the sub-medusa of this cell type (MATH.md 7.4)");
+  command.add_option("--dim", selection.dim, "only this homology degree")->check(CLI::Range(0, 3));
+  command.add_flag("--zero-length", selection.zero_length,
+                   "keep zero-length pairs (birth and death in the same batch)");
+}
+
+std::vector<int> vertex_types(const complex::Medusa& medusa) {
+  std::vector<int> types;
+  types.reserve(medusa.input.cells.size());
+  for (const kinetic::Trajectory& t : medusa.input.cells)
+    types.push_back(t.type);
+  return types;
+}
+
+std::vector<int> distinct_types(const std::vector<int>& vertex_type) {
+  std::vector<int> types = vertex_type;
+  std::sort(types.begin(), types.end());
+  types.erase(std::unique(types.begin(), types.end()), types.end());
+  return types;
+}
+
+std::vector<persistence::Diagram> selected_diagrams(const complex::Medusa& medusa,
+                                                    const DiagramSelection& selection) {
+  const std::vector<int> vertex_type = vertex_types(medusa);
+  std::vector<int> types = distinct_types(vertex_type);
+  if (selection.type) {
+    if (std::find(types.begin(), types.end(), *selection.type) == types.end())
+      throw InputError("cell type " + std::to_string(*selection.type) + " does not occur in the store");
+    types = {*selection.type};
+  }
+  std::vector<persistence::Diagram> all =
+      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types);
+  std::vector<persistence::Diagram> chosen;
+  for (persistence::Diagram& d : all) {
+    if (selection.type && d.cell_type != *selection.type)
+      continue;
+    if (selection.filtration != "both" && direction_name(d.direction) != selection.filtration)
+      continue;
+    std::vector<persistence::PersistencePair> kept;
+    for (persistence::PersistencePair& p : d.pairs)
+      if ((!selection.dim || p.dim == *selection.dim) && (selection.zero_length || !p.zero_length))
+        kept.push_back(std::move(p));
+    d.pairs = std::move(kept);
+    chosen.push_back(std::move(d));
+  }
+  return chosen;
+}
+
+std::string direction_name(persistence::Direction direction) {
+  return direction == persistence::Direction::forward ? "forward" : "reverse";
+}
+
+std::string type_label(int cell_type) {
+  return cell_type == persistence::all_types ? "all" : std::to_string(cell_type);
+}
+
+} // namespace medusa::cli

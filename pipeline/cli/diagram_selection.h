@@ -1,0 +1,39 @@
+// Which diagrams of a medusa a command works on: direction, cell type, homology degree (MATH.md
+// 7.2-7.4), and computing them from the cells.
+#pragma once
+
+#include "medusa/complex/medusa.h"
+#include "medusa/persistence/diagram.h"
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace medusa::cli {
+
+struct DiagramSelection {
+  std::string filtration = "both"; // forward, reverse or both
+  std::optional<int> type;         // a cell type, or the whole medusa plus every type when unset
+  std::optional<int> dim;          // one homology degree, or all
+  bool zero_length = false;        // keep the zero-length pairs (same batch, on the diagonal)
+};
+
+// Adds --filtration, --type, --dim and --zero-length to a subcommand.
+void add_selection_options(CLI::App& command, DiagramSelection& selection);
+
+// Vertex types of the stored input (index = vertex id) and the distinct types, increasing.
+std::vector<int> vertex_types(const complex::Medusa& medusa);
+std::vector<int> distinct_types(const std::vector<int>& vertex_type);
+
+// The diagrams of `medusa` that the selection asks for, in compute_medusa_diagrams order, with pairs
+// of other degrees and (unless asked) zero-length pairs removed. An unknown type is an InputError.
+std::vector<persistence::Diagram> selected_diagrams(const complex::Medusa& medusa,
+                                                    const DiagramSelection& selection);
+
+std::string direction_name(persistence::Direction direction);
+// "all" for the whole medusa, else the type id.
+std::string type_label(int cell_type);
+
+} // namespace medusa::cli

@@ -1,0 +1,88 @@
+#include "run_summary.h"
+
+#include "diagram_export.h"
+#include "diagram_selection.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace medusa::cli {
+namespace {
+
+std::string mcs(double t) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", t);
+  return buffer;
+}
+
+const char* const feature_names[] = {"cluster", "loop", "cavity"};
+const char* const feature_plurals[] = {"clusters", "loops", "cavities"};
+
+} // namespace
+
+void describe_forward_diagram(std::ostream& out, const persistence::Diagram& diagram, double t0,
+                              double t_end) {
+  // Components alive just after t0: born in batch 0 and not killed there (zero-length pairs are
+  // killed in their birth batch, MATH.md 7.5). Those alive at the end are the essential classes.
+  std::size_t at_start = 0, at_end = 0;
+  for (const persistence::PersistencePair& p : diagram.pairs)
+    if (p.dim == 0) {
+      at_start += p.birth_time.batch == 0 && !p.zero_length ? 1 : 0;
+      at_end += p.essential ? 1 : 0;
+    }
+  out << "  " << at_start << " clusters at MCS " << mcs(t0) << " merge into " << at_end << " by MCS "
+      << mcs(t_end) << "\n";
+  for (int k = 1; k <= 2; ++k) {
+    const persistence::PersistencePair* longest = nullptr;
+    std::size_t count = 0;
+    for (const persistence::PersistencePair& p : diagram.pairs) {
+      if (p.dim != k || p.zero_length)
+        continue;
+      ++count;
+      const double life = (p.essential ? t_end : p.death) - p.birth;
+      if (longest == nullptr || life > (longest->essential ? t_end : longest->death) - longest->birth)
+        longest = &p;
+    }
+    out << "  " << count << " " << (count == 1 ? feature_names[k] : feature_plurals[k]);
+    if (longest != nullptr) {
+      out << "; longest-lived " << feature_names[k] << " born at MCS " << mcs(longest->birth);
+      if (longest->essential)
+        out << ", still open at MCS " << mcs(t_end);
+      else
+        out << ", filled at MCS " << mcs(longest->death) << " (lifetime "
+            << mcs(longest->death - longest->birth) << " MCS)";
+    }
+    out << "\n";
+  }
+}
+
+void write_run_summary(std::ostream& out, const complex::Medusa& medusa,
+                       const kinetic::KineticStatistics& stats,
+                       const std::vector<persistence::Diagram>& diagrams, const std::string& radius_text) {
+  const kinetic::Trajectories& input = medusa.input;
+  const double t0 = input.frame_times.empty() ? 0.0 : static_cast<double>(input.frame_times.front());
+  const double t_end = input.frame_times.empty() ? 0.0 : static_cast<double>(input.frame_times.back());
+  out << "cells: " << input.cells.size() << " trajectories, frames: " << input.frames() << " (MCS " << mcs(t0)
+      << " to " << mcs(t_end) << "), dimension " << input.dimension << "\n"
+      << "radius: " << radius_text << " lattice units\n"
+      << "events: " << stats.flips23 + stats.flips32 + stats.hull_flips << " flips (" << stats.flips23
+      << " 2-3, " << stats.flips32 << " 3-2, " << stats.hull_flips << " hull), " << stats.radius_events
+      << " radius events, " << stats.insertions << " insertions, " << stats.deletions << " deletions\n"
+      << "medusa cells:";
+  for (int k = 0; k <= 4; ++k)
+    out << " dim " << k << ": " << medusa.cells_of_dimension(k).size() << (k < 4 ? "," : "\n");
+  for (const persistence::Diagram& d : diagrams) {
+    if (d.direction != persistence::Direction::forward)
+      continue;
+    if (d.cell_type == persistence::all_types) {
+      out << "all cells:\n";
+    } else {
+      const auto index = static_cast<std::size_t>(d.cell_type);
+      const std::string name = index < input.type_names.size() ? input.type_names[index] : "";
+      out << "type " << d.cell_type << (name.empty() ? "" : " (" + name + ")") << ":\n";
+    }
+    describe_forward_diagram(out, d, t0, t_end);
+  }
+}
+
+} // namespace medusa::cli
