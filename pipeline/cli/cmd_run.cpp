@@ -64,7 +64,7 @@ public:
     end.batch = std::max(end.batch, last_batch_ + 1);
     next_.finish(end);
     if (show_)
-      std::cerr << "\n";
+      std::cerr << "\rmedusa: frame " << frames_ << " of " << frames_ << "\n";
   }
 
 private:
@@ -116,6 +116,29 @@ std::string radius_from_volumes(const io::RunData& data) {
   return buffer;
 }
 
+// Diagrams from the stored cells, so that what later commands see is what the summary describes.
+void write_diagrams_and_summary(const std::string& output, const std::string& stem,
+                                const kinetic::KineticStatistics& stats, const std::string& radius) {
+  const complex::Medusa medusa = complex::read_store(output);
+  const std::vector<int> vertex_type = vertex_types(medusa);
+  std::vector<persistence::Diagram> diagrams =
+      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, distinct_types(vertex_type));
+  std::vector<persistence::Diagram> shown;
+  for (const persistence::Diagram& d : diagrams)
+    shown.push_back(persistence::without_zero_length(d));
+  check_interrupted();
+
+  const double t0 = static_cast<double>(medusa.input.frame_times.front());
+  const double t_end = static_cast<double>(medusa.input.frame_times.back());
+  write_file_atomically(stem + ".diagrams.csv", [&](std::ostream& out) { write_csv(out, shown); });
+  write_file_atomically(stem + ".barcode.svg",
+                        [&](std::ostream& out) { write_barcode_svg(out, shown, t0, t_end); });
+  check_interrupted();
+
+  write_run_summary(std::cout, medusa, stats, diagrams, radius);
+  std::cout << "wrote " << output << ", " << stem << ".diagrams.csv, " << stem << ".barcode.svg\n";
+}
+
 void run_command(const RunArguments& args, const std::string& command_line) {
   const std::string input =
       args.input.empty() ? std::string(MEDUSA_SOURCE_DIR) + "/examples/sorting_3d" : args.input;
@@ -157,24 +180,17 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     engine.run(observer);
   }
 
-  // Diagrams from the stored cells: what later commands see is what the summary describes.
-  const complex::Medusa medusa = complex::read_store(output);
-  const std::vector<int> vertex_type = vertex_types(medusa);
-  std::vector<persistence::Diagram> diagrams =
-      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, distinct_types(vertex_type));
-  std::vector<persistence::Diagram> shown;
-  for (const persistence::Diagram& d : diagrams)
-    shown.push_back(persistence::without_zero_length(d));
-
+  // README: an interrupted run leaves no output behind, including a store already completed.
   const std::string stem = output_stem(output);
-  const double t0 = static_cast<double>(medusa.input.frame_times.front());
-  const double t_end = static_cast<double>(medusa.input.frame_times.back());
-  write_file_atomically(stem + ".diagrams.csv", [&](std::ostream& out) { write_csv(out, shown); });
-  write_file_atomically(stem + ".barcode.svg",
-                        [&](std::ostream& out) { write_barcode_svg(out, shown, t0, t_end); });
-
-  write_run_summary(std::cout, medusa, engine.statistics(), diagrams, radius);
-  std::cout << "wrote " << output << ", " << stem << ".diagrams.csv, " << stem << ".barcode.svg\n";
+  const std::vector<std::string> outputs = {output, stem + ".diagrams.csv", stem + ".barcode.svg"};
+  try {
+    check_interrupted();
+    write_diagrams_and_summary(output, stem, engine.statistics(), radius);
+  } catch (const Interrupted&) {
+    for (const std::string& path : outputs)
+      fs::remove(path, ec);
+    throw;
+  }
 }
 
 } // namespace

@@ -7,11 +7,31 @@
 
 namespace medusa::cli {
 
+namespace {
+
+// A cell type id: the whole string is a decimal int.
+std::optional<int> parse_type(const std::string& value) {
+  if (value.empty() || value.size() > 9 || value.find_first_not_of("0123456789") != std::string::npos)
+    return std::nullopt;
+  return std::stoi(value);
+}
+
+} // namespace
+
 void add_selection_options(CLI::App& command, DiagramSelection& selection) {
   command.add_option("--filtration", selection.filtration, "forward, reverse or both (MATH.md 7.2, 7.3)")
       ->check(CLI::IsMember({"forward", "reverse", "both"}))
       ->capture_default_str();
-  command.add_option("--type", selection.type, "only the sub-medusa of this cell type (MATH.md 7.4)");
+  command
+      .add_option(
+          "--type", selection.type,
+          "only the sub-medusa of this cell type id (MATH.md 7.4), or 'all' for the whole medusa only")
+      ->check(CLI::Validator(
+          [](std::string& value) {
+            return value == "all" || parse_type(value) ? std::string()
+                                                       : "'" + value + "' is not a type id or 'all'";
+          },
+          "TYPE"));
   command.add_option("--dim", selection.dim, "only this homology degree")->check(CLI::Range(0, 3));
   command.add_flag("--zero-length", selection.zero_length,
                    "keep zero-length pairs (birth and death in the same batch)");
@@ -36,16 +56,18 @@ std::vector<persistence::Diagram> selected_diagrams(const complex::Medusa& medus
                                                     const DiagramSelection& selection) {
   const std::vector<int> vertex_type = vertex_types(medusa);
   std::vector<int> types = distinct_types(vertex_type);
+  std::optional<int> wanted; // the one diagram type asked for (all_types: the whole medusa)
   if (selection.type) {
-    if (std::find(types.begin(), types.end(), *selection.type) == types.end())
-      throw InputError("cell type " + std::to_string(*selection.type) + " does not occur in the store");
-    types = {*selection.type};
+    wanted = *selection.type == "all" ? persistence::all_types : *parse_type(*selection.type);
+    if (*wanted != persistence::all_types && std::find(types.begin(), types.end(), *wanted) == types.end())
+      throw InputError("cell type " + *selection.type + " does not occur in the store");
+    types = *wanted == persistence::all_types ? std::vector<int>{} : std::vector<int>{*wanted};
   }
   std::vector<persistence::Diagram> all =
       persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types);
   std::vector<persistence::Diagram> chosen;
   for (persistence::Diagram& d : all) {
-    if (selection.type && d.cell_type != *selection.type)
+    if (wanted && d.cell_type != *wanted)
       continue;
     if (selection.filtration != "both" && direction_name(d.direction) != selection.filtration)
       continue;

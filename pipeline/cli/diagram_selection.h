@@ -15,9 +15,10 @@ namespace medusa::cli {
 
 struct DiagramSelection {
   std::string filtration = "both"; // forward, reverse or both
-  std::optional<int> type;         // a cell type, or the whole medusa plus every type when unset
-  std::optional<int> dim;          // one homology degree, or all
-  bool zero_length = false;        // keep the zero-length pairs (same batch, on the diagonal)
+  // A cell type id, "all" for the whole medusa only; unset: the whole medusa and every type.
+  std::optional<std::string> type;
+  std::optional<int> dim;   // one homology degree, or all
+  bool zero_length = false; // keep the zero-length pairs (same batch, on the diagonal)
 };
 
 // Adds --filtration, --type, --dim and --zero-length to a subcommand.
