@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   CLI::App app{
       "medusa: topology of cell-sorting simulations (kinetic alpha complex, alpha medusa, persistence)"};
   app.require_subcommand(1, 1);
+  app.set_version_flag("--version", std::string("medusa ") + MEDUSA_VERSION);
   medusa::cli::add_run_command(app, joined(argc, argv));
   medusa::cli::add_info_command(app);
   medusa::cli::add_diagrams_command(app);
@@ -42,6 +43,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0)

@@ -25,13 +25,21 @@ void describe_forward_diagram(std::ostream& out, const persistence::Diagram& dia
   // Components alive just after t0: born in batch 0 and not killed there (zero-length pairs are
   // killed in their birth batch, MATH.md 7.5). Those alive at the end are the essential classes.
   std::size_t at_start = 0, at_end = 0;
+  const persistence::PersistencePair* last_merge = nullptr; // the longest-lived finite H0 class
   for (const persistence::PersistencePair& p : diagram.pairs)
     if (p.dim == 0) {
       at_start += p.birth_time.batch == 0 && !p.zero_length ? 1 : 0;
       at_end += p.essential ? 1 : 0;
+      if (!p.essential && !p.zero_length &&
+          (last_merge == nullptr || p.death - p.birth > last_merge->death - last_merge->birth))
+        last_merge = &p;
     }
-  out << "  " << at_start << " clusters at MCS " << mcs(t0) << " merge into " << at_end << " by MCS "
-      << mcs(t_end) << "\n";
+  out << "  " << at_start << (at_start == 1 ? " cluster" : " clusters") << " at MCS " << mcs(t0)
+      << " merge into " << at_end << " by MCS " << mcs(t_end);
+  if (last_merge != nullptr)
+    out << "; longest-lived separate cluster born at MCS " << mcs(last_merge->birth) << ", merged at MCS "
+        << mcs(last_merge->death);
+  out << "\n";
   for (int k = 1; k <= 2; ++k) {
     const persistence::PersistencePair* longest = nullptr;
     std::size_t count = 0;
