@@ -903,6 +903,7 @@ struct KineticAlphaComplex::Impl {
     // t_end: the reported state is K(t_end-) (MATH.md conventions).
     slab = traj.frames() - 1;
     now = SlabTime();
+    ++batch_index; // t_end is later than every batch: cells alive at the end die there
     observer.finish(event_time(true));
   }
 
