@@ -36,6 +36,9 @@ int main(int argc, char** argv) {
   medusa::cli::add_info_command(app);
   medusa::cli::add_diagrams_command(app);
   medusa::cli::add_barcode_command(app);
+  medusa::cli::add_compare_command(app);
+  medusa::cli::add_curves_command(app);
+  medusa::cli::add_at_command(app);
   medusa::cli::install_interrupt_handlers();
   try {
     app.parse(argc, argv);

@@ -1,0 +1,122 @@
+// `medusa curves`: simplex counts, Euler characteristic and Betti numbers of the time slices K_t
+// (MATH.md 6.6), for the whole complex and for each cell type's subcomplex (7.4), as CSV and SVG.
+#include "atomic_file.h"
+#include "commands.h"
+#include "curve_plot.h"
+#include "diagram_export.h"
+#include "diagram_selection.h"
+#include "interrupt.h"
+
+#include "medusa/complex/signatures.h"
+#include "medusa/complex/store_reader.h"
+
+#include <iostream>
+#include <memory>
+#include <optional>
+
+namespace medusa::cli {
+namespace {
+
+struct CurvesArguments {
+  std::string store;
+  std::string prefix;
+};
+
+struct TypeCurves {
+  std::string label; // "all" or the type id
+  std::vector<complex::SignatureSample> samples;
+};
+
+std::string store_stem(const std::string& store) {
+  const std::string suffix = ".h5";
+  if (store.size() > suffix.size() && store.compare(store.size() - suffix.size(), suffix.size(), suffix) == 0)
+    return store.substr(0, store.size() - suffix.size());
+  return store;
+}
+
+void write_curves_csv(std::ostream& out, const std::vector<TypeCurves>& all) {
+  out << "time,type,f0,f1,f2,f3,euler,b0,b1,b2\n";
+  for (const TypeCurves& c : all)
+    for (const complex::SignatureSample& s : c.samples) {
+      const complex::Signature& g = s.signature;
+      out << format_time(s.time) << ',' << c.label << ',' << g.f[0] << ',' << g.f[1] << ',' << g.f[2] << ','
+          << g.f[3] << ',' << g.euler << ',' << g.betti[0] << ',' << g.betti[1] << ',' << g.betti[2] << '\n';
+    }
+}
+
+std::vector<CurvePanel> panels_of(const std::vector<TypeCurves>& all) {
+  std::vector<CurvePanel> panels;
+  for (const TypeCurves& c : all) {
+    CurvePanel betti{"type " + c.label + ": Betti numbers of K_t", {}};
+    CurvePanel counts{"type " + c.label + ": simplices of K_t", {}};
+    for (int k = 0; k <= 3; ++k) {
+      Curve b{"b" + std::to_string(k), {}, {}}, f{"f" + std::to_string(k), {}, {}};
+      for (const complex::SignatureSample& s : c.samples) {
+        b.times.push_back(s.time);
+        b.values.push_back(static_cast<double>(s.signature.betti[static_cast<std::size_t>(k)]));
+        f.times.push_back(s.time);
+        f.values.push_back(static_cast<double>(s.signature.f[static_cast<std::size_t>(k)]));
+      }
+      if (k < 3)
+        betti.curves.push_back(std::move(b));
+      counts.curves.push_back(std::move(f));
+    }
+    panels.push_back(std::move(betti));
+    panels.push_back(std::move(counts));
+  }
+  return panels;
+}
+
+void describe(std::ostream& out, const complex::SignatureSample& s) {
+  const complex::Signature& g = s.signature;
+  out << "MCS " << format_time(s.time) << ": " << g.f[0] << " vertices, " << g.f[1] << " edges, " << g.f[2]
+      << " triangles, " << g.f[3] << " tetrahedra; b0 " << g.betti[0] << ", b1 " << g.betti[1] << ", b2 "
+      << g.betti[2];
+}
+
+void curves_command(const CurvesArguments& args) {
+  const complex::Medusa medusa = complex::read_store(args.store);
+  std::vector<TypeCurves> all;
+  std::vector<std::optional<int>> types{std::nullopt};
+  for (int t : distinct_types(vertex_types(medusa)))
+    types.emplace_back(t);
+  for (const std::optional<int>& type : types) {
+    check_interrupted();
+    const complex::ComplexIndex index(medusa, type);
+    all.push_back({type ? std::to_string(*type) : "all", complex::signatures_over_time(index)});
+  }
+  check_interrupted();
+
+  std::cout << "K_t sampled after each of " << medusa.batches.size() << " event batches and at the end\n";
+  for (const TypeCurves& c : all) {
+    std::cout << "type " << c.label << ":\n  ";
+    describe(std::cout, c.samples.front());
+    std::cout << "\n  ";
+    describe(std::cout, c.samples.back());
+    std::cout << "\n";
+  }
+  const double t0 =
+      medusa.input.frame_times.empty() ? 0.0 : static_cast<double>(medusa.input.frame_times.front());
+  const double t_end =
+      medusa.input.frame_times.empty() ? 0.0 : static_cast<double>(medusa.input.frame_times.back());
+  const std::string prefix = args.prefix.empty() ? store_stem(args.store) : args.prefix;
+  const std::string csv = prefix + ".curves.csv", svg = prefix + ".curves.svg";
+  write_file_atomically(csv, [&](std::ostream& out) { write_curves_csv(out, all); });
+  write_file_atomically(svg, [&](std::ostream& out) { write_curves_svg(out, panels_of(all), t0, t_end); });
+  std::cout << "wrote " << csv << ", " << svg << "\n";
+}
+
+} // namespace
+
+void add_curves_command(CLI::App& app) {
+  auto args = std::make_shared<CurvesArguments>();
+  CLI::App* curves = app.add_subcommand(
+      "curves", "Simplex counts, Euler characteristic and Betti numbers of K_t over time (CSV and SVG)");
+  curves->add_option("store", args->store, "HDF5 store written by `medusa run`")->required();
+  curves->add_option("-o,--output", args->prefix,
+                     "output prefix: writes <prefix>.curves.csv (time,type,f0,f1,f2,f3,euler,b0,b1,b2) and "
+                     "<prefix>.curves.svg (default: the store name without .h5)");
+  curves->callback([args] { curves_command(*args); });
+}
+
+} // namespace medusa::cli

@@ -1,0 +1,108 @@
+#include "comparison.h"
+
+#include "diagram_selection.h"
+
+#include "medusa/complex/store_reader.h"
+#include "medusa/kinetic/error.h"
+#include "medusa/persistence/bottleneck.h"
+#include "medusa/persistence/medusa_diagrams.h"
+#include "medusa/persistence/wasserstein.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+namespace medusa::cli {
+namespace {
+
+// p of "wasserstein:p": a decimal number >= 1, or nothing when the spec is not of that form.
+bool parse_wasserstein(const std::string& spec, double& p, std::string& text) {
+  const std::string prefix = "wasserstein:";
+  if (spec.compare(0, prefix.size(), prefix) != 0)
+    return false;
+  text = spec.substr(prefix.size());
+  if (text.empty() || text.find_first_not_of("0123456789.") != std::string::npos)
+    return false;
+  char* end = nullptr;
+  p = std::strtod(text.c_str(), &end);
+  return end != nullptr && *end == '\0' && p >= 1.0;
+}
+
+} // namespace
+
+ComparedDiagram compared_diagram(const std::string& store, const ComparisonSelection& selection) {
+  const complex::Medusa medusa = complex::read_store(store);
+  DiagramSelection wanted;
+  wanted.type = selection.type;
+  wanted.filtration = selection.filtration;
+  wanted.dim = selection.dim;
+  std::vector<persistence::Diagram> diagrams = selected_diagrams(medusa, wanted);
+  if (diagrams.size() != 1)
+    throw InternalError("medusa compare: " + std::to_string(diagrams.size()) + " diagrams selected in " +
+                        store);
+  if (medusa.input.frame_times.size() < 2)
+    throw InputError("store " + store + " has fewer than two frames; its time axis cannot be normalised");
+  ComparedDiagram result;
+  result.name = std::filesystem::path(store).stem().string();
+  result.t0 = static_cast<double>(medusa.input.frame_times.front());
+  result.t_end = static_cast<double>(medusa.input.frame_times.back());
+  result.points = persistence::normalise_time(persistence::to_points(diagrams.front(), selection.dim),
+                                              diagrams.front().direction, result.t0, result.t_end);
+  return result;
+}
+
+std::vector<std::string> run_names(const std::vector<std::string>& stores) {
+  std::vector<std::string> names;
+  for (const std::string& s : stores)
+    names.push_back(std::filesystem::path(s).stem().string());
+  std::vector<std::string> sorted = names;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    return stores;
+  return names;
+}
+
+std::string metric_spec_error(const std::string& spec) {
+  double p = 0;
+  std::string text;
+  if (spec == "bottleneck" || parse_wasserstein(spec, p, text))
+    return {};
+  return "'" + spec + "' is not 'bottleneck' or 'wasserstein:p' with a number p >= 1";
+}
+
+ComparisonMetric::ComparisonMetric(const std::string& spec, bool ignore_essential)
+    : ignore_essential_(ignore_essential) {
+  if (spec == "bottleneck")
+    return;
+  if (!parse_wasserstein(spec, p_, p_text_))
+    throw InputError("metric " + metric_spec_error(spec));
+  wasserstein_ = true;
+}
+
+double ComparisonMetric::operator()(const persistence::PointDiagram& a,
+                                    const persistence::PointDiagram& b) const {
+  if (!wasserstein_)
+    return persistence::bottleneck_distance(a, b, ignore_essential_).total;
+  persistence::WassersteinOptions options;
+  options.p = p_;
+  options.ignore_essential = ignore_essential_;
+  const persistence::DistanceResult r = persistence::wasserstein_distance(a, b, options);
+  if (!r.exact) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    relative_error_ = std::max(relative_error_, r.relative_error);
+  }
+  return r.total;
+}
+
+std::string ComparisonMetric::description() const {
+  const std::string essential =
+      ignore_essential_ ? "essential classes ignored" : "inf when the essential counts differ";
+  return (wasserstein_ ? "Wasserstein W_" + p_text_ : std::string("bottleneck")) + " (" + essential + ")";
+}
+
+double ComparisonMetric::largest_relative_error() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return relative_error_;
+}
+
+} // namespace medusa::cli

@@ -1,0 +1,59 @@
+// What `medusa compare` compares: one diagram per store (one cell type, homology degree and
+// filtration direction), as points on the normalised time axis of MATH.md 7.7, and the metric.
+#pragma once
+
+#include "medusa/persistence/distance.h"
+#include "medusa/persistence/distance_matrix.h"
+#include "medusa/persistence/points.h"
+
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace medusa::cli {
+
+struct ComparedDiagram {
+  std::string name; // the store's file name without folder and `.h5`
+  persistence::PointDiagram points;
+  double t0 = 0, t_end = 0; // the run's first and last frame time (MCS) before normalisation
+};
+
+struct ComparisonSelection {
+  std::string type = "all"; // a cell type id or "all" (the whole medusa)
+  int dim = 0;
+  std::string filtration = "forward";
+};
+
+// Reads `store`, computes its diagrams (MATH.md 7.2-7.4) and returns the selected one mapped to points
+// (reverse diagrams to -t, MATH.md 7.3) with the time normalisation t -> (t - t0) / (t_end - t0).
+// InputError if the type does not occur in the store.
+ComparedDiagram compared_diagram(const std::string& store, const ComparisonSelection& selection);
+
+// Unique run names: file stems, or the paths as given when two stems coincide.
+std::vector<std::string> run_names(const std::vector<std::string>& stores);
+
+// "bottleneck" or "wasserstein:p" (p >= 1), with the essential classes counted (+inf when their
+// numbers differ) unless ignored. Safe to call from several threads; records the largest certified
+// relative error of an approximate Wasserstein finite part.
+class ComparisonMetric {
+public:
+  // Throws InputError for an unknown metric or p < 1.
+  ComparisonMetric(const std::string& spec, bool ignore_essential);
+  double operator()(const persistence::PointDiagram& a, const persistence::PointDiagram& b) const;
+
+  std::string description() const;
+  double largest_relative_error() const;
+
+private:
+  bool wasserstein_ = false;
+  double p_ = 1.0;
+  std::string p_text_;
+  bool ignore_essential_ = false;
+  mutable std::mutex mutex_;
+  mutable double relative_error_ = 0;
+};
+
+// Checks a metric spec for the command line: empty string if valid, else the reason.
+std::string metric_spec_error(const std::string& spec);
+
+} // namespace medusa::cli

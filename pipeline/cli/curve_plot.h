@@ -1,0 +1,25 @@
+// Piecewise constant curves over time as a standalone SVG: one panel per group of curves, each curve a
+// step line (the value holds from its sample time until the next sample, MATH.md 6.6).
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace medusa::cli {
+
+struct Curve {
+  std::string name;
+  std::vector<double> times; // increasing
+  std::vector<double> values;
+};
+
+struct CurvePanel {
+  std::string title;
+  std::vector<Curve> curves;
+};
+
+// Panels stacked vertically on the shared time axis [t0, t_end] (MCS).
+void write_curves_svg(std::ostream& out, const std::vector<CurvePanel>& panels, double t0, double t_end);
+
+} // namespace medusa::cli
