@@ -1,0 +1,28 @@
+// Persistence diagrams stored next to the medusa they come from: the `/persistence` group of a
+// medusa store (docs/FORMAT.md, "Persistence diagrams").
+#pragma once
+
+#include "medusa/persistence/diagram.h"
+
+#include <string>
+#include <vector>
+
+namespace medusa::persistence {
+
+// Name of a diagram's subgroup: `<direction>_<type>`, e.g. `forward_all`, `reverse_type1`.
+std::string diagram_group_name(const Diagram& diagram);
+
+// Adds (or replaces) the group `/persistence` of the complete medusa store at `store_path`, one
+// subgroup per diagram. Written safely: the store is copied to `<store_path>.tmp-<pid>`, the copy is
+// changed and closed, then renamed over the original, so a crash leaves the original intact. Throws
+// StoreError naming the store when it cannot be read or written, is not a complete medusa store, or
+// two diagrams have the same group name.
+void write_diagrams(const std::string& store_path, const std::vector<Diagram>& diagrams);
+
+// Reads `/persistence` back, in the stored order. Each pair has dim, birth, death, birth_cell,
+// death_cell, essential and zero_length; the other fields of PersistencePair (virtual times,
+// filtration indices, vertices) are not stored and keep their defaults. Throws StoreError when the
+// store has no `/persistence` group or it is malformed.
+std::vector<Diagram> read_diagrams(const std::string& store_path);
+
+} // namespace medusa::persistence
