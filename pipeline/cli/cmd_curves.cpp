@@ -10,6 +10,7 @@
 #include "medusa/complex/signatures.h"
 #include "medusa/complex/store_reader.h"
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -20,6 +21,7 @@ namespace {
 struct CurvesArguments {
   std::string store;
   std::string prefix;
+  bool frames_only = false;
 };
 
 struct TypeCurves {
@@ -32,6 +34,20 @@ std::string store_stem(const std::string& store) {
   if (store.size() > suffix.size() && store.compare(store.size() - suffix.size(), suffix.size(), suffix) == 0)
     return store.substr(0, store.size() - suffix.size());
   return store;
+}
+
+// One sample per frame, at the frame's time: the signature reported at frame k (MATH.md 6.6), which
+// is that after the last batch at or before t_k (K(t_end-) for the last frame).
+std::vector<complex::SignatureSample> frame_samples(const std::vector<complex::SignatureSample>& samples,
+                                                    const kinetic::Trajectories& input) {
+  std::vector<complex::SignatureSample> by_frame(input.frames());
+  for (const complex::SignatureSample& s : samples)
+    for (std::size_t k : s.frames) {
+      by_frame.at(k) = s;
+      by_frame[k].time = static_cast<double>(input.frame_times[k]);
+      by_frame[k].frames = {k};
+    }
+  return by_frame;
 }
 
 void write_curves_csv(std::ostream& out, const std::vector<TypeCurves>& all) {
@@ -83,11 +99,17 @@ void curves_command(const CurvesArguments& args) {
   for (const std::optional<int>& type : types) {
     check_interrupted();
     const complex::ComplexIndex index(medusa, type);
-    all.push_back({type ? std::to_string(*type) : "all", complex::signatures_over_time(index)});
+    std::vector<complex::SignatureSample> samples = complex::signatures_over_time(index);
+    if (args.frames_only)
+      samples = frame_samples(samples, medusa.input);
+    all.push_back({type ? std::to_string(*type) : "all", std::move(samples)});
   }
   check_interrupted();
 
-  std::cout << "K_t sampled after each of " << medusa.batches.size() << " event batches and at the end\n";
+  if (args.frames_only)
+    std::cout << "K_t at each of " << medusa.input.frames() << " frames\n";
+  else
+    std::cout << "K_t sampled after each of " << medusa.batches.size() << " event batches and at the end\n";
   for (const TypeCurves& c : all) {
     std::cout << "type " << c.label << ":\n  ";
     describe(std::cout, c.samples.front());
@@ -116,6 +138,10 @@ void add_curves_command(CLI::App& app) {
   curves->add_option("-o,--output", args->prefix,
                      "output prefix: writes <prefix>.curves.csv (time,type,f0,f1,f2,f3,euler,b0,b1,b2) and "
                      "<prefix>.curves.svg (default: the store name without .h5)");
+  curves->add_flag(
+      "--frames-only", args->frames_only,
+      "one row per input frame (the state reported at the frame, MATH.md 6.6) instead of one per "
+      "event batch");
   curves->callback([args] { curves_command(*args); });
 }
 

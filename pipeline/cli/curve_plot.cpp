@@ -63,8 +63,11 @@ void write_curves_svg(std::ostream& out, const std::vector<CurvePanel>& panels, 
       if (!c.times.empty()) {
         out << "<path fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"1.5\" d=\"M"
             << number(x_of(c.times.front())) << "," << number(y_of(c.values.front()));
+        // A step is drawn only where the value changes, which keeps long runs (tens of thousands of
+        // event batches) small.
         for (std::size_t i = 1; i < c.times.size(); ++i)
-          out << " H" << number(x_of(c.times[i])) << " V" << number(y_of(c.values[i]));
+          if (c.values[i] != c.values[i - 1])
+            out << " H" << number(x_of(c.times[i])) << " V" << number(y_of(c.values[i]));
         out << " H" << number(x_of(t_end)) << "\"/>\n";
       }
       const double legend_y = y0 + 34 + 14 * static_cast<double>(k);

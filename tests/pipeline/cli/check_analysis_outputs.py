@@ -134,6 +134,18 @@ def check_curves(medusa, work, store, cells):
     root = ElementTree.parse(prefix + ".curves.svg").getroot()
     assert root.tag.endswith("svg")
 
+    # --frames-only: one row per frame and type, at the frame times; the last frame reports K(t_end-),
+    # the last row of the full curves.
+    run([medusa, "curves", store, "-o", prefix + "_frames", "--frames-only"], work)
+    with open(prefix + "_frames.curves.csv", newline="") as f:
+        frame_rows = list(csv.DictReader(f))
+    for label in first_rows:
+        mine = [r for r in frame_rows if r["type"] == label]
+        assert [float(r["time"]) for r in mine] == [float(t) for t in sorted(frames)], (label, mine)
+        assert mine[0] == first_rows[label], (mine[0], first_rows[label])
+        last = [r for r in rows if r["type"] == label][-1]
+        assert mine[-1] == last, (mine[-1], last)
+
 
 def read_simplices(path):
     with open(path, newline="") as f:
