@@ -226,6 +226,19 @@ def check_at(medusa, work, store, cells_csv):
     print("simplices by dimension:", dict(dims))
     assert dims[1] > 0 and dims[2] > 0, "expected edges and triangles at radius 3"
 
+    # --type 1 at the start: the type-1 subcomplex (MATH.md 7.4) has every type-1 cell as a vertex and
+    # only simplices whose vertices are all of type 1; it is the full subcomplex of K(t0+) on them.
+    t0 = times[0]
+    type1_path, all_path = os.path.join(work, "at_type1.csv"), os.path.join(work, "at_start.csv")
+    run([medusa, "at", store, "--time", str(t0), "--type", "1", "-o", type1_path], work)
+    run([medusa, "at", store, "--time", str(t0), "-o", all_path], work)
+    type1 = read_simplices(type1_path)
+    type_of = {cell_id: v[0] for cell_id, v in frames[t0].items() if cell_id in frames[times[1]]}
+    expected = [s for s in read_simplices(all_path) if all(type_of[c] == 1 for c in s)]
+    print(f"type-1 subcomplex at MCS {t0}: {len(type1)} simplices, {sum(1 for s in type1 if len(s) == 1)} vertices")
+    assert sorted(type1) == sorted(expected)
+    assert sum(1 for s in type1 if len(s) == 1) == sum(1 for t in type_of.values() if t == 1)
+
     # The same complex as VTK, half-way through the first slab: positions are the midpoints of the
     # input centres (linear interpolation), and the cell counts match the CSV of the same time.
     t_mid = (times[0] + times[1]) / 2

@@ -31,4 +31,14 @@ if [ "$(wc -l < results/compare.distances.csv)" -ne 4 ]; then
   echo "expected 3 rows"
   exit 1
 fi
+# plot_store.py without a diagrams CSV next to the store: it asks `medusa barcode --format csv`.
+mkdir -p alone
+cp results/stores/sorting_3d.h5 alone/
+/usr/bin/python3 "$examples/plot_store.py" alone/sorting_3d.h5 --medusa "$medusa"
+for f in alone/sorting_3d.barcodes.png alone/sorting_3d.betti.png; do
+  if [ ! -s "$f" ]; then
+    echo "missing or empty: $f"
+    exit 1
+  fi
+done
 echo ok
