@@ -22,7 +22,8 @@ Trajectories frame_window(Trajectories t, std::size_t first, std::size_t last) {
     if (c.first_frame >= last || c.last_frame() < first)
       continue;
     std::size_t from = std::max(c.first_frame, first), to = std::min(c.last_frame() + 1, last);
-    std::vector<GridPoint> p(c.positions.begin() + (from - c.first_frame), c.positions.begin() + (to - c.first_frame));
+    std::vector<GridPoint> p(c.positions.begin() + (from - c.first_frame),
+                             c.positions.begin() + (to - c.first_frame));
     c.positions = std::move(p);
     c.first_frame = from - first;
     kept.push_back(std::move(c));
