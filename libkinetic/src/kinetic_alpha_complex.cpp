@@ -273,17 +273,21 @@ struct KineticAlphaComplex::Impl {
       }
     }
     ++stats.exact_settled;
+    ++(c.kind == CertKind::delaunay ? stats.exact_delaunay : stats.exact_radius);
     ExactPoly f = to_exact_poly(cert_poly<mpz_class>(c));
     if (CGAL::is_zero(f))
       return; // identically zero: valid, never scheduled (MATH.md 3.9)
     int s = sign_plus(f, now);
     if (s < 0) {
+      ++stats.invalid_at_creation;
       mark_invalid(id);
       return;
     }
     std::vector<AlgebraicReal> roots = sign_changes_after(f, now);
-    if (!roots.empty())
+    if (!roots.empty()) {
+      ++stats.exact_scheduled;
       queue.push({roots.front(), static_cast<std::uint32_t>(id), c.version});
+    }
   }
 
   void mark_invalid(int id) {
