@@ -273,17 +273,21 @@ struct KineticAlphaComplex::Impl {
       }
     }
     ++stats.exact_settled;
+    ++(c.kind == CertKind::delaunay ? stats.exact_delaunay : stats.exact_radius);
     ExactPoly f = to_exact_poly(cert_poly<mpz_class>(c));
     if (CGAL::is_zero(f))
       return; // identically zero: valid, never scheduled (MATH.md 3.9)
     int s = sign_plus(f, now);
     if (s < 0) {
+      ++stats.invalid_at_creation;
       mark_invalid(id);
       return;
     }
     std::vector<AlgebraicReal> roots = sign_changes_after(f, now);
-    if (!roots.empty())
+    if (!roots.empty()) {
+      ++stats.exact_scheduled;
       queue.push({roots.front(), static_cast<std::uint32_t>(id), c.version});
+    }
   }
 
   void mark_invalid(int id) {
@@ -377,11 +381,73 @@ struct KineticAlphaComplex::Impl {
           check_collision(f);
         Face& face = faces[f];
         face.is_short = compute_short(f);
-        install_radius(f);
       }
     }
+    // Frontier membership of every surviving touched simplex: their cofaces changed (MATH.md 4.4,
+    // "after any change of Del"). Cofaces of new simplices are new, hence touched as well.
+    for (const Simplex& f : touched_faces)
+      if (f.size() > 1 && faces.count(f))
+        update_frontier(f);
     for (const Simplex& f : touched_facets)
       install_facet(f);
+  }
+
+  bool is_short(const Simplex& s) const {
+    if (s.size() == 1)
+      return true;
+    auto it = faces.find(s);
+    return it != faces.end() && it->second.is_short;
+  }
+
+  // The (k+1)-cofaces of a finite simplex in Del (finite ones only).
+  std::vector<Simplex> cofaces(const Simplex& s) const {
+    std::set<Simplex> result;
+    for (const Simplex& t : tri.tets_containing(s)) {
+      if (!is_finite(t))
+        continue;
+      if (s.size() == 3) {
+        result.insert(t);
+        continue;
+      }
+      for (VertexId v : t)
+        if (!s.contains(v)) {
+          std::array<VertexId, 4> w{};
+          std::size_t k = 0;
+          for (VertexId x : s)
+            w[k++] = x;
+          w[k++] = v;
+          result.insert(Simplex::from_range(w.begin(), w.begin() + k));
+        }
+    }
+    return {result.begin(), result.end()};
+  }
+
+  // The frontier (MATH.md 4.4): maximal short simplices and minimal long ones.
+  bool in_frontier(const Simplex& s) const {
+    if (is_short(s)) {
+      for (const Simplex& c : cofaces(s))
+        if (is_short(c))
+          return false;
+      return true;
+    }
+    if (s.size() == 2)
+      return true;
+    for (std::size_t i = 0; i < s.size(); ++i)
+      if (!is_short(s.facet(i)))
+        return false;
+    return true;
+  }
+
+  // Creates or drops the radius certificate of s so that exactly the frontier carries one.
+  void update_frontier(const Simplex& s) {
+    Face& f = faces.at(s);
+    bool want = in_frontier(s);
+    if (want && f.cert < 0)
+      install_radius(s);
+    else if (!want && f.cert >= 0) {
+      kill_cert(f.cert);
+      f.cert = -1;
+    }
   }
 
   int orientation_sign_plus(const Simplex& t) {
@@ -568,6 +634,12 @@ struct KineticAlphaComplex::Impl {
       f.is_short = !f.is_short;
       install_radius(s);
       ++stats.radius_events;
+      // Frontier update rules of MATH.md 4.4: facets may leave or enter, cofaces may enter or leave.
+      if (s.size() > 2)
+        for (std::size_t i = 0; i < s.size(); ++i)
+          update_frontier(s.facet(i));
+      for (const Simplex& c : cofaces(s))
+        update_frontier(c);
     }
     (void)settle;
   }
@@ -708,7 +780,8 @@ struct KineticAlphaComplex::Impl {
       install_facet(f);
     std::vector<Simplex> rs;
     for (const auto& kv : faces)
-      rs.push_back(kv.first);
+      if (kv.second.cert >= 0)
+        rs.push_back(kv.first);
     for (const Simplex& s : rs)
       install_radius(s);
   }
@@ -971,8 +1044,15 @@ struct KineticAlphaComplex::Impl {
         os << "simplex " << kv.first << " has a wrong shortness flag";
         audit_failure(os.str());
       }
-      if (kv.second.cert < 0 || !certs[static_cast<std::size_t>(kv.second.cert)].alive)
-        audit_failure("a simplex has no radius certificate");
+      // Certificates exactly on the frontier (MATH.md 4.4).
+      bool certified = kv.second.cert >= 0 && certs[static_cast<std::size_t>(kv.second.cert)].alive;
+      if (certified != in_frontier(kv.first)) {
+        std::ostringstream os;
+        os << "simplex " << kv.first
+           << (certified ? " has a radius certificate outside the frontier"
+                         : " is on the frontier without a radius certificate");
+        audit_failure(os.str());
+      }
     }
     // The alpha complex against CGAL's static Fixed_alpha_shape_3 at q.
     std::vector<Simplex> cgal_tets;

@@ -213,3 +213,108 @@ TEST_CASE("cells inserted and deleted in the middle of a run keep the audit gree
   REQUIRE(obs.complex().count(Simplex{0}) == 0);
   REQUIRE(obs.complex().count(Simplex{40}) == 1);
 }
+
+namespace {
+
+// Records each batch's time and step kinds.
+struct BatchLog : Observer {
+  struct Entry {
+    EventTime time;
+    std::vector<StepKind> kinds;
+    int flips_in_alpha = 0;
+  };
+  std::vector<Entry> batches;
+  void batch(const EventTime& t, const std::vector<Step>& steps) override {
+    Entry e{t, {}, 0};
+    for (const Step& s : steps) {
+      e.kinds.push_back(s.kind);
+      e.flips_in_alpha += s.flip && s.flip->in_alpha;
+    }
+    batches.push_back(e);
+  }
+  int count(StepKind k) const {
+    int n = 0;
+    for (const Entry& e : batches)
+      n += static_cast<int>(std::count(e.kinds.begin(), e.kinds.end(), k));
+    return n;
+  }
+};
+
+} // namespace
+
+TEST_CASE("a cell leaving the hull through a facet makes a hull flip when the tetrahedron flattens",
+          "[kinetic][engine]") {
+  // a, b, c, d fixed; e = (2,2,2) + u (6,6,6) crosses the hull facet bcd (x + y + z = 10) at
+  // u = 2/9, t = 200/9: the orientation of ebcd (a D-infinity certificate, case A) vanishes there.
+  // rho = 1: every edge is longer than 2, so no radius event interferes.
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100};
+  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p}}); };
+  still(1, {0, 0, 0});
+  still(2, {10, 0, 0});
+  still(3, {0, 10, 0});
+  still(4, {0, 0, 10});
+  t.cells.push_back({5, 1, 0, {{2, 2, 2}, {8, 8, 8}}});
+  KineticAlphaComplex engine(t, with_radius(1));
+  BatchLog log;
+  engine.run(log);
+  REQUIRE(engine.statistics().radius_events == 0);
+  REQUIRE(log.batches.size() >= 1);
+  REQUIRE(log.batches[0].time.time == Approx(200.0 / 9).epsilon(1e-12));
+  REQUIRE(log.count(StepKind::hull_flip) >= 1);
+  REQUIRE(engine.statistics().audits > 0);
+}
+
+TEST_CASE("two mirror-image flips at exactly the same time form one batch of two ranks",
+          "[kinetic][engine]") {
+  // The worked example and its mirror image through the plane x = 500: both D5 certificates vanish
+  // at u* = (47 - sqrt 257)/32, an irrational time, so the equality is decided exactly.
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100};
+  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p}}); };
+  const GridPoint pts[4] = {{5, 0, 0}, {-3, 4, 0}, {-3, -4, 0}, {0, 0, 10}};
+  for (int i = 0; i < 4; ++i) {
+    still(i + 1, pts[i]);
+    still(i + 11, {1000 - pts[i][0], pts[i][1], pts[i][2]});
+  }
+  t.cells.push_back({5, 2, 0, {{-2, 1, -6}, {2, 1, -2}}});
+  t.cells.push_back({15, 2, 0, {{1002, 1, -6}, {998, 1, -2}}});
+  KineticAlphaComplex engine(t, with_radius(49));
+  BatchLog log;
+  engine.run(log);
+  const double t_star = 100 * (47 - std::sqrt(257.0)) / 32;
+  int found = 0;
+  for (const auto& b : log.batches)
+    if (b.time.time == Approx(t_star).epsilon(1e-12)) {
+      ++found;
+      REQUIRE(std::count(b.kinds.begin(), b.kinds.end(), StepKind::flip23) == 2);
+      REQUIRE(b.flips_in_alpha == 2);
+    }
+  REQUIRE(found == 1);
+}
+
+TEST_CASE("a certificate vanishing exactly at a frame time is decided by the next slab",
+          "[kinetic][engine]") {
+  // The worked example scaled by 4: sphere through a, b, c, d has centre (0,0,15), radius 25. e runs
+  // up the z axis and reaches the sphere at (0,0,-10) exactly at frame 1 (t = 100), then goes
+  // inside: the flip belongs to the frame batch at t = 100, not to slab 0.
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100, 200};
+  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p, p}}); };
+  still(1, {20, 0, 0});
+  still(2, {-12, 16, 0});
+  still(3, {-12, -16, 0});
+  still(4, {0, 0, 40});
+  t.cells.push_back({5, 2, 0, {{0, 0, -30}, {0, 0, -10}, {0, 0, -2}}});
+  KineticAlphaComplex engine(t, with_radius(1));
+  BatchLog log;
+  engine.run(log);
+  REQUIRE(engine.statistics().flips23 == 1);
+  REQUIRE(log.batches.size() == 1);
+  REQUIRE(log.batches[0].time.at_frame);
+  REQUIRE(log.batches[0].time.time == 100.0);
+  REQUIRE(log.batches[0].kinds.front() == StepKind::flip23);
+}

@@ -1,0 +1,193 @@
+// Kinetic benchmark: the kinetic Delaunay + alpha complex against the snapshot approach a user would
+// otherwise take (CGAL's static Delaunay_triangulation_3 + Fixed_alpha_shape_3 rebuilt at each
+// frame), on the same frames, in one process. Prints per-frame times, their ratio, events per
+// second, the certificate filter hit rate and peak memory.
+//
+// Usage: kinetic_bench [--csv cells.csv.gz --radius R] [--random N --frames F] ...
+// With no argument: the bundled large_3d run (4,945 cells, 11 frames) and random walks of 1,000 and
+// 10,000 cells over 5 frames.
+#include "medusa/io/run_reader.h"
+#include "medusa/kinetic/kinetic_alpha_complex.h"
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Fixed_alpha_shape_3.h>
+#include <CGAL/Fixed_alpha_shape_cell_base_3.h>
+#include <CGAL/Fixed_alpha_shape_vertex_base_3.h>
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace medusa::kinetic;
+using Clock = std::chrono::steady_clock;
+
+double peak_rss_mib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_maxrss) / 1024.0;
+}
+
+// Static baseline: CGAL Delaunay + fixed alpha shape of the positions at each frame.
+double static_rebuild_seconds(const Trajectories& t, std::size_t k, double rho2, std::size_t& in_k) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Vb = CGAL::Fixed_alpha_shape_vertex_base_3<K>;
+  using Fb = CGAL::Fixed_alpha_shape_cell_base_3<K>;
+  using Tds = CGAL::Triangulation_data_structure_3<Vb, Fb>;
+  using Dt = CGAL::Delaunay_triangulation_3<K, Tds>;
+  using Shape = CGAL::Fixed_alpha_shape_3<Dt>;
+  std::vector<K::Point_3> pts;
+  for (const Trajectory& c : t.cells)
+    if (c.present(k))
+      pts.emplace_back(double(c.at(k)[0]), double(c.at(k)[1]), double(c.at(k)[2]));
+  auto start = Clock::now();
+  Dt dt(pts.begin(), pts.end());
+  Shape shape(dt, rho2);
+  in_k = 0;
+  for (auto c = shape.finite_cells_begin(); c != shape.finite_cells_end(); ++c)
+    in_k += shape.classify(c) != Shape::EXTERIOR;
+  for (auto f = shape.finite_facets_begin(); f != shape.finite_facets_end(); ++f)
+    in_k += shape.classify(*f) != Shape::EXTERIOR;
+  for (auto e = shape.finite_edges_begin(); e != shape.finite_edges_end(); ++e)
+    in_k += shape.classify(*e) != Shape::EXTERIOR;
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+struct FrameTimer : Observer {
+  Clock::time_point last = Clock::now();
+  std::vector<double> seconds;
+  std::size_t simplices = 0;
+  void initial(const EventTime&, const std::vector<Simplex>& k) override {
+    simplices = k.size();
+    last = Clock::now();
+  }
+  void frame(std::size_t, const EventTime&) override { lap(); }
+  void finish(const EventTime&) override { lap(); }
+  void lap() {
+    auto now = Clock::now();
+    seconds.push_back(std::chrono::duration<double>(now - last).count());
+    last = now;
+  }
+};
+
+Trajectories random_walk(std::uint64_t seed, int n, int frames) {
+  // Cell-like spacing on the 10^-6 grid: CC3D cells of volume 125 are ~5 lattice units apart and
+  // move ~1 unit per 100 MCS.
+  const std::int64_t unit = 1000000;
+  std::mt19937_64 rng(seed);
+  const double side = 5.0 * std::cbrt(double(n));
+  std::uniform_real_distribution<double> start(0, side * unit);
+  std::normal_distribution<double> step(0, 0.7 * unit);
+  Trajectories t;
+  for (int k = 0; k < frames; ++k)
+    t.frame_times.push_back(100 * k);
+  for (int i = 0; i < n; ++i) {
+    Trajectory c;
+    c.cell_id = i + 1;
+    c.type = 1 + i % 2;
+    GridPoint p{std::int64_t(start(rng)), std::int64_t(start(rng)), std::int64_t(start(rng))};
+    for (int k = 0; k < frames; ++k) {
+      c.positions.push_back(p);
+      for (auto& x : p)
+        x += std::int64_t(step(rng));
+    }
+    t.cells.push_back(c);
+  }
+  return t;
+}
+
+void run_case(const std::string& name, const Trajectories& t, const std::string& radius) {
+  KineticOptions options;
+  options.rho2 = squared_radius_from_decimal(radius, t.scale);
+  const double rho2 = options.rho2.num.get_d() / options.rho2.den.get_d();
+  std::printf("\n== %s: %zu cells, %zu frames, radius %s ==\n", name.c_str(), t.cells.size(), t.frames(),
+              radius.c_str());
+  std::fflush(stdout);
+  KineticAlphaComplex engine(t, options);
+  FrameTimer timer;
+  auto start = Clock::now();
+  engine.run(timer);
+  double kinetic_total = std::chrono::duration<double>(Clock::now() - start).count();
+  const KineticStatistics& s = engine.statistics();
+  std::size_t events = s.flips23 + s.flips32 + s.hull_flips + s.radius_events + s.insertions + s.deletions;
+
+  std::printf("%-6s %14s %14s %8s\n", "slab", "kinetic ms", "static ms", "ratio");
+  double static_total = 0, kinetic_slabs = 0;
+  for (std::size_t k = 1; k < t.frames(); ++k) {
+    std::size_t in_k = 0;
+    double st = static_rebuild_seconds(t, k, rho2, in_k);
+    double kt = k < timer.seconds.size() ? timer.seconds[k] : 0.0;
+    static_total += st;
+    kinetic_slabs += kt;
+    std::printf("%-6zu %14.2f %14.2f %8.2f\n", k, kt * 1e3, st * 1e3, kt / st);
+  }
+  const std::size_t slabs = t.frames() - 1;
+  std::printf("mean per frame: kinetic %.2f ms, static %.2f ms, ratio %.2f (target <= 1.0)\n",
+              1e3 * kinetic_slabs / slabs, 1e3 * static_total / slabs, kinetic_slabs / static_total);
+  std::printf("kinetic total %.2f s (initial triangulation %.2f s); events %zu (%.0f per second): "
+              "%zu 2-3, %zu 3-2, %zu hull flips, %zu radius events\n",
+              kinetic_total, timer.seconds.empty() ? 0.0 : timer.seconds[0], events, events / kinetic_total,
+              s.flips23, s.flips32, s.hull_flips, s.radius_events);
+  double built = double(s.certificates_built);
+  std::printf("certificates built %zu; settled by the filter %.2f%% (target >= 99%%); exact %zu; "
+              "sign evaluations %zu (exact %.2f%%)\n",
+              s.certificates_built, built > 0 ? 100.0 * s.filter_settled / built : 0.0, s.exact_settled,
+              s.sign_evaluations,
+              s.sign_evaluations ? 100.0 * s.sign_evaluations_exact / s.sign_evaluations : 0.0);
+  std::printf("exact certificates: %zu Delaunay, %zu radius; %zu with a failure time in the slab, %zu invalid "
+              "at creation\n",
+              s.exact_delaunay, s.exact_radius, s.exact_scheduled, s.invalid_at_creation);
+  std::printf("peak memory (RSS so far) %.1f MiB\n", peak_rss_mib());
+  std::fflush(stdout);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  std::string csv = MEDUSA_BENCH_DATA "/large_3d/cells.csv.gz", radius = "3";
+  std::vector<int> randoms = {1000, 10000};
+  int frames = 5;
+  bool csv_only = false, random_only = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--csv" && i + 1 < args.size()) {
+      csv = args[++i];
+      csv_only = true;
+    } else if (args[i] == "--radius" && i + 1 < args.size()) {
+      radius = args[++i];
+    } else if (args[i] == "--random" && i + 1 < args.size()) {
+      if (!random_only)
+        randoms.clear();
+      random_only = true;
+      randoms.push_back(std::stoi(args[++i]));
+    } else if (args[i] == "--frames" && i + 1 < args.size()) {
+      frames = std::stoi(args[++i]);
+    } else {
+      std::fprintf(stderr,
+                   "usage: kinetic_bench [--csv cells.csv.gz] [--radius R] [--random N]... [--frames F]\n");
+      return 2;
+    }
+  }
+  try {
+    if (!random_only) {
+      medusa::io::RunOptions o;
+      o.source = medusa::io::RunSource::csv;
+      medusa::io::RunData run = medusa::io::read_run(csv, o);
+      run_case(csv, run.trajectories, radius);
+    }
+    if (!csv_only)
+      for (int n : randoms)
+        run_case("random walk", random_walk(42, n, frames), "3");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "kinetic_bench: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
