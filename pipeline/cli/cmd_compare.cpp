@@ -11,9 +11,12 @@
 #include "medusa/persistence/clustering.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace medusa::cli {
 namespace {

@@ -32,6 +32,10 @@ std::string colour(double fraction) {
   return buffer;
 }
 
+// The title runs along the top; the picture is at least as wide as it (about 6.2 px per character at
+// font size 11).
+double title_width(const std::string& title) { return 8 + 6.2 * static_cast<double>(title.size()); }
+
 void svg_header(std::ostream& out, double width, double height) {
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(width) << "\" height=\""
@@ -91,7 +95,7 @@ void write_heatmap_svg(std::ostream& out, const persistence::DistanceMatrix& dis
     if (std::isfinite(v))
       largest = std::max(largest, v);
 
-  svg_header(out, margin + side + 120, top + side + 20);
+  svg_header(out, std::max(margin + side + 120, title_width(title)), top + std::max(side, 60.0) + 20);
   out << "<text x=\"4\" y=\"16\">" << xml_escape(title) << "</text>\n";
   for (std::size_t i = 0; i < n; ++i) {
     const double y = top + cell * static_cast<double>(i);
@@ -155,7 +159,8 @@ void write_dendrogram_svg(std::ostream& out, const persistence::Dendrogram& dend
   for (std::size_t k = 0; k < order.size(); ++k)
     x[order[k]] = left + step * (static_cast<double>(k) + 0.5);
 
-  svg_header(out, left + plot_width + 20, bottom + 20 + 7.0 * static_cast<double>(longest));
+  svg_header(out, std::max(left + plot_width + 20, title_width(title)),
+             bottom + 20 + 7.0 * static_cast<double>(longest));
   out << "<text x=\"4\" y=\"16\">" << xml_escape(title) << "</text>\n";
   for (std::size_t k = 0; k < dendrogram.merges.size(); ++k) {
     const persistence::Merge& m = dendrogram.merges[k];
