@@ -3,6 +3,7 @@
 #include "medusa/kinetic/error.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -30,7 +31,7 @@ int common_type(const kinetic::Trajectories& input, const complex::Cell& c) {
 std::vector<std::optional<std::array<double, 3>>> positions_at_time(const kinetic::Trajectories& input,
                                                                     double t) {
   const std::vector<std::int64_t>& times = input.frame_times;
-  if (times.empty() || t < static_cast<double>(times.front()) || t > static_cast<double>(times.back()))
+  if (times.empty() || !(t >= static_cast<double>(times.front()) && t <= static_cast<double>(times.back())))
     throw InputError("time " + coordinate(t) + " is outside the run (MCS " +
                      (times.empty() ? std::string("none")
                                     : std::to_string(times.front()) + " to " + std::to_string(times.back())) +
