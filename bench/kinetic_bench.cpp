@@ -141,9 +141,10 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
               s.certificates_built, built > 0 ? 100.0 * s.filter_settled / built : 0.0, s.exact_settled,
               s.sign_evaluations,
               s.sign_evaluations ? 100.0 * s.sign_evaluations_exact / s.sign_evaluations : 0.0);
-  std::printf("exact certificates: %zu Delaunay, %zu radius; %zu with a failure time in the slab, %zu invalid "
-              "at creation\n",
-              s.exact_delaunay, s.exact_radius, s.exact_scheduled, s.invalid_at_creation);
+  std::printf(
+      "exact certificates: %zu Delaunay, %zu radius; %zu with a failure time in the slab, %zu invalid "
+      "at creation, %zu root-cache hits\n",
+      s.exact_delaunay, s.exact_radius, s.exact_scheduled, s.invalid_at_creation, s.root_cache_hits);
   std::printf("peak memory (RSS so far) %.1f MiB\n", peak_rss_mib());
   std::fflush(stdout);
 }

@@ -44,9 +44,12 @@ SlabTime::SlabTime(const Rational& u)
     : rational_(true), q_(u), a_(kernel().construct_algebraic_real_1_object()(u)) {}
 
 SlabTime::SlabTime(const AlgebraicReal& u) : rational_(false), q_(0), a_(u) {
-  if (u.low() == u.high()) {
+  // Refine the isolating interval to about 2^-60 once, so that the certified interval filters at
+  // this time see a point-like enclosure (the refinement is kept by the shared representation).
+  kernel().approximate_absolute_1_object()(a_, 60);
+  if (a_.low() == a_.high()) {
     rational_ = true;
-    q_ = u.low();
+    q_ = a_.low();
   }
 }
 
@@ -110,4 +113,33 @@ int sign_at(const ExactPoly& f, const SlabTime& u) {
       u.is_rational() ? f.sign_at(u.rational()) : AlgebraicKernel().sign_at_1_object()(f, u.algebraic());
   return s == CGAL::POSITIVE ? 1 : (s == CGAL::NEGATIVE ? -1 : 0);
 }
+} // namespace medusa::kinetic
+
+namespace medusa::kinetic {
+
+RealRoots real_roots(const ExactPoly& f) {
+  RealRoots r;
+  AlgebraicKernel().solve_1_object()(f, std::back_inserter(r.roots));
+  return r;
+}
+
+int sign_plus_from_roots(const ExactPoly& f, const RealRoots& r, const SlabTime& u,
+                         std::vector<AlgebraicReal>* changes) {
+  const AlgebraicKernel ak;
+  std::size_t j = 0;
+  while (j < r.roots.size() && !(u.algebraic() < r.roots[j].first))
+    ++j;
+  // A rational q in (u, next root): f has no root there, so sign f(q) = sign^+_u f.
+  Rational q = j < r.roots.size() ? ak.bound_between_1_object()(u.algebraic(), r.roots[j].first)
+                                  : (u.is_rational() ? u.rational() : u.algebraic().high()) + Rational(1);
+  if (changes) {
+    const AlgebraicReal one = ak.construct_algebraic_real_1_object()(CGAL::Gmpz(1));
+    for (std::size_t i = j; i < r.roots.size() && r.roots[i].first < one; ++i)
+      if (r.roots[i].second % 2 == 1)
+        changes->push_back(r.roots[i].first);
+  }
+  CGAL::Sign s = f.sign_at(q);
+  return s == CGAL::POSITIVE ? 1 : (s == CGAL::NEGATIVE ? -1 : 0);
+}
+
 } // namespace medusa::kinetic

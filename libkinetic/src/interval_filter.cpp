@@ -25,21 +25,21 @@ int degree_of(const IntervalPoly& f) {
 
 } // namespace
 
-int bernstein_sign(const IntervalPoly& f, double lo) {
+int bernstein_sign(const IntervalPoly& f, double lo, double hi) {
   int n = degree_of(f);
   if (n < 0)
     return 0;
   std::array<Interval, IntervalPoly::max_degree + 1> g{};
   for (int i = 0; i <= n; ++i)
     g[i] = f[i];
-  if (lo != 0.0) {
-    // Taylor shift h(v) = f(lo + v) by repeated synthetic division, then scale by (1 - lo)^i so that
-    // g(v) = f(lo + (1 - lo) v) on v in [0, 1] (MATH.md 3.8, restriction to [u_lo, 1]).
+  if (lo != 0.0 || hi != 1.0) {
+    // Taylor shift h(v) = f(lo + v) by repeated synthetic division, then scale by (hi - lo)^i so that
+    // g(v) = f(lo + (hi - lo) v) on v in [0, 1] (MATH.md 3.8, restriction to [u_lo, 1]).
     const Interval l(lo);
     for (int k = 0; k < n; ++k)
       for (int i = n - 1; i >= k; --i)
         g[i] += l * g[i + 1];
-    const Interval s = Interval(1) - l;
+    const Interval s = Interval(hi) - l;
     Interval p(1);
     for (int i = 1; i <= n; ++i) {
       p *= s;
@@ -63,6 +63,33 @@ int bernstein_sign(const IntervalPoly& f, double lo) {
       beta += Interval(binom[n - i][j - i]) * g[i];
     int s = sign_of(beta);
     if (s == 0 || (common != 0 && s != common))
+      return 0;
+    common = s;
+  }
+  return common;
+}
+
+int bernstein_sign_subdivided(const IntervalPoly& f, double lo, int depth) {
+  // Depth-first over dyadic pieces of [lo, 1]; each piece must be decided with one common sign.
+  struct Piece {
+    double lo, hi;
+    int depth;
+  };
+  Piece stack[64];
+  int top = 0, common = 0;
+  stack[top++] = {lo, 1.0, 0};
+  while (top > 0) {
+    Piece p = stack[--top];
+    int s = bernstein_sign(f, p.lo, p.hi);
+    if (s == 0) {
+      double mid = 0.5 * (p.lo + p.hi);
+      if (p.depth >= depth || top + 2 > 64 || !(p.lo < mid && mid < p.hi))
+        return 0;
+      stack[top++] = {mid, p.hi, p.depth + 1};
+      stack[top++] = {p.lo, mid, p.depth + 1};
+      continue;
+    }
+    if (common != 0 && s != common)
       return 0;
     common = s;
   }

@@ -267,7 +267,7 @@ struct KineticAlphaComplex::Impl {
       IntervalPoly f = cert_poly<Interval>(c);
       double lo, hi;
       now.enclosure(lo, hi);
-      if (bernstein_sign(f, lo) > 0) {
+      if (bernstein_sign_subdivided(f, lo, 4) > 0) {
         ++stats.filter_settled;
         return;
       }
@@ -277,17 +277,64 @@ struct KineticAlphaComplex::Impl {
     ExactPoly f = to_exact_poly(cert_poly<mpz_class>(c));
     if (CGAL::is_zero(f))
       return; // identically zero: valid, never scheduled (MATH.md 3.9)
-    int s = sign_plus(f, now);
+    auto [slot, fresh] = root_cache.try_emplace(cache_key(c));
+    if (fresh)
+      slot->second = real_roots(f);
+    else
+      ++stats.root_cache_hits;
+    std::vector<AlgebraicReal> roots;
+    int s = sign_plus_from_roots(f, slot->second, now, &roots);
     if (s < 0) {
       ++stats.invalid_at_creation;
       mark_invalid(id);
       return;
     }
-    std::vector<AlgebraicReal> roots = sign_changes_after(f, now);
     if (!roots.empty()) {
       ++stats.exact_scheduled;
       queue.push({roots.front(), static_cast<std::uint32_t>(id), c.version});
     }
+  }
+
+  // Certificates built on the same points share their polynomial up to sign, hence its roots: the
+  // in-sphere of a 5-point set (the facet of a flip and the new interior facets), the orientation of
+  // a 4-point set, the radius of a face (MATH.md 3.8, caching; cleared at every frame).
+  struct CacheKey {
+    std::array<VertexId, 6> v;
+    bool operator==(const CacheKey& o) const { return v == o.v; }
+  };
+  struct CacheKeyHash {
+    std::size_t operator()(const CacheKey& k) const {
+      std::size_t h = 0;
+      for (VertexId x : k.v)
+        h = h * 0x9E3779B97F4A7C15ULL + static_cast<std::size_t>(x + 3);
+      return h;
+    }
+  };
+  std::unordered_map<CacheKey, RealRoots, CacheKeyHash> root_cache;
+
+  CacheKey cache_key(const Certificate& c) const {
+    CacheKey k;
+    k.v.fill(-2);
+    std::vector<VertexId> pts;
+    if (c.kind == CertKind::radius) {
+      k.v[0] = 2;
+      pts.assign(c.key.begin(), c.key.end());
+    } else {
+      const detail::Triangulation::Apices* ap = tri.apices(c.key);
+      pts.assign(c.key.begin(), c.key.end());
+      pts.push_back(ap->v[0]);
+      pts.push_back(ap->v[1]);
+      bool infinite = std::find(pts.begin(), pts.end(), infinite_vertex) != pts.end();
+      k.v[0] = infinite ? 1 : 0;
+      if (infinite) {
+        // Case A: the finite tetrahedron; case B: the four finite points (MATH.md 3.2).
+        pts.erase(std::remove(pts.begin(), pts.end(), infinite_vertex), pts.end());
+      }
+      std::sort(pts.begin(), pts.end());
+    }
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      k.v[i + 1] = pts[i];
+    return k;
   }
 
   void mark_invalid(int id) {
@@ -773,6 +820,7 @@ struct KineticAlphaComplex::Impl {
   void reinstall_all() {
     while (!queue.empty())
       queue.pop();
+    root_cache.clear();
     std::vector<Simplex> fs;
     for (const auto& kv : tri.facets())
       fs.push_back(kv.first);
@@ -885,12 +933,15 @@ struct KineticAlphaComplex::Impl {
 
   void frame(Observer& observer, std::size_t k) {
     // Slab k-1 ended at t_k; switch to slab k and rebuild every certificate (MATH.md 2.3, 5.6).
-    check_collisions_at_frame(k);
-    set_slab_motion(k);
-    now = SlabTime();
-    reinstall_all();
+    // At t_0 the structure was just built (initialise); only cells present at t_0 alone are deleted.
     std::vector<Step> steps;
-    resolve_delaunay(steps);
+    if (k > 0) {
+      check_collisions_at_frame(k);
+      set_slab_motion(k);
+      now = SlabTime();
+      reinstall_all();
+      resolve_delaunay(steps);
+    }
     // Insertions, then deletions, one rank each in increasing cell id (MATH.md 5.6).
     std::vector<std::pair<std::int64_t, VertexId>> born, dying;
     for (std::size_t i = 0; i < traj.cells.size(); ++i) {
@@ -943,7 +994,8 @@ struct KineticAlphaComplex::Impl {
     steps.push_back(std::move(settle));
     check_collisions_in_slab();
     emit_batch(observer, steps, true);
-    observer.frame(k, event_time(true));
+    if (k > 0)
+      observer.frame(k, event_time(true));
     if (options.audit)
       audit();
   }
@@ -966,8 +1018,7 @@ struct KineticAlphaComplex::Impl {
     auto clock = std::chrono::steady_clock::now();
     initialise(observer);
     for (std::size_t k = 0; k + 1 < traj.frames(); ++k) {
-      if (k > 0)
-        frame(observer, k);
+      frame(observer, k);
       run_slab(observer);
       auto t = std::chrono::steady_clock::now();
       stats.seconds_per_frame.push_back(std::chrono::duration<double>(t - clock).count());

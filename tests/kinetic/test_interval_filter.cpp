@@ -42,3 +42,23 @@ TEST_CASE("interval evaluation decides the sign away from roots only", "[kinetic
   REQUIRE(interval_sign(f, 0.1, 0.2) == -1);
   REQUIRE(interval_sign(f, 0.4, 0.6) == 0);
 }
+
+TEST_CASE("subdivision proves a polynomial without roots that one Bernstein test cannot",
+          "[kinetic][filter]") {
+  // f = (4u - 2)^2 + 1/100 > 0 on [0, 1]: Bernstein coefficients on [0, 1] are (4.01, -3.99, 4.01),
+  // so one test is undecided; on [0, 1/2] and [1/2, 1] they are all positive.
+  CGAL::Protect_FPU_rounding<true> guard;
+  IntervalPoly f = poly({4.01, -16, 16});
+  REQUIRE(bernstein_sign(f, 0.0) == 0);
+  REQUIRE(bernstein_sign_subdivided(f, 0.0, 3) == 1);
+  // With a real root it stays undecided at every depth.
+  REQUIRE(bernstein_sign_subdivided(poly({3.99, -16, 16}), 0.0, 6) == 0);
+}
+
+TEST_CASE("the Bernstein test on a subinterval uses that interval only", "[kinetic][filter]") {
+  CGAL::Protect_FPU_rounding<true> guard;
+  IntervalPoly f = poly({-1, 2}); // root at 1/2
+  REQUIRE(bernstein_sign(f, 0.0, 0.25) == -1);
+  REQUIRE(bernstein_sign(f, 0.75, 1.0) == 1);
+  REQUIRE(bernstein_sign(f, 0.25, 0.75) == 0);
+}

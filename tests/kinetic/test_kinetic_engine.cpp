@@ -318,3 +318,17 @@ TEST_CASE("a certificate vanishing exactly at a frame time is decided by the nex
   REQUIRE(log.batches[0].time.time == 100.0);
   REQUIRE(log.batches[0].kinds.front() == StepKind::flip23);
 }
+
+TEST_CASE("a cell present only at the first frame is deleted at t0", "[kinetic][engine]") {
+  // Found by the kinetic-medusa integration tests: such a cell used to stay in K for the whole run.
+  Trajectories t = testing::random_walk(21, 20, 3, static_cast<int>(2000 * std::cbrt(20.0)), 600);
+  t.cells[0].positions.resize(1);
+  KineticAlphaComplex engine(t, with_radius(1200 * 1200));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  REQUIRE(engine.statistics().deletions == 1);
+  REQUIRE(obs.step_counts[static_cast<int>(StepKind::deletion)] == 1);
+  REQUIRE(obs.times.front() == 0.0);
+  REQUIRE(obs.complex().count(Simplex{0}) == 0);
+  REQUIRE(obs.mismatches == 0);
+}

@@ -60,3 +60,19 @@ namespace medusa::kinetic {
 // The sign of f at u itself (not one-sided).
 int sign_at(const ExactPoly& f, const SlabTime& u);
 } // namespace medusa::kinetic
+
+namespace medusa::kinetic {
+
+// All real roots of a polynomial with their multiplicities, in increasing order. Computed once per
+// polynomial and slab and cached by the engine (MATH.md 3.8, caching).
+struct RealRoots {
+  std::vector<std::pair<AlgebraicReal, int>> roots;
+};
+RealRoots real_roots(const ExactPoly& f);
+
+// sign^+_u(f) from the roots of f (f not identically zero); when `changes` is given it receives the
+// roots of odd multiplicity in (u, 1), in increasing order.
+int sign_plus_from_roots(const ExactPoly& f, const RealRoots& r, const SlabTime& u,
+                         std::vector<AlgebraicReal>* changes);
+
+} // namespace medusa::kinetic

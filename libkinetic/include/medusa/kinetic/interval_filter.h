@@ -12,9 +12,13 @@ namespace medusa::kinetic {
 using Interval = CGAL::Interval_nt_advanced;
 using IntervalPoly = Poly<Interval>;
 
-// +1 if f > 0 on [lo, 1], -1 if f < 0 on [lo, 1], 0 if the Bernstein enclosures do not decide.
-// lo in [0, 1] is a double (any double is an exact dyadic rational).
-int bernstein_sign(const IntervalPoly& f, double lo);
+// +1 if f > 0 on [lo, hi], -1 if f < 0 on [lo, hi], 0 if the Bernstein enclosures do not decide.
+// lo < hi are doubles (any double is an exact dyadic rational).
+int bernstein_sign(const IntervalPoly& f, double lo, double hi = 1.0);
+
+// As bernstein_sign on [lo, 1], subdividing up to `depth` times where the enclosures are too wide:
+// +1 / -1 when every piece has that sign, 0 otherwise (MATH.md 3.8, de Casteljau subdivision).
+int bernstein_sign_subdivided(const IntervalPoly& f, double lo, int depth);
 
 // +1 / -1 if f keeps that sign on the whole interval [lo, hi], 0 if undecided.
 int interval_sign(const IntervalPoly& f, double lo, double hi);

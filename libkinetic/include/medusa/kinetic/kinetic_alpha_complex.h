@@ -33,12 +33,13 @@ struct KineticStatistics {
   std::size_t batches = 0, frame_batches = 0;
   std::size_t flips23 = 0, flips32 = 0, hull_flips = 0, radius_events = 0;
   std::size_t insertions = 0, deletions = 0, static_rebuilds = 0;
-  std::size_t certificates_built = 0; // certificates created (Delaunay and radius)
-  std::size_t filter_settled = 0;     // settled by the interval Bernstein filter
-  std::size_t exact_settled = 0;      // needed exact arithmetic (GMP and root isolation)
+  std::size_t certificates_built = 0;               // certificates created (Delaunay and radius)
+  std::size_t filter_settled = 0;                   // settled by the interval Bernstein filter
+  std::size_t exact_settled = 0;                    // needed exact arithmetic (GMP and root isolation)
   std::size_t exact_delaunay = 0, exact_radius = 0; // of which Delaunay / radius certificates
-  std::size_t exact_scheduled = 0;    // of which had a failure time in the slab
-  std::size_t invalid_at_creation = 0; // of which were invalid just after creation
+  std::size_t exact_scheduled = 0;                  // of which had a failure time in the slab
+  std::size_t invalid_at_creation = 0;              // of which were invalid just after creation
+  std::size_t root_cache_hits = 0; // exact certificates whose roots came from the slab's cache
   std::size_t sign_evaluations = 0, sign_evaluations_exact = 0;
   std::size_t audits = 0, audits_compared_with_cgal = 0;
   std::vector<double> seconds_per_frame;

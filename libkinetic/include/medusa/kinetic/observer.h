@@ -74,7 +74,8 @@ public:
   virtual void initial(const EventTime& /*t0*/, const std::vector<Simplex>& /*complex*/) {}
   // One batch (never empty) with its steps in rank order.
   virtual void batch(const EventTime& /*time*/, const std::vector<Step>& /*steps*/) {}
-  // Frame k reached (after its frame batch, if any).
+  // Inner frame k (0 < k < last) reached, after its frame batch if any. Frame 0 is reported by
+  // initial() (and a deletion batch at t_0 for cells present at t_0 only), the last by finish().
   virtual void frame(std::size_t /*k*/, const EventTime& /*time*/) {}
   // The run ended at t_end; the complex is K(t_end-).
   virtual void finish(const EventTime& /*t_end*/) {}
