@@ -14,6 +14,7 @@
 #include "medusa/io/run_reader.h"
 #include "medusa/kinetic/error.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "medusa/persistence/diagram_store.h"
 #include "medusa/persistence/medusa_diagrams.h"
 
 #include <algorithm>
@@ -123,6 +124,9 @@ void write_diagrams_and_summary(const std::string& output, const std::string& st
   const std::vector<int> vertex_type = vertex_types(medusa);
   std::vector<persistence::Diagram> diagrams =
       persistence::compute_medusa_diagrams(medusa.cells, vertex_type, distinct_types(vertex_type));
+  // The diagrams go into the store too (group /persistence, docs/FORMAT.md), written atomically.
+  persistence::write_diagrams(output, diagrams);
+  check_interrupted();
   std::vector<persistence::Diagram> shown;
   for (const persistence::Diagram& d : diagrams)
     shown.push_back(persistence::without_zero_length(d));

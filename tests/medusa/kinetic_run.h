@@ -42,6 +42,9 @@ public:
   }
   void batch(const kinetic::EventTime& time, const std::vector<kinetic::Step>& steps) override {
     next_.batch(time, steps);
+    // A batch at t_0 deletes the cells present at t_0 only: K(t_0+) is the state after it.
+    if (time.slab == 0 && time.at_frame)
+      record_.initial_state = as_set(engine_.current_complex());
   }
   void frame(std::size_t k, const kinetic::EventTime& time) override {
     next_.frame(k, time);

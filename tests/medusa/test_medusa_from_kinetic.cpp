@@ -53,14 +53,11 @@ void check_store_against_engine(const KineticRun& run, const std::string& store_
     CHECK(!engine.empty());
     // Independent of both: the vertices of K are the cells alive then (MATH.md 5.6): K(t_k+) holds the
     // cells present at t_k that do not end there, K(t_end-) those present through the last slab.
-    // Cells present at frame 0 only are left out here (see the libkinetic bug case below).
     if (k == 0)
       continue;
     SimplexSet alive;
     for (std::size_t v = 0; v < m.input.cells.size(); ++v) {
       const kinetic::Trajectory& c = m.input.cells[v];
-      if (c.last_frame() == 0)
-        continue;
       const bool present = k + 1 == frames ? c.first_frame + 1 < frames && c.last_frame() + 1 == frames
                                            : c.first_frame <= k && k < c.last_frame();
       if (present)
@@ -68,7 +65,7 @@ void check_store_against_engine(const KineticRun& run, const std::string& store_
     }
     SimplexSet vertices;
     for (const auto& s : engine)
-      if (s.size() == 1 && m.input.cells[static_cast<std::size_t>(s[0])].last_frame() != 0)
+      if (s.size() == 1)
         vertices.insert(s);
     CHECK(vertices == alive);
   }
@@ -128,7 +125,7 @@ TEST_CASE("K_t read back from the store equals the kinetic engine's complex thro
   std::size_t born = 0, died = 0;
   for (const kinetic::Trajectory& c : t.cells) {
     born += c.first_frame > 0 && c.first_frame + 1 < t.frames();
-    died += c.last_frame() > 0 && c.last_frame() + 1 < t.frames();
+    died += c.last_frame() + 1 < t.frames();
   }
   CAPTURE(born, died);
   REQUIRE(born > 0);
@@ -142,12 +139,9 @@ TEST_CASE("K_t read back from the store equals the kinetic engine's complex thro
   std::remove(store.c_str());
 }
 
-// libkinetic bug: a cell present at frame 0 only (it died between frames 0 and 1, as 3 cells of
-// mitosis_3d do) is alive at t_0, gets velocity 0 in slab 0 and is never deleted, since frame() runs
-// deletions for frames 1 .. F-2 only; it stays in K as a motionless vertex for the rest of the run.
-// Marked shouldfail so the suite stays green while the bug is open; it fails once libkinetic is fixed.
-TEST_CASE("a cell present at frame 0 only is no longer in K after frame 1",
-          "[medusa][kinetic][!shouldfail]") {
+// A cell present at frame 0 only (it died between frames 0 and 1, as 3 cells of mitosis_3d do) is
+// deleted in a batch at t_0 and is in K at no later frame.
+TEST_CASE("a cell present at frame 0 only is no longer in K after frame 1", "[medusa][kinetic]") {
   constexpr std::uint64_t seed = 21;
   CAPTURE(seed);
   kinetic::Trajectories t =
