@@ -38,7 +38,9 @@ bool blank(std::string_view s) { return trim(s).empty(); }
 
 struct PairHash {
   std::size_t operator()(const std::pair<std::int64_t, std::int64_t>& p) const {
-    return std::hash<std::int64_t>()(p.first * 1000003 ^ p.second);
+    // Unsigned arithmetic: a large MCS must not overflow (found by fuzz_csv_reader).
+    return std::hash<std::uint64_t>()(static_cast<std::uint64_t>(p.first) * 1000003u ^
+                                      static_cast<std::uint64_t>(p.second));
   }
 };
 

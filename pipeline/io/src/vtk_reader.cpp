@@ -138,6 +138,12 @@ private:
       snap_.spacing = {scale_, scale_, scale_};
     if (!have_origin)
       snap_.origin = {0, 0, 0};
+    // Bound each extent before multiplying, so the product cannot overflow (fuzz_vtk_reader).
+    constexpr std::int64_t max_extent = 1 << 16;
+    for (std::int64_t d : snap_.dimensions)
+      if (d > max_extent)
+        fail("DIMENSIONS " + std::to_string(d) + " exceeds the supported lattice extent " +
+             std::to_string(max_extent));
     const std::int64_t expected = snap_.dimensions[0] * snap_.dimensions[1] * snap_.dimensions[2];
     if (points_ != expected)
       fail("POINT_DATA " + std::to_string(points_) + " does not match DIMENSIONS " +
@@ -192,28 +198,38 @@ private:
 
   void values(const std::string& name, std::int64_t count, const std::optional<IntType>& itype,
               std::vector<std::int64_t>* target) {
-    if (target != nullptr)
-      target->resize(static_cast<std::size_t>(count));
+    // Values are appended as they are read, never allocated from the header's count up front: a
+    // header announcing 10^12 points in a tiny file must fail as truncated, not exhaust memory.
+    if (target != nullptr) {
+      target->clear();
+      target->reserve(static_cast<std::size_t>(std::min<std::int64_t>(count, std::int64_t(1) << 20)));
+    }
     if (snap_.binary) {
       if (!itype)
         fail("binary array " + name + " of a non-integer type cannot be skipped");
       // After the array header line the raw big-endian values start right after its newline.
       std::string rest;
       in_.next_line(rest);
-      std::vector<unsigned char> bytes(static_cast<std::size_t>(count) * itype->bytes);
-      in_.read_bytes(reinterpret_cast<char*>(bytes.data()), bytes.size());
-      if (target == nullptr)
-        return;
-      for (std::size_t k = 0; k < static_cast<std::size_t>(count); ++k) {
-        std::uint64_t u = 0;
-        for (std::size_t b = 0; b < itype->bytes; ++b)
-          u = (u << 8) | bytes[k * itype->bytes + b];
-        std::int64_t v = static_cast<std::int64_t>(u);
-        if (itype->is_signed && itype->bytes < 8 && (u >> (8 * itype->bytes - 1)) != 0)
-          v = static_cast<std::int64_t>(u) - (std::int64_t(1) << (8 * itype->bytes));
-        if (!itype->is_signed && itype->bytes == 8 && v < 0)
-          fail("array " + name + " value #" + std::to_string(k) + " is out of range");
-        (*target)[k] = v;
+      constexpr std::int64_t block = 1 << 16;
+      std::vector<unsigned char> bytes;
+      for (std::int64_t done = 0; done < count; done += block) {
+        const std::int64_t n = std::min(block, count - done);
+        bytes.resize(static_cast<std::size_t>(n) * itype->bytes);
+        in_.read_bytes(reinterpret_cast<char*>(bytes.data()), bytes.size());
+        if (target == nullptr)
+          continue;
+        for (std::size_t k = 0; k < static_cast<std::size_t>(n); ++k) {
+          std::uint64_t u = 0;
+          for (std::size_t b = 0; b < itype->bytes; ++b)
+            u = (u << 8) | bytes[k * itype->bytes + b];
+          std::int64_t v = static_cast<std::int64_t>(u);
+          if (itype->is_signed && itype->bytes < 8 && (u >> (8 * itype->bytes - 1)) != 0)
+            v = static_cast<std::int64_t>(u) - (std::int64_t(1) << (8 * itype->bytes));
+          if (!itype->is_signed && itype->bytes == 8 && v < 0)
+            fail("array " + name + " value #" + std::to_string(done + static_cast<std::int64_t>(k)) +
+                 " is out of range");
+          target->push_back(v);
+        }
       }
       return;
     }
@@ -228,7 +244,7 @@ private:
         if (!try_parse_integer(t, v))
           fail("bad token '" + std::string(t) + "' in array " + name + " (value #" + std::to_string(k) +
                "; expected an integer)");
-        (*target)[static_cast<std::size_t>(k)] = v;
+        target->push_back(v);
       }
     }
   }
@@ -240,7 +256,8 @@ private:
       std::int64_t first_voxel = 0;
     };
     std::unordered_map<std::int64_t, Acc> cells;
-    const auto [nx, ny, nz] = snap_.dimensions;
+    // Plain variables, not a structured binding: clang 14 cannot capture bindings in lambdas.
+    const std::int64_t nx = snap_.dimensions[0], ny = snap_.dimensions[1], nz = snap_.dimensions[2];
     const auto voxel = [&](std::int64_t p) {
       return "(" + std::to_string(p % nx) + "," + std::to_string((p / nx) % ny) + "," +
              std::to_string(p / (nx * ny)) + ")";
