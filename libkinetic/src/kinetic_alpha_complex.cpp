@@ -274,7 +274,13 @@ struct KineticAlphaComplex::Impl {
     }
     ++stats.exact_settled;
     ++(c.kind == CertKind::delaunay ? stats.exact_delaunay : stats.exact_radius);
-    ExactPoly f = to_exact_poly(cert_poly<mpz_class>(c));
+    Poly<mpz_class> exact = cert_poly<mpz_class>(c);
+    int settled = exact_filter(exact);
+    if (settled > 0) {
+      ++stats.exact_filter_settled;
+      return;
+    }
+    ExactPoly f = to_exact_poly(exact);
     if (CGAL::is_zero(f))
       return; // identically zero: valid, never scheduled (MATH.md 3.9)
     auto [slot, fresh] = root_cache.try_emplace(cache_key(c));
@@ -335,6 +341,32 @@ struct KineticAlphaComplex::Impl {
     for (std::size_t i = 0; i < pts.size(); ++i)
       k.v[i + 1] = pts[i];
     return k;
+  }
+
+  // A second, cheap filter on the exact coefficients (rounded outward to doubles, hence tight): +1 if
+  // the certificate is provably positive on (now, 1] without root isolation, 0 otherwise. At a
+  // rational slab start (u = 0, frames and t_0) the root at 0 of multiplicity m is divided out first,
+  // which settles the lattice-degenerate certificates of CC3D's initial layout (MATH.md 5.5).
+  int exact_filter(const Poly<mpz_class>& f) {
+    int n = f.degree_bound();
+    int m = 0;
+    const bool at_zero = now.is_rational() && now.rational() == 0;
+    if (at_zero)
+      while (m <= n && f[m] == 0)
+        ++m;
+    if (m > n)
+      return 0; // identically zero: handled by the caller
+    if (at_zero && sgn(f[m]) < 0)
+      return 0; // invalid just after 0: the caller marks it
+    CGAL::Protect_FPU_rounding<true> guard;
+    IntervalPoly g;
+    for (int i = n; i >= m; --i) {
+      IntervalPoly term{Interval(CGAL::to_interval(CGAL::Gmpz(f[i].get_mpz_t())))};
+      g = g * IntervalPoly(Interval(0), Interval(1)) + term;
+    }
+    double lo = 0, hi = 0;
+    now.enclosure(lo, hi);
+    return bernstein_sign_subdivided(g, at_zero ? 0.0 : lo, 4) > 0 ? 1 : 0;
   }
 
   void mark_invalid(int id) {

@@ -36,6 +36,7 @@ struct KineticStatistics {
   std::size_t certificates_built = 0;               // certificates created (Delaunay and radius)
   std::size_t filter_settled = 0;                   // settled by the interval Bernstein filter
   std::size_t exact_settled = 0;                    // needed exact arithmetic (GMP and root isolation)
+  std::size_t exact_filter_settled = 0;             // of which settled by the filter on exact coefficients
   std::size_t exact_delaunay = 0, exact_radius = 0; // of which Delaunay / radius certificates
   std::size_t exact_scheduled = 0;                  // of which had a failure time in the slab
   std::size_t invalid_at_creation = 0;              // of which were invalid just after creation
