@@ -17,7 +17,7 @@ namespace medusa::test {
 // What the engine itself reported: K(t_0+) (as passed to initial() and as current_complex()), its
 // current_complex() at every frame callback, and K(t_end-) at finish().
 struct EngineRecord {
-  SimplexSet initial_argument, initial_state, at_end;
+  SimplexSet initial_argument, initial_state, after_t0, at_end;
   std::map<std::size_t, SimplexSet> at_frame;
   bool finished = false;
 };
@@ -39,12 +39,13 @@ public:
     next_.initial(t0, complex);
     record_.initial_argument = as_set(complex);
     record_.initial_state = as_set(engine_.current_complex());
+    record_.after_t0 = record_.initial_state;
   }
   void batch(const kinetic::EventTime& time, const std::vector<kinetic::Step>& steps) override {
     next_.batch(time, steps);
     // A batch at t_0 deletes the cells present at t_0 only: K(t_0+) is the state after it.
     if (time.slab == 0 && time.at_frame)
-      record_.initial_state = as_set(engine_.current_complex());
+      record_.after_t0 = as_set(engine_.current_complex());
   }
   void frame(std::size_t k, const kinetic::EventTime& time) override {
     next_.frame(k, time);

@@ -45,7 +45,7 @@ void check_store_against_engine(const KineticRun& run, const std::string& store_
   for (std::size_t k = 0; k < frames; ++k) {
     CAPTURE(k, frames);
     const SimplexSet stored = tuples(m, index.at_frame(k));
-    const SimplexSet& engine = k == 0            ? run.engine.initial_state
+    const SimplexSet& engine = k == 0            ? run.engine.after_t0
                                : k + 1 == frames ? run.engine.at_end
                                                  : run.engine.at_frame.at(k);
     CAPTURE(stored.size(), engine.size(), symmetric_difference(stored, engine));
