@@ -985,36 +985,10 @@ struct KineticAlphaComplex::Impl {
     }
     std::sort(born.begin(), born.end());
     std::sort(dying.begin(), dying.end());
-    for (const auto& [cell, v] : born) {
-      (void)cell;
-      Step step;
-      step.kind = StepKind::insertion;
-      step.vertex = v;
-      std::unordered_map<Simplex, bool, SimplexHash> old_k;
-      old_k.emplace(Simplex{v}, false);
-      alive[static_cast<std::size_t>(v)] = 1;
-      record_tet_changes(step, old_k);
-      settle_membership(old_k, step);
-      step.rank = steps.size() + 1;
-      steps.push_back(std::move(step));
-      ++stats.insertions;
-      resolve_delaunay(steps);
-    }
-    for (const auto& [cell, v] : dying) {
-      (void)cell;
-      Step step;
-      step.kind = StepKind::deletion;
-      step.vertex = v;
-      std::unordered_map<Simplex, bool, SimplexHash> old_k;
-      old_k.emplace(Simplex{v}, true);
-      alive[static_cast<std::size_t>(v)] = 0;
-      record_tet_changes(step, old_k);
-      settle_membership(old_k, step);
-      step.rank = steps.size() + 1;
-      steps.push_back(std::move(step));
-      ++stats.deletions;
-      resolve_delaunay(steps);
-    }
+    for (const auto& cell_vertex : born)
+      insert_or_delete(cell_vertex.second, true, steps);
+    for (const auto& cell_vertex : dying)
+      insert_or_delete(cell_vertex.second, false, steps);
     std::unordered_map<Simplex, bool, SimplexHash> old_k;
     Step settle;
     settle.kind = StepKind::settle;
@@ -1030,6 +1004,23 @@ struct KineticAlphaComplex::Impl {
       observer.frame(k, event_time(true));
     if (options.audit)
       audit();
+  }
+
+  // One insertion or deletion of vertex v at the current frame, as its own rank (MATH.md 5.6), with
+  // the Delaunay changes made by a static rebuild and the membership re-evaluated around them.
+  void insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps) {
+    Step step;
+    step.kind = insert ? StepKind::insertion : StepKind::deletion;
+    step.vertex = v;
+    std::unordered_map<Simplex, bool, SimplexHash> old_k;
+    old_k.emplace(Simplex{v}, !insert);
+    alive[static_cast<std::size_t>(v)] = insert ? 1 : 0;
+    record_tet_changes(step, old_k);
+    settle_membership(old_k, step);
+    step.rank = steps.size() + 1;
+    steps.push_back(std::move(step));
+    ++(insert ? stats.insertions : stats.deletions);
+    resolve_delaunay(steps);
   }
 
   void record_tet_changes(Step& step, std::unordered_map<Simplex, bool, SimplexHash>& old_k) {
