@@ -989,15 +989,7 @@ struct KineticAlphaComplex::Impl {
       insert_or_delete(cell_vertex.second, true, steps);
     for (const auto& cell_vertex : dying)
       insert_or_delete(cell_vertex.second, false, steps);
-    std::unordered_map<Simplex, bool, SimplexHash> old_k;
-    Step settle;
-    settle.kind = StepKind::settle;
-    while (!pending_radius.empty()) {
-      resolve_radius(settle, old_k);
-      resolve_delaunay(steps);
-    }
-    settle_membership(old_k, settle);
-    steps.push_back(std::move(settle));
+    process_batch(steps); // radius events at the frame, then the final re-evaluation (MATH.md 5.6 step 5)
     check_collisions_in_slab();
     emit_batch(observer, steps, true);
     if (k > 0)
