@@ -1,6 +1,9 @@
 #include "medusa/kinetic/algebraic_time.h"
 
+#include "medusa/kinetic/root_isolation.h"
+
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Polynomial_traits_d.h>
 
 #include <cmath>
 
@@ -37,37 +40,116 @@ ExactPoly to_exact_poly(const Poly<mpz_class>& f) {
   return ExactPoly(coefficients.begin(), coefficients.end());
 }
 
-SlabTime::SlabTime()
-    : rational_(true), q_(0), a_(kernel().construct_algebraic_real_1_object()(CGAL::Gmpz(0))) {}
+SlabTime::SlabTime() : SlabTime(Rational(0)) {}
 
-SlabTime::SlabTime(const Rational& u)
-    : rational_(true), q_(u), a_(kernel().construct_algebraic_real_1_object()(u)) {}
+SlabTime::SlabTime(const Rational& u) : rational_(true), q_(u) {
+  std::pair<double, double> i = CGAL::to_interval(q_);
+  lo_ = i.first;
+  hi_ = i.second;
+}
 
-SlabTime::SlabTime(const AlgebraicReal& u) : rational_(false), q_(0), a_(u) {
+SlabTime::SlabTime(const AlgebraicReal& u) : rational_(false), q_(0), a_(std::make_shared<AlgebraicReal>(u)) {
   // Refine the isolating interval to about 2^-60 once, so that the certified interval filters at
   // this time see a point-like enclosure (the refinement is kept by the shared representation).
-  kernel().approximate_absolute_1_object()(a_, 60);
-  if (a_.low() == a_.high()) {
+  kernel().approximate_absolute_1_object()(*a_, 60);
+  if (a_->low() == a_->high()) {
     rational_ = true;
-    q_ = a_.low();
+    q_ = a_->low();
   }
+  lo_ = CGAL::to_interval(a_->low()).first;
+  hi_ = CGAL::to_interval(a_->high()).second;
+}
+
+SlabTime::SlabTime(std::shared_ptr<IsolatedRoot> root) : rational_(false), q_(0), root_(std::move(root)) {}
+
+bool SlabTime::is_rational() const {
+  if (root_)
+    return root_->lo == root_->hi;
+  return rational_;
+}
+
+const Rational& SlabTime::rational() const {
+  if (root_ && root_->lo == root_->hi && !rational_) {
+    // Found exactly in doubles (refine_root hit the root): a dyadic rational.
+    q_ = Rational(root_->lo);
+    rational_ = true;
+  }
+  return q_;
+}
+
+const AlgebraicReal& SlabTime::algebraic() const {
+  if (a_)
+    return *a_;
+  if (root_ && root_->algebraic) {
+    a_ = std::make_shared<AlgebraicReal>(*root_->algebraic);
+    return *a_;
+  }
+  if (is_rational()) {
+    a_ = std::make_shared<AlgebraicReal>(kernel().construct_algebraic_real_1_object()(rational()));
+    return *a_;
+  }
+  // The exact root: the square-free part of the polynomial keeps the simple root, the only one in
+  // the open interval (lo, hi), where the polynomial does not vanish at either end.
+  using Traits = CGAL::Polynomial_traits_d<ExactPoly>;
+  ExactPoly f = Traits::Make_square_free()(root_->exact());
+  root_->algebraic = AlgebraicReal(f, Rational(root_->lo), Rational(root_->hi));
+  a_ = std::make_shared<AlgebraicReal>(*root_->algebraic);
+  return *a_;
 }
 
 double SlabTime::approx() const {
+  if (root_)
+    return 0.5 * (root_->lo + root_->hi);
   if (rational_)
     return CGAL::to_double(q_);
-  return CGAL::to_double(kernel().approximate_relative_1_object()(a_, 53).first);
+  return CGAL::to_double(kernel().approximate_relative_1_object()(*a_, 53).first);
 }
 
 void SlabTime::enclosure(double& lo, double& hi) const {
-  if (rational_) {
-    std::pair<double, double> i = CGAL::to_interval(q_);
-    lo = i.first;
-    hi = i.second;
+  if (root_) {
+    lo = root_->lo;
+    hi = root_->hi;
     return;
   }
-  lo = CGAL::to_interval(a_.low()).first;
-  hi = CGAL::to_interval(a_.high()).second;
+  lo = lo_;
+  hi = hi_;
+}
+
+bool SlabTime::refine_once() const {
+  if (!root_ || root_->lo == root_->hi)
+    return false;
+  CGAL::Protect_FPU_rounding<true> guard;
+  return refine_root(root_->enclosure, root_->lo, root_->hi, root_->sign_lo) != Refinement::stuck;
+}
+
+void SlabTime::tighten() const {
+  while (refine_once()) {
+  }
+}
+
+int compare(const SlabTime& x, const SlabTime& y) {
+  if (x.root_ && x.root_ == y.root_)
+    return 0;
+  if (!x.root_ && !y.root_ && x.rational_ && y.rational_)
+    return x.q_ < y.q_ ? -1 : (y.q_ < x.q_ ? 1 : 0);
+  for (;;) {
+    double xl, xh, yl, yh;
+    x.enclosure(xl, xh);
+    y.enclosure(yl, yh);
+    if (xh < yl)
+      return -1;
+    if (yh < xl)
+      return 1;
+    // Overlapping enclosures: narrow the wider isolated root, then the other one.
+    const bool x_first = (xh - xl) >= (yh - yl);
+    const SlabTime& a = x_first ? x : y;
+    const SlabTime& b = x_first ? y : x;
+    if (!a.refine_once() && !b.refine_once())
+      break;
+  }
+  const AlgebraicReal& a = x.algebraic();
+  const AlgebraicReal& b = y.algebraic();
+  return a < b ? -1 : (b < a ? 1 : 0);
 }
 
 int sign_plus(const ExactPoly& f, const SlabTime& u) {

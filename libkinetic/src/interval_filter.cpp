@@ -25,10 +25,11 @@ int degree_of(const IntervalPoly& f) {
 
 } // namespace
 
-int bernstein_sign(const IntervalPoly& f, double lo, double hi) {
+int bernstein_coefficients(const IntervalPoly& f, double lo, double hi,
+                           std::array<Interval, IntervalPoly::max_degree + 1>& beta) {
   int n = degree_of(f);
   if (n < 0)
-    return 0;
+    return n;
   std::array<Interval, IntervalPoly::max_degree + 1> g{};
   for (int i = 0; i <= n; ++i)
     g[i] = f[i];
@@ -46,7 +47,7 @@ int bernstein_sign(const IntervalPoly& f, double lo, double hi) {
       g[i] *= p;
     }
   }
-  // beta_j = sum_{i<=j} C(n-i, j-i) g_i have the signs of the Bernstein coefficients.
+  // beta_j = sum_{i<=j} C(n-i, j-i) g_i = C(n, j) b_j: the Bernstein coefficients up to positive factors.
   static const double binom[9][9] = {{1},
                                      {1, 1},
                                      {1, 2, 1},
@@ -56,12 +57,23 @@ int bernstein_sign(const IntervalPoly& f, double lo, double hi) {
                                      {1, 6, 15, 20, 15, 6, 1},
                                      {1, 7, 21, 35, 35, 21, 7, 1},
                                      {1, 8, 28, 56, 70, 56, 28, 8, 1}};
+  for (int j = 0; j <= n; ++j) {
+    Interval b(0);
+    for (int i = 0; i <= j; ++i)
+      b += Interval(binom[n - i][j - i]) * g[i];
+    beta[static_cast<std::size_t>(j)] = b;
+  }
+  return n;
+}
+
+int bernstein_sign(const IntervalPoly& f, double lo, double hi) {
+  std::array<Interval, IntervalPoly::max_degree + 1> beta{};
+  int n = bernstein_coefficients(f, lo, hi, beta);
+  if (n < 0)
+    return 0;
   int common = 0;
   for (int j = 0; j <= n; ++j) {
-    Interval beta(0);
-    for (int i = 0; i <= j; ++i)
-      beta += Interval(binom[n - i][j - i]) * g[i];
-    int s = sign_of(beta);
+    int s = sign_of(beta[static_cast<std::size_t>(j)]);
     if (s == 0 || (common != 0 && s != common))
       return 0;
     common = s;

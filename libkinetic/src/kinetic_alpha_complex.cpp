@@ -6,6 +6,7 @@
 #include "medusa/kinetic/certificate_polynomials.h"
 #include "medusa/kinetic/error.h"
 #include "medusa/kinetic/interval_filter.h"
+#include "medusa/kinetic/root_isolation.h"
 #include "static_delaunay.h"
 #include "triangulation.h"
 
@@ -60,12 +61,38 @@ struct Certificate {
 };
 
 struct QueueEntry {
-  AlgebraicReal u;
+  SlabTime u;
   std::uint32_t cert;
   std::uint32_t version;
 };
 struct LaterFirst {
-  bool operator()(const QueueEntry& a, const QueueEntry& b) const { return b.u < a.u; }
+  bool operator()(const QueueEntry& a, const QueueEntry& b) const { return compare(b.u, a.u) < 0; }
+};
+
+// The exact polynomial behind a root-cache key, up to sign (MATH.md 3.1): the in-sphere determinant
+// of five points, the orientation of four, or the radius polynomial of a simplex. It copies the
+// points' motion, so it stays valid after the triangulation has moved on within the slab.
+struct KeyPolynomial {
+  int kind = 0; // 0 in-sphere, 1 orientation, 2 radius (as CacheKey::v[0])
+  int count = 0;
+  std::array<MovingPoint, 5> pts{};
+  std::shared_ptr<const SquaredRadius> rho2;
+
+  ExactPoly operator()() const {
+    Poly<mpz_class> f;
+    const auto& p = pts;
+    if (kind == 0)
+      f = certificate::in_sphere<mpz_class>(p[0], p[1], p[2], p[3], p[4]);
+    else if (kind == 1)
+      f = certificate::orientation<mpz_class>(p[0], p[1], p[2], p[3]);
+    else if (count == 2)
+      f = certificate::edge_radius<mpz_class>(p[0], p[1], rho2->num, rho2->den);
+    else if (count == 3)
+      f = certificate::triangle_radius<mpz_class>(p[0], p[1], p[2], rho2->num, rho2->den);
+    else
+      f = certificate::tetrahedron_radius<mpz_class>(p[0], p[1], p[2], p[3], rho2->num, rho2->den);
+    return to_exact_poly(f);
+  }
 };
 
 struct Face {
@@ -110,6 +137,7 @@ struct KineticAlphaComplex::Impl {
 
   mpz_class P, Q;
   Interval Pi, Qi;
+  std::shared_ptr<const SquaredRadius> rho2_shared;
 
   std::size_t slab = 0;
   SlabTime now;
@@ -137,6 +165,7 @@ struct KineticAlphaComplex::Impl {
     Q = options.rho2.den;
     Pi = Interval(CGAL::to_interval(CGAL::Gmpz(P.get_mpz_t())));
     Qi = Interval(CGAL::to_interval(CGAL::Gmpz(Q.get_mpz_t())));
+    rho2_shared = std::make_shared<const SquaredRadius>(options.rho2);
     motion.resize(traj.cells.size());
     alive.assign(traj.cells.size(), 0);
   }
@@ -229,6 +258,19 @@ struct KineticAlphaComplex::Impl {
 
   // ---------------------------------------------------------------- certificates
 
+  struct CacheKey {
+    std::array<VertexId, 6> v;
+    bool operator==(const CacheKey& o) const { return v == o.v; }
+  };
+  struct CacheKeyHash {
+    std::size_t operator()(const CacheKey& k) const {
+      std::size_t h = 0;
+      for (VertexId x : k.v)
+        h = h * 0x9E3779B97F4A7C15ULL + static_cast<std::size_t>(x + 3);
+      return h;
+    }
+  };
+
   int new_cert(CertKind kind, const Simplex& key) {
     int id;
     if (!free_certs.empty()) {
@@ -271,6 +313,8 @@ struct KineticAlphaComplex::Impl {
         ++stats.filter_settled;
         return;
       }
+      if (install_in_doubles(id, f))
+        return;
     }
     ++stats.exact_settled;
     ++(c.kind == CertKind::delaunay ? stats.exact_delaunay : stats.exact_radius);
@@ -297,25 +341,64 @@ struct KineticAlphaComplex::Impl {
     }
     if (!roots.empty()) {
       ++stats.exact_scheduled;
-      queue.push({roots.front(), static_cast<std::uint32_t>(id), c.version});
+      queue.push({SlabTime(roots.front()), static_cast<std::uint32_t>(id), c.version});
     }
+  }
+
+  // The fast path of install (MATH.md 3.8): the sign just after now and the next failure time,
+  // isolated in double interval arithmetic. False when doubles cannot decide; nothing is changed then.
+  bool install_in_doubles(int id, const IntervalPoly& f) {
+    const Certificate& c = certs[static_cast<std::size_t>(id)];
+    const CacheKey key = cache_key(c);
+    double lo, hi;
+    now.enclosure(lo, hi);
+    int sign;
+    const IsolatedRoot* current = now.isolated();
+    if (current != nullptr && lo < hi && current->key == key.v) {
+      // f is +-(the polynomial whose root is now): its only root in (lo, hi) is now itself, so its
+      // sign just after now is its sign at hi (the flipped facet, the toggled radius certificate).
+      sign = interval_sign(f, hi, hi);
+    } else {
+      // f keeps one sign on the enclosure of now: it does not vanish at now.
+      sign = interval_sign(f, lo, hi);
+    }
+    if (sign == 0)
+      return false;
+    FirstSignChange next = first_sign_change(f, hi, 12);
+    if (next.status == FirstSignChange::Status::undecided || next.sign != sign)
+      return false;
+    ++stats.interval_settled;
+    if (sign < 0) {
+      ++stats.invalid_at_creation;
+      mark_invalid(id);
+      return true;
+    }
+    if (next.status == FirstSignChange::Status::root) {
+      ++stats.interval_scheduled;
+      auto root = std::make_shared<IsolatedRoot>();
+      root->enclosure = f;
+      root->lo = next.lo;
+      root->hi = next.hi;
+      root->sign_lo = sign;
+      root->key = key.v;
+      root->exact = key_polynomial(key);
+      queue.push({SlabTime(std::move(root)), static_cast<std::uint32_t>(id), c.version});
+    }
+    return true;
+  }
+
+  KeyPolynomial key_polynomial(const CacheKey& key) const {
+    KeyPolynomial k;
+    k.kind = key.v[0];
+    k.rho2 = rho2_shared;
+    for (std::size_t i = 1; i < key.v.size() && key.v[i] != -2; ++i)
+      k.pts[static_cast<std::size_t>(k.count++)] = pt(key.v[i]);
+    return k;
   }
 
   // Certificates built on the same points share their polynomial up to sign, hence its roots: the
   // in-sphere of a 5-point set (the facet of a flip and the new interior facets), the orientation of
   // a 4-point set, the radius of a face (MATH.md 3.8, caching; cleared at every frame).
-  struct CacheKey {
-    std::array<VertexId, 6> v;
-    bool operator==(const CacheKey& o) const { return v == o.v; }
-  };
-  struct CacheKeyHash {
-    std::size_t operator()(const CacheKey& k) const {
-      std::size_t h = 0;
-      for (VertexId x : k.v)
-        h = h * 0x9E3779B97F4A7C15ULL + static_cast<std::size_t>(x + 3);
-      return h;
-    }
-  };
   std::unordered_map<CacheKey, RealRoots, CacheKeyHash> root_cache;
 
   CacheKey cache_key(const Certificate& c) const {
@@ -944,9 +1027,10 @@ struct KineticAlphaComplex::Impl {
       const Certificate& c = certs[top.cert];
       if (!c.alive || c.version != top.version)
         continue;
-      now = SlabTime(top.u);
+      now = top.u;
+      now.tighten();
       mark_invalid(static_cast<int>(top.cert));
-      while (!queue.empty() && queue.top().u == top.u) {
+      while (!queue.empty() && compare(queue.top().u, now) == 0) {
         QueueEntry e = queue.top();
         queue.pop();
         const Certificate& ce = certs[e.cert];
@@ -1061,7 +1145,7 @@ struct KineticAlphaComplex::Impl {
       const QueueEntry& e = copy.top();
       const Certificate& c = certs[e.cert];
       if (c.alive && c.version == e.version) {
-        upper = SlabTime(e.u);
+        upper = e.u;
         break;
       }
     }

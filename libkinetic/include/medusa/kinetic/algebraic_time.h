@@ -3,6 +3,7 @@
 // Heavy header: include it only in the few translation units that need exact times.
 #pragma once
 
+#include "medusa/kinetic/interval_filter.h"
 #include "medusa/kinetic/polynomial.h"
 
 #include <CGAL/Algebraic_kernel_d_1.h>
@@ -10,6 +11,11 @@
 #include <CGAL/Gmpz.h>
 #include <gmpxx.h>
 
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
 #include <vector>
 
 namespace medusa::kinetic {
@@ -21,27 +27,53 @@ using Rational = CGAL::Gmpq;
 
 ExactPoly to_exact_poly(const Poly<mpz_class>& f);
 
+// A root of a certificate polynomial isolated in doubles (root_isolation.h): exactly one root of the
+// polynomial lies in the open interval (lo, hi), and it is simple. The exact polynomial is computed
+// only when two times cannot be told apart in doubles (MATH.md 3.7: isolating intervals first,
+// refinement when they overlap, exact comparison last). Shared by every copy of the time, so a
+// refinement made once serves every later comparison.
+struct IsolatedRoot {
+  IntervalPoly enclosure;                 // encloses the coefficients of the polynomial
+  std::function<ExactPoly()> exact;       // the exact polynomial (any non-zero multiple of it)
+  double lo = 0.0, hi = 0.0;              // lo < root < hi, or lo == hi == root once found exactly
+  int sign_lo = 0;                        // sign of the polynomial at lo
+  std::array<std::int32_t, 6> key{};      // which polynomial (the engine's root-cache key)
+  std::optional<AlgebraicReal> algebraic; // the exact root, built on first need
+};
+
 // A time inside a slab: the parameter u, rational (frames, audits) or algebraic (events).
 class SlabTime {
 public:
   SlabTime(); // u = 0
   explicit SlabTime(const Rational& u);
   explicit SlabTime(const AlgebraicReal& u);
+  explicit SlabTime(std::shared_ptr<IsolatedRoot> root);
 
-  bool is_rational() const { return rational_; }
-  const Rational& rational() const { return q_; }
-  const AlgebraicReal& algebraic() const { return a_; }
+  bool is_rational() const;
+  const Rational& rational() const; // only when is_rational()
+  const AlgebraicReal& algebraic() const;
+  // The isolated root behind an algebraic time found in doubles, or null.
+  const IsolatedRoot* isolated() const { return root_.get(); }
   double approx() const;
   // An isolating interval [lo, hi] of u as doubles rounded outward (lo == hi for exact doubles).
   void enclosure(double& lo, double& hi) const;
+  // Narrows the enclosure of an isolated root as far as doubles allow.
+  void tighten() const;
 
-  friend bool operator<(const SlabTime& x, const SlabTime& y) { return x.a_ < y.a_; }
-  friend bool operator==(const SlabTime& x, const SlabTime& y) { return x.a_ == y.a_; }
+  // -1, 0, +1: exact comparison, in doubles whenever the enclosures separate.
+  friend int compare(const SlabTime& x, const SlabTime& y);
+  friend bool operator<(const SlabTime& x, const SlabTime& y) { return compare(x, y) < 0; }
+  friend bool operator==(const SlabTime& x, const SlabTime& y) { return compare(x, y) == 0; }
 
 private:
-  bool rational_;
-  Rational q_;
-  AlgebraicReal a_;
+  // One bisection step of an isolated root; false when doubles cannot narrow it further.
+  bool refine_once() const;
+
+  mutable bool rational_; // set lazily when an isolated root turns out to be a dyadic rational
+  mutable Rational q_;
+  std::shared_ptr<IsolatedRoot> root_;
+  mutable std::shared_ptr<AlgebraicReal> a_; // built on first need
+  double lo_ = 0.0, hi_ = 0.0;               // enclosure of rational or CGAL-built times
 };
 
 // sign^+_u(f): the sign of f on (u, u + eps) (MATH.md 3.7); 0 iff f is identically zero.

@@ -7,10 +7,18 @@
 
 #include <CGAL/Interval_nt.h>
 
+#include <array>
+
 namespace medusa::kinetic {
 
 using Interval = CGAL::Interval_nt_advanced;
 using IntervalPoly = Poly<Interval>;
+
+// The Bernstein coefficients of f on [lo, hi], each multiplied by a positive binomial (so with the
+// signs of the true coefficients), in beta[0..n]; returns n, the degree of f (-1 if f is empty).
+// beta[0] encloses f(lo) and beta[n] encloses f(hi).
+int bernstein_coefficients(const IntervalPoly& f, double lo, double hi,
+                           std::array<Interval, IntervalPoly::max_degree + 1>& beta);
 
 // +1 if f > 0 on [lo, hi], -1 if f < 0 on [lo, hi], 0 if the Bernstein enclosures do not decide.
 // lo < hi are doubles (any double is an exact dyadic rational).

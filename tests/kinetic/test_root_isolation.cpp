@@ -1,0 +1,153 @@
+// Certified root isolation in doubles (root_isolation.h) and exact comparison of the times it
+// produces (SlabTime over IsolatedRoot). Expected roots are derived on paper.
+#include "medusa/kinetic/algebraic_time.h"
+#include "medusa/kinetic/root_isolation.h"
+
+#include <CGAL/FPU.h>
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+using namespace medusa::kinetic;
+
+namespace {
+
+// Integer polynomial c0 + c1 u + c2 u^2 + ... as exact and interval polynomials.
+Poly<mpz_class> exact_poly(std::initializer_list<long> c) {
+  Poly<mpz_class> f;
+  Poly<mpz_class> mono{mpz_class(1)};
+  const Poly<mpz_class> u{mpz_class(0), mpz_class(1)};
+  for (long x : c) {
+    f = f + Poly<mpz_class>{mpz_class(x)} * mono;
+    mono = mono * u;
+  }
+  return f;
+}
+
+IntervalPoly interval_poly(std::initializer_list<long> c) {
+  IntervalPoly f;
+  IntervalPoly mono{Interval(1)};
+  const IntervalPoly u{Interval(0), Interval(1)};
+  for (long x : c) {
+    f = f + IntervalPoly{Interval(static_cast<double>(x))} * mono;
+    mono = mono * u;
+  }
+  return f;
+}
+
+// The time of the first root after `start` of the polynomial with coefficients c, isolated in doubles.
+SlabTime isolated_time(std::initializer_list<long> c, double start = 0.0) {
+  CGAL::Protect_FPU_rounding<true> guard;
+  IntervalPoly f = interval_poly(c);
+  FirstSignChange r = first_sign_change(f, start, 12);
+  REQUIRE(r.status == FirstSignChange::Status::root);
+  auto root = std::make_shared<IsolatedRoot>();
+  root->enclosure = f;
+  root->lo = r.lo;
+  root->hi = r.hi;
+  root->sign_lo = r.sign;
+  Poly<mpz_class> e = exact_poly(c);
+  root->exact = [e] { return to_exact_poly(e); };
+  return SlabTime(root);
+}
+
+} // namespace
+
+TEST_CASE("isolation finds the flip time of the worked example in an interval around it",
+          "[kinetic][isolation]") {
+  // 32u^2 - 94u + 61 (MATH.md Appendix B) is positive at 0 and has its first root at
+  // u* = (47 - sqrt(257)) / 32 ~ 0.96778; the other root (47 + sqrt(257)) / 32 > 1.
+  CGAL::Protect_FPU_rounding<true> guard;
+  FirstSignChange r = first_sign_change(interval_poly({61, -94, 32}), 0.0, 12);
+  REQUIRE(r.status == FirstSignChange::Status::root);
+  REQUIRE(r.sign == 1);
+  const double u = (47.0 - std::sqrt(257.0)) / 32.0;
+  REQUIRE(r.lo < u);
+  REQUIRE(u < r.hi);
+}
+
+TEST_CASE("isolation proves a polynomial without roots after the start keeps its sign",
+          "[kinetic][isolation]") {
+  // (u - 1/4)(u - 3/4) = u^2 - u + 3/16, times 16: roots 1/4 and 3/4, negative between them.
+  CGAL::Protect_FPU_rounding<true> guard;
+  FirstSignChange r = first_sign_change(interval_poly({3, -16, 16}), 0.8, 12);
+  REQUIRE(r.status == FirstSignChange::Status::none);
+  REQUIRE(r.sign == 1);
+  FirstSignChange s = first_sign_change(interval_poly({3, -16, 16}), 0.5, 12);
+  REQUIRE(s.status == FirstSignChange::Status::root);
+  REQUIRE(s.sign == -1);
+  REQUIRE(s.lo < 0.75);
+  REQUIRE(0.75 < s.hi);
+}
+
+TEST_CASE("isolation refuses a root at the start and a double root", "[kinetic][isolation]") {
+  CGAL::Protect_FPU_rounding<true> guard;
+  // 2u - 1 vanishes at the start 1/2: the sign just after it is not decided in doubles.
+  REQUIRE(first_sign_change(interval_poly({-1, 2}), 0.5, 12).status == FirstSignChange::Status::undecided);
+  // 4(u - 1/2)^2 touches 0 without changing sign: no certified answer either way.
+  REQUIRE(first_sign_change(interval_poly({1, -4, 4}), 0.0, 12).status == FirstSignChange::Status::undecided);
+}
+
+TEST_CASE("refinement narrows an isolating interval to the root and finds dyadic roots exactly",
+          "[kinetic][isolation]") {
+  CGAL::Protect_FPU_rounding<true> guard;
+  // 2u^2 - 1: root 1/sqrt(2).
+  IntervalPoly f = interval_poly({-1, 0, 2});
+  double lo = 0.0, hi = 1.0;
+  while (refine_root(f, lo, hi, -1) == Refinement::narrowed) {
+  }
+  REQUIRE(lo <= std::sqrt(0.5));
+  REQUIRE(std::sqrt(0.5) <= hi);
+  REQUIRE(hi - lo < 1e-15);
+  // 8u - 3: root 3/8, met exactly by bisection of (0, 1).
+  IntervalPoly g = interval_poly({-3, 8});
+  lo = 0.0;
+  hi = 1.0;
+  Refinement step = Refinement::narrowed;
+  while (step == Refinement::narrowed)
+    step = refine_root(g, lo, hi, -1);
+  REQUIRE(step == Refinement::exact);
+  REQUIRE(lo == 0.375);
+  REQUIRE(hi == 0.375);
+}
+
+TEST_CASE("times isolated in doubles compare exactly, equal roots of different polynomials included",
+          "[kinetic][isolation]") {
+  // 2u^2 - 1 and 6u^2 - 3 (= 3 (2u^2 - 1)) have the same root 1/sqrt(2): the enclosures cannot separate
+  // them, so the comparison goes exact and answers equal.
+  SlabTime a = isolated_time({-1, 0, 2});
+  SlabTime b = isolated_time({-3, 0, 6});
+  REQUIRE(compare(a, b) == 0);
+  REQUIRE(a == b);
+  // 1/sqrt(2) < 0.7072 = 884/1250 and > 0.7071; against rationals and another root (4u^2 - 2u - 1 has
+  // the root (1 + sqrt(5)) / 4 ~ 0.809).
+  REQUIRE(a < SlabTime(Rational(7072, 10000)));
+  REQUIRE(SlabTime(Rational(7071, 10000)) < a);
+  SlabTime c = isolated_time({-1, -2, 4});
+  REQUIRE(a < c);
+  REQUIRE(!(c < a));
+  // The exact value agrees with CGAL's isolation of the same polynomial.
+  REQUIRE(CGAL::to_double(a.algebraic()) == Approx(std::sqrt(0.5)).epsilon(1e-15));
+}
+
+TEST_CASE("isolated times of random quadratics order as their exact roots do", "[kinetic][isolation]") {
+  // Roots r = p/q of (q u - p)(u + 1) and the isolated times must order exactly as the rationals.
+  const unsigned seed = std::random_device{}();
+  CAPTURE(seed);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<long> num(1, 999);
+  int compared = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    long p1 = num(rng), p2 = num(rng), q = 1000;
+    // (q u - p)(u + 1) = -p + (q - p) u + q u^2
+    SlabTime t1 = isolated_time({-p1, q - p1, q});
+    SlabTime t2 = isolated_time({-p2, q - p2, q});
+    int expected = p1 < p2 ? -1 : (p2 < p1 ? 1 : 0);
+    REQUIRE(compare(t1, t2) == expected);
+    REQUIRE(compare(t1, SlabTime(Rational(p1, q))) == 0);
+    ++compared;
+  }
+  REQUIRE(compared == 200);
+}
