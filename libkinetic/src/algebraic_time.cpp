@@ -132,6 +132,13 @@ int compare(const SlabTime& x, const SlabTime& y) {
     return 0;
   if (!x.root_ && !y.root_ && x.rational_ && y.rational_)
     return x.q_ < y.q_ ? -1 : (y.q_ < x.q_ ? 1 : 0);
+  // Two roots of one polynomial (a certificate rebuilt on the same points, e.g. a facet whose
+  // neighbourhood changed): each open interval holds exactly one root of it, so nested intervals mean
+  // the same root, and refinement ends with nested or disjoint intervals.
+  // (Closed containment is enough: the polynomial does not vanish at the ends of an open isolating
+  // interval, and an interval shrunk to a point is the root itself.)
+  const bool same_polynomial = x.root_ && y.root_ && x.root_->key[0] >= 0 && x.root_->key == y.root_->key &&
+                               x.root_->slab == y.root_->slab;
   for (;;) {
     double xl, xh, yl, yh;
     x.enclosure(xl, xh);
@@ -140,6 +147,8 @@ int compare(const SlabTime& x, const SlabTime& y) {
       return -1;
     if (yh < xl)
       return 1;
+    if (same_polynomial && ((yl <= xl && xh <= yh) || (xl <= yl && yh <= xh)))
+      return 0;
     // Overlapping enclosures: narrow the wider isolated root, then the other one.
     const bool x_first = (xh - xl) >= (yh - yl);
     const SlabTime& a = x_first ? x : y;

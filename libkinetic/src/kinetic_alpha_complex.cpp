@@ -381,6 +381,7 @@ struct KineticAlphaComplex::Impl {
       root->hi = next.hi;
       root->sign_lo = sign;
       root->key = key.v;
+      root->slab = slab;
       root->exact = key_polynomial(key);
       queue.push({SlabTime(std::move(root)), static_cast<std::uint32_t>(id), c.version});
     }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 #include <random>
+#include <stdexcept>
 
 using namespace medusa::kinetic;
 
@@ -150,4 +151,31 @@ TEST_CASE("isolated times of random quadratics order as their exact roots do", "
     ++compared;
   }
   REQUIRE(compared == 200);
+}
+
+TEST_CASE("two isolations of one polynomial compare in doubles, without exact arithmetic",
+          "[kinetic][isolation]") {
+  // 16u^2 - 16u + 3 = (4u - 1)(4u - 3): roots 1/4 and 3/4. Isolating intervals of the same root found
+  // from different starts are nested after refinement, so they compare equal; the exact polynomial is
+  // never needed (it would throw).
+  CGAL::Protect_FPU_rounding<true> guard;
+  IntervalPoly f = interval_poly({3, -16, 16});
+  auto make = [&](double start) {
+    FirstSignChange r = first_sign_change(f, start, 12);
+    REQUIRE(r.status == FirstSignChange::Status::root);
+    auto root = std::make_shared<IsolatedRoot>();
+    root->enclosure = f;
+    root->lo = r.lo;
+    root->hi = r.hi;
+    root->sign_lo = r.sign;
+    root->key = {0, 1, 2, 3, 4, 5};
+    root->slab = 7;
+    root->exact = []() -> ExactPoly { throw std::logic_error("exact polynomial requested"); };
+    return SlabTime(root);
+  };
+  SlabTime a = make(0.0), b = make(0.1), c = make(0.5);
+  REQUIRE(compare(a, b) == 0);
+  REQUIRE(compare(b, a) == 0);
+  REQUIRE(compare(a, c) == -1);
+  REQUIRE(compare(c, b) == 1);
 }

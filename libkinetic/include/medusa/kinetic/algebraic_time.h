@@ -33,11 +33,12 @@ ExactPoly to_exact_poly(const Poly<mpz_class>& f);
 // refinement when they overlap, exact comparison last). Shared by every copy of the time, so a
 // refinement made once serves every later comparison.
 struct IsolatedRoot {
-  IntervalPoly enclosure;                 // encloses the coefficients of the polynomial
-  std::function<ExactPoly()> exact;       // the exact polynomial (any non-zero multiple of it)
-  double lo = 0.0, hi = 0.0;              // lo < root < hi, or lo == hi == root once found exactly
-  int sign_lo = 0;                        // sign of the polynomial at lo
-  std::array<std::int32_t, 6> key{};      // which polynomial (the engine's root-cache key)
+  IntervalPoly enclosure;           // encloses the coefficients of the polynomial
+  std::function<ExactPoly()> exact; // the exact polynomial (any non-zero multiple of it)
+  double lo = 0.0, hi = 0.0;        // lo < root < hi, or lo == hi == root once found exactly
+  int sign_lo = 0;                  // sign of the polynomial at lo
+  std::array<std::int32_t, 6> key{{-1, -1, -1, -1, -1, -1}}; // which polynomial (-1: unknown) ...
+  std::size_t slab = 0;                   // ... in which slab: equal (key, slab), same polynomial
   std::optional<AlgebraicReal> algebraic; // the exact root, built on first need
 };
 
