@@ -91,7 +91,15 @@ struct KeyPolynomial {
       f = certificate::triangle_radius<mpz_class>(p[0], p[1], p[2], rho2->num, rho2->den);
     else
       f = certificate::tetrahedron_radius<mpz_class>(p[0], p[1], p[2], p[3], rho2->num, rho2->den);
-    return to_exact_poly(f);
+    // Divide out u^m: the same roots in (0, 1], and no root at 0, where an isolating interval
+    // starting at a frame may begin (CGAL's algebraic reals need a polynomial non-zero at the ends).
+    Poly<mpz_class> g;
+    int m = 0;
+    while (m < f.degree_bound() && f[m] == 0)
+      ++m;
+    for (int i = f.degree_bound(); i >= m; --i)
+      g = g * Poly<mpz_class>(mpz_class(0), mpz_class(1)) + Poly<mpz_class>(f[i]);
+    return to_exact_poly(g);
   }
 };
 
@@ -319,8 +327,7 @@ struct KineticAlphaComplex::Impl {
     ++stats.exact_settled;
     ++(c.kind == CertKind::delaunay ? stats.exact_delaunay : stats.exact_radius);
     Poly<mpz_class> exact = cert_poly<mpz_class>(c);
-    int settled = exact_filter(exact);
-    if (settled > 0) {
+    if (install_from_exact_coefficients(id, exact)) {
       ++stats.exact_filter_settled;
       return;
     }
@@ -362,12 +369,20 @@ struct KineticAlphaComplex::Impl {
       // f keeps one sign on the enclosure of now: it does not vanish at now.
       sign = interval_sign(f, lo, hi);
     }
-    if (sign == 0)
-      return false;
-    FirstSignChange next = first_sign_change(f, hi, 12);
-    if (next.status == FirstSignChange::Status::undecided || next.sign != sign)
+    if (sign == 0 || !schedule_first_change(id, f, sign, hi, key))
       return false;
     ++stats.interval_settled;
+    return true;
+  }
+
+  // With the sign of f just after now known and no other root of f in (now, start]: isolates the
+  // first sign change of f after start, then marks the certificate invalid or schedules its failure.
+  // False when doubles cannot decide; nothing is changed then.
+  bool schedule_first_change(int id, const IntervalPoly& f, int sign, double start, const CacheKey& key) {
+    const Certificate& c = certs[static_cast<std::size_t>(id)];
+    FirstSignChange next = first_sign_change(f, start, 12);
+    if (next.status == FirstSignChange::Status::undecided || next.sign != sign)
+      return false;
     if (sign < 0) {
       ++stats.invalid_at_creation;
       mark_invalid(id);
@@ -386,6 +401,32 @@ struct KineticAlphaComplex::Impl {
       queue.push({SlabTime(std::move(root)), static_cast<std::uint32_t>(id), c.version});
     }
     return true;
+  }
+
+  // The second path, on the exact coefficients rounded outward to doubles (tight enclosures): at a
+  // rational slab start (u = 0: t_0 and frames) the root at 0 of multiplicity m is divided out first,
+  // which settles the lattice-degenerate certificates of CC3D's initial layout (MATH.md 5.5) without
+  // CGAL. False when doubles cannot decide; nothing is changed then.
+  bool install_from_exact_coefficients(int id, const Poly<mpz_class>& f) {
+    const bool at_zero = now.is_rational() && now.rational() == 0;
+    const int n = f.degree_bound();
+    int m = 0;
+    if (at_zero)
+      while (m <= n && f[m] == 0)
+        ++m;
+    if (m > n || n < 0)
+      return false; // identically zero: handled by the caller
+    CGAL::Protect_FPU_rounding<true> guard;
+    IntervalPoly g;
+    for (int i = n; i >= m; --i) {
+      IntervalPoly term{Interval(CGAL::to_interval(CGAL::Gmpz(f[i].get_mpz_t())))};
+      g = g * IntervalPoly(Interval(0), Interval(1)) + term;
+    }
+    if (!at_zero)
+      return install_in_doubles(id, g);
+    // f = u^m g and g(0) = f_m != 0: the sign just after 0 is the sign of f_m.
+    return schedule_first_change(id, g, sgn(f[m]) > 0 ? 1 : -1, 0.0,
+                                 cache_key(certs[static_cast<std::size_t>(id)]));
   }
 
   KeyPolynomial key_polynomial(const CacheKey& key) const {
@@ -425,32 +466,6 @@ struct KineticAlphaComplex::Impl {
     for (std::size_t i = 0; i < pts.size(); ++i)
       k.v[i + 1] = pts[i];
     return k;
-  }
-
-  // A second, cheap filter on the exact coefficients (rounded outward to doubles, hence tight): +1 if
-  // the certificate is provably positive on (now, 1] without root isolation, 0 otherwise. At a
-  // rational slab start (u = 0, frames and t_0) the root at 0 of multiplicity m is divided out first,
-  // which settles the lattice-degenerate certificates of CC3D's initial layout (MATH.md 5.5).
-  int exact_filter(const Poly<mpz_class>& f) {
-    int n = f.degree_bound();
-    int m = 0;
-    const bool at_zero = now.is_rational() && now.rational() == 0;
-    if (at_zero)
-      while (m <= n && f[m] == 0)
-        ++m;
-    if (m > n)
-      return 0; // identically zero: handled by the caller
-    if (at_zero && sgn(f[m]) < 0)
-      return 0; // invalid just after 0: the caller marks it
-    CGAL::Protect_FPU_rounding<true> guard;
-    IntervalPoly g;
-    for (int i = n; i >= m; --i) {
-      IntervalPoly term{Interval(CGAL::to_interval(CGAL::Gmpz(f[i].get_mpz_t())))};
-      g = g * IntervalPoly(Interval(0), Interval(1)) + term;
-    }
-    double lo = 0, hi = 0;
-    now.enclosure(lo, hi);
-    return bernstein_sign_subdivided(g, at_zero ? 0.0 : lo, 4) > 0 ? 1 : 0;
   }
 
   void mark_invalid(int id) {
