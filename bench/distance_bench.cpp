@@ -108,6 +108,12 @@ void write_points(const std::string& path, const PointDiagram& points) {
     throw std::runtime_error("cannot write " + path);
 }
 
+std::string fixed(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.2f", x);
+  return buffer;
+}
+
 const char* const metrics[] = {"bottleneck", "w1", "w2"};
 
 // Our distance of the finite parts; the certified relative error of an approximate W_p goes to `error`.
@@ -228,15 +234,18 @@ void run(const Options& o) {
       total_ours1 += one.seconds;
       total_ours2 += two.seconds;
       total_hera += hera_seconds;
-      worst = std::max(worst, one.seconds / hera_seconds);
+      if (computed > 0)
+        worst = std::max(worst, one.seconds / hera_seconds);
+      // A matrix whose every pair was skipped measures nothing: no ratio.
+      const std::string ratio = computed == 0 ? "-" : fixed(one.seconds / hera_seconds);
       if (o.csv)
-        std::printf("%s,%s,%zu,%zu,%zu,%zu,%.6f,%.6f,%.6f,%.3f,%.3g\n", group.name.c_str(), metric, computed,
+        std::printf("%s,%s,%zu,%zu,%zu,%zu,%.6f,%.6f,%.6f,%s,%.3g\n", group.name.c_str(), metric, computed,
                     all - computed, essential_mismatches(group.diagrams), max_points, one.seconds,
-                    two.seconds, hera_seconds, one.seconds / hera_seconds, max_difference);
+                    two.seconds, hera_seconds, ratio.c_str(), max_difference);
       else
-        std::printf("%-12s %-10s %6zu %5zu %6zu %6zu %10.4f %10.4f %10.4f %7.2f %9.2g\n", group.name.c_str(),
+        std::printf("%-12s %-10s %6zu %5zu %6zu %6zu %10.4f %10.4f %10.4f %7s %9.2g\n", group.name.c_str(),
                     metric, computed, all - computed, essential_mismatches(group.diagrams), max_points,
-                    one.seconds, two.seconds, hera_seconds, one.seconds / hera_seconds, max_difference);
+                    one.seconds, two.seconds, hera_seconds, ratio.c_str(), max_difference);
     }
   }
   if (!o.csv)

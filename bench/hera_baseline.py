@@ -14,6 +14,7 @@ OUTPUT.json: [{"group", "metric", "seconds", "pairs": [[i, j, value], ...]}, ...
 """
 import json
 import math
+import os
 import sys
 import time
 
@@ -22,8 +23,9 @@ import gudhi.hera
 
 
 def load(path):
-    points = np.loadtxt(path, dtype=np.float64, ndmin=2)
-    return points.reshape(-1, 2)
+    if os.path.getsize(path) == 0:
+        return np.empty((0, 2), dtype=np.float64)
+    return np.loadtxt(path, dtype=np.float64, ndmin=2).reshape(-1, 2)
 
 
 def distance_function(metric):
