@@ -30,11 +30,25 @@ bool precedes(const Cell& a, const Cell& b, Direction direction) {
 
 Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> selected, Direction direction,
                  int cell_type) {
+  // Cells read from a store have ids 0..N-1 in order (libmedusa's Medusa::cells): then an id is its
+  // position and the facet lookups need no hash table, which dominated the cost of this function.
+  bool ids_are_positions = true;
+  for (std::size_t i = 0; i < cells.size() && ids_are_positions; ++i)
+    ids_are_positions = cells[i].id == i;
   std::unordered_map<complex::CellId, std::size_t> position;
-  position.reserve(cells.size());
-  for (std::size_t i = 0; i < cells.size(); ++i)
-    if (!position.emplace(cells[i].id, i).second)
-      throw InputError("filtration: duplicate " + cell_name(cells[i]));
+  if (!ids_are_positions) {
+    position.reserve(cells.size());
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      if (!position.emplace(cells[i].id, i).second)
+        throw InputError("filtration: duplicate " + cell_name(cells[i]));
+  }
+  const std::size_t unknown = cells.size();
+  const auto locate = [&](complex::CellId id) {
+    if (ids_are_positions)
+      return id < cells.size() ? static_cast<std::size_t>(id) : unknown;
+    const auto it = position.find(id);
+    return it == position.end() ? unknown : it->second;
+  };
 
   std::sort(selected.begin(), selected.end(),
             [&](std::size_t a, std::size_t b) { return precedes(cells[a], cells[b], direction); });
@@ -65,15 +79,15 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
     auto& column = f.columns[j];
     column.reserve(c.facets.size());
     for (complex::CellId facet_id : c.facets) {
-      const auto it = position.find(facet_id);
-      if (it == position.end())
+      const std::size_t at = locate(facet_id);
+      if (at == unknown)
         throw InputError("filtration: " + cell_name(c) + " names unknown facet cell " +
                          std::to_string(facet_id));
-      const Cell& facet = cells[it->second];
+      const Cell& facet = cells[at];
       if (facet.vertices.size() + 1 != c.vertices.size() ||
           !std::includes(c.vertices.begin(), c.vertices.end(), facet.vertices.begin(), facet.vertices.end()))
         throw InternalError("filtration: " + cell_name(facet) + " is not a facet of " + cell_name(c));
-      const std::int64_t row = index_of[it->second];
+      const std::int64_t row = index_of[at];
       // A face of a type-X cell is type-X, so a missing row is a broken sub-medusa (MATH.md 7.4).
       if (row < 0 || row >= static_cast<std::int64_t>(j))
         throw InternalError("filtration: facet " + cell_name(facet) + " does not precede its coface " +
