@@ -283,14 +283,14 @@ int main(int argc, char** argv) {
       std::vector<int> vertex_type;
       for (const kinetic::Trajectory& t : medusa.input.cells)
         vertex_type.push_back(t.type);
-      run_case(o, stem + " (whole medusa, forward)", medusa.cells, vertex_type, all_types);
+      run_case(o, stem + " whole forward", medusa.cells, vertex_type, all_types);
       if (!o.per_type)
         continue;
       std::vector<int> types = vertex_type;
       std::sort(types.begin(), types.end());
       types.erase(std::unique(types.begin(), types.end()), types.end());
       for (int type : types)
-        run_case(o, stem + " (type " + std::to_string(type) + ", forward)", medusa.cells, vertex_type, type);
+        run_case(o, stem + " type " + std::to_string(type) + " forward", medusa.cells, vertex_type, type);
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "reduction_bench: %s\n", e.what());
