@@ -3,6 +3,7 @@
 #include "medusa/kinetic/error.h"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <tuple>
@@ -15,17 +16,36 @@ using complex::Cell;
 
 std::string cell_name(const Cell& c) { return "cell " + std::to_string(c.id); }
 
-// Strict order of MATH.md 7.2 (forward) or 7.3 (reverse) on two cells.
-bool precedes(const Cell& a, const Cell& b, Direction direction) {
-  if (direction == Direction::forward) {
-    if (a.birth != b.birth)
-      return a.birth < b.birth;
-  } else if (a.death != b.death) {
-    return b.death < a.death;
+// The order of MATH.md 7.2 (forward: birth batch, birth rank, dimension, vertex tuple) or 7.3
+// (reverse: latest death first), without the vertex tuple, packed so that sorting reads the cells
+// only on ties: cells are large and scattered in memory, and reading them in every comparison was
+// most of the time of make_filtration.
+struct SortKey {
+  std::uint64_t batch = 0; // birth batch, or the complement of the death batch (reverse)
+  std::uint32_t rank = 0;  // likewise for the rank within the batch
+  int dim = 0;
+  std::size_t position = 0; // in the cell vector
+
+  bool same_time_and_dim(const SortKey& o) const {
+    return batch == o.batch && rank == o.rank && dim == o.dim;
   }
-  if (a.dim() != b.dim())
-    return a.dim() < b.dim();
-  return a.vertices < b.vertices;
+  bool before(const SortKey& o) const {
+    return std::tie(batch, rank, dim) < std::tie(o.batch, o.rank, o.dim);
+  }
+};
+
+SortKey sort_key(const Cell& c, std::size_t position, Direction direction) {
+  SortKey k;
+  if (direction == Direction::forward) {
+    k.batch = c.birth.batch;
+    k.rank = c.birth.rank;
+  } else {
+    k.batch = std::numeric_limits<std::uint64_t>::max() - c.death.batch;
+    k.rank = std::numeric_limits<std::uint32_t>::max() - c.death.rank;
+  }
+  k.dim = c.dim();
+  k.position = position;
+  return k;
 }
 
 Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> selected, Direction direction,
@@ -50,14 +70,24 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
     return it == position.end() ? unknown : it->second;
   };
 
-  std::sort(selected.begin(), selected.end(),
-            [&](std::size_t a, std::size_t b) { return precedes(cells[a], cells[b], direction); });
+  std::vector<SortKey> keys;
+  keys.reserve(selected.size());
+  for (std::size_t i : selected)
+    keys.push_back(sort_key(cells[i], i, direction));
+  std::sort(keys.begin(), keys.end(), [&](const SortKey& a, const SortKey& b) {
+    if (!a.same_time_and_dim(b))
+      return a.before(b);
+    return cells[a.position].vertices < cells[b.position].vertices;
+  });
   // The key is a total order on a valid medusa (MATH.md 7.2): equal keys mean one simplex with two
   // overlapping lifetimes.
-  for (std::size_t j = 1; j < selected.size(); ++j)
-    if (!precedes(cells[selected[j - 1]], cells[selected[j]], direction))
-      throw InternalError("filtration: " + cell_name(cells[selected[j]]) + " has the same key as " +
-                          cell_name(cells[selected[j - 1]]));
+  for (std::size_t j = 1; j < keys.size(); ++j)
+    if (keys[j - 1].same_time_and_dim(keys[j]) &&
+        cells[keys[j - 1].position].vertices == cells[keys[j].position].vertices)
+      throw InternalError("filtration: " + cell_name(cells[keys[j].position]) + " has the same key as " +
+                          cell_name(cells[keys[j - 1].position]));
+  for (std::size_t j = 0; j < keys.size(); ++j)
+    selected[j] = keys[j].position;
 
   std::vector<std::int64_t> index_of(cells.size(), -1);
   for (std::size_t j = 0; j < selected.size(); ++j)
