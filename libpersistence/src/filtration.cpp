@@ -3,6 +3,7 @@
 #include "medusa/kinetic/error.h"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <tuple>
@@ -15,35 +16,78 @@ using complex::Cell;
 
 std::string cell_name(const Cell& c) { return "cell " + std::to_string(c.id); }
 
-// Strict order of MATH.md 7.2 (forward) or 7.3 (reverse) on two cells.
-bool precedes(const Cell& a, const Cell& b, Direction direction) {
-  if (direction == Direction::forward) {
-    if (a.birth != b.birth)
-      return a.birth < b.birth;
-  } else if (a.death != b.death) {
-    return b.death < a.death;
+// The order of MATH.md 7.2 (forward: birth batch, birth rank, dimension, vertex tuple) or 7.3
+// (reverse: latest death first), without the vertex tuple, packed so that sorting reads the cells
+// only on ties: cells are large and scattered in memory, and reading them in every comparison was
+// most of the time of make_filtration.
+struct SortKey {
+  std::uint64_t batch = 0; // birth batch, or the complement of the death batch (reverse)
+  std::uint32_t rank = 0;  // likewise for the rank within the batch
+  int dim = 0;
+  std::size_t position = 0; // in the cell vector
+
+  bool same_time_and_dim(const SortKey& o) const {
+    return batch == o.batch && rank == o.rank && dim == o.dim;
   }
-  if (a.dim() != b.dim())
-    return a.dim() < b.dim();
-  return a.vertices < b.vertices;
+  bool before(const SortKey& o) const {
+    return std::tie(batch, rank, dim) < std::tie(o.batch, o.rank, o.dim);
+  }
+};
+
+SortKey sort_key(const Cell& c, std::size_t position, Direction direction) {
+  SortKey k;
+  if (direction == Direction::forward) {
+    k.batch = c.birth.batch;
+    k.rank = c.birth.rank;
+  } else {
+    k.batch = std::numeric_limits<std::uint64_t>::max() - c.death.batch;
+    k.rank = std::numeric_limits<std::uint32_t>::max() - c.death.rank;
+  }
+  k.dim = c.dim();
+  k.position = position;
+  return k;
 }
 
 Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> selected, Direction direction,
                  int cell_type) {
+  // Cells read from a store have ids 0..N-1 in order (libmedusa's Medusa::cells): then an id is its
+  // position and the facet lookups need no hash table, which dominated the cost of this function.
+  bool ids_are_positions = true;
+  for (std::size_t i = 0; i < cells.size() && ids_are_positions; ++i)
+    ids_are_positions = cells[i].id == i;
   std::unordered_map<complex::CellId, std::size_t> position;
-  position.reserve(cells.size());
-  for (std::size_t i = 0; i < cells.size(); ++i)
-    if (!position.emplace(cells[i].id, i).second)
-      throw InputError("filtration: duplicate " + cell_name(cells[i]));
+  if (!ids_are_positions) {
+    position.reserve(cells.size());
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      if (!position.emplace(cells[i].id, i).second)
+        throw InputError("filtration: duplicate " + cell_name(cells[i]));
+  }
+  const std::size_t unknown = cells.size();
+  const auto locate = [&](complex::CellId id) {
+    if (ids_are_positions)
+      return id < cells.size() ? static_cast<std::size_t>(id) : unknown;
+    const auto it = position.find(id);
+    return it == position.end() ? unknown : it->second;
+  };
 
-  std::sort(selected.begin(), selected.end(),
-            [&](std::size_t a, std::size_t b) { return precedes(cells[a], cells[b], direction); });
+  std::vector<SortKey> keys;
+  keys.reserve(selected.size());
+  for (std::size_t i : selected)
+    keys.push_back(sort_key(cells[i], i, direction));
+  std::sort(keys.begin(), keys.end(), [&](const SortKey& a, const SortKey& b) {
+    if (!a.same_time_and_dim(b))
+      return a.before(b);
+    return cells[a.position].vertices < cells[b.position].vertices;
+  });
   // The key is a total order on a valid medusa (MATH.md 7.2): equal keys mean one simplex with two
   // overlapping lifetimes.
-  for (std::size_t j = 1; j < selected.size(); ++j)
-    if (!precedes(cells[selected[j - 1]], cells[selected[j]], direction))
-      throw InternalError("filtration: " + cell_name(cells[selected[j]]) + " has the same key as " +
-                          cell_name(cells[selected[j - 1]]));
+  for (std::size_t j = 1; j < keys.size(); ++j)
+    if (keys[j - 1].same_time_and_dim(keys[j]) &&
+        cells[keys[j - 1].position].vertices == cells[keys[j].position].vertices)
+      throw InternalError("filtration: " + cell_name(cells[keys[j].position]) + " has the same key as " +
+                          cell_name(cells[keys[j - 1].position]));
+  for (std::size_t j = 0; j < keys.size(); ++j)
+    selected[j] = keys[j].position;
 
   std::vector<std::int64_t> index_of(cells.size(), -1);
   for (std::size_t j = 0; j < selected.size(); ++j)
@@ -65,15 +109,15 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
     auto& column = f.columns[j];
     column.reserve(c.facets.size());
     for (complex::CellId facet_id : c.facets) {
-      const auto it = position.find(facet_id);
-      if (it == position.end())
+      const std::size_t at = locate(facet_id);
+      if (at == unknown)
         throw InputError("filtration: " + cell_name(c) + " names unknown facet cell " +
                          std::to_string(facet_id));
-      const Cell& facet = cells[it->second];
+      const Cell& facet = cells[at];
       if (facet.vertices.size() + 1 != c.vertices.size() ||
           !std::includes(c.vertices.begin(), c.vertices.end(), facet.vertices.begin(), facet.vertices.end()))
         throw InternalError("filtration: " + cell_name(facet) + " is not a facet of " + cell_name(c));
-      const std::int64_t row = index_of[it->second];
+      const std::int64_t row = index_of[at];
       // A face of a type-X cell is type-X, so a missing row is a broken sub-medusa (MATH.md 7.4).
       if (row < 0 || row >= static_cast<std::int64_t>(j))
         throw InternalError("filtration: facet " + cell_name(facet) + " does not precede its coface " +

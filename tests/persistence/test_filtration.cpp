@@ -93,3 +93,22 @@ TEST_CASE("An unknown facet id, a duplicate cell id or a vertex outside the type
   CHECK_THROWS_AS(make_filtration(duplicate, Direction::forward), InputError);
   CHECK_THROWS_AS(make_type_filtration(small_complex(), {1, 1}, 1, Direction::forward), InputError);
 }
+
+TEST_CASE("Cells whose ids are their positions give the same filtration as arbitrary ids") {
+  // The store's numbering (ids 0..N-1 in order) takes the lookup without a hash table.
+  const auto cells = small_complex();
+  auto renumbered = cells;
+  for (Cell& c : renumbered) {
+    c.id = (c.id - 1000) / 7;
+    for (complex::CellId& facet : c.facets)
+      facet = (facet - 1000) / 7;
+  }
+  for (Direction direction : {Direction::forward, Direction::reverse}) {
+    const Filtration f = make_filtration(cells, direction), g = make_filtration(renumbered, direction);
+    CHECK(g.cells == f.cells);
+    CHECK(g.dims == f.dims);
+    CHECK(g.columns == f.columns);
+  }
+  renumbered[4].facets[0] = 99;
+  CHECK_THROWS_AS(make_filtration(renumbered, Direction::forward), InputError);
+}
