@@ -104,5 +104,7 @@ foreach(pair IN LISTS FILES)
   check_text("output file ${output}" "${text}" ${name})
 endforeach()
 if(NOT failures STREQUAL "")
-  message(FATAL_ERROR "command: ${COMMAND}\n${failures}")
+  # Printed unformatted (a FATAL_ERROR message would rewrap the diff).
+  message("command: ${COMMAND}\n${failures}")
+  message(FATAL_ERROR "output differs from the golden files")
 endif()
