@@ -1,15 +1,20 @@
 // Helpers for tests that call external oracles (/usr/bin/python3 with GUDHI, the phat CLI): a
-// private temporary directory and command execution.
+// private temporary directory, command execution, and diagrams as GUDHI lists them.
 #pragma once
+
+#include "medusa/persistence/diagram.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <unistd.h>
+#include <vector>
 
 namespace medusa::persistence::test {
 
@@ -51,6 +56,19 @@ inline std::string read_text(const std::string& path) {
 inline std::string python() { return MEDUSA_PYTHON; }
 inline std::string data_path(const std::string& relative) {
   return std::string(MEDUSA_TEST_DATA) + "/" + relative;
+}
+
+// (dim, birth, death), the form GUDHI's persistence lists take.
+using Triple = std::tuple<int, double, double>;
+
+// The pairs of positive length (GUDHI leaves out zero-length pairs), sorted.
+inline std::vector<Triple> positive_points(const Diagram& d) {
+  std::vector<Triple> result;
+  for (const auto& p : d.pairs)
+    if (!p.zero_length)
+      result.emplace_back(p.dim, p.birth, p.death);
+  std::sort(result.begin(), result.end());
+  return result;
 }
 
 } // namespace medusa::persistence::test
