@@ -6,6 +6,7 @@
 #include "medusa/complex/store_reader.h"
 #include "medusa/kinetic/error.h"
 #include "store_fixture.h"
+#include "support/command_output.h"
 
 #include <catch2/catch.hpp>
 
@@ -21,9 +22,7 @@ namespace {
 // and returns what happened; the child exits with child_threw_expected only for a StoreError whose
 // message names `bad`.
 ChildResult read_flipped(const std::vector<char>& bytes, std::size_t offset, const std::string& bad) {
-  std::vector<char> copy = bytes;
-  copy.at(offset) = static_cast<char>(~copy.at(offset));
-  write_file_bytes(bad, copy);
+  write_flipped(bad, bytes, offset, 0xFF);
   return run_in_child([&](std::string& report) {
     try {
       medusa::complex::read_store(bad);
@@ -56,16 +55,7 @@ std::string python(const std::string& code, const std::string& path) {
   const std::string script = temp_path("offsets.py");
   RemoveFiles cleanup{{script}};
   std::ofstream(script) << code;
-  const std::string command = std::string(MEDUSA_PYTHON) + " " + script + " " + path + " 2>&1";
-  FILE* pipe = ::popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::string output;
-  char buffer[1024];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0)
-    output.append(buffer, n);
-  REQUIRE(::pclose(pipe) == 0);
-  return output;
+  return command_output(std::string(MEDUSA_PYTHON) + " " + script + " " + path + " 2>&1");
 }
 
 } // namespace

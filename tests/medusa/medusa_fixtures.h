@@ -6,6 +6,7 @@
 #include "medusa/complex/medusa.h"
 #include "medusa/complex/medusa_builder.h"
 #include "stream.h"
+#include "support/temp_files.h"
 
 #include <catch2/catch.hpp>
 
@@ -44,13 +45,6 @@ inline SimplexSet tuples(const complex::Medusa& m, const std::vector<complex::Ce
   for (complex::CellId id : ids)
     out.insert(m.cell(id).vertices);
   return out;
-}
-
-// A fresh path in the temporary directory, unique per process and name.
-inline std::string temp_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() /
-          ("medusa-test-" + std::to_string(static_cast<long long>(::getpid())) + "-" + name))
-      .string();
 }
 
 inline bool same_cell(const complex::Cell& a, const complex::Cell& b) {

@@ -2,10 +2,10 @@
 // builder writing an HDF5 store, and K_t read back from the store must equal the engine's own
 // complex at every frame (MATH.md 6.6). Random walks and real CompuCell3D runs (with mitosis).
 #include "../kinetic/kinetic_test_support.h"
+#include "cc3d_runs.h"
 #include "kinetic_run.h"
 #include "medusa/complex/complex_index.h"
 #include "medusa/complex/store_reader.h"
-#include "medusa/io/run_reader.h"
 #include "medusa/kinetic/error.h"
 #include "medusa_fixtures.h"
 
@@ -69,14 +69,6 @@ void check_store_against_engine(const KineticRun& run, const std::string& store_
         vertices.insert(s);
     CHECK(vertices == alive);
   }
-}
-
-kinetic::Trajectories read_cc3d(const std::string& name, std::size_t frames) {
-  io::RunOptions options;
-  options.source = io::RunSource::csv;
-  const io::RunData data =
-      io::read_csv_run(std::string(MEDUSA_TEST_DATA) + "/cc3d/" + name + "/cells.csv.gz", options);
-  return first_frames(data.trajectories, frames);
 }
 
 } // namespace

@@ -1,84 +1,15 @@
 #include "medusa/complex/complex_index.h"
 #include "medusa/complex/signatures.h"
 #include "medusa_fixtures.h"
+#include "support/gudhi_oracle.h"
 
 #include <catch2/catch.hpp>
 
-#include <cstdio>
-#include <fstream>
 #include <random>
 #include <sstream>
 
 using namespace medusa::complex;
 using namespace medusa::test;
-
-namespace {
-
-// GUDHI's exact alpha complex of the points, pruned at rho^2 (GUDHI filtrations are squared radii);
-// prints every simplex, then "betti b0 b1 b2 b3" of that complex over Z/2.
-constexpr const char* gudhi_script = R"PY(
-import sys, gudhi
-pts = [list(map(float, l.split())) for l in open(sys.argv[1]) if l.strip()]
-rho2 = float(sys.argv[2])
-st = gudhi.AlphaComplex(points=pts, precision='exact').create_simplex_tree()
-st.prune_above_filtration(rho2)
-for s, f in st.get_simplices():
-    print("s", *s)
-st.compute_persistence(homology_coeff_field=2, persistence_dim_max=True)
-b = list(st.betti_numbers()) + [0, 0, 0, 0]
-print("betti", *b[:4])
-)PY";
-
-struct Oracle {
-  std::vector<Simplex> complex;
-  std::array<std::size_t, 4> betti{};
-};
-
-Oracle gudhi_alpha(const std::vector<std::array<int, 3>>& points, double rho2, const std::string& tag) {
-  const std::string script = temp_path("alpha-" + tag + ".py");
-  const std::string input = temp_path("alpha-" + tag + ".txt");
-  std::ofstream(script) << gudhi_script;
-  {
-    std::ofstream out(input);
-    for (const auto& p : points)
-      out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-  }
-  std::ostringstream cmd;
-  cmd << MEDUSA_PYTHON << ' ' << script << ' ' << input << ' ' << rho2;
-  FILE* pipe = ::popen(cmd.str().c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::string text;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0)
-    text.append(buffer, n);
-  REQUIRE(::pclose(pipe) == 0);
-  std::remove(script.c_str());
-  std::remove(input.c_str());
-  Oracle o;
-  std::istringstream lines(text);
-  std::string line;
-  bool has_betti = false;
-  while (std::getline(lines, line)) {
-    std::istringstream in(line);
-    std::string head;
-    in >> head;
-    if (head == "s") {
-      std::vector<VertexId> v;
-      VertexId x;
-      while (in >> x)
-        v.push_back(x);
-      o.complex.push_back(Simplex::from_range(v.begin(), v.end()));
-    } else if (head == "betti") {
-      in >> o.betti[0] >> o.betti[1] >> o.betti[2] >> o.betti[3];
-      has_betti = true;
-    }
-  }
-  REQUIRE(has_betti);
-  return o;
-}
-
-} // namespace
 
 TEST_CASE("Betti numbers of K_t agree with GUDHI's alpha complex of static point sets",
           "[medusa][signature][gudhi]") {
@@ -99,13 +30,16 @@ TEST_CASE("Betti numbers of K_t agree with GUDHI's alpha complex of static point
     }
     for (double rho2 : {150.5, 400.5, 900.5, 1600.5, 2500.5}) {
       CAPTURE(set, rho2);
-      const Oracle o =
-          gudhi_alpha(points, rho2, std::to_string(set) + "-" + std::to_string(static_cast<int>(rho2)));
-      REQUIRE(!o.complex.empty());
+      std::ostringstream rho2_text;
+      rho2_text << rho2;
+      const GudhiAlphaComplex o = gudhi_alpha_complex(
+          points, rho2_text.str(), std::to_string(set) + "-" + std::to_string(static_cast<int>(rho2)));
+      REQUIRE(!o.simplices.empty());
       // K_t fed as the initial complex of a stream that ends at once.
       Stream s;
       s.t0 = event_time(0, 0.0, 0, 0.0, true);
-      s.initial = o.complex;
+      for (const auto& v : o.simplices)
+        s.initial.push_back(Simplex::from_range(v.begin(), v.end()));
       s.t_end = event_time(1, 10.0, 1, 0.0, true);
       const Medusa m = collect(s, points.size(), 2);
       const ComplexIndex index(m);

@@ -1,15 +1,16 @@
 // Invariants of the medusa of real CompuCell3D runs built by the kinetic engine: d d = 0 (Z/2),
 // nested lifetimes (MATH.md 6.4), Euler characteristics of every K_t and of M (MATH.md 7.5), and the
 // Betti numbers of K_t at frames against GUDHI's exact alpha complex of that frame's positions.
+#include "cc3d_runs.h"
 #include "kinetic_run.h"
 #include "medusa/complex/complex_index.h"
 #include "medusa/complex/signatures.h"
 #include "medusa/complex/store_reader.h"
-#include "medusa/io/run_reader.h"
 #include "medusa/persistence/diagram.h"
 #include "medusa/persistence/euler.h"
 #include "medusa/persistence/filtration.h"
 #include "medusa_fixtures.h"
+#include "support/gudhi_oracle.h"
 
 #include <catch2/catch.hpp>
 
@@ -23,14 +24,6 @@ using namespace medusa;
 using namespace medusa::test;
 
 namespace {
-
-kinetic::Trajectories read_cc3d(const std::string& name, std::size_t frames) {
-  io::RunOptions options;
-  options.source = io::RunSource::csv;
-  const io::RunData data =
-      io::read_csv_run(std::string(MEDUSA_TEST_DATA) + "/cc3d/" + name + "/cells.csv.gz", options);
-  return first_frames(data.trajectories, frames);
-}
 
 complex::Medusa medusa_of(const std::string& name, std::size_t frames, const std::string& tag) {
   const kinetic::Trajectories t = read_cc3d(name, frames);
@@ -101,69 +94,6 @@ void check_invariants(const complex::Medusa& m) {
   }
 }
 
-// GUDHI's exact alpha complex pruned at rho^2 (squared radii): "betti b0 b1 b2 b3" over Z/2.
-constexpr const char* gudhi_script = R"PY(
-import sys, gudhi
-pts = [list(map(float, l.split())) for l in open(sys.argv[1]) if l.strip()]
-st = gudhi.AlphaComplex(points=pts, precision='exact').create_simplex_tree()
-st.prune_above_filtration(float(sys.argv[2]))
-st.compute_persistence(homology_coeff_field=2, persistence_dim_max=True)
-b = list(st.betti_numbers()) + [0, 0, 0, 0]
-print("betti", *b[:4])
-for s, f in st.get_simplices():
-    print("s", *s)
-)PY";
-
-struct GudhiAlpha {
-  std::array<std::size_t, 4> betti{};
-  SimplexSet complex; // vertices are indices into the point list
-};
-
-GudhiAlpha gudhi_alpha(const std::vector<kinetic::GridPoint>& points, const std::string& rho2,
-                       const std::string& tag) {
-  const std::string script = temp_path("gudhi-" + tag + ".py");
-  const std::string input = temp_path("gudhi-" + tag + ".txt");
-  std::ofstream(script) << gudhi_script;
-  {
-    // Grid integers below 2^53 are exact doubles, so GUDHI sees the exact positions.
-    std::ofstream out(input);
-    for (const auto& p : points)
-      out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-  }
-  const std::string cmd = std::string(MEDUSA_PYTHON) + " " + script + " " + input + " " + rho2;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::string text;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0)
-    text.append(buffer, n);
-  REQUIRE(::pclose(pipe) == 0);
-  std::remove(script.c_str());
-  std::remove(input.c_str());
-  GudhiAlpha out;
-  std::istringstream lines(text);
-  std::string line;
-  bool has_betti = false;
-  while (std::getline(lines, line)) {
-    std::istringstream in(line);
-    std::string head;
-    in >> head;
-    if (head == "betti") {
-      in >> out.betti[0] >> out.betti[1] >> out.betti[2] >> out.betti[3];
-      has_betti = true;
-    } else if (head == "s") {
-      std::vector<kinetic::VertexId> v;
-      kinetic::VertexId x;
-      while (in >> x)
-        v.push_back(x);
-      out.complex.insert(v);
-    }
-  }
-  REQUIRE(has_betti);
-  return out;
-}
-
 } // namespace
 
 TEST_CASE("the medusa of a real CC3D run satisfies dd = 0, nested lifetimes and the Euler checks",
@@ -195,14 +125,15 @@ TEST_CASE("Betti numbers of K_t at frames of a real CC3D run agree with GUDHI's 
         points.push_back(m.input.cells[v].at(k));
         vertex_of_point.push_back(static_cast<kinetic::VertexId>(v));
       }
-    const GudhiAlpha oracle = gudhi_alpha(points, rho2.num.get_str(), "frame" + std::to_string(k));
+    const GudhiAlphaComplex oracle =
+        gudhi_alpha_complex(points, rho2.num.get_str(), "frame" + std::to_string(k));
     const std::vector<complex::CellId> cells = index.at_frame(k);
     const complex::Signature s = complex::signature_of(m, cells);
     CAPTURE(s.f[0], s.f[1], s.f[2], s.f[3]);
     CHECK(s.betti == oracle.betti);
     // The complexes themselves agree too (vertex ids mapped back to trajectories).
     SimplexSet mapped;
-    for (const auto& simplex : oracle.complex) {
+    for (const auto& simplex : oracle.simplices) {
       std::vector<kinetic::VertexId> v;
       for (kinetic::VertexId i : simplex)
         v.push_back(vertex_of_point[static_cast<std::size_t>(i)]);

@@ -5,6 +5,8 @@
 #include "medusa/kinetic/error.h"
 #include "medusa_fixtures.h"
 #include "random_stream.h"
+#include "support/command_output.h"
+#include "support/store_corruption.h"
 
 #include <catch2/catch.hpp>
 
@@ -33,42 +35,11 @@ Medusa write_stream(const Stream& stream, const std::string& path, std::size_t v
   return collector.take();
 }
 
-std::vector<char> read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::vector<char>(std::istreambuf_iterator<char>(in), {});
-}
-
-void write_bytes(const std::string& path, const std::vector<char>& bytes) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
-
-// Runs a command and returns its exit status and standard output.
-std::pair<int, std::string> run(const std::string& command) {
-  std::string output;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  char buffer[4096];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0)
-    output.append(buffer, n);
-  const int status = ::pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
-
-struct Cleanup {
-  std::vector<std::string> paths;
-  ~Cleanup() {
-    for (const std::string& p : paths)
-      std::remove(p.c_str());
-  }
-};
-
 } // namespace
 
 TEST_CASE("a store read back is identical to the medusa written", "[medusa][store]") {
   const std::string path = temp_path("roundtrip.h5");
-  Cleanup cleanup{{path}};
+  RemoveFiles cleanup{{path}};
   CAPTURE(store_seed);
   const Medusa written = write_stream(random_stream(store_seed), path, 8, 5);
   REQUIRE(fs::exists(path));
@@ -86,7 +57,7 @@ TEST_CASE("a store read back is identical to the medusa written", "[medusa][stor
 TEST_CASE("K_t from the store equals the complex replayed from the stream at every frame and batch",
           "[medusa][store][query]") {
   const std::string path = temp_path("replay.h5");
-  Cleanup cleanup{{path}};
+  RemoveFiles cleanup{{path}};
   for (std::uint64_t seed = store_seed; seed < store_seed + 5; ++seed) {
     CAPTURE(seed);
     const Stream stream = random_stream(seed);
@@ -105,7 +76,7 @@ TEST_CASE("K_t from the store equals the complex replayed from the stream at eve
 
 TEST_CASE("h5py reads the store with the documented layout", "[medusa][store][python]") {
   const std::string path = temp_path("h5py.h5");
-  Cleanup cleanup{{path}};
+  RemoveFiles cleanup{{path}};
   write_stream(appendix_b_stream(), path, 5, 2);
   const std::string script = R"PY(
 import sys, h5py, numpy as np
@@ -145,7 +116,8 @@ print("ok", len(ids))
   const std::string script_path = temp_path("check_store.py");
   cleanup.paths.push_back(script_path);
   std::ofstream(script_path) << script;
-  const auto [status, output] = run(std::string(MEDUSA_PYTHON) + " " + script_path + " " + path + " 2>&1");
+  const auto [status, output] =
+      run_command(std::string(MEDUSA_PYTHON) + " " + script_path + " " + path + " 2>&1");
   INFO(output);
   CHECK(status == 0);
   CHECK(output == "ok 31\n");
@@ -153,9 +125,9 @@ print("ok", len(ids))
 
 TEST_CASE("h5dump reads the store header and shows checksums and compression", "[medusa][store]") {
   const std::string path = temp_path("h5dump.h5");
-  Cleanup cleanup{{path}};
+  RemoveFiles cleanup{{path}};
   write_stream(appendix_b_stream(), path, 5, 2);
-  const auto [status, output] = run("h5dump -H -p " + path + " 2>&1");
+  const auto [status, output] = run_command("h5dump -H -p " + path + " 2>&1");
   INFO(output);
   CHECK(status == 0);
   CHECK(output.find("DATASET \"vertices\"") != std::string::npos);
@@ -167,14 +139,14 @@ TEST_CASE("h5dump reads the store header and shows checksums and compression", "
 TEST_CASE("a truncated store is rejected with a StoreError naming it", "[medusa][store][sanitize]") {
   const std::string path = temp_path("truncate.h5");
   const std::string cut = temp_path("truncated.h5");
-  Cleanup cleanup{{path, cut}};
+  RemoveFiles cleanup{{path, cut}};
   write_stream(random_stream(store_seed), path, 8, 5);
-  const std::vector<char> bytes = read_bytes(path);
+  const std::vector<char> bytes = file_bytes(path);
   REQUIRE(bytes.size() > 1000);
   for (std::size_t keep : {std::size_t{0}, std::size_t{100}, bytes.size() / 4, bytes.size() / 2,
                            bytes.size() - 100, bytes.size() - 1}) {
     CAPTURE(keep);
-    write_bytes(cut, std::vector<char>(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(keep)));
+    write_truncated(cut, bytes, keep);
     try {
       read_store(cut);
       FAIL("a truncated store was read");
@@ -188,10 +160,10 @@ TEST_CASE("a store with flipped bytes is rejected or read unchanged and never re
           "[medusa][store]") {
   const std::string path = temp_path("flip.h5");
   const std::string bad = temp_path("flipped.h5");
-  Cleanup cleanup{{path, bad}};
+  RemoveFiles cleanup{{path, bad}};
   CAPTURE(store_seed);
   const Medusa original = write_stream(random_stream(store_seed), path, 8, 5);
-  const std::vector<char> bytes = read_bytes(path);
+  const std::vector<char> bytes = file_bytes(path);
   // The reads run in a child process that ends with _exit: HDF5 1.10 leaks free-list blocks on some
   // corrupt-metadata error paths and then prints "infinite loop closing library" at normal exit.
   int fds[2];
@@ -203,9 +175,7 @@ TEST_CASE("a store with flipped bytes is rejected or read unchanged and never re
     long long rejected = 0, unchanged = 0, wrong = -1;
     const std::size_t step = std::max<std::size_t>(1, bytes.size() / 400);
     for (std::size_t at = 0; at < bytes.size(); at += step) {
-      std::vector<char> copy = bytes;
-      copy[at] = static_cast<char>(copy[at] ^ 0x5A);
-      write_bytes(bad, copy);
+      write_flipped(bad, bytes, at, 0x5A);
       try {
         if (same_medusa(read_store(bad), original))
           ++unchanged;
@@ -262,7 +232,7 @@ TEST_CASE("a writer killed mid-write leaves no file at the final name and an unr
   REQUIRE(WIFEXITED(status));
   CHECK_FALSE(fs::exists(path));
   const std::string temporary = temporary_prefix + std::to_string(static_cast<long long>(child));
-  Cleanup cleanup{{temporary}};
+  RemoveFiles cleanup{{temporary}};
   REQUIRE(fs::exists(temporary));
   CHECK_THROWS_AS(read_store(temporary), medusa::StoreError);
 }
@@ -270,18 +240,20 @@ TEST_CASE("a writer killed mid-write leaves no file at the final name and an unr
 TEST_CASE("stores of another format version or without the complete flag are rejected",
           "[medusa][store][python]") {
   const std::string path = temp_path("edit.h5");
-  Cleanup cleanup{{path}};
+  RemoveFiles cleanup{{path}};
   write_stream(appendix_b_stream(), path, 5, 2);
   REQUIRE_NOTHROW(read_store(path));
   const std::string python = MEDUSA_PYTHON;
-  REQUIRE(run(python +
+  REQUIRE(run_command(
+              python +
               " -c 'import sys, h5py; h5py.File(sys.argv[1], \"r+\").attrs[\"format_version\"] = 2' " + path)
-              .first == 0);
+              .status == 0);
   CHECK_THROWS_WITH(read_store(path), Catch::Contains("format version 2"));
-  REQUIRE(run(python +
+  REQUIRE(run_command(
+              python +
               " -c 'import sys, h5py; f = h5py.File(sys.argv[1], \"r+\"); f.attrs[\"format_version\"] = 1; "
               "del f.attrs[\"complete\"]' " +
               path)
-              .first == 0);
+              .status == 0);
   CHECK_THROWS_WITH(read_store(path), Catch::Contains("incomplete"));
 }

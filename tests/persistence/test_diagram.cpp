@@ -58,19 +58,6 @@ Diagram reverse_diagram(const std::vector<Cell>& cells) {
   return d;
 }
 
-// Vertices a=0, b=1, c=2 at t=0; edges ab at 1, bc at 2, ca at 3; triangle abc at 4; all die at 5.
-// Batches 0..5 are the times 0..5.
-std::vector<Cell> filled_triangle() {
-  std::vector<CellSpec> s;
-  for (int v = 0; v < 3; ++v)
-    s.push_back({{v}, vt(0, 0, 0), vt(5, 0, 5)});
-  s.push_back({{0, 1}, vt(1, 0, 1), vt(5, 0, 5)});
-  s.push_back({{1, 2}, vt(2, 0, 2), vt(5, 0, 5)});
-  s.push_back({{0, 2}, vt(3, 0, 3), vt(5, 0, 5)});
-  s.push_back({{0, 1, 2}, vt(4, 0, 4), vt(5, 0, 5)});
-  return make_cells(s);
-}
-
 } // namespace
 
 // Forward: vertices 0,1,2 at t=0. Edge ab (t=1) kills the younger of a, b: b, pair (0,1); bc (t=2)

@@ -8,6 +8,8 @@
 #include "medusa/kinetic/kinetic_alpha_complex.h"
 #include "medusa/persistence/diagram_store.h"
 #include "medusa/persistence/medusa_diagrams.h"
+#include "support/command_output.h"
+#include "support/temp_files.h"
 
 #include <catch2/catch.hpp>
 #include <hdf5.h>
@@ -22,15 +24,11 @@
 
 using namespace medusa;
 using namespace medusa::persistence;
+using medusa::test::command_output;
+using medusa::test::temp_path;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string temp_path(const std::string& name) {
-  return (fs::temp_directory_path() /
-          ("medusa-test-" + std::to_string(static_cast<long long>(::getpid())) + "-" + name))
-      .string();
-}
 
 // A complete store of a small random walk (two cell types), written by the real pipeline stages.
 constexpr std::uint64_t store_seed = 77;
@@ -63,18 +61,6 @@ bool same_stored_pair(const PersistencePair& a, const PersistencePair& b) {
   return a.dim == b.dim && same_bits(a.birth, b.birth) && same_bits(a.death, b.death) &&
          a.birth_cell == b.birth_cell && a.death_cell == b.death_cell && a.essential == b.essential &&
          a.zero_length == b.zero_length;
-}
-
-std::string run_command(const std::string& cmd) {
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::string text;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0)
-    text.append(buffer, n);
-  REQUIRE(::pclose(pipe) == 0);
-  return text;
 }
 
 // The raw bytes of a dataset in its file type.
@@ -176,7 +162,7 @@ with h5py.File(sys.argv[1], "r") as f:
               int(g["zero_length"][...].sum()), int(g["dimension"][...].sum()),
               int(np.sum(np.sign(death[inf]))), "%.17g" % float(birth.min(initial=0)))
 )PY";
-  const std::string out = run_command(std::string(MEDUSA_PYTHON) + " " + script + " " + store);
+  const std::string out = command_output(std::string(MEDUSA_PYTHON) + " " + script + " " + store);
   std::ostringstream expected;
   expected.precision(17);
   for (const Diagram& d : diagrams) {

@@ -20,8 +20,6 @@ using namespace medusa::persistence::test;
 
 namespace {
 
-using Triple = std::tuple<int, double, double>;
-
 struct Oracle {
   std::vector<Cell> cells;
   std::map<int, std::vector<Triple>> persistence; // by type, -1 for the whole complex
@@ -88,15 +86,6 @@ Oracle alpha_oracle(unsigned seed, int n_points, std::vector<int>& types) {
   for (auto& [type, triples] : oracle.persistence)
     std::sort(triples.begin(), triples.end());
   return oracle;
-}
-
-std::vector<Triple> positive_points(const Diagram& d) {
-  std::vector<Triple> result;
-  for (const auto& p : d.pairs)
-    if (!p.zero_length)
-      result.emplace_back(p.dim, p.birth, p.death);
-  std::sort(result.begin(), result.end());
-  return result;
 }
 
 } // namespace

@@ -20,8 +20,6 @@ using namespace medusa::persistence::test;
 
 namespace {
 
-using Triple = std::tuple<int, double, double>;
-
 // Closure of random simplices on 8 vertices; each simplex gets a lifetime inside those of its facets
 // (virtual times with several ranks per batch); a simplex whose facets never coexist is left out,
 // with its cofaces.
@@ -104,15 +102,6 @@ std::vector<Triple> gudhi_persistence(const std::vector<Cell>& cells, const Filt
   std::istringstream in(read_text(dir.file("out.txt")));
   for (std::string dim, b, d; in >> dim >> b >> d;)
     result.emplace_back(std::stoi(dim), sign * std::stod(b), sign * std::stod(d));
-  std::sort(result.begin(), result.end());
-  return result;
-}
-
-std::vector<Triple> positive_points(const Diagram& d) {
-  std::vector<Triple> result;
-  for (const auto& p : d.pairs)
-    if (!p.zero_length)
-      result.emplace_back(p.dim, p.birth, p.death);
   std::sort(result.begin(), result.end());
   return result;
 }

@@ -61,16 +61,9 @@ TEST_CASE("The Betti curve counts the points alive at each sample time, essentia
   CHECK(betti_curve(d, {-1, 0, 0.5, 1, 2, 2.5, 3, 10}) == std::vector<std::size_t>{0, 1, 2, 3, 2, 2, 1, 1});
 }
 
-// Filled triangle (test_diagram.cpp): three components at 0, two from 1, one from 2; a loop on [3, 4).
+// Filled triangle (cell_list.h): three components at 0, two from 1, one from 2; a loop on [3, 4).
 TEST_CASE("The forward Betti curves of a medusa are the ranks of its sublevel homology") {
-  std::vector<CellSpec> s;
-  for (int v = 0; v < 3; ++v)
-    s.push_back({{v}, vt(0, 0, 0), vt(5, 0, 5)});
-  s.push_back({{0, 1}, vt(1, 0, 1), vt(5, 0, 5)});
-  s.push_back({{1, 2}, vt(2, 0, 2), vt(5, 0, 5)});
-  s.push_back({{0, 2}, vt(3, 0, 3), vt(5, 0, 5)});
-  s.push_back({{0, 1, 2}, vt(4, 0, 4), vt(5, 0, 5)});
-  const auto cells = make_cells(s);
+  const auto cells = filled_triangle();
   const Diagram d = diagram_of(cells, Direction::forward);
   const std::vector<double> times{0, 0.5, 1, 2, 3, 3.5, 4, 5};
   CHECK(betti_curve(to_points(d, 0), times) == std::vector<std::size_t>{3, 3, 2, 1, 1, 1, 1, 1});

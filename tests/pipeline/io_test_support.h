@@ -2,11 +2,10 @@
 #pragma once
 
 #include "medusa/kinetic/error.h"
+#include "support/temp_files.h"
 
 #include <catch2/catch.hpp>
 
-#include <filesystem>
-#include <random>
 #include <string>
 
 namespace medusa::io::test {
@@ -30,26 +29,6 @@ template <class F> std::string input_error(F&& f) {
   return {};
 }
 
-// A fresh temporary folder, removed when the object dies.
-class TempDir {
-public:
-  TempDir() {
-    std::random_device rd;
-    path_ = std::filesystem::temp_directory_path() /
-            ("medusa_io_test_" + std::to_string(rd()) + std::to_string(rd()));
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-  const std::filesystem::path& path() const { return path_; }
-
-private:
-  std::filesystem::path path_;
-};
+using medusa::test::TempDir; // support/temp_files.h
 
 } // namespace medusa::io::test

@@ -10,7 +10,7 @@ using Catch::Matchers::Contains;
 TEST_CASE("The median cell volume runs over every cell and frame", "[io][volumes]") {
   CHECK(median_cell_volume({{125, 120}, {130}}) == 125.0);
   CHECK(median_cell_volume({{1, 2}, {3, 10}}) == 2.5);
-  CHECK_THAT(test::input_error([] { median_cell_volume({}); }), Contains("no cell volumes"));
+  CHECK_THAT(io::test::input_error([] { median_cell_volume({}); }), Contains("no cell volumes"));
 }
 
 TEST_CASE("The equivalent radius is that of the ball or disc of the same volume", "[io][volumes]") {
@@ -19,5 +19,5 @@ TEST_CASE("The equivalent radius is that of the ball or disc of the same volume"
   CHECK(equivalent_radius(4.0 / 3.0 * pi * 27.0, 3) == Approx(3.0));
   CHECK(equivalent_radius(pi * 4.0, 2) == Approx(2.0));
   CHECK(equivalent_radius(125, 3) == Approx(3.1017).epsilon(1e-4));
-  CHECK_THAT(test::input_error([] { equivalent_radius(1, 4); }), Contains("dimension"));
+  CHECK_THAT(io::test::input_error([] { equivalent_radius(1, 4); }), Contains("dimension"));
 }

@@ -9,12 +9,12 @@ using Catch::Matchers::Contains;
 
 namespace {
 std::string csv_error(const std::string& fixture) {
-  return test::input_error([&] { read_csv(test::data("io/" + fixture)); });
+  return io::test::input_error([&] { read_csv(io::test::data("io/" + fixture)); });
 }
 } // namespace
 
 TEST_CASE("The CSV reader gives exact grid positions, types, names and volumes", "[io][csv]") {
-  const CsvContents c = read_csv(test::data("io/gap.csv"));
+  const CsvContents c = read_csv(io::test::data("io/gap.csv"));
   REQUIRE(c.samples.size() == 9);
   CHECK(c.has_volume);
   const CellSample& s = c.samples[1];
@@ -29,7 +29,7 @@ TEST_CASE("The CSV reader gives exact grid positions, types, names and volumes",
 }
 
 TEST_CASE("CSV column names are configurable and volume and type name are optional", "[io][csv]") {
-  test::TempDir dir;
+  io::test::TempDir dir;
   std::ofstream(dir.file("renamed.csv")) << "t,id,x,y,z,kind\n5,9,1.5,2,3,1\n";
   CsvOptions o;
   o.columns = {"t", "id", "kind", "x", "y", "z", "", ""};
@@ -63,7 +63,7 @@ TEST_CASE("A CSV value with more than six decimals is refused at scale 10^6", "[
              Contains("too_many_decimals.csv:3") && Contains("cell 2") && Contains("7 decimals"));
   CsvOptions finer;
   finer.scale = 10000000;
-  const CsvContents c = read_csv(test::data("io/too_many_decimals.csv"), finer);
+  const CsvContents c = read_csv(io::test::data("io/too_many_decimals.csv"), finer);
   CHECK(c.samples[1].position[0] == 40000005);
 }
 
@@ -95,11 +95,11 @@ TEST_CASE("An unreadable CSV is refused naming the file", "[io][csv]") {
 }
 
 TEST_CASE("A header-only or empty CSV is refused", "[io][csv]") {
-  test::TempDir dir;
+  io::test::TempDir dir;
   std::ofstream(dir.file("empty.csv")) << "";
   std::ofstream(dir.file("header.csv")) << "mcs,cell_id,cluster_id,type_id,type_name,xCOM,yCOM,zCOM,volume\n";
-  CHECK_THAT(test::input_error([&] { read_csv(dir.file("empty.csv")); }),
+  CHECK_THAT(io::test::input_error([&] { read_csv(dir.file("empty.csv")); }),
              Contains("empty.csv") && Contains("empty"));
-  CHECK_THAT(test::input_error([&] { read_csv(dir.file("header.csv")); }),
+  CHECK_THAT(io::test::input_error([&] { read_csv(dir.file("header.csv")); }),
              Contains("header.csv") && Contains("no data"));
 }

@@ -26,7 +26,7 @@ TEST_CASE("Trailing zeros beyond the scale are exact and accepted", "[io][decima
 
 TEST_CASE("More decimals than the scale holds is an error unless the scale is raised", "[io][decimal]") {
   const std::string m =
-      test::input_error([] { parse_scaled_decimal("1.2345678", 1000000, "f.csv:3: column xCOM"); });
+      io::test::input_error([] { parse_scaled_decimal("1.2345678", 1000000, "f.csv:3: column xCOM"); });
   CHECK_THAT(m, Contains("f.csv:3: column xCOM") && Contains("7 decimals") && Contains("10^7"));
   CHECK(parse_scaled_decimal("1.2345678", 10000000, "t") == 12345678);
   CHECK(parse_scaled_decimal("2.5", 10, "t") == 25);
@@ -37,15 +37,15 @@ TEST_CASE("NaN, infinities, exponents and text are rejected as decimals", "[io][
   for (const char* bad :
        {"nan", "NaN", "-inf", "Infinity", "1e3", "abc", "", "-", ".", "1.2.3", "1,5", "0x10"}) {
     CAPTURE(bad);
-    const std::string m = test::input_error([&] { parse_scaled_decimal(bad, 1000000, "where"); });
+    const std::string m = io::test::input_error([&] { parse_scaled_decimal(bad, 1000000, "where"); });
     CHECK_THAT(m, Contains("where"));
   }
-  CHECK_THAT(test::input_error([] { parse_scaled_decimal("nan", 1000000, "w"); }),
+  CHECK_THAT(io::test::input_error([] { parse_scaled_decimal("nan", 1000000, "w"); }),
              Contains("not a finite number"));
 }
 
 TEST_CASE("Values beyond 64 bits at the grid scale are rejected", "[io][decimal]") {
-  CHECK_THAT(test::input_error([] { parse_scaled_decimal("9223372036854.775808", 1000000, "w"); }),
+  CHECK_THAT(io::test::input_error([] { parse_scaled_decimal("9223372036854.775808", 1000000, "w"); }),
              Contains("out of range"));
   CHECK(parse_scaled_decimal("9223372036854.775807", 1000000, "w") == INT64_MAX);
 }
@@ -53,8 +53,8 @@ TEST_CASE("Values beyond 64 bits at the grid scale are rejected", "[io][decimal]
 TEST_CASE("Only powers of ten are grid scales", "[io][decimal]") {
   CHECK(scale_decimals(1) == 0);
   CHECK(scale_decimals(1000000) == 6);
-  CHECK_THAT(test::input_error([] { scale_decimals(1024); }), Contains("power of ten"));
-  CHECK_THAT(test::input_error([] { scale_decimals(0); }), Contains("power of ten"));
+  CHECK_THAT(io::test::input_error([] { scale_decimals(1024); }), Contains("power of ten"));
+  CHECK_THAT(io::test::input_error([] { scale_decimals(0); }), Contains("power of ten"));
 }
 
 TEST_CASE("Integers parse exactly and reject anything else", "[io][decimal]") {
@@ -62,6 +62,6 @@ TEST_CASE("Integers parse exactly and reject anything else", "[io][decimal]") {
   CHECK(parse_integer("216000", "w") == 216000);
   for (const char* bad : {"4.0", "x", "", "99999999999999999999", "inf"}) {
     CAPTURE(bad);
-    CHECK_THAT(test::input_error([&] { parse_integer(bad, "file:7"); }), Contains("file:7"));
+    CHECK_THAT(io::test::input_error([&] { parse_integer(bad, "file:7"); }), Contains("file:7"));
   }
 }

@@ -18,7 +18,7 @@ void write_gzip(const std::string& path, const std::string& text) {
 } // namespace
 
 TEST_CASE("Plain and gzip files read the same lines and tokens", "[io][gzip]") {
-  test::TempDir dir;
+  io::test::TempDir dir;
   const std::string text = "a,b\r\n  12 34\n\nlast line without newline";
   { std::ofstream(dir.file("plain.txt"), std::ios::binary) << text; }
   write_gzip(dir.file("packed.txt.gz"), text);
@@ -49,7 +49,7 @@ TEST_CASE("Plain and gzip files read the same lines and tokens", "[io][gzip]") {
 }
 
 TEST_CASE("Tokens spanning buffer refills come out whole", "[io][gzip]") {
-  test::TempDir dir;
+  io::test::TempDir dir;
   std::string text;
   for (int k = 0; k < 100000; ++k)
     text += std::to_string(k) + (k % 9 == 8 ? " \n" : " ");
@@ -65,8 +65,8 @@ TEST_CASE("Tokens spanning buffer refills come out whole", "[io][gzip]") {
 }
 
 TEST_CASE("A truncated gzip file is an error naming the file", "[io][gzip]") {
-  const std::string path = test::data("io/truncated.csv.gz");
-  const std::string m = test::input_error([&] {
+  const std::string path = io::test::data("io/truncated.csv.gz");
+  const std::string m = io::test::input_error([&] {
     GzipReader in(path);
     std::string line;
     while (in.next_line(line)) {
@@ -76,8 +76,8 @@ TEST_CASE("A truncated gzip file is an error naming the file", "[io][gzip]") {
 }
 
 TEST_CASE("A corrupt gzip file is an error naming the file", "[io][gzip]") {
-  const std::string path = test::data("io/corrupt.csv.gz");
-  const std::string m = test::input_error([&] {
+  const std::string path = io::test::data("io/corrupt.csv.gz");
+  const std::string m = io::test::input_error([&] {
     GzipReader in(path);
     std::string line;
     while (in.next_line(line)) {
@@ -87,12 +87,12 @@ TEST_CASE("A corrupt gzip file is an error naming the file", "[io][gzip]") {
 }
 
 TEST_CASE("A missing file is an error naming it", "[io][gzip]") {
-  CHECK_THAT(test::input_error([] { GzipReader in("/nonexistent/cells.csv.gz"); }),
+  CHECK_THAT(io::test::input_error([] { GzipReader in("/nonexistent/cells.csv.gz"); }),
              Contains("/nonexistent/cells.csv.gz") && Contains("cannot open"));
 }
 
 TEST_CASE("Raw bytes follow a text line exactly", "[io][gzip]") {
-  test::TempDir dir;
+  io::test::TempDir dir;
   const std::string text = std::string("HEAD 3\n") + std::string("\x00\n\xff", 3) + "\nTAIL";
   write_gzip(dir.file("b.gz"), text);
   GzipReader in(dir.file("b.gz"));
@@ -106,5 +106,5 @@ TEST_CASE("Raw bytes follow a text line exactly", "[io][gzip]") {
   std::string_view t;
   REQUIRE(in.next_token(t));
   CHECK(t == "TAIL");
-  CHECK_THAT(test::input_error([&] { in.read_bytes(bytes, 1); }), Contains("b.gz"));
+  CHECK_THAT(io::test::input_error([&] { in.read_bytes(bytes, 1); }), Contains("b.gz"));
 }

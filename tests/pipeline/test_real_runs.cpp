@@ -39,7 +39,7 @@ const std::vector<RunFacts>& runs() {
   return r;
 }
 
-std::string run_path(const std::string& name) { return test::data("cc3d/" + name); }
+std::string run_path(const std::string& name) { return io::test::data("cc3d/" + name); }
 
 std::size_t present_at(const kinetic::Trajectories& t, std::size_t frame, int type = 0) {
   return static_cast<std::size_t>(
@@ -177,7 +177,7 @@ TEST_CASE("The real periodic run is refused by default and read as open when all
     RunOptions o;
     o.source = source;
     o.snap = true;
-    CHECK_THAT(test::input_error([&] { read_run(run_path("periodic_3d"), o); }),
+    CHECK_THAT(io::test::input_error([&] { read_run(run_path("periodic_3d"), o); }),
                Contains("periodic_3d.xml") && Contains("periodic along x,y"));
     o.allow_periodic_as_open = true;
     const RunData r = read_run(run_path("periodic_3d"), o);
@@ -205,7 +205,7 @@ TEST_CASE("The real 2D run is planar from its snapshots too", "[io][real]") {
 
 TEST_CASE("A real VTK folder reads with snapping and reports the moves", "[io][real]") {
   RunOptions o;
-  CHECK_THAT(test::input_error([&] { read_run(run_path("sorting_3d_seed2"), o); }), Contains("--snap"));
+  CHECK_THAT(io::test::input_error([&] { read_run(run_path("sorting_3d_seed2"), o); }), Contains("--snap"));
   o.snap = true;
   const RunData r = read_run(run_path("sorting_3d_seed2"), o);
   CHECK(r.used == RunSource::vtk);
@@ -234,7 +234,7 @@ TEST_CASE("Row order of a real CSV does not change the trajectories", "[io][real
   const unsigned seed = std::random_device{}();
   CAPTURE(seed);
   std::mt19937 rng(seed);
-  test::TempDir dir;
+  io::test::TempDir dir;
   for (int variant = 0; variant < 2; ++variant) {
     CAPTURE(variant);
     std::vector<std::string> rows = lines;

@@ -34,11 +34,11 @@ bool has_warning(const RunData& r, const std::string& part) {
 } // namespace
 
 TEST_CASE("A CSV run becomes trajectories and a cell missing from a middle frame is split", "[io][run]") {
-  const RunData r = read_run(test::data("io/gap.csv"));
+  const RunData r = read_run(io::test::data("io/gap.csv"));
   const kinetic::Trajectories& t = r.trajectories;
   CHECK(r.used == RunSource::csv);
   CHECK(r.position_convention == "csv-centres");
-  CHECK(r.sources == std::vector<std::string>{test::data("io/gap.csv")});
+  CHECK(r.sources == std::vector<std::string>{io::test::data("io/gap.csv")});
   CHECK(t.dimension == 3);
   CHECK(t.scale == S);
   CHECK(t.frame_times == std::vector<std::int64_t>{0, 100, 200});
@@ -63,17 +63,17 @@ TEST_CASE("A CSV run becomes trajectories and a cell missing from a middle frame
 }
 
 TEST_CASE("A cell changing type between VTK frames is refused naming the file and cell", "[io][run]") {
-  const std::string m = test::input_error([] { read_run(test::data("io/run_type_change")); });
+  const std::string m = io::test::input_error([] { read_run(io::test::data("io/run_type_change")); });
   CHECK_THAT(m,
              Contains("Step_10.vtk") && Contains("cell 1") && Contains("type 2") && Contains("Step_0.vtk"));
 }
 
 TEST_CASE("VTK centroids off the grid need the snap option", "[io][run]") {
-  test::TempDir dir;
+  io::test::TempDir dir;
   fs::create_directories(dir.path() / "LatticeData");
-  fs::copy_file(test::data("io/vtk_split_cell.vtk"), dir.path() / "LatticeData" / "Step_0.vtk");
-  fs::copy_file(test::data("io/vtk_split_cell.vtk"), dir.path() / "LatticeData" / "Step_3.vtk");
-  const std::string m = test::input_error([&] { read_run(dir.path().string()); });
+  fs::copy_file(io::test::data("io/vtk_split_cell.vtk"), dir.path() / "LatticeData" / "Step_0.vtk");
+  fs::copy_file(io::test::data("io/vtk_split_cell.vtk"), dir.path() / "LatticeData" / "Step_3.vtk");
+  const std::string m = io::test::input_error([&] { read_run(dir.path().string()); });
   CHECK_THAT(m, Contains("Step_0.vtk") && Contains("cell 2") && Contains("3 voxels") && Contains("--snap"));
 
   RunOptions snap;
@@ -96,9 +96,9 @@ TEST_CASE("VTK centroids off the grid need the snap option", "[io][run]") {
 }
 
 TEST_CASE("A VTK run whose centroids lie on the grid needs no snapping", "[io][run]") {
-  test::TempDir dir;
+  io::test::TempDir dir;
   fs::create_directories(dir.path() / "LatticeData");
-  fs::copy_file(test::data("io/vtk_split_cell_exact.vtk"), dir.path() / "LatticeData" / "Step_5.vtk");
+  fs::copy_file(io::test::data("io/vtk_split_cell_exact.vtk"), dir.path() / "LatticeData" / "Step_5.vtk");
   write(dir.file("Simulation/run.xml"), xml("x=\"4\" y=\"3\" z=\"2\""));
   const RunData r = read_run(dir.path().string());
   REQUIRE(r.trajectories.cells.size() == 1);
@@ -109,21 +109,21 @@ TEST_CASE("A VTK run whose centroids lie on the grid needs no snapping", "[io][r
 }
 
 TEST_CASE("A VTK run whose lattice differs from the CC3DML is refused", "[io][run]") {
-  test::TempDir dir;
+  io::test::TempDir dir;
   fs::create_directories(dir.path() / "LatticeData");
-  fs::copy_file(test::data("io/vtk_split_cell_exact.vtk"), dir.path() / "LatticeData" / "Step_5.vtk");
+  fs::copy_file(io::test::data("io/vtk_split_cell_exact.vtk"), dir.path() / "LatticeData" / "Step_5.vtk");
   write(dir.file("Simulation/run.xml"), xml("x=\"4\" y=\"3\" z=\"3\""));
-  CHECK_THAT(test::input_error([&] { read_run(dir.path().string()); }),
+  CHECK_THAT(io::test::input_error([&] { read_run(dir.path().string()); }),
              Contains("Step_5.vtk") && Contains("differ") && Contains("run.xml"));
 }
 
 TEST_CASE("A periodic run is refused unless periodic-as-open is allowed", "[io][run]") {
-  test::TempDir dir;
-  fs::copy_file(test::data("io/gap.csv"), dir.path() / "cells.csv");
+  io::test::TempDir dir;
+  fs::copy_file(io::test::data("io/gap.csv"), dir.path() / "cells.csv");
   write(dir.file("Simulation/run.xml"),
         xml("x=\"20\" y=\"20\" z=\"20\"",
             "    <Boundary_x>Periodic</Boundary_x>\n    <Boundary_z>Periodic</Boundary_z>\n"));
-  CHECK_THAT(test::input_error([&] { read_run(dir.path().string()); }),
+  CHECK_THAT(io::test::input_error([&] { read_run(dir.path().string()); }),
              Contains("run.xml") && Contains("periodic along x,z"));
   RunOptions open;
   open.allow_periodic_as_open = true;
@@ -133,7 +133,7 @@ TEST_CASE("A periodic run is refused unless periodic-as-open is allowed", "[io][
 }
 
 TEST_CASE("A run with lattice z extent 1 is planar", "[io][run]") {
-  test::TempDir dir;
+  io::test::TempDir dir;
   write(dir.file("cells.csv"),
         "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n0,1,1,1.5,2,0\n0,2,2,3,4,0\n10,1,1,1,2,0\n"
         "10,2,2,3,4.25,0\n");
@@ -151,19 +151,19 @@ TEST_CASE("A run with lattice z extent 1 is planar", "[io][run]") {
 }
 
 TEST_CASE("A planar run with differing z is refused naming the line and cell", "[io][run]") {
-  test::TempDir dir;
+  io::test::TempDir dir;
   write(dir.file("cells.csv"), "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n0,1,1,1.5,2,0\n0,2,2,3,4,0.5\n");
   RunOptions o;
   o.z_extent = 1;
-  CHECK_THAT(test::input_error([&] { read_run(dir.file("cells.csv"), o); }),
+  CHECK_THAT(io::test::input_error([&] { read_run(dir.file("cells.csv"), o); }),
              Contains("cells.csv:3") && Contains("cell 2") && Contains("z extent 1"));
 }
 
 TEST_CASE("The source option chooses between VTK snapshots and the CSV", "[io][run]") {
-  test::TempDir dir;
+  io::test::TempDir dir;
   fs::create_directories(dir.path() / "LatticeData");
-  fs::copy_file(test::data("io/vtk_split_cell_exact.vtk"), dir.path() / "LatticeData" / "Step_5.vtk");
-  fs::copy_file(test::data("io/gap.csv"), dir.path() / "cells.csv");
+  fs::copy_file(io::test::data("io/vtk_split_cell_exact.vtk"), dir.path() / "LatticeData" / "Step_5.vtk");
+  fs::copy_file(io::test::data("io/gap.csv"), dir.path() / "cells.csv");
   CHECK(read_run(dir.path().string()).used == RunSource::vtk);
   RunOptions csv;
   csv.source = RunSource::csv;
@@ -174,9 +174,9 @@ TEST_CASE("The source option chooses between VTK snapshots and the CSV", "[io][r
 }
 
 TEST_CASE("A folder with neither snapshots nor CSV, or a missing path, is refused", "[io][run]") {
-  test::TempDir dir;
-  CHECK_THAT(test::input_error([&] { read_run(dir.path().string()); }), Contains(dir.path().string()));
-  CHECK_THAT(test::input_error([] { read_run("/nonexistent/run"); }), Contains("/nonexistent/run"));
-  CHECK_THAT(test::input_error([] { read_run(test::data("io/vtk_split_cell.vtk")); }),
+  io::test::TempDir dir;
+  CHECK_THAT(io::test::input_error([&] { read_run(dir.path().string()); }), Contains(dir.path().string()));
+  CHECK_THAT(io::test::input_error([] { read_run("/nonexistent/run"); }), Contains("/nonexistent/run"));
+  CHECK_THAT(io::test::input_error([] { read_run(io::test::data("io/vtk_split_cell.vtk")); }),
              Contains("vtk_split_cell.vtk") && Contains("folder"));
 }

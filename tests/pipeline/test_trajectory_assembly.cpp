@@ -40,7 +40,7 @@ TEST_CASE("Explicit frame times keep frames that hold no cell", "[io][assembly]"
 }
 
 TEST_CASE("A sample at an MCS that is not a frame is refused", "[io][assembly]") {
-  CHECK_THAT(test::input_error([] {
+  CHECK_THAT(io::test::input_error([] {
                assemble_trajectories({sample(5, 7, 1, 0, 3)}, {"f.csv"}, 1000000, 3, {0, 10});
              }),
              Contains("f.csv:3") && Contains("cell 7") && Contains("MCS 5"));

@@ -55,13 +55,13 @@ void write_file(const std::string& path, const std::string& bytes, bool gzip) {
 }
 
 std::string vtk_error(const std::string& fixture) {
-  return test::input_error([&] { read_vtk_snapshot(test::data("io/" + fixture), S); });
+  return io::test::input_error([&] { read_vtk_snapshot(io::test::data("io/" + fixture), S); });
 }
 
 } // namespace
 
 TEST_CASE("A cell split into pieces has the centroid of all its voxels", "[io][vtk]") {
-  const VtkSnapshot v = read_vtk_snapshot(test::data("io/vtk_split_cell.vtk"), S);
+  const VtkSnapshot v = read_vtk_snapshot(io::test::data("io/vtk_split_cell.vtk"), S);
   CHECK(v.dimensions == std::array<std::int64_t, 3>{4, 3, 2});
   CHECK(v.origin == std::array<std::int64_t, 3>{0, 0, 0});
   CHECK(v.spacing == std::array<std::int64_t, 3>{S, S, S});
@@ -82,7 +82,7 @@ TEST_CASE("A cell split into pieces has the centroid of all its voxels", "[io][v
 }
 
 TEST_CASE("Binary big-endian and gzip snapshots read like ASCII ones with origin and spacing", "[io][vtk]") {
-  test::TempDir dir;
+  io::test::TempDir dir;
   for (const bool gzip : {false, true}) {
     CAPTURE(gzip);
     const std::string path = dir.file(gzip ? "Step_7.vtk.gz" : "Step_7.vtk");
@@ -152,16 +152,16 @@ TEST_CASE("Snapshot MCS comes from the Step_<MCS> file name", "[io][vtk]") {
   CHECK(is_vtk_step_name("Step_0.vtk"));
   CHECK_FALSE(is_vtk_step_name("Step_.vtk"));
   CHECK_FALSE(is_vtk_step_name("StepLDF.dml"));
-  CHECK_THAT(test::input_error([] { vtk_step_mcs("/x/lattice.vtk"); }), Contains("/x/lattice.vtk"));
+  CHECK_THAT(io::test::input_error([] { vtk_step_mcs("/x/lattice.vtk"); }), Contains("/x/lattice.vtk"));
 }
 
 TEST_CASE("A file that is not a STRUCTURED_POINTS snapshot is refused", "[io][vtk]") {
-  test::TempDir dir;
+  io::test::TempDir dir;
   write_file(dir.file("grid.vtk"), "# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\n",
              false);
   write_file(dir.file("text.vtk"), "hello\n", false);
-  CHECK_THAT(test::input_error([&] { read_vtk_snapshot(dir.file("grid.vtk"), S); }),
+  CHECK_THAT(io::test::input_error([&] { read_vtk_snapshot(dir.file("grid.vtk"), S); }),
              Contains("grid.vtk") && Contains("STRUCTURED_POINTS"));
-  CHECK_THAT(test::input_error([&] { read_vtk_snapshot(dir.file("text.vtk"), S); }),
+  CHECK_THAT(io::test::input_error([&] { read_vtk_snapshot(dir.file("text.vtk"), S); }),
              Contains("text.vtk:1") && Contains("legacy VTK"));
 }
