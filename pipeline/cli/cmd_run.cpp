@@ -230,6 +230,10 @@ void write_timings(const std::string& path, const RunArguments& args, const io::
   j["stage_cpu_seconds"] = cpu;
   j["total_cpu_seconds"] = timings.total_cpu();
   j["peak_rss_bytes"] = peak_rss_bytes();
+  nlohmann::ordered_json rss = nlohmann::ordered_json::object();
+  for (const std::string& name : stage_names())
+    rss[name] = timings.peak_rss_after(name);
+  j["peak_rss_bytes_after_stage"] = rss;
   const std::uint64_t events = kinetic_events(stats);
   const double kinetic_seconds = timings.wall("kinetic");
   j["events"] = events;

@@ -34,7 +34,7 @@ StageTimings::Entry& StageTimings::entry(const std::string& stage) {
   for (Entry& e : entries_)
     if (e.stage == stage)
       return e;
-  entries_.push_back({stage, 0.0, 0.0});
+  entries_.push_back({stage, 0.0, 0.0, 0});
   return entries_.back();
 }
 
@@ -49,6 +49,12 @@ void StageTimings::add(const std::string& stage, double wall_seconds, double cpu
   Entry& e = entry(stage);
   e.wall += wall_seconds;
   e.cpu += cpu_seconds;
+  e.peak_rss = peak_rss_bytes();
+}
+
+std::int64_t StageTimings::peak_rss_after(const std::string& stage) const {
+  const Entry* e = find(stage);
+  return e != nullptr ? e->peak_rss : 0;
 }
 
 double StageTimings::wall(const std::string& stage) const {

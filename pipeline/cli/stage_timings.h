@@ -38,6 +38,8 @@ public:
   }
   double wall(const std::string& stage) const;
   double cpu(const std::string& stage) const;
+  // The process's peak RSS when the stage last ended (so the stage that raised the peak shows).
+  std::int64_t peak_rss_after(const std::string& stage) const;
   double total_wall() const;
   double total_cpu() const;
 
@@ -45,6 +47,7 @@ private:
   struct Entry {
     std::string stage;
     double wall = 0.0, cpu = 0.0;
+    std::int64_t peak_rss = 0;
   };
   Entry& entry(const std::string& stage);
   const Entry* find(const std::string& stage) const;

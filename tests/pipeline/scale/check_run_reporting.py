@@ -119,6 +119,9 @@ def check_timings_file(medusa, data, work):
         fail(f"run facts {t['cells']}, {t['frames']}, {t['radius']}, {t['threads']}")
     if t["peak_rss_bytes"] <= 0:
         fail("no peak RSS")
+    after = [t["peak_rss_bytes_after_stage"][s] for s in stages]
+    if not (0 < after[0] and after == sorted(after) and after[-1] <= t["peak_rss_bytes"]):
+        fail(f"peak RSS after each stage {after} is not a non-decreasing series up to {t['peak_rss_bytes']}")
     # The summary on stdout counts the same events: "events: N flips (...), R radius events, I insertions,
     # D deletions".
     m = re.search(r"events: (\d+) flips .*?, (\d+) radius events, (\d+) insertions, (\d+) deletions", result.stdout)
