@@ -223,6 +223,9 @@ def main():
                 results[name]["gudhi"][precision] = gudhi_baseline(path, results[name]["medusa"]["radius"], precision)
 
     print(table(results))
+    print("(cpu: process CPU seconds, all threads; the builder's CPU time during the kinetic stage is counted in\n"
+          " kinetic's, so medusa_store's cpu covers closing and reading back the store only. Peak RSS is VmHWM of\n"
+          " the medusa process. The ratios use medusa's process wall time.)")
     print()
     print(targets(results, large_frames, flat_name))
     if args.json:

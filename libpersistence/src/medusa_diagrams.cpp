@@ -38,23 +38,38 @@ template <class Task> void for_each_index(std::size_t count, unsigned threads, c
       std::rethrow_exception(e);
 }
 
-} // namespace
-
-std::vector<Filtration> make_medusa_filtrations(const std::vector<complex::Cell>& cells,
-                                                const std::vector<int>& vertex_type,
-                                                const std::vector<int>& types, unsigned threads) {
+std::vector<std::pair<int, Direction>> medusa_jobs(const std::vector<int>& types) {
   std::vector<std::pair<int, Direction>> jobs;
   for (Direction direction : {Direction::forward, Direction::reverse})
     jobs.emplace_back(all_types, direction);
   for (int type : types)
     for (Direction direction : {Direction::forward, Direction::reverse})
       jobs.emplace_back(type, direction);
+  return jobs;
+}
+
+Filtration make_job_filtration(const std::vector<complex::Cell>& cells, const std::vector<int>& vertex_type,
+                               const std::pair<int, Direction>& job) {
+  return job.first == all_types ? make_filtration(cells, job.second)
+                                : make_type_filtration(cells, vertex_type, job.first, job.second);
+}
+
+Diagram audited_diagram(const std::vector<complex::Cell>& cells, const Filtration& f) {
+  Diagram d = compute_diagram(cells, f);
+  check_euler(d, f);
+  check_homology_degrees(d);
+  return d;
+}
+
+} // namespace
+
+std::vector<Filtration> make_medusa_filtrations(const std::vector<complex::Cell>& cells,
+                                                const std::vector<int>& vertex_type,
+                                                const std::vector<int>& types, unsigned threads) {
+  const auto jobs = medusa_jobs(types);
   std::vector<Filtration> filtrations(jobs.size());
-  for_each_index(jobs.size(), threads, [&](std::size_t i) {
-    const auto [type, direction] = jobs[i];
-    filtrations[i] = type == all_types ? make_filtration(cells, direction)
-                                       : make_type_filtration(cells, vertex_type, type, direction);
-  });
+  for_each_index(jobs.size(), threads,
+                 [&](std::size_t i) { filtrations[i] = make_job_filtration(cells, vertex_type, jobs[i]); });
   return filtrations;
 }
 
@@ -62,21 +77,22 @@ std::vector<Diagram> reduce_medusa_filtrations(const std::vector<complex::Cell>&
                                                std::vector<Filtration>&& filtrations, unsigned threads) {
   std::vector<Diagram> diagrams(filtrations.size());
   for_each_index(filtrations.size(), threads, [&](std::size_t i) {
-    Filtration& f = filtrations[i];
-    Diagram d = compute_diagram(cells, f);
-    check_euler(d, f);
-    check_homology_degrees(d);
-    diagrams[i] = std::move(d);
-    f = Filtration{};
+    diagrams[i] = audited_diagram(cells, filtrations[i]);
+    filtrations[i] = Filtration{};
   });
   return diagrams;
 }
 
+// One task per filtration, built and reduced in turn: at most `threads` filtrations are alive at once.
 std::vector<Diagram> compute_medusa_diagrams(const std::vector<complex::Cell>& cells,
                                              const std::vector<int>& vertex_type,
                                              const std::vector<int>& types, unsigned threads) {
-  return reduce_medusa_filtrations(cells, make_medusa_filtrations(cells, vertex_type, types, threads),
-                                   threads);
+  const auto jobs = medusa_jobs(types);
+  std::vector<Diagram> diagrams(jobs.size());
+  for_each_index(jobs.size(), threads, [&](std::size_t i) {
+    diagrams[i] = audited_diagram(cells, make_job_filtration(cells, vertex_type, jobs[i]));
+  });
+  return diagrams;
 }
 
 } // namespace medusa::persistence

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <ctime>
+#include <fstream>
+#include <sstream>
 #include <sys/resource.h>
 
 namespace medusa::cli {
@@ -25,7 +27,6 @@ const std::vector<std::string>& stage_names() {
 }
 
 double process_cpu_seconds() { return clock_seconds(CLOCK_PROCESS_CPUTIME_ID); }
-double thread_cpu_seconds() { return clock_seconds(CLOCK_THREAD_CPUTIME_ID); }
 
 StageTimings::Entry& StageTimings::entry(const std::string& stage) {
   const auto& names = stage_names();
@@ -82,6 +83,19 @@ double StageTimings::total_cpu() const {
 }
 
 std::int64_t peak_rss_bytes() {
+  // VmHWM is the high-water mark of this process image. getrusage's ru_maxrss is the fallback only:
+  // Linux carries it across execve, so a child of a large process (say a Python benchmark) would
+  // report its parent's peak.
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) {
+      std::istringstream fields(line.substr(6));
+      std::int64_t kib = 0;
+      std::string unit;
+      if (fields >> kib >> unit && unit == "kB")
+        return kib * 1024;
+    }
   rusage usage{};
   if (getrusage(RUSAGE_SELF, &usage) != 0)
     return -1;

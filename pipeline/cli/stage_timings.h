@@ -13,9 +13,8 @@ namespace medusa::cli {
 // The stages in the order they run; the JSON keys of --timings.
 const std::vector<std::string>& stage_names();
 
-// CPU seconds of the whole process (all threads) and of the calling thread so far.
+// CPU seconds of the whole process (all threads) so far.
 double process_cpu_seconds();
-double thread_cpu_seconds();
 
 // A wall clock and the process CPU clock started together.
 struct StageClock {
@@ -54,7 +53,7 @@ private:
   std::vector<Entry> entries_;
 };
 
-// The peak resident set size of this process so far in bytes (getrusage; Linux reports KiB).
+// The peak resident set size of this process so far in bytes (VmHWM of /proc/self/status).
 std::int64_t peak_rss_bytes();
 
 } // namespace medusa::cli
