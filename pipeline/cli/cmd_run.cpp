@@ -295,9 +295,10 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   info.command_line = command_line;
   info.software_version = MEDUSA_VERSION;
 
-  kinetic::KineticAlphaComplex engine(data.trajectories, kinetic_options);
+  kinetic::KineticStatistics stats;
   {
     clock = StageClock{};
+    kinetic::KineticAlphaComplex engine(data.trajectories, kinetic_options);
     complex::StoreWriter writer(output);
     complex::MedusaBuilder builder(writer);
     builder.set_run(info, data.trajectories);
@@ -308,18 +309,21 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     // CPU time is not measured apart (see ProgressObserver::timed) and stays in the kinetic stage's.
     timings.add("kinetic", clock.wall_seconds() - observer.builder_seconds(), clock.cpu_seconds());
     timings.add("medusa_store", observer.builder_seconds(), 0.0);
+    stats = engine.statistics();
   }
+  // The engine is gone: the stages below (which hold the whole medusa) reuse its memory instead of
+  // adding to it, and the freed pages go back to the system so that worker threads' heaps can have
+  // them too. Peak memory is then the larger of the two parts, not their sum.
+  release_free_memory();
 
   // README: an interrupted run leaves no output behind, including a store already completed.
   const std::string stem = output_stem(output);
   const std::vector<std::string> outputs = {output, stem + ".diagrams.csv", stem + ".barcode.svg"};
   try {
     check_interrupted();
-    const StoreFacts facts =
-        write_diagrams_and_summary(output, stem, engine.statistics(), radius, threads, meter, timings);
+    const StoreFacts facts = write_diagrams_and_summary(output, stem, stats, radius, threads, meter, timings);
     if (!args.timings.empty())
-      write_timings(args.timings, resolved, data, radius, output, timings, engine.statistics(), facts,
-                    threads);
+      write_timings(args.timings, resolved, data, radius, output, timings, stats, facts, threads);
   } catch (const Interrupted&) {
     for (const std::string& path : outputs)
       fs::remove(path, ec);
@@ -357,9 +361,10 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
                   "worker threads for the filtrations and reductions (0 = one per hardware thread; 1 = "
                   "sequential); the results do not depend on it")
       ->capture_default_str();
-  run->add_option("--timings", args->timings,
-                  "write wall seconds per stage (reading, kinetic, medusa_store, filtrations, reduction, "
-                  "exports), peak RSS, kinetic events and store size to this JSON file");
+  run->add_option(
+      "--timings", args->timings,
+      "write wall and CPU seconds per stage (reading, kinetic, medusa_store, filtrations, reduction, "
+      "exports), peak RSS, kinetic events and store size to this JSON file");
   run->callback([args, command_line] { run_command(*args, command_line); });
 }
 

@@ -7,6 +7,9 @@
 #include <fstream>
 #include <sstream>
 #include <sys/resource.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 namespace medusa::cli {
 namespace {
@@ -80,6 +83,12 @@ double StageTimings::total_cpu() const {
   for (const Entry& e : entries_)
     sum += e.cpu;
   return sum;
+}
+
+void release_free_memory() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
 }
 
 std::int64_t peak_rss_bytes() {
