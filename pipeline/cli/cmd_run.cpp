@@ -65,6 +65,7 @@ public:
   void initial(const kinetic::EventTime& t0, const std::vector<kinetic::Simplex>& complex) override {
     last_batch_ = t0.batch;
     timed([&] { next_.initial(t0, complex); });
+    peak_rss_at_frame_.push_back(peak_rss_bytes());
     meter_.update(1, 0);
   }
   void batch(const kinetic::EventTime& time, const std::vector<kinetic::Step>& steps) override {
@@ -77,6 +78,7 @@ public:
     check_interrupted();
     timed([&] { next_.frame(k, time); });
     frames_reached_ = k + 1;
+    peak_rss_at_frame_.push_back(peak_rss_bytes());
     meter_.update(frames_reached_, kinetic_events(engine_.statistics()));
   }
   void finish(const kinetic::EventTime& t_end) override {
@@ -85,9 +87,12 @@ public:
     meter_.finish_kinetic(kinetic_events(engine_.statistics()));
     meter_.stage("medusa store: closing");
     timed([&] { next_.finish(end); });
+    peak_rss_at_frame_.push_back(peak_rss_bytes());
   }
   // Wall seconds spent in the builder and the store writer.
   double builder_seconds() const { return builder_seconds_; }
+  // The process's peak RSS when each frame was reached (for checking that memory is flat in frames).
+  const std::vector<std::int64_t>& peak_rss_at_frame() const { return peak_rss_at_frame_; }
 
 private:
   // Wall time only, from the steady clock (no system call): a CPU clock read per callback is a
@@ -106,6 +111,7 @@ private:
   std::size_t frames_reached_ = 1;
   std::size_t last_batch_ = 0;
   double builder_seconds_ = 0.0;
+  std::vector<std::int64_t> peak_rss_at_frame_;
 };
 
 // `<input-name>` of a folder or a cells.csv[.gz] file, for the default store name.
@@ -212,7 +218,9 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
 // The machine-readable record of --timings (read by bench/e2e_bench.py).
 void write_timings(const std::string& path, const RunArguments& args, const io::RunData& data,
                    const std::string& radius, const std::string& output, const StageTimings& timings,
-                   const kinetic::KineticStatistics& stats, const StoreFacts& facts, unsigned threads) {
+                   const kinetic::KineticStatistics& stats,
+                   const std::vector<std::int64_t>& peak_rss_at_frame, const StoreFacts& facts,
+                   unsigned threads) {
   nlohmann::ordered_json j;
   j["input"] = args.input;
   j["cells"] = data.trajectories.cells.size();
@@ -233,6 +241,7 @@ void write_timings(const std::string& path, const RunArguments& args, const io::
   for (const std::string& name : stage_names())
     rss[name] = timings.peak_rss_after(name);
   j["peak_rss_bytes_after_stage"] = rss;
+  j["peak_rss_bytes_at_frame"] = peak_rss_at_frame;
   const std::uint64_t events = kinetic_events(stats);
   const double kinetic_seconds = timings.wall("kinetic");
   j["events"] = events;
@@ -296,6 +305,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   info.software_version = MEDUSA_VERSION;
 
   kinetic::KineticStatistics stats;
+  std::vector<std::int64_t> peak_rss_at_frame;
   {
     clock = StageClock{};
     kinetic::KineticAlphaComplex engine(data.trajectories, kinetic_options);
@@ -310,6 +320,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     timings.add("kinetic", clock.wall_seconds() - observer.builder_seconds(), clock.cpu_seconds());
     timings.add("medusa_store", observer.builder_seconds(), 0.0);
     stats = engine.statistics();
+    peak_rss_at_frame = observer.peak_rss_at_frame();
   }
   // The engine is gone: the stages below (which hold the whole medusa) reuse its memory instead of
   // adding to it, and the freed pages go back to the system so that worker threads' heaps can have
@@ -323,7 +334,8 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     check_interrupted();
     const StoreFacts facts = write_diagrams_and_summary(output, stem, stats, radius, threads, meter, timings);
     if (!args.timings.empty())
-      write_timings(args.timings, resolved, data, radius, output, timings, stats, facts, threads);
+      write_timings(args.timings, resolved, data, radius, output, timings, stats, peak_rss_at_frame, facts,
+                    threads);
   } catch (const Interrupted&) {
     for (const std::string& path : outputs)
       fs::remove(path, ec);

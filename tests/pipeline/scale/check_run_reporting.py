@@ -143,6 +143,9 @@ def check_timings_file(medusa, data, work):
         stored_cells = len(f["cells"]["id"])
     if stored_cells != t["store"]["cells"]:
         fail(f"store cells {t['store']['cells']}, the store holds {stored_cells}")
+    at_frame = t["peak_rss_bytes_at_frame"]
+    if not (len(at_frame) == 3 and at_frame == sorted(at_frame) and at_frame[-1] <= t["peak_rss_bytes"]):
+        fail(f"peak RSS at frames {at_frame}: expected one per frame (3), non-decreasing")
     if len(t["kinetic_seconds_per_frame"]) != 2:
         fail("expected one kinetic time per slab (2)")
 
