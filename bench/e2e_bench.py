@@ -104,6 +104,12 @@ def peak_stage(m):
     return next((s for s in STAGES if after[s] >= m["peak_rss_bytes"]), "-")
 
 
+def frame_rss(m):
+    """Peak RSS when the first and the last frame were reached (flat in frames: the two are close)."""
+    at = m.get("peak_rss_bytes_at_frame")
+    return f"{mib(at[0])} / {mib(at[-1])}" if at else "-"
+
+
 def table(results):
     names = list(results)
     rows = [("cells", lambda r: str(r["medusa"]["cells"])), ("frames", lambda r: str(r["medusa"]["frames"])),
@@ -117,6 +123,7 @@ def table(results):
         ("peak RSS", lambda r: mib(r["medusa"]["peak_rss_bytes"])),
         ("peak RSS after kinetic", lambda r: mib(r["medusa"].get("peak_rss_bytes_after_stage", {}).get("kinetic", 0))),
         ("peak RSS reached in", lambda r: peak_stage(r["medusa"])),
+        ("peak RSS at frame 1 / K", lambda r: frame_rss(r["medusa"])),
         ("kinetic events", lambda r: str(r["medusa"]["events"])),
         ("events/s (kinetic wall)", lambda r: f"{r['medusa']['events_per_second']:.0f}"),
         ("store size", lambda r: f"{r['medusa']['store']['bytes'] / 2**20:.1f} MiB"),
