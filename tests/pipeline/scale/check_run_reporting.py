@@ -7,6 +7,7 @@ ctest is not a terminal, so without --progress no progress is expected.
 """
 import json
 import os
+import pty
 import re
 import shutil
 import subprocess
@@ -46,6 +47,37 @@ def check_progress_lists_stages_and_frames(medusa, data, work):
                                    "medusa: exports"]]
     if order != sorted(order):
         fail(f"stages out of order: {order}")
+
+
+def check_terminal_shows_progress_in_place(medusa, data, work):
+    """stderr on a pseudo-terminal: progress without --progress, the kinetic line rewritten with '\r'."""
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    master, slave = pty.openpty()
+    process = subprocess.Popen([medusa, "run", data, "-o", "run.h5", "--radius", "3"], cwd=work,
+                               stdout=subprocess.PIPE, stderr=slave)
+    os.close(slave)
+    err = b""
+    while True:
+        try:
+            chunk = os.read(master, 4096)
+        except OSError:  # EIO once the child closed the terminal
+            break
+        if not chunk:
+            break
+        err += chunk
+    stdout, _ = process.communicate()
+    os.close(master)
+    err = err.decode()
+    print(err)
+    if process.returncode != 0:
+        fail(f"medusa run failed ({process.returncode})")
+    for needle in ["medusa: reading", "\rmedusa: kinetic: frame 1/3", "frame 3/3", "medusa: filtrations",
+                   "medusa: reduction", "medusa: exports"]:
+        if needle not in err:
+            fail(f"terminal stderr lacks {needle!r}")
+    if b"medusa: " in stdout or b"\r" in stdout or not stdout.startswith(b"cells: 251"):
+        fail(f"progress on stdout: {stdout[:200]!r}")
 
 
 def check_no_progress_without_flag(medusa, data, work):
@@ -153,6 +185,7 @@ def check_timings_file(medusa, data, work):
 CHECKS = {
     "progress": check_progress_lists_stages_and_frames,
     "no_progress": check_no_progress_without_flag,
+    "terminal": check_terminal_shows_progress_in_place,
     "quiet": check_quiet_silences_progress,
     "stdout": check_stdout_same_with_progress,
     "threads": check_threads_give_identical_diagrams,
