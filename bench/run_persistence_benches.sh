@@ -30,7 +30,7 @@ store() { # store NAME INPUT: medusa run INPUT into WORK/NAME.h5 unless it exist
 store sorting_3d "$root/examples/sorting_3d"
 # The synthetic run of 10,000 cells: a jittered grid at CC3D's cell spacing, 4 frames.
 if [ ! -f "$work/random_10000.csv" ]; then
-  "$python" "$here/make_random_walk.py" --cells 10000 --frames 4 --seed 10000 --step 0.7 --jitter 1.5 \
+  "$python" "$here/make_random_walk.py" --cells 10000 --frames 4 --seed 10000 --step 1.2 --jitter 1.5 \
     -o "$work/random_10000.csv"
 fi
 store random_10000 "$work/random_10000.csv"

@@ -3,23 +3,95 @@
 #include "medusa/persistence/degree_check.h"
 #include "medusa/persistence/euler.h"
 
-namespace medusa::persistence {
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <thread>
 
-std::vector<Diagram> compute_medusa_diagrams(const std::vector<complex::Cell>& cells,
-                                             const std::vector<int>& vertex_type,
-                                             const std::vector<int>& types) {
-  std::vector<Diagram> diagrams;
-  auto add = [&](const Filtration& f) {
-    Diagram d = compute_diagram(cells, f);
-    check_euler(d, f);
-    check_homology_degrees(d);
-    diagrams.push_back(std::move(d));
+namespace medusa::persistence {
+namespace {
+
+// Runs task(i) for i in [0, count) on `threads` threads, each taking the next index; the tasks write
+// only to their own slots. Every exception is kept by index and the lowest one rethrown, so the
+// error does not depend on the scheduling.
+template <class Task> void for_each_index(std::size_t count, unsigned threads, const Task& task) {
+  std::vector<std::exception_ptr> errors(count);
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i = next++; i < count; i = next++) {
+      try {
+        task(i);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    }
   };
+  const auto workers = static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(threads, count)));
+  std::vector<std::thread> pool;
+  for (unsigned w = 1; w < workers; ++w)
+    pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool)
+    t.join();
+  for (const std::exception_ptr& e : errors)
+    if (e)
+      std::rethrow_exception(e);
+}
+
+std::vector<std::pair<int, Direction>> medusa_jobs(const std::vector<int>& types) {
+  std::vector<std::pair<int, Direction>> jobs;
   for (Direction direction : {Direction::forward, Direction::reverse})
-    add(make_filtration(cells, direction));
+    jobs.emplace_back(all_types, direction);
   for (int type : types)
     for (Direction direction : {Direction::forward, Direction::reverse})
-      add(make_type_filtration(cells, vertex_type, type, direction));
+      jobs.emplace_back(type, direction);
+  return jobs;
+}
+
+Filtration make_job_filtration(const std::vector<complex::Cell>& cells, const std::vector<int>& vertex_type,
+                               const std::pair<int, Direction>& job) {
+  return job.first == all_types ? make_filtration(cells, job.second)
+                                : make_type_filtration(cells, vertex_type, job.first, job.second);
+}
+
+Diagram audited_diagram(const std::vector<complex::Cell>& cells, const Filtration& f) {
+  Diagram d = compute_diagram(cells, f);
+  check_euler(d, f);
+  check_homology_degrees(d);
+  return d;
+}
+
+} // namespace
+
+std::vector<Filtration> make_medusa_filtrations(const std::vector<complex::Cell>& cells,
+                                                const std::vector<int>& vertex_type,
+                                                const std::vector<int>& types, unsigned threads) {
+  const auto jobs = medusa_jobs(types);
+  std::vector<Filtration> filtrations(jobs.size());
+  for_each_index(jobs.size(), threads,
+                 [&](std::size_t i) { filtrations[i] = make_job_filtration(cells, vertex_type, jobs[i]); });
+  return filtrations;
+}
+
+std::vector<Diagram> reduce_medusa_filtrations(const std::vector<complex::Cell>& cells,
+                                               std::vector<Filtration>&& filtrations, unsigned threads) {
+  std::vector<Diagram> diagrams(filtrations.size());
+  for_each_index(filtrations.size(), threads, [&](std::size_t i) {
+    diagrams[i] = audited_diagram(cells, filtrations[i]);
+    filtrations[i] = Filtration{};
+  });
+  return diagrams;
+}
+
+// One task per filtration, built and reduced in turn: at most `threads` filtrations are alive at once.
+std::vector<Diagram> compute_medusa_diagrams(const std::vector<complex::Cell>& cells,
+                                             const std::vector<int>& vertex_type,
+                                             const std::vector<int>& types, unsigned threads) {
+  const auto jobs = medusa_jobs(types);
+  std::vector<Diagram> diagrams(jobs.size());
+  for_each_index(jobs.size(), threads, [&](std::size_t i) {
+    diagrams[i] = audited_diagram(cells, make_job_filtration(cells, vertex_type, jobs[i]));
+  });
   return diagrams;
 }
 

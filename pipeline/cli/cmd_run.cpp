@@ -5,7 +5,9 @@
 #include "diagram_export.h"
 #include "diagram_selection.h"
 #include "interrupt.h"
+#include "progress_meter.h"
 #include "run_summary.h"
+#include "stage_timings.h"
 #include "svg_plot.h"
 
 #include "medusa/complex/medusa_builder.h"
@@ -17,11 +19,16 @@
 #include "medusa/persistence/diagram_store.h"
 #include "medusa/persistence/medusa_diagrams.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
+#include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <thread>
 #include <unistd.h>
 
 namespace medusa::cli {
@@ -34,45 +41,77 @@ struct RunArguments {
   std::string output;
   std::string radius = "auto";
   std::string source;
+  std::string timings;
+  unsigned threads = 0; // 0: one per hardware thread
   bool audit = false, snap = false, periodic_as_open = false, quiet = false, progress = false;
 };
 
-// Forwards the event stream to the builder; reports frames on stderr and polls for interrupts.
+// Kinetic events: every certificate failure processed (flips, radius events) and every insertion or
+// deletion of a cell at a frame.
+std::uint64_t kinetic_events(const kinetic::KineticStatistics& s) {
+  return s.flips23 + s.flips32 + s.hull_flips + s.radius_events + s.insertions + s.deletions;
+}
+
+// Forwards the event stream to the builder; reports progress and polls for interrupts. It also
+// times the builder (which streams the store) apart from the kinetic engine that calls it.
 // libkinetic reports t_end with the batch index of the last event batch, while the builder wants
 // the end strictly after every batch (MATH.md 6.2: cells alive at t_end die at the final virtual
 // time); the end is then given the next batch index.
 class ProgressObserver : public kinetic::Observer {
 public:
-  ProgressObserver(kinetic::Observer& next, std::size_t frames, bool show)
-      : next_(next), frames_(frames), show_(show) {}
+  ProgressObserver(kinetic::Observer& next, const kinetic::KineticAlphaComplex& engine, ProgressMeter& meter,
+                   std::size_t frames)
+      : next_(next), engine_(engine), meter_(meter), frames_(frames) {}
   void initial(const kinetic::EventTime& t0, const std::vector<kinetic::Simplex>& complex) override {
     last_batch_ = t0.batch;
-    next_.initial(t0, complex);
+    timed([&] { next_.initial(t0, complex); });
+    peak_rss_at_frame_.push_back(peak_rss_bytes());
+    meter_.update(1, 0);
   }
   void batch(const kinetic::EventTime& time, const std::vector<kinetic::Step>& steps) override {
     check_interrupted();
     last_batch_ = std::max(last_batch_, time.batch);
-    next_.batch(time, steps);
+    timed([&] { next_.batch(time, steps); });
+    meter_.update(frames_reached_, kinetic_events(engine_.statistics()));
   }
   void frame(std::size_t k, const kinetic::EventTime& time) override {
     check_interrupted();
-    next_.frame(k, time);
-    if (show_)
-      std::cerr << "\rmedusa: frame " << k + 1 << " of " << frames_ << std::flush;
+    timed([&] { next_.frame(k, time); });
+    frames_reached_ = k + 1;
+    peak_rss_at_frame_.push_back(peak_rss_bytes());
+    meter_.update(frames_reached_, kinetic_events(engine_.statistics()));
   }
   void finish(const kinetic::EventTime& t_end) override {
     kinetic::EventTime end = t_end;
     end.batch = std::max(end.batch, last_batch_ + 1);
-    next_.finish(end);
-    if (show_)
-      std::cerr << "\rmedusa: frame " << frames_ << " of " << frames_ << "\n";
+    meter_.finish_kinetic(kinetic_events(engine_.statistics()));
+    meter_.stage("medusa store: closing");
+    timed([&] { next_.finish(end); });
+    peak_rss_at_frame_.push_back(peak_rss_bytes());
   }
+  // Wall seconds spent in the builder and the store writer.
+  double builder_seconds() const { return builder_seconds_; }
+  // The process's peak RSS when each frame was reached (for checking that memory is flat in frames).
+  const std::vector<std::int64_t>& peak_rss_at_frame() const { return peak_rss_at_frame_; }
 
 private:
+  // Wall time only, from the steady clock (no system call): a CPU clock read per callback is a
+  // system call, and on a loaded machine the process is often descheduled at its return, which
+  // would charge other processes' time to the builder.
+  template <class F> void timed(const F& f) {
+    const auto start = std::chrono::steady_clock::now();
+    f();
+    builder_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
   kinetic::Observer& next_;
+  const kinetic::KineticAlphaComplex& engine_;
+  ProgressMeter& meter_;
   std::size_t frames_;
-  bool show_;
+  std::size_t frames_reached_ = 1;
   std::size_t last_batch_ = 0;
+  double builder_seconds_ = 0.0;
+  std::vector<std::int64_t> peak_rss_at_frame_;
 };
 
 // `<input-name>` of a folder or a cells.csv[.gz] file, for the default store name.
@@ -117,13 +156,44 @@ std::string radius_from_volumes(const io::RunData& data) {
   return buffer;
 }
 
+// What the summary and --timings report about the stages after the kinetic one.
+struct StoreFacts {
+  std::size_t cells = 0;
+  std::size_t diagrams = 0;
+};
+
 // Diagrams from the stored cells, so that what later commands see is what the summary describes.
-void write_diagrams_and_summary(const std::string& output, const std::string& stem,
-                                const kinetic::KineticStatistics& stats, const std::string& radius) {
+StoreFacts write_diagrams_and_summary(const std::string& output, const std::string& stem,
+                                      const kinetic::KineticStatistics& stats, const std::string& radius,
+                                      unsigned threads, ProgressMeter& meter, StageTimings& timings) {
+  meter.stage("medusa store: reading back " + output);
+  StageClock clock;
   const complex::Medusa medusa = complex::read_store(output);
+  timings.add("medusa_store", clock);
+  check_interrupted();
+
   const std::vector<int> vertex_type = vertex_types(medusa);
+  const std::vector<int> types = distinct_types(vertex_type);
+  const std::size_t count = 2 * (types.size() + 1);
+  const std::string on = " on " + std::to_string(std::min<std::size_t>(threads, count)) + " thread(s)";
+  meter.stage("filtrations: " + std::to_string(count) + " (whole medusa and " + std::to_string(types.size()) +
+              " cell types, forward and reverse, " + std::to_string(medusa.cells.size()) + " cells)" + on);
+  clock = StageClock{};
+  std::vector<persistence::Filtration> filtrations =
+      persistence::make_medusa_filtrations(medusa.cells, vertex_type, types, threads);
+  timings.add("filtrations", clock);
+  check_interrupted();
+
+  meter.stage("reduction: " + std::to_string(count) + " boundary matrices with PHAT" + on);
+  clock = StageClock{};
   std::vector<persistence::Diagram> diagrams =
-      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, distinct_types(vertex_type));
+      persistence::reduce_medusa_filtrations(medusa.cells, std::move(filtrations), threads);
+  timings.add("reduction", clock);
+  check_interrupted();
+
+  meter.stage("exports: diagrams into the store, " + stem + ".diagrams.csv, " + stem +
+              ".barcode.svg, summary");
+  clock = StageClock{};
   // The diagrams go into the store too (group /persistence, docs/FORMAT.md), written atomically.
   persistence::write_diagrams(output, diagrams);
   check_interrupted();
@@ -141,6 +211,58 @@ void write_diagrams_and_summary(const std::string& output, const std::string& st
 
   write_run_summary(std::cout, medusa, stats, diagrams, radius);
   std::cout << "wrote " << output << ", " << stem << ".diagrams.csv, " << stem << ".barcode.svg\n";
+  timings.add("exports", clock);
+  return {medusa.cells.size(), diagrams.size()};
+}
+
+// The machine-readable record of --timings (read by bench/e2e_bench.py).
+void write_timings(const std::string& path, const RunArguments& args, const io::RunData& data,
+                   const std::string& radius, const std::string& output, const StageTimings& timings,
+                   const kinetic::KineticStatistics& stats,
+                   const std::vector<std::int64_t>& peak_rss_at_frame, const StoreFacts& facts,
+                   unsigned threads) {
+  nlohmann::ordered_json j;
+  j["input"] = args.input;
+  j["cells"] = data.trajectories.cells.size();
+  j["frames"] = data.trajectories.frames();
+  j["radius"] = radius;
+  j["threads"] = threads;
+  nlohmann::ordered_json wall = nlohmann::ordered_json::object(), cpu = nlohmann::ordered_json::object();
+  for (const std::string& name : stage_names()) {
+    wall[name] = timings.wall(name);
+    cpu[name] = timings.cpu(name);
+  }
+  j["stage_seconds"] = wall;
+  j["total_seconds"] = timings.total_wall();
+  j["stage_cpu_seconds"] = cpu;
+  j["total_cpu_seconds"] = timings.total_cpu();
+  j["peak_rss_bytes"] = peak_rss_bytes();
+  nlohmann::ordered_json rss = nlohmann::ordered_json::object();
+  for (const std::string& name : stage_names())
+    rss[name] = timings.peak_rss_after(name);
+  j["peak_rss_bytes_after_stage"] = rss;
+  j["peak_rss_bytes_at_frame"] = peak_rss_at_frame;
+  const std::uint64_t events = kinetic_events(stats);
+  const double kinetic_seconds = timings.wall("kinetic");
+  j["events"] = events;
+  j["events_per_second"] = kinetic_seconds > 0 ? static_cast<double>(events) / kinetic_seconds : 0.0;
+  j["event_counts"] = {{"flips23", stats.flips23},
+                       {"flips32", stats.flips32},
+                       {"hull_flips", stats.hull_flips},
+                       {"radius_events", stats.radius_events},
+                       {"insertions", stats.insertions},
+                       {"deletions", stats.deletions},
+                       {"batches", stats.batches},
+                       {"certificates_built", stats.certificates_built},
+                       {"static_rebuilds", stats.static_rebuilds}};
+  j["kinetic_seconds_per_frame"] = stats.seconds_per_frame;
+  std::error_code ec;
+  const auto bytes = fs::file_size(output, ec);
+  j["store"] = {{"path", output},
+                {"bytes", ec ? -1 : static_cast<std::int64_t>(bytes)},
+                {"cells", facts.cells},
+                {"diagrams", facts.diagrams}};
+  write_file_atomically(path, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
 
 void run_command(const RunArguments& args, const std::string& command_line) {
@@ -149,14 +271,22 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   std::error_code ec;
   if (!fs::exists(input, ec))
     throw InputError("input " + input + " does not exist");
+  const unsigned threads =
+      args.threads > 0 ? args.threads : std::max(1u, std::thread::hardware_concurrency());
 
+  ProgressMeter meter(std::cerr,
+                      ProgressMeter::choose(args.progress, args.quiet, ::isatty(STDERR_FILENO) != 0));
+  StageTimings timings;
   RunArguments resolved = args;
   resolved.input = input;
   io::RunOptions options;
   options.source = choose_source(resolved);
   options.snap = args.snap;
   options.allow_periodic_as_open = args.periodic_as_open;
+  meter.stage("reading " + input);
+  StageClock clock;
   const io::RunData data = io::read_run(input, options);
+  timings.add("reading", clock);
   if (!args.quiet)
     for (const std::string& w : data.warnings)
       std::cerr << "medusa: warning: " << w << "\n";
@@ -174,22 +304,38 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   info.command_line = command_line;
   info.software_version = MEDUSA_VERSION;
 
-  kinetic::KineticAlphaComplex engine(data.trajectories, kinetic_options);
+  kinetic::KineticStatistics stats;
+  std::vector<std::int64_t> peak_rss_at_frame;
   {
+    clock = StageClock{};
+    kinetic::KineticAlphaComplex engine(data.trajectories, kinetic_options);
     complex::StoreWriter writer(output);
     complex::MedusaBuilder builder(writer);
     builder.set_run(info, data.trajectories);
-    const bool show = args.progress || (!args.quiet && ::isatty(STDERR_FILENO) != 0);
-    ProgressObserver observer(builder, data.trajectories.frames(), show);
+    meter.start_kinetic(data.trajectories.frames());
+    ProgressObserver observer(builder, engine, meter, data.trajectories.frames());
     engine.run(observer);
+    // The engine's wall time includes the builder's callbacks, which belong to the store stage; their
+    // CPU time is not measured apart (see ProgressObserver::timed) and stays in the kinetic stage's.
+    timings.add("kinetic", clock.wall_seconds() - observer.builder_seconds(), clock.cpu_seconds());
+    timings.add("medusa_store", observer.builder_seconds(), 0.0);
+    stats = engine.statistics();
+    peak_rss_at_frame = observer.peak_rss_at_frame();
   }
+  // The engine is gone: the stages below (which hold the whole medusa) reuse its memory instead of
+  // adding to it, and the freed pages go back to the system so that worker threads' heaps can have
+  // them too. Peak memory is then the larger of the two parts, not their sum.
+  release_free_memory();
 
   // README: an interrupted run leaves no output behind, including a store already completed.
   const std::string stem = output_stem(output);
   const std::vector<std::string> outputs = {output, stem + ".diagrams.csv", stem + ".barcode.svg"};
   try {
     check_interrupted();
-    write_diagrams_and_summary(output, stem, engine.statistics(), radius);
+    const StoreFacts facts = write_diagrams_and_summary(output, stem, stats, radius, threads, meter, timings);
+    if (!args.timings.empty())
+      write_timings(args.timings, resolved, data, radius, output, timings, stats, peak_rss_at_frame, facts,
+                    threads);
   } catch (const Interrupted&) {
     for (const std::string& path : outputs)
       fs::remove(path, ec);
@@ -219,8 +365,18 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
                 "read a periodic run as if its boundaries were open");
   run->add_flag("--audit", args->audit,
                 "check the kinetic structure against static CGAL computations (slow)");
-  run->add_flag("--progress", args->progress, "report frames on stderr even when it is not a terminal");
+  run->add_flag("--progress", args->progress,
+                "report progress on stderr (stage; frame k/K, events/s, elapsed and ETA during the kinetic "
+                "stage) even when stderr is not a terminal, then one line per update");
   run->add_flag("-q,--quiet", args->quiet, "no warnings and no progress on stderr");
+  run->add_option("--threads", args->threads,
+                  "worker threads for the filtrations and reductions (0 = one per hardware thread; 1 = "
+                  "sequential); the results do not depend on it")
+      ->capture_default_str();
+  run->add_option(
+      "--timings", args->timings,
+      "write wall and CPU seconds per stage (reading, kinetic, medusa_store, filtrations, reduction, "
+      "exports), peak RSS, kinetic events and store size to this JSON file");
   run->callback([args, command_line] { run_command(*args, command_line); });
 }
 
