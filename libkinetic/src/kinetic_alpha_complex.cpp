@@ -735,16 +735,8 @@ struct KineticAlphaComplex::Impl {
       if (is_finite(t) && orientation_sign_plus(t) == 0) {
         // A new tetrahedron would stay flat: no elementary flip resolves this degenerate group
         // (e.g. four points coplanar through the slab); MATH.md 5.2 step 3 asks for a static repair.
-        if (!now.is_rational()) {
-          std::ostringstream os;
-          os << "degenerate simultaneous event in slab " << slab << " at t ~ " << event_time(false).time
-             << " involving cells";
-          for (VertexId v : group)
-            if (v != infinite_vertex)
-              os << ' ' << traj.cells[static_cast<std::size_t>(v)].cell_id;
-          os << ": a static repair at an irrational time is not supported yet";
-          throw GeometryError(os.str());
-        }
+        if (!now.is_rational())
+          ++stats.repairs_at_algebraic_times;
         Step repair;
         repair.kind = StepKind::repair;
         std::unordered_map<Simplex, bool, SimplexHash> old_k;
@@ -915,7 +907,9 @@ struct KineticAlphaComplex::Impl {
     ++stats.static_rebuilds;
     std::vector<VertexId> ids = alive_ids();
     int dimension = 0;
-    std::vector<Simplex> tets = detail::delaunay_just_after(static_input(ids), now.rational(), dimension);
+    std::vector<Simplex> tets =
+        now.is_rational() ? detail::delaunay_just_after(static_input(ids), now.rational(), dimension)
+                          : detail::delaunay_at(static_input(ids), rational_before_next_event(), dimension);
     if (dimension < 3) {
       if (ids.size() < 4)
         throw GeometryError("fewer than 4 cells are present at frame " + std::to_string(slab) +
@@ -932,6 +926,22 @@ struct KineticAlphaComplex::Impl {
       if (!tri.has_tet(t))
         added.push_back(t);
     change_tets(removed, added, old_k);
+  }
+
+  // A rational q in (now, next event) (or (now, 1) without one): Del at q is Del(now+) except where a
+  // certificate fails in (now, q], and those failures are found at now+ and flipped by the caller
+  // (static repair at an algebraic time, MATH.md 5.4).
+  Rational rational_before_next_event() const {
+    SlabTime upper(Rational(1));
+    for (auto copy = queue; !copy.empty(); copy.pop()) {
+      const QueueEntry& e = copy.top();
+      const Certificate& c = certs[e.cert];
+      if (c.alive && c.version == e.version && now < e.u) {
+        upper = e.u;
+        break;
+      }
+    }
+    return rational_between(now, upper);
   }
 
   // ---------------------------------------------------------------- the run

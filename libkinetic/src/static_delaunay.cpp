@@ -74,13 +74,16 @@ std::vector<Simplex> delaunay_just_after(const StaticInput& input, const CGAL::G
     }
     return triangulate<K>(pts, dimension);
   }
-  using K = CGAL::Exact_predicates_exact_constructions_kernel;
   // Exact rational points at u + 2^-40 (used at interior rational times and for huge coordinates).
-  const CGAL::Gmpq delta = u + CGAL::Gmpq(1, CGAL::Gmpz(1) << 40);
+  return delaunay_at(input, u + CGAL::Gmpq(1, CGAL::Gmpz(1) << 40), dimension);
+}
+
+std::vector<Simplex> delaunay_at(const StaticInput& input, const CGAL::Gmpq& u, int& dimension) {
+  using K = CGAL::Exact_predicates_exact_constructions_kernel;
   std::vector<std::pair<K::Point_3, VertexId>> pts;
   for (std::size_t i = 0; i < input.ids.size(); ++i) {
     const MovingPoint& m = input.motion[i];
-    auto c = [&](int a) { return CGAL::Gmpq(CGAL::Gmpz(m.a[a])) + delta * CGAL::Gmpq(CGAL::Gmpz(m.b[a])); };
+    auto c = [&](int a) { return CGAL::Gmpq(CGAL::Gmpz(m.a[a])) + u * CGAL::Gmpq(CGAL::Gmpz(m.b[a])); };
     pts.emplace_back(K::Point_3(exact(c(0)), exact(c(1)), exact(c(2))), input.ids[i]);
   }
   return triangulate<K>(pts, dimension);

@@ -22,6 +22,10 @@ struct StaticInput {
 // affine dimension of the point set in `dimension` (the tetrahedra are empty when it is below 3).
 std::vector<Simplex> delaunay_just_after(const StaticInput& input, const CGAL::Gmpq& u, int& dimension);
 
+// Tetrahedra of the Delaunay triangulation of the points a + u b exactly at the rational u (CGAL's
+// symbolic perturbation decides among cospherical sets).
+std::vector<Simplex> delaunay_at(const StaticInput& input, const CGAL::Gmpq& u, int& dimension);
+
 // The finite simplices (all dimensions) of the fixed-radius alpha complex of the points a + u b,
 // u rational, radius^2 = rho2 (grid units), computed with CGAL's Delaunay_triangulation_3 and
 // Fixed_alpha_shape_3 over an exact kernel. `tets` receives the Delaunay tetrahedra (infinite = -1).

@@ -33,8 +33,9 @@ struct KineticStatistics {
   std::size_t batches = 0, frame_batches = 0;
   std::size_t flips23 = 0, flips32 = 0, hull_flips = 0, radius_events = 0;
   std::size_t insertions = 0, deletions = 0, static_rebuilds = 0;
-  std::size_t certificates_built = 0;   // certificates created (Delaunay and radius)
-  std::size_t filter_settled = 0;       // settled by the interval Bernstein filter
+  std::size_t repairs_at_algebraic_times = 0; // static repairs inside a slab (MATH.md 5.4)
+  std::size_t certificates_built = 0;         // certificates created (Delaunay and radius)
+  std::size_t filter_settled = 0;             // settled by the interval Bernstein filter
   std::size_t interval_settled = 0;     // settled in doubles by certified root isolation (root_isolation.h)
   std::size_t interval_scheduled = 0;   // of which had a failure time in the slab
   std::size_t exact_settled = 0;        // needed exact arithmetic (GMP and root isolation)
