@@ -1,4 +1,5 @@
-// `medusa run` on examples/sorting_3d interrupted by SIGINT or SIGTERM at 10 random moments: each time
+// `medusa run` on the large bundled run (bench/data/large_3d: 4,945 cells, about a minute of work)
+// interrupted by SIGINT or SIGTERM at 10 random moments: each time
 // exit code 130 (README) and no file at the output name that `medusa info` accepts as a complete store.
 #include "child_process.h"
 
@@ -17,7 +18,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Starts `medusa run` on the bundled example with its output in `dir`; stdout and stderr go to
+// Starts `medusa run` on the large run with its output in `dir`; stdout and stderr go to
 // files in `dir`.
 pid_t start_run(const fs::path& dir) {
   const pid_t child = ::fork();
@@ -25,7 +26,7 @@ pid_t start_run(const fs::path& dir) {
     if (::chdir(dir.c_str()) != 0 || !std::freopen("stdout.txt", "w", stdout) ||
         !std::freopen("stderr.txt", "w", stderr))
       ::_exit(127);
-    ::execl(MEDUSA_BINARY, MEDUSA_BINARY, "run", MEDUSA_EXAMPLE, "-o", "interrupted.h5", "--radius", "3",
+    ::execl(MEDUSA_BINARY, MEDUSA_BINARY, "run", MEDUSA_LONG_RUN, "-o", "interrupted.h5", "--radius", "3",
             "--quiet", static_cast<char*>(nullptr));
     ::_exit(127);
   }
@@ -46,7 +47,7 @@ TEST_CASE("medusa run interrupted at 10 random moments exits 130 and leaves no c
   CAPTURE(seed);
   std::mt19937_64 random(seed);
   // From just after start-up (the handlers are installed first thing in main) to well inside the
-  // run, which takes far longer than 3 s on the bundled example.
+  // run: reading the CSV, the initial triangulation and the first slabs all take longer than 3 s.
   std::uniform_int_distribution<int> delay_ms(300, 3000);
   std::bernoulli_distribution use_sigint(0.5);
   const fs::path dir = fs::temp_directory_path() /

@@ -6,7 +6,7 @@ medusa=$1
 input=$2
 work=$3
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
-# The whole bundled example takes far longer than the delay, so the signal arrives mid-run.
+# The large run (4,945 cells) takes far longer than the delay, so the signal arrives mid-run.
 "$medusa" run "$input" -o interrupted.h5 --radius 3 --quiet 2>stderr.txt &
 pid=$!
 sleep 2
