@@ -40,26 +40,31 @@ void describe_forward_diagram(std::ostream& out, const persistence::Diagram& dia
     out << "; longest-lived separate cluster born at MCS " << mcs(last_merge->birth) << ", merged at MCS "
         << mcs(last_merge->death);
   out << "\n";
+  // Loops and cavities: a class that dies was filled; an essential one never was. It is a class of
+  // the whole space-time medusa, so it need not be open at the end: a ring that later breaks apart
+  // without being filled stays one (MATH.md 7.5, 7.6). The longest-lived filled one is the telling
+  // feature; essential classes are counted apart.
   for (int k = 1; k <= 2; ++k) {
     const persistence::PersistencePair* longest = nullptr;
-    std::size_t count = 0;
+    std::size_t filled = 0, never = 0;
     for (const persistence::PersistencePair& p : diagram.pairs) {
       if (p.dim != k || p.zero_length)
         continue;
-      ++count;
-      const double life = (p.essential ? t_end : p.death) - p.birth;
-      if (longest == nullptr || life > (longest->essential ? t_end : longest->death) - longest->birth)
+      if (p.essential) {
+        ++never;
+        continue;
+      }
+      ++filled;
+      if (longest == nullptr || p.death - p.birth > longest->death - longest->birth)
         longest = &p;
     }
-    out << "  " << count << " " << (count == 1 ? feature_names[k] : feature_plurals[k]);
-    if (longest != nullptr) {
-      out << "; longest-lived " << feature_names[k] << " born at MCS " << mcs(longest->birth);
-      if (longest->essential)
-        out << ", still open at MCS " << mcs(t_end);
-      else
-        out << ", filled at MCS " << mcs(longest->death) << " (lifetime "
-            << mcs(longest->death - longest->birth) << " MCS)";
-    }
+    const std::size_t count = filled + never;
+    out << "  " << count << " " << (count == 1 ? feature_names[k] : feature_plurals[k]) << " (" << filled
+        << " filled, " << never << " never filled)";
+    if (longest != nullptr)
+      out << "; longest-lived filled " << feature_names[k] << " born at MCS " << mcs(longest->birth)
+          << ", filled at MCS " << mcs(longest->death) << " (lifetime "
+          << mcs(longest->death - longest->birth) << " MCS)";
     out << "\n";
   }
 }
@@ -91,6 +96,8 @@ void write_run_summary(std::ostream& out, const complex::Medusa& medusa,
     }
     describe_forward_diagram(out, d, t0, t_end);
   }
+  out << "(forward filtration; \"never filled\" counts loops and cavities that no cells ever filled, "
+         "including those that broke open instead: see README, Reading the summary)\n";
 }
 
 } // namespace medusa::cli
