@@ -1,0 +1,20 @@
+// A kinetic certificate (MATH.md 3.1): the Delaunay certificate of a facet or the radius certificate
+// of a finite face, with the version that invalidates its stale queue entries.
+#pragma once
+
+#include "medusa/kinetic/simplex.h"
+
+#include <cstdint>
+
+namespace medusa::kinetic::detail {
+
+enum class CertKind : std::uint8_t { delaunay, radius };
+
+struct Certificate {
+  CertKind kind = CertKind::delaunay;
+  Simplex key; // the facet (delaunay) or the finite face (radius)
+  std::uint32_t version = 0;
+  bool alive = false;
+};
+
+} // namespace medusa::kinetic::detail

@@ -1,0 +1,238 @@
+// The kinetic engine behind KineticAlphaComplex: its state (motion, triangulation, alpha-complex
+// flags, certificates, event queue, root cache) and its operations, declared by the source file that
+// defines them (engine_*.cpp). The certificate polynomials and the sign^+ evaluations at now are
+// templates over the number type, so they are defined here.
+#pragma once
+
+#include "certificate.h"
+#include "event_queue.h"
+#include "face.h"
+#include "root_cache.h"
+#include "static_delaunay.h"
+#include "triangulation.h"
+
+#include "medusa/kinetic/algebraic_time.h"
+#include "medusa/kinetic/certificate_polynomials.h"
+#include "medusa/kinetic/interval_filter.h"
+#include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "medusa/kinetic/moving_point.h"
+#include "medusa/kinetic/observer.h"
+#include "medusa/kinetic/simplex.h"
+#include "medusa/kinetic/trajectories.h"
+
+#include <CGAL/FPU.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+struct Engine {
+  // The input and the outputs of the run.
+  const Trajectories& traj;
+  KineticOptions options;
+  KineticStatistics stats;
+
+  // rho^2 = P/Q exactly and as intervals; shared with the root cache's key polynomials.
+  mpz_class P, Q;
+  Interval Pi, Qi;
+  std::shared_ptr<const SquaredRadius> rho2_shared;
+
+  // The current slab, time u inside it, the cells' motion in it and who is alive.
+  std::size_t slab = 0;
+  SlabTime now;
+  std::vector<MovingPoint> motion;
+  std::vector<char> alive;
+
+  // Del(now+) and the alpha-complex state of its finite simplices.
+  detail::Triangulation tri;
+  std::unordered_map<Simplex, int, SimplexHash> orient; // sign of O(sorted vertices), finite tets
+  std::unordered_map<Simplex, Face, SimplexHash> faces; // finite simplices of dimension 1..3 in Del
+  std::unordered_map<Simplex, int, SimplexHash> facet_cert;
+
+  // Certificates (recycled through free_certs) and their failure times.
+  std::vector<Certificate> certs;
+  std::vector<int> free_certs;
+  EventQueue queue;
+
+  // Certificates found invalid at the current time, waiting in the current batch.
+  std::set<std::pair<Simplex, int>> pending_delaunay;
+  std::vector<std::pair<int, std::uint32_t>> pending_radius; // (certificate, version)
+
+  // Event batches emitted so far, and since the last audit.
+  std::size_t batch_index = 0;
+  std::size_t batches_since_audit = 0;
+
+  // Certificates built on the same points share their polynomial up to sign, hence its roots: the
+  // in-sphere of a 5-point set (the facet of a flip and the new interior facets), the orientation of
+  // a 4-point set, the radius of a face (MATH.md 3.8, caching; cleared at every frame).
+  RootCache root_cache;
+
+  Engine(const Trajectories& t, KineticOptions o); // engine_run.cpp
+
+  // ------------------------------------ geometry of certificates (templates over the number type)
+
+  const MovingPoint& pt(VertexId v) const { return motion[static_cast<std::size_t>(v)]; }
+
+  // rho^2 = P/Q as the number type of a certificate computation.
+  static const Interval& pick(const mpz_class&, const Interval& approx, const Interval&) { return approx; }
+  static const mpz_class& pick(const mpz_class& exact, const Interval&, const mpz_class&) { return exact; }
+
+  // Delaunay certificate of a facet, positive while valid (MATH.md 3.1, 3.2).
+  template <class NT> Poly<NT> delaunay_poly(const Simplex& facet) const {
+    const detail::Triangulation::Apices* ap = tri.apices(facet);
+    VertexId p = ap->v[0], q = ap->v[1];
+    if (is_finite(facet)) {
+      if (p == infinite_vertex || q == infinite_vertex) {
+        // Case A: the orientation of the finite cell below the hull facet.
+        VertexId z = p == infinite_vertex ? q : p;
+        std::array<VertexId, 4> seq{facet[0], facet[1], facet[2], z};
+        Poly<NT> o = certificate::orientation<NT>(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(seq[3]));
+        return orientation_of(seq) > 0 ? o : -o;
+      }
+      std::array<VertexId, 4> seq{facet[0], facet[1], facet[2], p};
+      Poly<NT> s = certificate::in_sphere<NT>(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(seq[3]), pt(q));
+      return orientation_of(seq) > 0 ? s : -s;
+    }
+    // Case B: facet (inf, a, b) between (inf, a, b, c) and (inf, a, b, d): hull facet abc, apex z of
+    // the finite cell below it; the certificate O(a, b, c, d) oriented so that O(a, b, c, z) > 0.
+    VertexId a = facet[1], b = facet[2], c = p, d = q;
+    Simplex hull{a, b, c};
+    VertexId z = tri.other_apex(hull, infinite_vertex);
+    std::array<VertexId, 4> seq{a, b, c, z};
+    Poly<NT> o = certificate::orientation<NT>(pt(a), pt(b), pt(c), pt(d));
+    return orientation_of(seq) > 0 ? o : -o;
+  }
+
+  // The radius polynomial f of a finite simplex: f <= 0 iff short (MATH.md 3.3).
+  template <class NT> Poly<NT> radius_poly(const Simplex& s, const NT& p, const NT& q) const {
+    switch (s.size()) {
+    case 2: return certificate::edge_radius<NT>(pt(s[0]), pt(s[1]), p, q);
+    case 3: return certificate::triangle_radius<NT>(pt(s[0]), pt(s[1]), pt(s[2]), p, q);
+    default: return certificate::tetrahedron_radius<NT>(pt(s[0]), pt(s[1]), pt(s[2]), pt(s[3]), p, q);
+    }
+  }
+
+  template <class NT> Poly<NT> cert_poly(const Certificate& c) const;
+
+  // sign^+ at `now` of a polynomial given by a builder (called with an NT tag), filter first.
+  template <class Build> int sign_plus_now(Build&& build) {
+    ++stats.sign_evaluations;
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      IntervalPoly f = build(Interval());
+      double lo, hi;
+      now.enclosure(lo, hi);
+      int s = interval_sign(f, lo, hi);
+      if (s != 0)
+        return s;
+    }
+    ++stats.sign_evaluations_exact;
+    return sign_plus(to_exact_poly(build(mpz_class())), now);
+  }
+
+  template <class Build> int sign_at_now(Build&& build) {
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      IntervalPoly f = build(Interval());
+      double lo, hi;
+      now.enclosure(lo, hi);
+      int s = interval_sign(f, lo, hi);
+      if (s != 0)
+        return s;
+    }
+    return sign_at(to_exact_poly(build(mpz_class())), now);
+  }
+
+  // ------------------------------------ certificates and their scheduling (engine_certificates.cpp)
+
+  int orientation_of(const std::array<VertexId, 4>& seq) const;
+  int orientation_sign_plus(const Simplex& t);
+  int new_cert(CertKind kind, const Simplex& key);
+  void kill_cert(int id);
+  void install(int id);
+  bool install_in_doubles(int id, const IntervalPoly& f);
+  bool schedule_first_change(int id, const IntervalPoly& f, int sign, double start, const CacheKey& key);
+  bool install_from_exact_coefficients(int id, const Poly<mpz_class>& f);
+  KeyPolynomial key_polynomial(const CacheKey& key) const;
+  CacheKey cache_key(const Certificate& c) const;
+  void mark_invalid(int id);
+  void install_facet(const Simplex& facet);
+  void install_radius(const Simplex& s);
+  bool compute_short(const Simplex& s);
+
+  // ------------------------------------ Del changes, frontier, membership (engine_membership.cpp)
+
+  bool in_k(const Simplex& s) const;
+  void change_tets(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+                   std::unordered_map<Simplex, bool, SimplexHash>& old_k);
+  bool is_short(const Simplex& s) const;
+  std::vector<Simplex> cofaces(const Simplex& s) const;
+  bool in_frontier(const Simplex& s) const;
+  void update_frontier(const Simplex& s);
+  bool gabriel_now(const Simplex& s);
+  bool has_coface_in_k(const Simplex& s);
+  void settle_membership(const std::unordered_map<Simplex, bool, SimplexHash>& old_k, Step& step);
+  std::vector<Simplex> current_complex() const;
+
+  // ------------------------------------ flips (MATH.md 4.5) and radius events (engine_flips.cpp)
+
+  void flip(const Simplex& facet, std::vector<Step>& steps);
+  void resolve_delaunay(std::vector<Step>& steps);
+  void resolve_radius(Step& settle, std::unordered_map<Simplex, bool, SimplexHash>& old_k);
+
+  // ------------------------------------ the event loop and batches (engine_event_loop.cpp)
+
+  EventTime event_time(bool at_frame) const;
+  void emit_batch(Observer& observer, std::vector<Step>& steps, bool at_frame);
+  void process_batch(std::vector<Step>& steps);
+  void run_slab(Observer& observer);
+
+  // ------------------------------------ static rebuilds with CGAL (engine_static_rebuild.cpp)
+
+  detail::StaticInput static_input(const std::vector<VertexId>& ids) const;
+  std::vector<VertexId> alive_ids() const;
+  void rebuild_static(std::unordered_map<Simplex, bool, SimplexHash>& old_k);
+  Rational rational_before_next_event() const;
+
+  // ------------------------------------ collisions (engine_collisions.cpp)
+
+  void check_collisions_at_frame(std::size_t k) const;
+  void check_collision(const Simplex& e) const;
+  void check_collisions_in_slab() const;
+
+  // ------------------------------------ frames, insertions, deletions (engine_frames.cpp)
+
+  void set_slab_motion(std::size_t k);
+  void reinstall_all();
+  void frame(Observer& observer, std::size_t k);
+  void insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps);
+  void record_tet_changes(Step& step, std::unordered_map<Simplex, bool, SimplexHash>& old_k);
+
+  // ------------------------------------ the run (engine_run.cpp)
+
+  void initialise(Observer& observer);
+  void run(Observer& observer);
+
+  // ------------------------------------ audit (engine_audit.cpp)
+
+  [[noreturn]] void audit_failure(const std::string& what) const;
+  void audit();
+};
+
+template <class NT> Poly<NT> Engine::cert_poly(const Certificate& c) const {
+  if (c.kind == CertKind::delaunay)
+    return delaunay_poly<NT>(c.key);
+  Poly<NT> f = radius_poly<NT>(c.key, pick(P, Pi, NT()), pick(Q, Qi, NT()));
+  // Positive while valid: -f while short, +f while long (MATH.md 3.1).
+  return faces.at(c.key).is_short ? -f : f;
+}
+
+} // namespace medusa::kinetic::detail

@@ -1,0 +1,118 @@
+// The audit: the structure checked exactly against static CGAL computations at a rational time.
+#include "engine.h"
+
+#include "medusa/kinetic/error.h"
+#include "static_delaunay.h"
+
+#include <algorithm>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+void Engine::audit_failure(const std::string& what) const {
+  throw InternalError("audit failed in slab " + std::to_string(slab) + " after u ~ " +
+                      std::to_string(now.approx()) + ": " + what);
+}
+
+void Engine::audit() {
+  ++stats.audits;
+  // A rational time strictly between now and the next event (or the slab end).
+  SlabTime upper(Rational(1));
+  for (auto copy = queue; !copy.empty(); copy.pop()) {
+    const QueueEntry& e = copy.top();
+    const Certificate& c = certs[e.cert];
+    if (c.alive && c.version == e.version) {
+      upper = e.u;
+      break;
+    }
+  }
+  if (!(now < upper))
+    return; // the slab has no room left (event at u = 1)
+  Rational q = rational_between(now, upper);
+  SlabTime at(q);
+  auto sign_q = [&](const ExactPoly& f) { return sign_at(f, at); };
+
+  // Combinatorial validity: every facet has two tetrahedra; Euler characteristic of S^3 is 0.
+  std::size_t nv = 1, ne = 0, nf = 0, nt = tri.tets().size();
+  std::unordered_set<Simplex, SimplexHash> edges;
+  for (const auto& kv : tri.facets()) {
+    if (kv.second.count != 2)
+      audit_failure("a facet does not have two tetrahedra");
+    ++nf;
+  }
+  for (const Simplex& t : tri.tets())
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = i + 1; j < 4; ++j)
+        edges.insert(Simplex{t[i], t[j]});
+  ne = edges.size();
+  for (char a : alive)
+    nv += a ? 1 : 0;
+  if (nv + nf != ne + nt)
+    audit_failure("the Euler characteristic of the augmented triangulation is not 0");
+  // Local Delaunay, exactly, at q.
+  for (const auto& kv : tri.facets()) {
+    ExactPoly f = to_exact_poly(delaunay_poly<mpz_class>(kv.first));
+    if (!CGAL::is_zero(f) && sign_q(f) <= 0) {
+      std::ostringstream os;
+      os << "facet " << kv.first << " is not locally Delaunay";
+      audit_failure(os.str());
+    }
+    auto it = facet_cert.find(kv.first);
+    if (it == facet_cert.end() || !certs[static_cast<std::size_t>(it->second)].alive)
+      audit_failure("a facet has no certificate");
+  }
+  // Radius flags and certificates.
+  mpz_class p = P, qq = Q;
+  for (const auto& kv : faces) {
+    ExactPoly f = to_exact_poly(radius_poly<mpz_class>(kv.first, p, qq));
+    bool is_short = sign_q(f) <= 0;
+    if (is_short != kv.second.is_short) {
+      std::ostringstream os;
+      os << "simplex " << kv.first << " has a wrong shortness flag";
+      audit_failure(os.str());
+    }
+    // Certificates exactly on the frontier (MATH.md 4.4).
+    bool certified = kv.second.cert >= 0 && certs[static_cast<std::size_t>(kv.second.cert)].alive;
+    if (certified != in_frontier(kv.first)) {
+      std::ostringstream os;
+      os << "simplex " << kv.first
+         << (certified ? " has a radius certificate outside the frontier"
+                       : " is on the frontier without a radius certificate");
+      audit_failure(os.str());
+    }
+  }
+  // The alpha complex against CGAL's static Fixed_alpha_shape_3 at q.
+  std::vector<Simplex> cgal_tets;
+  Rational rho2(CGAL::Gmpz(P.get_mpz_t()), CGAL::Gmpz(Q.get_mpz_t()));
+  std::vector<Simplex> expected = detail::static_alpha_complex(static_input(alive_ids()), q, rho2, cgal_tets);
+  std::unordered_set<Simplex, SimplexHash> cgal_set(cgal_tets.begin(), cgal_tets.end());
+  bool same_triangulation = cgal_set.size() == tri.tets().size();
+  for (const Simplex& t : tri.tets())
+    same_triangulation = same_triangulation && cgal_set.count(t);
+  if (!same_triangulation)
+    return; // a degenerate (identically cospherical) group triangulated differently (MATH.md 5.3)
+  ++stats.audits_compared_with_cgal;
+  std::sort(expected.begin(), expected.end());
+  std::vector<Simplex> ours = current_complex();
+  if (expected != ours) {
+    std::ostringstream os;
+    std::vector<Simplex> extra, missing;
+    std::set_difference(ours.begin(), ours.end(), expected.begin(), expected.end(),
+                        std::back_inserter(extra));
+    std::set_difference(expected.begin(), expected.end(), ours.begin(), ours.end(),
+                        std::back_inserter(missing));
+    os << "alpha complex differs from CGAL's: " << extra.size() << " extra";
+    if (!extra.empty())
+      os << " (e.g. " << extra.front() << ")";
+    os << ", " << missing.size() << " missing";
+    if (!missing.empty())
+      os << " (e.g. " << missing.front() << ")";
+    audit_failure(os.str());
+  }
+}
+
+} // namespace medusa::kinetic::detail

@@ -1,0 +1,278 @@
+// Certificates: their polynomials' orientation, creation and retirement, and installation (the
+// interval filter, root isolation in doubles, the exact path with the per-slab root cache), MATH.md 3.
+#include "engine.h"
+
+#include "medusa/kinetic/certificate_polynomials.h"
+#include "medusa/kinetic/error.h"
+#include "medusa/kinetic/interval_filter.h"
+#include "medusa/kinetic/root_isolation.h"
+
+#include <CGAL/FPU.h>
+
+#include <algorithm>
+#include <array>
+#include <memory>
+#include <sstream>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+namespace {
+
+// Parity of the permutation that sorts `seq` (+1 even, -1 odd).
+int permutation_sign(std::array<VertexId, 4> seq) {
+  int sign = 1;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      if (seq[i] > seq[j])
+        sign = -sign;
+  return sign;
+}
+
+} // namespace
+
+// The oriented sign of the 4-sequence seq (finite tetrahedron of Del).
+int Engine::orientation_of(const std::array<VertexId, 4>& seq) const {
+  Simplex sorted = Simplex::from_range(seq.begin(), seq.end());
+  auto it = orient.find(sorted);
+  if (it == orient.end()) {
+    std::ostringstream os;
+    os << "no orientation for tetrahedron " << sorted;
+    throw InternalError(os.str());
+  }
+  return it->second * permutation_sign(seq);
+}
+
+int Engine::orientation_sign_plus(const Simplex& t) {
+  return sign_plus_now([&](auto tag) {
+    using NT = decltype(tag);
+    return certificate::orientation<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(t[3]));
+  });
+}
+
+int Engine::new_cert(CertKind kind, const Simplex& key) {
+  int id;
+  if (!free_certs.empty()) {
+    id = free_certs.back();
+    free_certs.pop_back();
+  } else {
+    id = static_cast<int>(certs.size());
+    certs.emplace_back();
+  }
+  Certificate& c = certs[static_cast<std::size_t>(id)];
+  c.kind = kind;
+  c.key = key;
+  c.alive = true;
+  ++c.version;
+  return id;
+}
+
+void Engine::kill_cert(int id) {
+  if (id < 0)
+    return;
+  Certificate& c = certs[static_cast<std::size_t>(id)];
+  if (c.kind == CertKind::delaunay)
+    pending_delaunay.erase({c.key, id});
+  c.alive = false;
+  ++c.version;
+  free_certs.push_back(id);
+}
+
+// Evaluates a fresh certificate at `now`: schedules its next failure in (now, 1), or queues it in
+// the current batch when it is already invalid just after now (MATH.md 3.7, 3.9).
+void Engine::install(int id) {
+  ++stats.certificates_built;
+  Certificate& c = certs[static_cast<std::size_t>(id)];
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    IntervalPoly f = cert_poly<Interval>(c);
+    double lo, hi;
+    now.enclosure(lo, hi);
+    if (bernstein_sign_subdivided(f, lo, 4) > 0) {
+      ++stats.filter_settled;
+      return;
+    }
+    if (install_in_doubles(id, f))
+      return;
+  }
+  ++stats.exact_settled;
+  ++(c.kind == CertKind::delaunay ? stats.exact_delaunay : stats.exact_radius);
+  Poly<mpz_class> exact = cert_poly<mpz_class>(c);
+  if (install_from_exact_coefficients(id, exact)) {
+    ++stats.exact_filter_settled;
+    return;
+  }
+  ExactPoly f = to_exact_poly(exact);
+  if (CGAL::is_zero(f))
+    return; // identically zero: valid, never scheduled (MATH.md 3.9)
+  auto [slot, fresh] = root_cache.try_emplace(cache_key(c));
+  if (fresh)
+    slot->second = real_roots(f);
+  else
+    ++stats.root_cache_hits;
+  std::vector<AlgebraicReal> roots;
+  int s = sign_plus_from_roots(f, slot->second, now, &roots);
+  if (s < 0) {
+    ++stats.invalid_at_creation;
+    mark_invalid(id);
+    return;
+  }
+  if (!roots.empty()) {
+    ++stats.exact_scheduled;
+    queue.push({SlabTime(roots.front()), static_cast<std::uint32_t>(id), c.version});
+  }
+}
+
+// The fast path of install (MATH.md 3.8): the sign just after now and the next failure time,
+// isolated in double interval arithmetic. False when doubles cannot decide; nothing is changed then.
+bool Engine::install_in_doubles(int id, const IntervalPoly& f) {
+  const Certificate& c = certs[static_cast<std::size_t>(id)];
+  const CacheKey key = cache_key(c);
+  double lo, hi;
+  now.enclosure(lo, hi);
+  int sign;
+  const IsolatedRoot* current = now.isolated();
+  if (current != nullptr && lo < hi && current->key == key.v) {
+    // f is +-(the polynomial whose root is now): its only root in (lo, hi) is now itself, so its
+    // sign just after now is its sign at hi (the flipped facet, the toggled radius certificate).
+    sign = interval_sign(f, hi, hi);
+  } else {
+    // f keeps one sign on the enclosure of now: it does not vanish at now.
+    sign = interval_sign(f, lo, hi);
+  }
+  if (sign == 0 || !schedule_first_change(id, f, sign, hi, key))
+    return false;
+  ++stats.interval_settled;
+  return true;
+}
+
+// With the sign of f just after now known and no other root of f in (now, start]: isolates the
+// first sign change of f after start, then marks the certificate invalid or schedules its failure.
+// False when doubles cannot decide; nothing is changed then.
+bool Engine::schedule_first_change(int id, const IntervalPoly& f, int sign, double start,
+                                   const CacheKey& key) {
+  const Certificate& c = certs[static_cast<std::size_t>(id)];
+  FirstSignChange next = first_sign_change(f, start, 12);
+  if (next.status == FirstSignChange::Status::undecided || next.sign != sign)
+    return false;
+  if (sign < 0) {
+    ++stats.invalid_at_creation;
+    mark_invalid(id);
+    return true;
+  }
+  if (next.status == FirstSignChange::Status::root) {
+    ++stats.interval_scheduled;
+    auto root = std::make_shared<IsolatedRoot>();
+    root->enclosure = f;
+    root->lo = next.lo;
+    root->hi = next.hi;
+    root->sign_lo = sign;
+    root->key = key.v;
+    root->slab = slab;
+    root->exact = key_polynomial(key);
+    queue.push({SlabTime(std::move(root)), static_cast<std::uint32_t>(id), c.version});
+  }
+  return true;
+}
+
+// The second path, on the exact coefficients rounded outward to doubles (tight enclosures): at a
+// rational slab start (u = 0: t_0 and frames) the root at 0 of multiplicity m is divided out first,
+// which settles the lattice-degenerate certificates of CC3D's initial layout (MATH.md 5.5) without
+// CGAL. False when doubles cannot decide; nothing is changed then.
+bool Engine::install_from_exact_coefficients(int id, const Poly<mpz_class>& f) {
+  const bool at_zero = now.is_rational() && now.rational() == 0;
+  const int n = f.degree_bound();
+  int m = 0;
+  if (at_zero)
+    while (m <= n && f[m] == 0)
+      ++m;
+  if (m > n || n < 0)
+    return false; // identically zero: handled by the caller
+  CGAL::Protect_FPU_rounding<true> guard;
+  IntervalPoly g;
+  for (int i = n; i >= m; --i) {
+    IntervalPoly term{Interval(CGAL::to_interval(CGAL::Gmpz(f[i].get_mpz_t())))};
+    g = g * IntervalPoly(Interval(0), Interval(1)) + term;
+  }
+  if (!at_zero)
+    return install_in_doubles(id, g);
+  // f = u^m g and g(0) = f_m != 0: the sign just after 0 is the sign of f_m.
+  return schedule_first_change(id, g, sgn(f[m]) > 0 ? 1 : -1, 0.0,
+                               cache_key(certs[static_cast<std::size_t>(id)]));
+}
+
+KeyPolynomial Engine::key_polynomial(const CacheKey& key) const {
+  KeyPolynomial k;
+  k.kind = key.v[0];
+  k.rho2 = rho2_shared;
+  for (std::size_t i = 1; i < key.v.size() && key.v[i] != -2; ++i)
+    k.pts[static_cast<std::size_t>(k.count++)] = pt(key.v[i]);
+  return k;
+}
+
+CacheKey Engine::cache_key(const Certificate& c) const {
+  CacheKey k;
+  k.v.fill(-2);
+  std::vector<VertexId> pts;
+  if (c.kind == CertKind::radius) {
+    k.v[0] = 2;
+    pts.assign(c.key.begin(), c.key.end());
+  } else {
+    const detail::Triangulation::Apices* ap = tri.apices(c.key);
+    pts.assign(c.key.begin(), c.key.end());
+    pts.push_back(ap->v[0]);
+    pts.push_back(ap->v[1]);
+    bool infinite = std::find(pts.begin(), pts.end(), infinite_vertex) != pts.end();
+    k.v[0] = infinite ? 1 : 0;
+    if (infinite) {
+      // Case A: the finite tetrahedron; case B: the four finite points (MATH.md 3.2).
+      pts.erase(std::remove(pts.begin(), pts.end(), infinite_vertex), pts.end());
+    }
+    std::sort(pts.begin(), pts.end());
+  }
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    k.v[i + 1] = pts[i];
+  return k;
+}
+
+void Engine::mark_invalid(int id) {
+  const Certificate& c = certs[static_cast<std::size_t>(id)];
+  if (c.kind == CertKind::delaunay)
+    pending_delaunay.insert({c.key, id});
+  else
+    pending_radius.emplace_back(id, c.version);
+}
+
+void Engine::install_facet(const Simplex& facet) {
+  auto it = facet_cert.find(facet);
+  if (it != facet_cert.end()) {
+    kill_cert(it->second);
+    facet_cert.erase(it);
+  }
+  const detail::Triangulation::Apices* ap = tri.apices(facet);
+  if (ap == nullptr)
+    return;
+  if (ap->count != 2) {
+    std::ostringstream os;
+    os << "facet " << facet << " has " << ap->count << " tetrahedra";
+    throw InternalError(os.str());
+  }
+  int id = new_cert(CertKind::delaunay, facet);
+  facet_cert[facet] = id;
+  install(id);
+}
+
+void Engine::install_radius(const Simplex& s) {
+  Face& f = faces[s];
+  kill_cert(f.cert);
+  f.cert = new_cert(CertKind::radius, s);
+  install(f.cert);
+}
+
+bool Engine::compute_short(const Simplex& s) {
+  int sp = sign_plus_now(
+      [&](auto tag) { return radius_poly<decltype(tag)>(s, pick(P, Pi, tag), pick(Q, Qi, tag)); });
+  return sp <= 0; // f == 0 identically means R = rho: short (MATH.md 3.9)
+}
+
+} // namespace medusa::kinetic::detail

@@ -1,0 +1,63 @@
+// Collision checks: two cells at one position at a frame, or meeting inside a slab (MATH.md 2.5).
+#include "engine.h"
+
+#include "medusa/kinetic/error.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+void Engine::check_collisions_at_frame(std::size_t k) const {
+  std::vector<std::pair<GridPoint, std::size_t>> pos;
+  for (std::size_t i = 0; i < traj.cells.size(); ++i)
+    if (traj.cells[i].present(k))
+      pos.emplace_back(traj.cells[i].at(k), i);
+  std::sort(pos.begin(), pos.end());
+  for (std::size_t i = 1; i < pos.size(); ++i)
+    if (pos[i].first == pos[i - 1].first)
+      throw GeometryError("cells " + std::to_string(traj.cells[pos[i - 1].second].cell_id) + " and " +
+                          std::to_string(traj.cells[pos[i].second].cell_id) +
+                          " are at the same position at frame " + std::to_string(k) + " (time " +
+                          std::to_string(traj.frame_times[k]) + ")");
+}
+
+// Collision inside the slab (MATH.md 2.5): p_i(u) = p_j(u) for some u in (now, 1). Tested on the
+// Delaunay edges at the slab start and on every edge when it is created: colliding cells are
+// joined by a Delaunay edge just before they meet.
+void Engine::check_collision(const Simplex& e) const {
+  const MovingPoint &p = pt(e[0]), &q = pt(e[1]);
+  bool has = true, fixed = false;
+  mpq_class root(-1);
+  for (int i = 0; i < 3 && has; ++i) {
+    std::int64_t da = p.a[i] - q.a[i], db = p.b[i] - q.b[i];
+    if (db == 0) {
+      has = da == 0;
+      continue;
+    }
+    mpq_class r(mpz_class(-da), mpz_class(db));
+    r.canonicalize();
+    if (!fixed) {
+      root = r;
+      fixed = true;
+    } else if (root != r) {
+      has = false;
+    }
+  }
+  if (!has || !fixed || root <= 0 || root >= 1 || !(now < SlabTime(Rational(root.get_mpq_t()))))
+    return;
+  double t = double(traj.frame_times[slab]) +
+             root.get_d() * double(traj.frame_times[slab + 1] - traj.frame_times[slab]);
+  throw GeometryError("cells " + std::to_string(traj.cells[static_cast<std::size_t>(e[0])].cell_id) +
+                      " and " + std::to_string(traj.cells[static_cast<std::size_t>(e[1])].cell_id) +
+                      " collide at time " + std::to_string(t));
+}
+
+void Engine::check_collisions_in_slab() const {
+  for (const auto& kv : faces)
+    if (kv.first.size() == 2)
+      check_collision(kv.first);
+}
+
+} // namespace medusa::kinetic::detail

@@ -1,0 +1,86 @@
+// The event loop inside a slab: popping simultaneous failures from the queue, processing a batch
+// and emitting its ranked steps to the observer (MATH.md 5.2).
+#include "engine.h"
+
+#include <algorithm>
+#include <unordered_map>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+EventTime Engine::event_time(bool at_frame) const {
+  EventTime e;
+  e.batch = batch_index;
+  e.slab = slab;
+  e.u = now.approx();
+  double t0 = double(traj.frame_times[slab]);
+  double t1 = slab + 1 < traj.frames() ? double(traj.frame_times[slab + 1]) : t0;
+  e.time = t0 + e.u * (t1 - t0);
+  e.at_frame = at_frame;
+  return e;
+}
+
+void Engine::emit_batch(Observer& observer, std::vector<Step>& steps, bool at_frame) {
+  std::vector<Step> kept;
+  for (Step& s : steps)
+    if (s.kind != StepKind::settle || !s.entered.empty() || !s.left.empty())
+      kept.push_back(std::move(s));
+  if (kept.empty())
+    return;
+  ++batch_index;
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    kept[i].rank = i + 1;
+    auto by_dim = [](const Simplex& a, const Simplex& b) { return a < b; };
+    std::sort(kept[i].entered.begin(), kept[i].entered.end(), by_dim);
+    std::sort(kept[i].left.begin(), kept[i].left.end(), by_dim);
+  }
+  ++stats.batches;
+  if (at_frame)
+    ++stats.frame_batches;
+  observer.batch(event_time(at_frame), kept);
+}
+
+// Processes the batch at `now`: Delaunay failures first (canonical order), then radius events,
+// then the final re-evaluation (MATH.md 5.2).
+void Engine::process_batch(std::vector<Step>& steps) {
+  resolve_delaunay(steps);
+  std::unordered_map<Simplex, bool, SimplexHash> old_k;
+  Step settle;
+  settle.kind = StepKind::settle;
+  while (!pending_radius.empty()) {
+    resolve_radius(settle, old_k);
+    resolve_delaunay(steps);
+  }
+  // The closure: faces of cofaces matter only through the faces themselves, which old_k holds.
+  settle_membership(old_k, settle);
+  steps.push_back(std::move(settle));
+}
+
+void Engine::run_slab(Observer& observer) {
+  while (!queue.empty()) {
+    QueueEntry top = queue.top();
+    queue.pop();
+    const Certificate& c = certs[top.cert];
+    if (!c.alive || c.version != top.version)
+      continue;
+    now = top.u;
+    now.tighten();
+    mark_invalid(static_cast<int>(top.cert));
+    while (!queue.empty() && compare(queue.top().u, now) == 0) {
+      QueueEntry e = queue.top();
+      queue.pop();
+      const Certificate& ce = certs[e.cert];
+      if (ce.alive && ce.version == e.version)
+        mark_invalid(static_cast<int>(e.cert));
+    }
+    std::vector<Step> steps;
+    process_batch(steps);
+    emit_batch(observer, steps, false);
+    if (options.audit && ++batches_since_audit >= options.audit_stride) {
+      batches_since_audit = 0;
+      audit();
+    }
+  }
+}
+
+} // namespace medusa::kinetic::detail

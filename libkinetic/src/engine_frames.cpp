@@ -1,0 +1,109 @@
+// Frames: switching slabs, rebuilding every certificate, insertions and deletions (MATH.md 2.3, 5.6).
+#include "engine.h"
+
+#include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+void Engine::set_slab_motion(std::size_t k) {
+  slab = k;
+  for (std::size_t i = 0; i < traj.cells.size(); ++i) {
+    const Trajectory& c = traj.cells[i];
+    if (!c.present(k))
+      continue;
+    MovingPoint& m = motion[i];
+    const GridPoint& x = c.at(k);
+    m.a = {x[0], x[1], x[2]};
+    if (k + 1 < traj.frames() && c.present(k + 1)) {
+      const GridPoint& y = c.at(k + 1);
+      m.b = {y[0] - x[0], y[1] - x[1], y[2] - x[2]};
+    } else {
+      m.b = {0, 0, 0}; // ending at this frame: velocity 0 for this instant (MATH.md 5.6)
+    }
+  }
+}
+
+void Engine::reinstall_all() {
+  while (!queue.empty())
+    queue.pop();
+  root_cache.clear();
+  std::vector<Simplex> fs;
+  for (const auto& kv : tri.facets())
+    fs.push_back(kv.first);
+  for (const Simplex& f : fs)
+    install_facet(f);
+  std::vector<Simplex> rs;
+  for (const auto& kv : faces)
+    if (kv.second.cert >= 0)
+      rs.push_back(kv.first);
+  for (const Simplex& s : rs)
+    install_radius(s);
+}
+
+void Engine::frame(Observer& observer, std::size_t k) {
+  // Slab k-1 ended at t_k; switch to slab k and rebuild every certificate (MATH.md 2.3, 5.6).
+  // At t_0 the structure was just built (initialise); only cells present at t_0 alone are deleted.
+  std::vector<Step> steps;
+  if (k > 0) {
+    check_collisions_at_frame(k);
+    set_slab_motion(k);
+    now = SlabTime();
+    reinstall_all();
+    resolve_delaunay(steps);
+  }
+  // Insertions, then deletions, one rank each in increasing cell id (MATH.md 5.6).
+  std::vector<std::pair<std::int64_t, VertexId>> born, dying;
+  for (std::size_t i = 0; i < traj.cells.size(); ++i) {
+    const Trajectory& c = traj.cells[i];
+    if (c.first_frame == k && k > 0)
+      born.emplace_back(c.cell_id, static_cast<VertexId>(i));
+    if (c.last_frame() == k && k + 1 < traj.frames() && alive[i])
+      dying.emplace_back(c.cell_id, static_cast<VertexId>(i));
+  }
+  std::sort(born.begin(), born.end());
+  std::sort(dying.begin(), dying.end());
+  for (const auto& cell_vertex : born)
+    insert_or_delete(cell_vertex.second, true, steps);
+  for (const auto& cell_vertex : dying)
+    insert_or_delete(cell_vertex.second, false, steps);
+  process_batch(steps); // radius events at the frame, then the final re-evaluation (MATH.md 5.6 step 5)
+  check_collisions_in_slab();
+  emit_batch(observer, steps, true);
+  if (k > 0)
+    observer.frame(k, event_time(true));
+  if (options.audit)
+    audit();
+}
+
+// One insertion or deletion of vertex v at the current frame, as its own rank (MATH.md 5.6), with
+// the Delaunay changes made by a static rebuild and the membership re-evaluated around them.
+void Engine::insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps) {
+  Step step;
+  step.kind = insert ? StepKind::insertion : StepKind::deletion;
+  step.vertex = v;
+  std::unordered_map<Simplex, bool, SimplexHash> old_k;
+  old_k.emplace(Simplex{v}, !insert);
+  alive[static_cast<std::size_t>(v)] = insert ? 1 : 0;
+  record_tet_changes(step, old_k);
+  settle_membership(old_k, step);
+  step.rank = steps.size() + 1;
+  steps.push_back(std::move(step));
+  ++(insert ? stats.insertions : stats.deletions);
+  resolve_delaunay(steps);
+}
+
+void Engine::record_tet_changes(Step& step, std::unordered_map<Simplex, bool, SimplexHash>& old_k) {
+  std::unordered_set<Simplex, SimplexHash> before(tri.tets().begin(), tri.tets().end());
+  rebuild_static(old_k);
+  for (const Simplex& t : before)
+    if (is_finite(t) && !tri.has_tet(t))
+      step.delaunay_removed.push_back(t);
+  for (const Simplex& t : tri.tets())
+    if (is_finite(t) && !before.count(t))
+      step.delaunay_created.push_back(t);
+}
+
+} // namespace medusa::kinetic::detail

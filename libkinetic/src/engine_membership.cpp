@@ -1,0 +1,216 @@
+// Triangulation changes and the alpha complex on them: replacing tetrahedra, cofaces, the frontier
+// of radius certificates (MATH.md 4.4), the Gabriel test and membership re-evaluation (4.5).
+#include "engine.h"
+
+#include "face.h"
+#include "medusa/kinetic/certificate_polynomials.h"
+#include "medusa/kinetic/error.h"
+
+#include <algorithm>
+#include <array>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+bool Engine::in_k(const Simplex& s) const {
+  if (s.size() == 1)
+    return alive[static_cast<std::size_t>(s[0])] != 0;
+  auto it = faces.find(s);
+  return it != faces.end() && it->second.in_k;
+}
+
+// Replaces tetrahedra; records the old membership of every touched finite simplex.
+void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+                         std::unordered_map<Simplex, bool, SimplexHash>& old_k) {
+  std::unordered_set<Simplex, SimplexHash> touched_faces, touched_facets;
+  for (const auto* list : {&removed, &added})
+    for (const Simplex& t : *list) {
+      for_each_face(t, [&](const Simplex& f) {
+        touched_faces.insert(f);
+        old_k.emplace(f, in_k(f));
+      });
+      for (std::size_t i = 0; i < 4; ++i)
+        touched_facets.insert(t.facet(i));
+    }
+  for (const Simplex& t : removed) {
+    tri.remove_tet(t);
+    orient.erase(t);
+  }
+  for (const Simplex& t : added) {
+    tri.add_tet(t);
+    if (is_finite(t)) {
+      int s = orientation_sign_plus(t);
+      if (s == 0) {
+        std::ostringstream os;
+        os << "cells " << t << " stay coplanar but form a Delaunay tetrahedron";
+        throw GeometryError(os.str());
+      }
+      orient[t] = s;
+    }
+  }
+  for (const Simplex& f : touched_faces) {
+    if (f.size() == 1)
+      continue;
+    bool present = !tri.tets_containing(f).empty();
+    auto it = faces.find(f);
+    if (!present && it != faces.end()) {
+      kill_cert(it->second.cert);
+      faces.erase(it);
+    } else if (present && it == faces.end()) {
+      if (f.size() == 2 && slab + 1 < traj.frames())
+        check_collision(f);
+      Face& face = faces[f];
+      face.is_short = compute_short(f);
+    }
+  }
+  // Frontier membership of every surviving touched simplex: their cofaces changed (MATH.md 4.4,
+  // "after any change of Del"). Cofaces of new simplices are new, hence touched as well.
+  for (const Simplex& f : touched_faces)
+    if (f.size() > 1 && faces.count(f))
+      update_frontier(f);
+  for (const Simplex& f : touched_facets)
+    install_facet(f);
+}
+
+bool Engine::is_short(const Simplex& s) const {
+  if (s.size() == 1)
+    return true;
+  auto it = faces.find(s);
+  return it != faces.end() && it->second.is_short;
+}
+
+// The (k+1)-cofaces of a finite simplex in Del (finite ones only).
+std::vector<Simplex> Engine::cofaces(const Simplex& s) const {
+  std::set<Simplex> result;
+  for (const Simplex& t : tri.tets_containing(s)) {
+    if (!is_finite(t))
+      continue;
+    if (s.size() == 3) {
+      result.insert(t);
+      continue;
+    }
+    for (VertexId v : t)
+      if (!s.contains(v)) {
+        std::array<VertexId, 4> w{};
+        std::size_t k = 0;
+        for (VertexId x : s)
+          w[k++] = x;
+        w[k++] = v;
+        result.insert(Simplex::from_range(w.begin(), w.begin() + k));
+      }
+  }
+  return {result.begin(), result.end()};
+}
+
+// The frontier (MATH.md 4.4): maximal short simplices and minimal long ones.
+bool Engine::in_frontier(const Simplex& s) const {
+  if (is_short(s)) {
+    for (const Simplex& c : cofaces(s))
+      if (is_short(c))
+        return false;
+    return true;
+  }
+  if (s.size() == 2)
+    return true;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (!is_short(s.facet(i)))
+      return false;
+  return true;
+}
+
+// Creates or drops the radius certificate of s so that exactly the frontier carries one.
+void Engine::update_frontier(const Simplex& s) {
+  Face& f = faces.at(s);
+  bool want = in_frontier(s);
+  if (want && f.cert < 0)
+    install_radius(s);
+  else if (!want && f.cert >= 0) {
+    kill_cert(f.cert);
+    f.cert = -1;
+  }
+}
+
+bool Engine::gabriel_now(const Simplex& s) {
+  // Not strictly inside the smallest circumball: sign^+ of G1/G2 >= 0 (MATH.md 3.4, 4.1 Lemma 4.2).
+  std::set<VertexId> link;
+  for (const Simplex& t : tri.tets_containing(s))
+    for (VertexId v : t)
+      if (v != infinite_vertex && !s.contains(v))
+        link.insert(v);
+  for (VertexId x : link) {
+    int g = sign_plus_now([&](auto tag) {
+      using NT = decltype(tag);
+      return s.size() == 2 ? certificate::gabriel_edge<NT>(pt(s[0]), pt(s[1]), pt(x))
+                           : certificate::gabriel_triangle<NT>(pt(s[0]), pt(s[1]), pt(s[2]), pt(x));
+    });
+    if (g < 0)
+      return false;
+  }
+  return true;
+}
+
+bool Engine::has_coface_in_k(const Simplex& s) {
+  for (const Simplex& t : tri.tets_containing(s)) {
+    if (!is_finite(t))
+      continue;
+    if (s.size() == 3) {
+      if (in_k(t))
+        return true;
+      continue;
+    }
+    for (VertexId v : t)
+      if (!s.contains(v)) {
+        std::array<VertexId, 3> tv{s[0], s[1], v};
+        if (in_k(Simplex::from_range(tv.begin(), tv.end())))
+          return true;
+      }
+  }
+  return false;
+}
+
+// Re-evaluates membership (MATH.md 4.5 "re-eval") on the touched simplices, in decreasing
+// dimension, and fills the step's entered/left lists.
+void Engine::settle_membership(const std::unordered_map<Simplex, bool, SimplexHash>& old_k, Step& step) {
+  std::vector<Simplex> order;
+  order.reserve(old_k.size());
+  for (const auto& kv : old_k)
+    order.push_back(kv.first);
+  std::sort(order.begin(), order.end(), [](const Simplex& a, const Simplex& b) { return b < a; });
+  for (const Simplex& s : order) {
+    if (s.size() == 1)
+      continue;
+    auto it = faces.find(s);
+    if (it == faces.end())
+      continue;
+    Face& f = it->second;
+    if (s.size() == 4)
+      f.in_k = f.is_short;
+    else
+      f.in_k = (f.is_short && !has_coface_in_k(s) && gabriel_now(s)) || has_coface_in_k(s);
+  }
+  for (auto it = order.rbegin(); it != order.rend(); ++it) {
+    bool before = old_k.at(*it), after = in_k(*it);
+    if (before && !after)
+      step.left.push_back(*it);
+    else if (!before && after)
+      step.entered.push_back(*it);
+  }
+}
+
+std::vector<Simplex> Engine::current_complex() const {
+  std::vector<Simplex> k;
+  for (std::size_t i = 0; i < alive.size(); ++i)
+    if (alive[i])
+      k.push_back(Simplex{static_cast<VertexId>(i)});
+  for (const auto& kv : faces)
+    if (kv.second.in_k)
+      k.push_back(kv.first);
+  std::sort(k.begin(), k.end());
+  return k;
+}
+
+} // namespace medusa::kinetic::detail

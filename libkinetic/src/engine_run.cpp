@@ -1,0 +1,66 @@
+// The whole run: construction, the initial complex at t_0 and the loop over slabs.
+#include "engine.h"
+
+#include "medusa/kinetic/error.h"
+
+#include <chrono>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+Engine::Engine(const Trajectories& t, KineticOptions o) : traj(t), options(std::move(o)) {
+  P = options.rho2.num;
+  Q = options.rho2.den;
+  Pi = Interval(CGAL::to_interval(CGAL::Gmpz(P.get_mpz_t())));
+  Qi = Interval(CGAL::to_interval(CGAL::Gmpz(Q.get_mpz_t())));
+  rho2_shared = std::make_shared<const SquaredRadius>(options.rho2);
+  motion.resize(traj.cells.size());
+  alive.assign(traj.cells.size(), 0);
+}
+
+void Engine::initialise(Observer& observer) {
+  check_collisions_at_frame(0);
+  set_slab_motion(0);
+  now = SlabTime();
+  for (std::size_t i = 0; i < traj.cells.size(); ++i)
+    alive[i] = traj.cells[i].present(0) && traj.cells[i].first_frame == 0;
+  std::unordered_map<Simplex, bool, SimplexHash> old_k;
+  rebuild_static(old_k);
+  std::vector<Step> ignored;
+  resolve_delaunay(ignored); // Del(t0+) (MATH.md 5.5): fix what the frozen delta left
+  pending_radius.clear();
+  // Membership of every simplex, in decreasing dimension (MATH.md 4.6).
+  std::unordered_map<Simplex, bool, SimplexHash> all;
+  for (const auto& kv : faces)
+    all.emplace(kv.first, false);
+  Step step;
+  settle_membership(all, step);
+  check_collisions_in_slab();
+  observer.initial(event_time(true), current_complex());
+  if (options.audit)
+    audit();
+}
+
+void Engine::run(Observer& observer) {
+  traj.validate();
+  if (traj.dimension != 3)
+    throw GeometryError("the run is two-dimensional: the 3D kinetic alpha complex needs a 3D run");
+  auto clock = std::chrono::steady_clock::now();
+  initialise(observer);
+  for (std::size_t k = 0; k + 1 < traj.frames(); ++k) {
+    frame(observer, k);
+    run_slab(observer);
+    auto t = std::chrono::steady_clock::now();
+    stats.seconds_per_frame.push_back(std::chrono::duration<double>(t - clock).count());
+    clock = t;
+  }
+  // t_end: the reported state is K(t_end-) (MATH.md conventions).
+  slab = traj.frames() - 1;
+  now = SlabTime();
+  ++batch_index; // t_end is later than every batch: cells alive at the end die there
+  observer.finish(event_time(true));
+}
+
+} // namespace medusa::kinetic::detail

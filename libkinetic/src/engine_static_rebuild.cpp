@@ -1,0 +1,73 @@
+// Static rebuilds of Del with CGAL at now+ (insertions, deletions, repairs; MATH.md 5.4, 5.5).
+#include "engine.h"
+
+#include "medusa/kinetic/error.h"
+#include "static_delaunay.h"
+
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+detail::StaticInput Engine::static_input(const std::vector<VertexId>& ids) const {
+  detail::StaticInput in;
+  for (VertexId v : ids) {
+    in.ids.push_back(v);
+    in.motion.push_back(pt(v));
+  }
+  return in;
+}
+
+std::vector<VertexId> Engine::alive_ids() const {
+  std::vector<VertexId> ids;
+  for (std::size_t i = 0; i < alive.size(); ++i)
+    if (alive[i])
+      ids.push_back(static_cast<VertexId>(i));
+  return ids;
+}
+
+// Rebuilds Del of the current vertex set at now+ with CGAL and replaces the differing tetrahedra.
+void Engine::rebuild_static(std::unordered_map<Simplex, bool, SimplexHash>& old_k) {
+  ++stats.static_rebuilds;
+  std::vector<VertexId> ids = alive_ids();
+  int dimension = 0;
+  std::vector<Simplex> tets =
+      now.is_rational() ? detail::delaunay_just_after(static_input(ids), now.rational(), dimension)
+                        : detail::delaunay_at(static_input(ids), rational_before_next_event(), dimension);
+  if (dimension < 3) {
+    if (ids.size() < 4)
+      throw GeometryError("fewer than 4 cells are present at frame " + std::to_string(slab) +
+                          ": the 3D alpha complex needs at least 4");
+    throw GeometryError("all cells lie in one plane at frame " + std::to_string(slab) +
+                        " (a 2D run given as 3D data?): the 3D method needs cells spanning space");
+  }
+  std::unordered_set<Simplex, SimplexHash> target(tets.begin(), tets.end());
+  std::vector<Simplex> removed, added;
+  for (const Simplex& t : tri.tets())
+    if (!target.count(t))
+      removed.push_back(t);
+  for (const Simplex& t : tets)
+    if (!tri.has_tet(t))
+      added.push_back(t);
+  change_tets(removed, added, old_k);
+}
+
+// A rational q in (now, next event) (or (now, 1) without one): Del at q is Del(now+) except where a
+// certificate fails in (now, q], and those failures are found at now+ and flipped by the caller
+// (static repair at an algebraic time, MATH.md 5.4).
+Rational Engine::rational_before_next_event() const {
+  SlabTime upper(Rational(1));
+  for (auto copy = queue; !copy.empty(); copy.pop()) {
+    const QueueEntry& e = copy.top();
+    const Certificate& c = certs[e.cert];
+    if (c.alive && c.version == e.version && now < e.u) {
+      upper = e.u;
+      break;
+    }
+  }
+  return rational_between(now, upper);
+}
+
+} // namespace medusa::kinetic::detail

@@ -1,0 +1,36 @@
+// The alpha-complex state of a finite simplex of Del (shortness, membership, radius certificate),
+// and the enumeration of the finite faces of a simplex.
+#pragma once
+
+#include "medusa/kinetic/simplex.h"
+#include "triangulation.h"
+
+#include <array>
+#include <cstddef>
+
+namespace medusa::kinetic::detail {
+
+struct Face {
+  bool is_short = false;
+  bool in_k = false;
+  int cert = -1;
+};
+
+template <class F> void for_each_face(const Simplex& t, F&& f) {
+  // Every non-empty subset of the vertices of t that avoids the infinite vertex.
+  const std::size_t n = t.size();
+  for (unsigned mask = 1; mask < (1u << n); ++mask) {
+    std::array<VertexId, 4> v{};
+    std::size_t k = 0;
+    bool finite = true;
+    for (std::size_t i = 0; i < n; ++i)
+      if (mask & (1u << i)) {
+        v[k++] = t[i];
+        finite = finite && t[i] != infinite_vertex;
+      }
+    if (finite)
+      f(Simplex::from_range(v.begin(), v.begin() + k));
+  }
+}
+
+} // namespace medusa::kinetic::detail

@@ -1,0 +1,32 @@
+// The exact polynomial behind a root-cache key (MATH.md 3.1, 3.8).
+#include "root_cache.h"
+
+#include "medusa/kinetic/certificate_polynomials.h"
+
+namespace medusa::kinetic::detail {
+
+ExactPoly KeyPolynomial::operator()() const {
+  Poly<mpz_class> f;
+  const auto& p = pts;
+  if (kind == 0)
+    f = certificate::in_sphere<mpz_class>(p[0], p[1], p[2], p[3], p[4]);
+  else if (kind == 1)
+    f = certificate::orientation<mpz_class>(p[0], p[1], p[2], p[3]);
+  else if (count == 2)
+    f = certificate::edge_radius<mpz_class>(p[0], p[1], rho2->num, rho2->den);
+  else if (count == 3)
+    f = certificate::triangle_radius<mpz_class>(p[0], p[1], p[2], rho2->num, rho2->den);
+  else
+    f = certificate::tetrahedron_radius<mpz_class>(p[0], p[1], p[2], p[3], rho2->num, rho2->den);
+  // Divide out u^m: the same roots in (0, 1], and no root at 0, where an isolating interval
+  // starting at a frame may begin (CGAL's algebraic reals need a polynomial non-zero at the ends).
+  Poly<mpz_class> g;
+  int m = 0;
+  while (m < f.degree_bound() && f[m] == 0)
+    ++m;
+  for (int i = f.degree_bound(); i >= m; --i)
+    g = g * Poly<mpz_class>(mpz_class(0), mpz_class(1)) + Poly<mpz_class>(f[i]);
+  return to_exact_poly(g);
+}
+
+} // namespace medusa::kinetic::detail

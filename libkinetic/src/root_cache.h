@@ -1,0 +1,45 @@
+// The per-slab root cache (MATH.md 3.8, caching): certificates built on the same points share their
+// polynomial up to sign, hence its roots. A key names the polynomial; KeyPolynomial rebuilds it.
+#pragma once
+
+#include "medusa/kinetic/algebraic_time.h"
+#include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "medusa/kinetic/moving_point.h"
+#include "medusa/kinetic/simplex.h"
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <unordered_map>
+
+namespace medusa::kinetic::detail {
+
+// The kind of polynomial (0 in-sphere, 1 orientation, 2 radius), then its points, -2 padded.
+struct CacheKey {
+  std::array<VertexId, 6> v;
+  bool operator==(const CacheKey& o) const { return v == o.v; }
+};
+struct CacheKeyHash {
+  std::size_t operator()(const CacheKey& k) const {
+    std::size_t h = 0;
+    for (VertexId x : k.v)
+      h = h * 0x9E3779B97F4A7C15ULL + static_cast<std::size_t>(x + 3);
+    return h;
+  }
+};
+
+using RootCache = std::unordered_map<CacheKey, RealRoots, CacheKeyHash>;
+
+// The exact polynomial behind a root-cache key, up to sign (MATH.md 3.1): the in-sphere determinant
+// of five points, the orientation of four, or the radius polynomial of a simplex. It copies the
+// points' motion, so it stays valid after the triangulation has moved on within the slab.
+struct KeyPolynomial {
+  int kind = 0; // 0 in-sphere, 1 orientation, 2 radius (as CacheKey::v[0])
+  int count = 0;
+  std::array<MovingPoint, 5> pts{};
+  std::shared_ptr<const SquaredRadius> rho2;
+
+  ExactPoly operator()() const;
+};
+
+} // namespace medusa::kinetic::detail
