@@ -197,9 +197,16 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   // The diagrams go into the store too (group /persistence, docs/FORMAT.md), written atomically.
   persistence::write_diagrams(output, diagrams);
   check_interrupted();
-  std::vector<persistence::Diagram> shown;
-  for (const persistence::Diagram& d : diagrams)
-    shown.push_back(persistence::without_zero_length(d));
+  // From here on only positive-length pairs are shown (the summary skips zero-length ones too), so
+  // they are dropped in place rather than copied: the diagrams are the largest structure of this stage.
+  for (persistence::Diagram& d : diagrams) {
+    auto& pairs = d.pairs;
+    pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
+                               [](const persistence::PersistencePair& q) { return q.zero_length; }),
+                pairs.end());
+    pairs.shrink_to_fit();
+  }
+  const std::vector<persistence::Diagram>& shown = diagrams;
   check_interrupted();
 
   const double t0 = static_cast<double>(medusa.input.frame_times.front());
