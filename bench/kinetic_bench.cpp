@@ -143,10 +143,12 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
   double built = double(s.certificates_built);
   const double doubles = double(s.filter_settled + s.interval_settled);
   std::printf("certificates built %zu; settled in doubles %.2f%% (target >= 99%%): %zu by the Bernstein "
-              "filter, %zu by root isolation (%zu with a failure time); exact %zu; sign evaluations %zu "
+              "filter, %zu by root isolation; exact %zu (%zu of them isolated in doubles on exact "
+              "coefficients, without CGAL); %zu failure times isolated in doubles; sign evaluations %zu "
               "(exact %.2f%%)\n",
               s.certificates_built, built > 0 ? 100.0 * doubles / built : 0.0, s.filter_settled,
-              s.interval_settled, s.interval_scheduled, s.exact_settled, s.sign_evaluations,
+              s.interval_settled, s.exact_settled, s.exact_filter_settled, s.interval_scheduled,
+              s.sign_evaluations,
               s.sign_evaluations ? 100.0 * s.sign_evaluations_exact / s.sign_evaluations : 0.0);
   std::printf(
       "exact certificates: %zu Delaunay, %zu radius; %zu with a failure time in the slab, %zu invalid "

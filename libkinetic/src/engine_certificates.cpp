@@ -92,8 +92,10 @@ void Engine::install(int id) {
       ++stats.filter_settled;
       return;
     }
-    if (install_in_doubles(id, f))
+    if (install_in_doubles(id, f)) {
+      ++stats.interval_settled;
       return;
+    }
   }
   ++stats.exact_settled;
   ++(c.kind == CertKind::delaunay ? stats.exact_delaunay : stats.exact_radius);
@@ -140,10 +142,7 @@ bool Engine::install_in_doubles(int id, const IntervalPoly& f) {
     // f keeps one sign on the enclosure of now: it does not vanish at now.
     sign = interval_sign(f, lo, hi);
   }
-  if (sign == 0 || !schedule_first_change(id, f, sign, hi, key))
-    return false;
-  ++stats.interval_settled;
-  return true;
+  return sign != 0 && schedule_first_change(id, f, sign, hi, key);
 }
 
 // With the sign of f just after now known and no other root of f in (now, start]: isolates the

@@ -36,10 +36,11 @@ struct KineticStatistics {
   std::size_t repairs_at_algebraic_times = 0; // static repairs inside a slab (MATH.md 5.4)
   std::size_t certificates_built = 0;         // certificates created (Delaunay and radius)
   std::size_t filter_settled = 0;             // settled by the interval Bernstein filter
-  std::size_t interval_settled = 0;     // settled in doubles by certified root isolation (root_isolation.h)
-  std::size_t interval_scheduled = 0;   // of which had a failure time in the slab
-  std::size_t exact_settled = 0;        // needed exact arithmetic (GMP and root isolation)
-  std::size_t exact_filter_settled = 0; // of which settled by the filter on exact coefficients
+  std::size_t interval_settled = 0; // settled in doubles by certified root isolation (root_isolation.h)
+  std::size_t interval_scheduled =
+      0;                         // failure times isolated in doubles, on intervals or on exact coefficients
+  std::size_t exact_settled = 0; // needed exact arithmetic (GMP and root isolation)
+  std::size_t exact_filter_settled = 0;             // of which settled by the filter on exact coefficients
   std::size_t exact_delaunay = 0, exact_radius = 0; // of which Delaunay / radius certificates
   std::size_t exact_scheduled = 0;                  // of which had a failure time in the slab
   std::size_t invalid_at_creation = 0;              // of which were invalid just after creation
