@@ -135,7 +135,7 @@ void read_cells(hid_t file, Medusa& m, std::uint64_t count, const std::string& p
 
 } // namespace
 
-Medusa read_store(const std::string& path) {
+Medusa read_store(const std::string& path, const StoreReadOptions& options) {
   h5::Quiet quiet;
   Handle file = h5::file_handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
   if (!file.valid())
@@ -168,10 +168,12 @@ Medusa read_store(const std::string& path) {
   m.end.rank = static_cast<std::uint32_t>(h5::read_uint_attribute(f, L::end_rank, path));
   m.end.time = h5::read_double_attribute(f, L::end_time, path);
   read_input(f, m, path);
-  read_events(f, m, path);
-  if (m.batches.size() != h5::read_uint_attribute(f, L::batch_count, path) ||
-      m.frames.size() != h5::read_uint_attribute(f, L::frame_count, path))
-    corrupt(path, "batch_count or frame_count does not match /events");
+  if (options.events) {
+    read_events(f, m, path);
+    if (m.batches.size() != h5::read_uint_attribute(f, L::batch_count, path) ||
+        m.frames.size() != h5::read_uint_attribute(f, L::frame_count, path))
+      corrupt(path, "batch_count or frame_count does not match /events");
+  }
   read_cells(f, m, h5::read_uint_attribute(f, L::cell_count, path), path);
   if (!file.reset())
     h5::fail(path, "cannot close it");

@@ -25,7 +25,9 @@ Diagram make_diagram(const std::vector<complex::Cell>& cells, const Filtration& 
   Diagram diagram;
   diagram.direction = filtration.direction;
   diagram.cell_type = filtration.cell_type;
-  diagram.pairs.reserve(pairs.size());
+  // Every column is in one pair or essential: reserve exactly (the diagrams are the largest
+  // structure after the medusa itself).
+  diagram.pairs.reserve(pairs.size() <= filtration.size() / 2 ? filtration.size() - pairs.size() : 0);
   for (const auto& [b, d] : pairs) {
     if (b < 0 || d <= b || d >= n || in_pair[static_cast<std::size_t>(b)] ||
         in_pair[static_cast<std::size_t>(d)])
@@ -44,8 +46,8 @@ Diagram make_diagram(const std::vector<complex::Cell>& cells, const Filtration& 
     p.death_index = d;
     p.birth_cell = birth_cell.id;
     p.death_cell = death_cell.id;
-    p.birth_vertices = birth_cell.vertices;
-    p.death_vertices = death_cell.vertices;
+    p.birth_position = filtration.cells[static_cast<std::size_t>(b)];
+    p.death_position = filtration.cells[static_cast<std::size_t>(d)];
     p.zero_length = p.birth_time.batch == p.death_time.batch;
     diagram.pairs.push_back(std::move(p));
   }
@@ -63,7 +65,7 @@ Diagram make_diagram(const std::vector<complex::Cell>& cells, const Filtration& 
     p.death = forward ? infinity : -infinity;
     p.birth_index = j;
     p.birth_cell = c.id;
-    p.birth_vertices = c.vertices;
+    p.birth_position = filtration.cells[static_cast<std::size_t>(j)];
     p.essential = true;
     diagram.pairs.push_back(std::move(p));
   }
@@ -72,6 +74,28 @@ Diagram make_diagram(const std::vector<complex::Cell>& cells, const Filtration& 
               return a.dim != b.dim ? a.dim < b.dim : a.birth_index < b.birth_index;
             });
   return diagram;
+}
+
+namespace {
+
+const complex::Cell& cell_at_position(const std::vector<complex::Cell>& cells, std::size_t position) {
+  if (position >= cells.size())
+    throw InternalError("diagram: cell position " + std::to_string(position) + " outside a vector of " +
+                        std::to_string(cells.size()) + " cells");
+  return cells[position];
+}
+
+} // namespace
+
+const std::vector<kinetic::VertexId>& birth_vertices(const PersistencePair& p,
+                                                     const std::vector<complex::Cell>& cells) {
+  return cell_at_position(cells, p.birth_position).vertices;
+}
+
+const std::vector<kinetic::VertexId>& death_vertices(const PersistencePair& p,
+                                                     const std::vector<complex::Cell>& cells) {
+  static const std::vector<kinetic::VertexId> none;
+  return p.essential ? none : cell_at_position(cells, p.death_position).vertices;
 }
 
 std::vector<PersistencePair> pairs_in_dimension(const Diagram& diagram, int k, bool keep_zero_length) {

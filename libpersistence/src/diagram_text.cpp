@@ -14,7 +14,7 @@ void put_double(std::ostream& out, double value) {
 
 } // namespace
 
-void write_diagram_text(std::ostream& out, const Diagram& diagram) {
+void write_diagram_text(std::ostream& out, const Diagram& diagram, const std::vector<complex::Cell>& cells) {
   out << "# medusa diagram direction=" << (diagram.direction == Direction::forward ? "forward" : "reverse")
       << " cell_type=" << diagram.cell_type << " points=" << diagram.pairs.size() << '\n';
   for (const auto& p : diagram.pairs) {
@@ -25,10 +25,10 @@ void write_diagram_text(std::ostream& out, const Diagram& diagram) {
     out << ' ' << p.birth_time.batch << ' ' << p.birth_time.rank << ' ' << p.death_time.batch << ' '
         << p.death_time.rank << ' ' << p.birth_index << ' ' << p.death_index << ' ' << p.birth_cell << ' '
         << p.death_cell << ' ' << int(p.essential) << ' ' << int(p.zero_length);
-    for (auto v : p.birth_vertices)
+    for (auto v : birth_vertices(p, cells))
       out << ' ' << v;
     out << " |";
-    for (auto v : p.death_vertices)
+    for (auto v : death_vertices(p, cells))
       out << ' ' << v;
     out << '\n';
   }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <exception>
 #include <thread>
 
@@ -63,35 +64,28 @@ Diagram audited_diagram(const std::vector<complex::Cell>& cells, const Filtratio
 
 } // namespace
 
-std::vector<Filtration> make_medusa_filtrations(const std::vector<complex::Cell>& cells,
-                                                const std::vector<int>& vertex_type,
-                                                const std::vector<int>& types, unsigned threads) {
-  const auto jobs = medusa_jobs(types);
-  std::vector<Filtration> filtrations(jobs.size());
-  for_each_index(jobs.size(), threads,
-                 [&](std::size_t i) { filtrations[i] = make_job_filtration(cells, vertex_type, jobs[i]); });
-  return filtrations;
-}
-
-std::vector<Diagram> reduce_medusa_filtrations(const std::vector<complex::Cell>& cells,
-                                               std::vector<Filtration>&& filtrations, unsigned threads) {
-  std::vector<Diagram> diagrams(filtrations.size());
-  for_each_index(filtrations.size(), threads, [&](std::size_t i) {
-    diagrams[i] = audited_diagram(cells, filtrations[i]);
-    filtrations[i] = Filtration{};
-  });
-  return diagrams;
-}
-
-// One task per filtration, built and reduced in turn: at most `threads` filtrations are alive at once.
 std::vector<Diagram> compute_medusa_diagrams(const std::vector<complex::Cell>& cells,
                                              const std::vector<int>& vertex_type,
-                                             const std::vector<int>& types, unsigned threads) {
+                                             const std::vector<int>& types, unsigned threads,
+                                             DiagramPhaseSeconds* phases) {
   const auto jobs = medusa_jobs(types);
   std::vector<Diagram> diagrams(jobs.size());
+  std::vector<DiagramPhaseSeconds> seconds(jobs.size());
+  using Clock = std::chrono::steady_clock;
+  auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   for_each_index(jobs.size(), threads, [&](std::size_t i) {
-    diagrams[i] = audited_diagram(cells, make_job_filtration(cells, vertex_type, jobs[i]));
+    auto start = Clock::now();
+    const Filtration filtration = make_job_filtration(cells, vertex_type, jobs[i]);
+    seconds[i].filtrations = since(start);
+    start = Clock::now();
+    diagrams[i] = audited_diagram(cells, filtration);
+    seconds[i].reduction = since(start);
   });
+  if (phases != nullptr)
+    for (const DiagramPhaseSeconds& s : seconds) {
+      phases->filtrations += s.filtrations;
+      phases->reduction += s.reduction;
+    }
   return diagrams;
 }
 

@@ -4,6 +4,7 @@
 #include "medusa/persistence/medusa_diagrams.h"
 
 #include <algorithm>
+#include <thread>
 
 namespace medusa::cli {
 
@@ -17,6 +18,10 @@ std::optional<int> parse_type(const std::string& value) {
 }
 
 } // namespace
+
+unsigned worker_threads(unsigned requested) {
+  return requested > 0 ? requested : std::max(1u, std::thread::hardware_concurrency());
+}
 
 void add_selection_options(CLI::App& command, DiagramSelection& selection) {
   command.add_option("--filtration", selection.filtration, "forward, reverse or both (MATH.md 7.2, 7.3)")
@@ -35,6 +40,11 @@ void add_selection_options(CLI::App& command, DiagramSelection& selection) {
   command.add_option("--dim", selection.dim, "only this homology degree")->check(CLI::Range(0, 3));
   command.add_flag("--zero-length", selection.zero_length,
                    "keep zero-length pairs (birth and death in the same batch)");
+  command
+      .add_option("--threads", selection.threads,
+                  "threads for the filtrations and reductions (0: one per hardware thread; the result "
+                  "does not depend on it)")
+      ->capture_default_str();
 }
 
 std::vector<int> vertex_types(const complex::Medusa& medusa) {
@@ -63,8 +73,8 @@ std::vector<persistence::Diagram> selected_diagrams(const complex::Medusa& medus
       throw InputError("cell type " + *selection.type + " does not occur in the store");
     types = *wanted == persistence::all_types ? std::vector<int>{} : std::vector<int>{*wanted};
   }
-  std::vector<persistence::Diagram> all =
-      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types);
+  std::vector<persistence::Diagram> all = persistence::compute_medusa_diagrams(
+      medusa.cells, vertex_type, types, worker_threads(selection.threads));
   std::vector<persistence::Diagram> chosen;
   for (persistence::Diagram& d : all) {
     if (wanted && d.cell_type != *wanted)

@@ -19,10 +19,14 @@ struct DiagramSelection {
   std::optional<std::string> type;
   std::optional<int> dim;   // one homology degree, or all
   bool zero_length = false; // keep the zero-length pairs (same batch, on the diagonal)
+  unsigned threads = 0;     // for the filtrations and reductions; 0: one per hardware thread
 };
 
-// Adds --filtration, --type, --dim and --zero-length to a subcommand.
+// Adds --filtration, --type, --dim, --zero-length and --threads to a subcommand.
 void add_selection_options(CLI::App& command, DiagramSelection& selection);
+
+// The worker threads for a --threads value: 0 means one per hardware thread (at least 1).
+unsigned worker_threads(unsigned requested);
 
 // Vertex types of the stored input (index = vertex id) and the distinct types, increasing.
 std::vector<int> vertex_types(const complex::Medusa& medusa);

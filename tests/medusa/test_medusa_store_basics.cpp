@@ -36,6 +36,32 @@ TEST_CASE("the Appendix B medusa survives a store round trip with its boundaries
   CHECK(read.cells_of_dimension(3).size() == 5);
 }
 
+TEST_CASE("a store read without its events has the same cells and no batch or frame records",
+          "[medusa][store]") {
+  const std::string path = temp_path("appendix-b-cells.h5");
+  {
+    StoreWriter writer(path);
+    play_into(appendix_b_stream(), writer, 5, 2);
+  }
+  const Medusa whole = read_store(path);
+  StoreReadOptions cells_only;
+  cells_only.events = false;
+  const Medusa cells = read_store(path, cells_only);
+  std::remove(path.c_str());
+  REQUIRE(!whole.batches.empty());
+  REQUIRE(!whole.frames.empty());
+  CHECK(cells.batches.empty());
+  CHECK(cells.frames.empty());
+  REQUIRE(cells.cells.size() == whole.cells.size());
+  for (std::size_t i = 0; i < whole.cells.size(); ++i) {
+    CHECK(cells.cells[i].vertices == whole.cells[i].vertices);
+    CHECK(cells.cells[i].facets == whole.cells[i].facets);
+    CHECK(cells.cells[i].birth == whole.cells[i].birth);
+    CHECK(cells.cells[i].death == whole.cells[i].death);
+  }
+  CHECK(cells.end == whole.end);
+}
+
 TEST_CASE("an unfinished writer leaves no file at the final name", "[medusa][store][sanitize]") {
   const std::string path = temp_path("unfinished.h5");
   std::string temporary;

@@ -45,6 +45,11 @@ endforeach()
 set(small REQUIRES golden_small_store)
 medusa_golden_test(info ARGS info small.h5 STDOUT info.txt ${small})
 medusa_golden_test(diagrams_all ARGS diagrams small.h5 STDOUT diagrams_all.txt ${small})
+# The thread count does not change the diagrams: one and three threads give the same golden text.
+foreach(threads 1 3)
+  medusa_golden_test(diagrams_all_on_${threads}_threads ARGS diagrams small.h5 --threads ${threads}
+                     STDOUT diagrams_all.txt ${small})
+endforeach()
 medusa_golden_test(diagrams_forward_h0 ARGS diagrams small.h5 --filtration forward --dim 0
                    STDOUT diagrams_forward_h0.txt ${small})
 medusa_golden_test(diagrams_reverse_h2 ARGS diagrams small.h5 --filtration reverse --dim 2

@@ -48,14 +48,13 @@ const RunMedusa& sorting_3frames() {
 std::string text(const std::vector<persistence::Diagram>& diagrams) {
   std::ostringstream out;
   for (const persistence::Diagram& d : diagrams)
-    persistence::write_diagram_text(out, d);
+    persistence::write_diagram_text(out, d, sorting_3frames().medusa.cells);
   return out.str();
 }
 
 } // namespace
 
-TEST_CASE("Diagrams on one, two or three threads are identical, and so are the two phases",
-          "[cli][threads]") {
+TEST_CASE("Diagrams on one, two, three or eight threads are identical", "[cli][threads]") {
   const RunMedusa& run = sorting_3frames();
   const std::vector<int> types = {1, 2};
   const std::string sequential =
@@ -68,11 +67,6 @@ TEST_CASE("Diagrams on one, two or three threads are identical, and so are the t
     CAPTURE(threads);
     CHECK(text(persistence::compute_medusa_diagrams(run.medusa.cells, run.vertex_type, types, threads)) ==
           sequential);
-    auto filtrations =
-        persistence::make_medusa_filtrations(run.medusa.cells, run.vertex_type, types, threads);
-    REQUIRE(filtrations.size() == 6);
-    CHECK(text(persistence::reduce_medusa_filtrations(run.medusa.cells, std::move(filtrations), threads)) ==
-          sequential);
   }
 }
 
@@ -82,5 +76,4 @@ TEST_CASE("A filtration error on a worker thread reaches the caller", "[cli][thr
   const std::vector<int> short_table(run.vertex_type.begin(), run.vertex_type.begin() + 10);
   const std::vector<int> types = {1, 2};
   CHECK_THROWS_AS(persistence::compute_medusa_diagrams(run.medusa.cells, short_table, types, 2), InputError);
-  CHECK_THROWS_AS(persistence::make_medusa_filtrations(run.medusa.cells, short_table, types, 2), InputError);
 }

@@ -11,7 +11,14 @@ namespace medusa::complex {
 // medusa store, has another format version, is incomplete (no `complete` attribute: a killed writer),
 // is truncated or corrupted (HDF5 checksums), or is inconsistent (see validate_medusa). Never returns
 // partial or unchecked data.
-Medusa read_store(const std::string& path);
+struct StoreReadOptions {
+  // Read /events (the batch and frame records). They grow with the number of events, and a caller
+  // that needs only the cells (the diagrams of `medusa run`) can leave them out: Medusa::batches and
+  // Medusa::frames stay empty, and /events is neither read nor checked.
+  bool events = true;
+};
+
+Medusa read_store(const std::string& path, const StoreReadOptions& options = {});
 
 // Checks the structure of a medusa: ids 0..N-1; sorted vertex tuples of known vertices; one facet per
 // vertex, facet i the tuple without vertex i, whose lifetime contains the cell's (MATH.md 6.4); d d = 0

@@ -6,6 +6,7 @@
 #include "medusa/persistence/boundary_matrix.h"
 #include "medusa/persistence/filtration.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -23,9 +24,12 @@ struct PersistencePair {
   std::int64_t death_index = -1;   // -1 if essential
   complex::CellId birth_cell = 0;  // the cells that formed and killed the class
   complex::CellId death_cell = 0;  // 0 if essential
-  std::vector<kinetic::VertexId> birth_vertices;
-  std::vector<kinetic::VertexId> death_vertices; // empty if essential
-  bool essential = false;                        // never killed: a class of the whole (sub-)medusa
+  // Positions of those cells in the cell vector the diagram was built from (their vertices are
+  // looked up there, see birth_vertices(): a diagram holds one point per cell of a large medusa, so
+  // it does not copy vertex tuples). death_position is unused if essential.
+  std::size_t birth_position = 0;
+  std::size_t death_position = 0;
+  bool essential = false;   // never killed: a class of the whole (sub-)medusa
   bool zero_length = false; // birth and death in the same batch (MATH.md 7.5), on the diagonal
 };
 
@@ -47,6 +51,14 @@ template <class Representation = phat::bit_tree_pivot_column, class Algorithm = 
 Diagram compute_diagram(const std::vector<complex::Cell>& cells, const Filtration& filtration) {
   return make_diagram(cells, filtration, reduce<Representation, Algorithm>(filtration));
 }
+
+// The vertices of the cells that formed and killed the class, from the cell vector the diagram was
+// built from; death_vertices is empty for an essential class. InternalError when the position is
+// outside `cells` (a diagram paired with another cell vector).
+const std::vector<kinetic::VertexId>& birth_vertices(const PersistencePair& p,
+                                                     const std::vector<complex::Cell>& cells);
+const std::vector<kinetic::VertexId>& death_vertices(const PersistencePair& p,
+                                                     const std::vector<complex::Cell>& cells);
 
 // The points of degree k; zero-length pairs only when asked for.
 std::vector<PersistencePair> pairs_in_dimension(const Diagram& diagram, int k, bool keep_zero_length = false);
