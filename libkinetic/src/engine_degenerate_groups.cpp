@@ -189,17 +189,23 @@ std::vector<DegenerateGroup> Engine::degenerate_groups(const std::vector<Simplex
       // A single tetrahedron flat at t* between two infinite cells: a concyclic hull face, handled below.
       continue;
     }
-    std::vector<VertexId> cell_vertices(vs.begin(), vs.end());
-    found.push_back(cell_vertices);
     // g = R_S^2 (MATH.md 6.3): any tetrahedron of the cell that is not flat at t* has S as circumsphere.
+    // A class of tetrahedra all flat at t* is no cell of D(t*) (five or more points momentarily in one
+    // plane, where every in-sphere vanishes): it spans no sphere and is skipped.
+    const Simplex* solid = nullptr;
     for (const Simplex& t : cell)
       if (orientation_at_now(t) != 0) {
-        if (sign_at_now([&](auto tag) {
-              return radius_poly<decltype(tag)>(t, pick(P, Pi, tag), pick(Q, Qi, tag));
-            }) <= 0)
-          result.insert(cell_vertices);
+        solid = &t;
         break;
       }
+    if (!solid)
+      continue;
+    std::vector<VertexId> cell_vertices(vs.begin(), vs.end());
+    found.push_back(cell_vertices);
+    if (sign_at_now([&](auto tag) {
+          return radius_poly<decltype(tag)>(*solid, pick(P, Pi, tag), pick(Q, Qi, tag));
+        }) <= 0)
+      result.insert(cell_vertices);
     // 2-faces of the cell with >= 4 points: boundary triangles joined across coplanar edges.
     std::set<Simplex> in_cell(cell.begin(), cell.end());
     std::vector<Simplex> boundary;

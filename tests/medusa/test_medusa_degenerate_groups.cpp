@@ -9,6 +9,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <map>
 #include <vector>
 
@@ -34,6 +35,21 @@ kinetic::Trajectories sheared_cube(const std::vector<std::int64_t>& deltas) {
           c.positions.push_back(kinetic::GridPoint{x + (z ? d : 0), y, z});
         t.cells.push_back(c);
       }
+  return t;
+}
+
+// The square pyramid of tests/kinetic/test_kinetic_degenerate_groups.cpp: base (0,0,0), (20,0,0),
+// (20,20,0) and (delta,20,0) with delta from -6 to 6, apex (10,10,20); cospherical at u = 1/2.
+kinetic::Trajectories pyramid() {
+  kinetic::Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100};
+  auto still = [&](std::int64_t id, kinetic::GridPoint p) { t.cells.push_back({id, 1, 0, {p, p}}); };
+  still(1, {0, 0, 0});
+  still(2, {20, 0, 0});
+  still(3, {20, 20, 0});
+  t.cells.push_back({4, 1, 0, {{-6, 20, 0}, {6, 20, 0}}});
+  still(5, {10, 10, 20});
   return t;
 }
 
@@ -164,4 +180,31 @@ TEST_CASE("the medusa of a box sheared through a cube keeps d d = 0 for radii ar
   const std::vector<std::size_t> b = betti(m);
   CAPTURE(b);
   REQUIRE(b.at(0) == 1);
+}
+
+TEST_CASE("the medusa of a square pyramid through a cospherical moment holds its 4-simplex and is acyclic",
+          "[medusa][kinetic][groups]") {
+  // rho^2 = 10^4: K(t) is the whole triangulation (two tetrahedra) at every t, the body is
+  // contractible, beta(M) = (1, 0, ...). The repair at u = 1/2 swaps the base diagonal; the groups are
+  // the five points (R^2 = 225) and the base (R^2 = 200). The two triangulations together hold all
+  // 10 edges and 10 triangles of the five points and 4 of the 5 tetrahedra, so the instant cells are
+  // exactly the flat base 3-simplex abcd and the 4-simplex abcde. (Here the two triangulations alone
+  // would leave no hole: they share the cone over the base boundary, a disc, so their union is
+  // contractible; the instant cells must keep it so.)
+  std::size_t groups = 0;
+  const complex::Medusa m = build(pyramid(), 10000, false, groups);
+  REQUIRE(groups == 2);
+  complex::validate_medusa(m, "pyramid");
+  check_boundary_of_boundary(m);
+  std::vector<std::vector<kinetic::VertexId>> instants;
+  for (const complex::Cell& c : m.cells)
+    if (c.kind == complex::CellKind::repair)
+      instants.push_back(c.vertices);
+  std::sort(instants.begin(), instants.end());
+  REQUIRE(instants == std::vector<std::vector<kinetic::VertexId>>{{0, 1, 2, 3}, {0, 1, 2, 3, 4}});
+  const std::vector<std::size_t> b = betti(m);
+  CAPTURE(b);
+  REQUIRE(b.at(0) == 1);
+  for (std::size_t k = 1; k < b.size(); ++k)
+    REQUIRE(b[k] == 0);
 }
