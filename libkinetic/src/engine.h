@@ -221,6 +221,15 @@ struct Engine {
   void initialise(Observer& observer);
   void run(Observer& observer);
 
+  // ------------------------------------ degenerate groups of static repairs (engine_degenerate_groups.cpp)
+
+  int orientation_at_now(const Simplex& t);
+  bool concyclic_at_now(const Simplex& t);
+  bool face_group_within_rho(const std::vector<VertexId>& p, const std::vector<VertexId>& apices,
+                             const std::vector<Simplex>& cofaces);
+  std::vector<DegenerateGroup> degenerate_groups(const std::vector<Simplex>& removed,
+                                                 const std::vector<Simplex>& added);
+
   // ------------------------------------ audit (engine_audit.cpp)
 
   [[noreturn]] void audit_failure(const std::string& what) const;

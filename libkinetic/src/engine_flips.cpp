@@ -49,7 +49,8 @@ void Engine::flip(const Simplex& facet, std::vector<Step>& steps) {
       Step repair;
       repair.kind = StepKind::repair;
       std::unordered_map<Simplex, bool, SimplexHash> old_k;
-      rebuild_static(old_k);
+      record_tet_changes(repair, old_k);
+      repair.groups = degenerate_groups(repair.delaunay_removed, repair.delaunay_created);
       settle_membership(old_k, repair);
       repair.rank = steps.size() + 1;
       steps.push_back(std::move(repair));

@@ -1,0 +1,282 @@
+// The degenerate groups of a static repair (MATH.md 6.3, second bullet): the non-simplicial faces of
+// the Delaunay subdivision at t* in the repaired region, with g(P) <= rho^2.
+//
+// Construction. At a repair at t* both the old triangulation (valid on (t*-e, t*)) and the new one
+// (Del(t*+), 5.4) are Delaunay at t* itself (closed conditions), so both refine the Delaunay
+// subdivision D(t*); the subdivision is their common coarsening. Its 3-dimensional cells are the
+// maximal sets of points on a common empty sphere. Two tetrahedra of the new triangulation sharing a
+// facet lie in the same cell of D(t*) iff their five points are cospherical at t* (in-sphere exactly 0
+// at t*): if they are, the circumsphere of one (empty at t*) passes through the apex of the other; if
+// they are not, the two spheres differ and the facet is a facet of D(t*). So a union-find over the
+// tetrahedra of Del(t*+), joining across facets whose in-sphere vanishes *at* t* (exact sign, never
+// doubles), starting from the tetrahedra created by the repair, yields exactly the cells of D(t*)
+// that meet the repaired region (a triangulation of a convex cell has a connected dual graph, so the
+// search also reaches the unchanged part of a cell the repair cut through). A tetrahedron that is
+// flat at t* (orientation exactly 0) has four concyclic points when it is Delaunay at t* between two
+// finite cells, and then its in-sphere with every fifth point vanishes: it merges with both sides.
+// Cells with >= 5 points are the 3-dimensional groups; g = R_S^2, decided by the radius certificate
+// of any tetrahedron of the cell that is not flat at t* (its circumsphere is S).
+//
+// The 2-dimensional non-simplicial faces (>= 4 concyclic coplanar points) are faces of these cells:
+// every Delaunay cell containing such a face P contains P's circle, so it has >= 5 cospherical points
+// (unless the whole point set is planar, which is reported as an error elsewhere, 5.7). They are
+// found on the boundary of each cell: boundary triangles of the cell sharing an edge lie in one facet
+// of the convex cell iff their four points are coplanar at t* (orientation exactly 0). For such a face
+// P, g(P) = R(P)^2 if P is Gabriel, else min over its Delaunay cofaces, which are the (one or two)
+// finite cells on either side of P. P is Gabriel iff no apex of a triangle of P (in Del(t*+)) lies
+// strictly inside the ball of P's circle (Lemma 4.2 extended to the subdivision: these apices are the
+// vertices of the cells around P; by the cap lemma 4.4 the other points of a cell containing P are
+// inside B_P all together or not at all, so the apices next to P decide). The remaining
+// 2-dimensional case is a flat tetrahedron at t* on the hull (an infinite cell on both sides): the
+// four points form a hull face with no finite coface, g = R(P)^2 if P is Gabriel against every point,
+// else P contributes nothing. Edges and triangles are always simplicial, so there is nothing else.
+#include "engine.h"
+
+#include "medusa/kinetic/certificate_polynomials.h"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <set>
+#include <unordered_map>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+namespace {
+
+// Union-find over dense indices.
+struct UnionFind {
+  std::vector<std::size_t> parent;
+  std::size_t add() {
+    parent.push_back(parent.size());
+    return parent.size() - 1;
+  }
+  std::size_t find(std::size_t i) {
+    while (parent[i] != i)
+      i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void unite(std::size_t a, std::size_t b) { parent[find(a)] = find(b); }
+};
+
+Simplex with(const Simplex& s, VertexId v) {
+  std::vector<VertexId> w(s.begin(), s.end());
+  w.push_back(v);
+  std::sort(w.begin(), w.end());
+  return Simplex::from_range(w.begin(), w.end());
+}
+
+} // namespace
+
+int Engine::orientation_at_now(const Simplex& t) {
+  return sign_at_now([&](auto tag) {
+    using NT = decltype(tag);
+    return certificate::orientation<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(t[3]));
+  });
+}
+
+// Is the face with these coplanar vertices (>= 3, not collinear) within rho, g(P) <= rho^2? `apices`
+// are the points that may lie inside its circle's ball (MATH.md 6.3, Lemma 4.2), `cofaces` the finite
+// tetrahedra around it, whose circumspheres are those of its Delaunay cofaces.
+bool Engine::face_group_within_rho(const std::vector<VertexId>& p, const std::vector<VertexId>& apices,
+                                   const std::vector<Simplex>& cofaces) {
+  // Three points of P on its circle: the first two and any third one not collinear with them (all
+  // points of P lie on one circle, so no three are collinear and p[2] will do).
+  const VertexId a = p[0], b = p[1], c = p[2];
+  bool gabriel = true;
+  for (VertexId x : apices) {
+    if (std::find(p.begin(), p.end(), x) != p.end())
+      continue;
+    int g = sign_at_now([&](auto tag) {
+      using NT = decltype(tag);
+      return certificate::gabriel_triangle<NT>(pt(a), pt(b), pt(c), pt(x));
+    });
+    if (g < 0) {
+      gabriel = false;
+      break;
+    }
+  }
+  if (gabriel)
+    return sign_at_now([&](auto tag) {
+             using NT = decltype(tag);
+             return certificate::triangle_radius<NT>(pt(a), pt(b), pt(c), pick(P, Pi, tag), pick(Q, Qi, tag));
+           }) <= 0;
+  for (const Simplex& t : cofaces)
+    if (is_finite(t) && orientation_at_now(t) != 0 && sign_at_now([&](auto tag) {
+                                                        return radius_poly<decltype(tag)>(t, pick(P, Pi, tag),
+                                                                                          pick(Q, Qi, tag));
+                                                      }) <= 0)
+      return true;
+  return false;
+}
+
+// Are the four points of t (coplanar at now) on one circle? Coplanar points are concyclic iff the
+// fourth has power 0 with respect to the smallest circumsphere of the other three (MATH.md 3.4), which
+// needs those three not collinear (|n|^2 != 0; three collinear points are never concyclic with a
+// fourth, and then some other triple is not collinear unless all four are, which is not concyclic).
+bool Engine::concyclic_at_now(const Simplex& t) {
+  for (std::size_t i = 0; i < 4; ++i) {
+    Simplex tri3 = t.facet(i);
+    int n2 = sign_at_now([&](auto tag) {
+      using NT = decltype(tag);
+      certificate::Vec<NT> n = certificate::cross(certificate::difference<NT>(pt(tri3[0]), pt(tri3[1])),
+                                                  certificate::difference<NT>(pt(tri3[0]), pt(tri3[2])));
+      return certificate::dot(n, n);
+    });
+    if (n2 == 0)
+      continue;
+    return sign_at_now([&](auto tag) {
+             using NT = decltype(tag);
+             return certificate::gabriel_triangle<NT>(pt(tri3[0]), pt(tri3[1]), pt(tri3[2]), pt(t[i]));
+           }) == 0;
+  }
+  return false;
+}
+
+std::vector<DegenerateGroup> Engine::degenerate_groups(const std::vector<Simplex>& removed,
+                                                       const std::vector<Simplex>& added) {
+  std::set<std::vector<VertexId>> result;
+
+  // 3-dimensional cells of D(t*): search Del(t*+) from the created tetrahedra across facets whose five
+  // points are cospherical at t*.
+  UnionFind uf;
+  std::unordered_map<Simplex, std::size_t, SimplexHash> index;
+  std::vector<Simplex> tets;
+  std::vector<Simplex> todo;
+  auto visit = [&](const Simplex& t) {
+    auto [it, fresh] = index.emplace(t, tets.size());
+    if (fresh) {
+      uf.add();
+      tets.push_back(t);
+      todo.push_back(t);
+    }
+    return it->second;
+  };
+  for (const Simplex& t : added)
+    if (is_finite(t) && tri.has_tet(t))
+      visit(t);
+  std::unordered_map<Simplex, int, SimplexHash> cospherical; // facet -> in-sphere at t* == 0
+  while (!todo.empty()) {
+    Simplex t = todo.back();
+    todo.pop_back();
+    const std::size_t ti = index.at(t);
+    for (std::size_t i = 0; i < 4; ++i) {
+      Simplex f = t.facet(i);
+      VertexId y = tri.other_apex(f, t[i]);
+      if (y == infinite_vertex)
+        continue;
+      auto [it, fresh] = cospherical.emplace(f, 0);
+      if (fresh)
+        it->second = sign_at_now([&](auto tag) {
+                       using NT = decltype(tag);
+                       return certificate::in_sphere<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(t[3]), pt(y));
+                     }) == 0;
+      if (it->second)
+        uf.unite(ti, visit(with(f, y)));
+    }
+  }
+  std::map<std::size_t, std::vector<Simplex>> cells;
+  for (std::size_t i = 0; i < tets.size(); ++i)
+    cells[uf.find(i)].push_back(tets[i]);
+
+  std::vector<std::vector<VertexId>> found; // every degenerate face, within rho or not
+  for (const auto& [root, cell] : cells) {
+    std::set<VertexId> vs;
+    for (const Simplex& t : cell)
+      vs.insert(t.begin(), t.end());
+    if (vs.size() < 5) {
+      // A single tetrahedron flat at t* between two infinite cells: a concyclic hull face, handled below.
+      continue;
+    }
+    // g = R_S^2 (MATH.md 6.3): any tetrahedron of the cell that is not flat at t* has S as circumsphere.
+    // A class of tetrahedra all flat at t* is no cell of D(t*) (five or more points momentarily in one
+    // plane, where every in-sphere vanishes): it spans no sphere and is skipped.
+    const Simplex* solid = nullptr;
+    for (const Simplex& t : cell)
+      if (orientation_at_now(t) != 0) {
+        solid = &t;
+        break;
+      }
+    if (!solid)
+      continue;
+    std::vector<VertexId> cell_vertices(vs.begin(), vs.end());
+    found.push_back(cell_vertices);
+    if (sign_at_now([&](auto tag) {
+          return radius_poly<decltype(tag)>(*solid, pick(P, Pi, tag), pick(Q, Qi, tag));
+        }) <= 0)
+      result.insert(cell_vertices);
+    // 2-faces of the cell with >= 4 points: boundary triangles joined across coplanar edges.
+    std::set<Simplex> in_cell(cell.begin(), cell.end());
+    std::vector<Simplex> boundary;
+    for (const Simplex& t : cell)
+      for (std::size_t i = 0; i < 4; ++i) {
+        Simplex f = t.facet(i);
+        if (!in_cell.count(with(f, tri.other_apex(f, t[i]))))
+          boundary.push_back(f);
+      }
+    std::sort(boundary.begin(), boundary.end());
+    boundary.erase(std::unique(boundary.begin(), boundary.end()), boundary.end());
+    UnionFind faces_uf;
+    for (std::size_t i = 0; i < boundary.size(); ++i)
+      faces_uf.add();
+    for (std::size_t i = 0; i < boundary.size(); ++i)
+      for (std::size_t j = i + 1; j < boundary.size(); ++j) {
+        std::set<VertexId> u(boundary[i].begin(), boundary[i].end());
+        u.insert(boundary[j].begin(), boundary[j].end());
+        if (u.size() != 4)
+          continue; // not sharing an edge
+        Simplex four = Simplex::from_range(u.begin(), u.end());
+        if (orientation_at_now(four) == 0)
+          faces_uf.unite(i, j);
+      }
+    std::map<std::size_t, std::vector<Simplex>> face_parts;
+    for (std::size_t i = 0; i < boundary.size(); ++i)
+      face_parts[faces_uf.find(i)].push_back(boundary[i]);
+    for (const auto& [froot, part] : face_parts) {
+      std::set<VertexId> fv;
+      for (const Simplex& f : part)
+        fv.insert(f.begin(), f.end());
+      if (fv.size() < 4)
+        continue;
+      std::vector<VertexId> face(fv.begin(), fv.end());
+      found.push_back(face);
+      std::vector<VertexId> apices;
+      std::vector<Simplex> cofaces;
+      for (const Simplex& f : part)
+        for (const Simplex& t : tri.tets_containing(f)) {
+          cofaces.push_back(t);
+          for (VertexId v : t)
+            if (v != infinite_vertex && !fv.count(v))
+              apices.push_back(v);
+        }
+      if (face_group_within_rho(face, apices, cofaces))
+        result.insert(face);
+    }
+  }
+
+  // Tetrahedra flat at t* on either side that no cell above contains: four concyclic points form a
+  // hull face with only infinite cofaces; Gabriel is then tested against every present point.
+  auto inside_found = [&](const Simplex& t) {
+    for (const auto& g : found)
+      if (std::includes(g.begin(), g.end(), t.begin(), t.end()))
+        return true;
+    return false;
+  };
+  for (const auto* list : {&removed, &added})
+    for (const Simplex& t : *list) {
+      if (!is_finite(t) || inside_found(t) || orientation_at_now(t) != 0 || !concyclic_at_now(t))
+        continue;
+      std::vector<VertexId> face(t.begin(), t.end());
+      found.push_back(face);
+      if (face_group_within_rho(face, alive_ids(), {}))
+        result.insert(face);
+    }
+
+  std::vector<DegenerateGroup> groups;
+  for (const auto& g : result)
+    groups.push_back(DegenerateGroup{g});
+  return groups;
+}
+
+} // namespace medusa::kinetic::detail

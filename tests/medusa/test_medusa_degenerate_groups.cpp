@@ -1,0 +1,210 @@
+// The medusa of runs with static repairs at cospherical moments: the instant cells of the repair's
+// degenerate groups (MATH.md 6.3) are present, d d = 0 (6.4), and the homology is that of the
+// space-time body (6.1), derived on paper.
+#include "medusa/complex/homology.h"
+#include "medusa/complex/medusa.h"
+#include "medusa/complex/medusa_builder.h"
+#include "medusa/complex/store_reader.h"
+#include "medusa/kinetic/kinetic_alpha_complex.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <map>
+#include <vector>
+
+using namespace medusa;
+
+namespace {
+
+// The same box as in tests/kinetic/test_kinetic_degenerate_groups.cpp: side 20, top face sliding in x
+// by delta per frame, exactly a cube when delta = 0 (vertex ids 0..7, z-major).
+kinetic::Trajectories sheared_cube(const std::vector<std::int64_t>& deltas) {
+  kinetic::Trajectories t;
+  t.scale = 1;
+  for (std::size_t k = 0; k < deltas.size(); ++k)
+    t.frame_times.push_back(100 * static_cast<std::int64_t>(k));
+  std::int64_t id = 1;
+  for (std::int64_t z : {0, 20})
+    for (std::int64_t y : {0, 20})
+      for (std::int64_t x : {0, 20}) {
+        kinetic::Trajectory c;
+        c.cell_id = id++;
+        c.type = 1;
+        for (std::int64_t d : deltas)
+          c.positions.push_back(kinetic::GridPoint{x + (z ? d : 0), y, z});
+        t.cells.push_back(c);
+      }
+  return t;
+}
+
+// The square pyramid of tests/kinetic/test_kinetic_degenerate_groups.cpp: base (0,0,0), (20,0,0),
+// (20,20,0) and (delta,20,0) with delta from -6 to 6, apex (10,10,20); cospherical at u = 1/2.
+kinetic::Trajectories pyramid() {
+  kinetic::Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100};
+  auto still = [&](std::int64_t id, kinetic::GridPoint p) { t.cells.push_back({id, 1, 0, {p, p}}); };
+  still(1, {0, 0, 0});
+  still(2, {20, 0, 0});
+  still(3, {20, 20, 0});
+  t.cells.push_back({4, 1, 0, {{-6, 20, 0}, {6, 20, 0}}});
+  still(5, {10, 10, 20});
+  return t;
+}
+
+// Forwards the stream, optionally without the degenerate groups (to show what they fill).
+class Forward : public kinetic::Observer {
+public:
+  Forward(kinetic::Observer& next, bool drop_groups) : next_(next), drop_(drop_groups) {}
+  void initial(const kinetic::EventTime& t0, const std::vector<kinetic::Simplex>& k) override {
+    next_.initial(t0, k);
+  }
+  void batch(const kinetic::EventTime& time, const std::vector<kinetic::Step>& steps) override {
+    std::vector<kinetic::Step> copy = steps;
+    for (kinetic::Step& s : copy) {
+      groups += s.groups.size();
+      if (drop_)
+        s.groups.clear();
+    }
+    next_.batch(time, copy);
+  }
+  void frame(std::size_t k, const kinetic::EventTime& time) override { next_.frame(k, time); }
+  void finish(const kinetic::EventTime& t_end) override { next_.finish(t_end); }
+  std::size_t groups = 0;
+
+private:
+  kinetic::Observer& next_;
+  bool drop_;
+};
+
+complex::Medusa build(const kinetic::Trajectories& t, long rho2, bool drop_groups, std::size_t& groups) {
+  kinetic::KineticOptions options;
+  options.rho2.num = rho2;
+  options.audit = true;
+  kinetic::KineticAlphaComplex engine(t, options);
+  complex::MedusaCollector collector;
+  complex::MedusaBuilder builder(collector);
+  complex::RunInfo info;
+  info.radius_text = std::to_string(rho2) + " (squared)";
+  builder.set_run(info, t);
+  Forward forward(builder, drop_groups);
+  engine.run(forward);
+  groups = forward.groups;
+  return collector.take();
+}
+
+void check_boundary_of_boundary(const complex::Medusa& m) {
+  for (const complex::Cell& c : m.cells) {
+    std::map<complex::CellId, int> parity;
+    for (complex::CellId f : c.facets)
+      for (complex::CellId g : m.cell(f).facets)
+        parity[g] ^= 1;
+    for (const auto& [g, p] : parity) {
+      CAPTURE(c.id, g);
+      REQUIRE(p == 0);
+    }
+  }
+}
+
+std::vector<std::size_t> betti(const complex::Medusa& m) {
+  complex::ChainComplex cc;
+  for (const complex::Cell& c : m.cells) {
+    cc.dims.push_back(c.dim());
+    cc.facets.emplace_back(c.facets.begin(), c.facets.end());
+  }
+  return complex::betti_numbers(cc);
+}
+
+} // namespace
+
+TEST_CASE("the medusa of a box sheared through a cube holds the cube's instant cells and is acyclic",
+          "[medusa][kinetic][groups]") {
+  // rho^2 = 10^4 (rho = 100) exceeds every circumradius of the eight cells (all within distance 36):
+  // K(t) is the whole Delaunay triangulation at every t, a 3-ball, the union of balls is contractible
+  // at every t and the space-time body (M is homotopy equivalent to it, MATH.md 6.1) is contractible:
+  // beta = (1, 0, 0, ...). At the cube instant the repair replaces one triangulation of the box by
+  // another; the group {0..7} (R^2 = 300 <= rho^2) adds the 7-simplex and every subset of the eight
+  // cells in neither triangulation as instant repair cells, which fill the 3-cycle formed by the two
+  // triangulations alive together at that rank.
+  const std::vector<std::int64_t> deltas =
+      GENERATE(std::vector<std::int64_t>{-6, 6}, std::vector<std::int64_t>{-6, 0, 6});
+  CAPTURE(deltas);
+  std::size_t groups = 0;
+  const complex::Medusa m = build(sheared_cube(deltas), 10000, false, groups);
+  REQUIRE(groups == 7); // the cube and its six square faces
+  complex::validate_medusa(m, "sheared cube");
+  check_boundary_of_boundary(m);
+  bool seven_simplex = false;
+  std::size_t repair_cells = 0;
+  for (const complex::Cell& c : m.cells)
+    if (c.kind == complex::CellKind::repair) {
+      ++repair_cells;
+      REQUIRE(c.birth == c.death);
+      seven_simplex = seven_simplex || c.vertices == std::vector<kinetic::VertexId>{0, 1, 2, 3, 4, 5, 6, 7};
+    }
+  REQUIRE(seven_simplex);
+  // All 2^8 - 1 subsets of the cube are cells at the repair's rank, either alive in K or instant.
+  REQUIRE(repair_cells > 0);
+  REQUIRE(repair_cells < 255);
+  const std::vector<std::size_t> b = betti(m);
+  CAPTURE(b);
+  REQUIRE(b.at(0) == 1);
+  for (std::size_t k = 1; k < b.size(); ++k)
+    REQUIRE(b[k] == 0);
+
+  // Without the groups the two triangulations of the box, both alive at the repair's rank, are not
+  // filled by any cell of dimension >= 4 (there are no flips): a spurious class.
+  std::size_t dropped = 0;
+  const complex::Medusa without = build(sheared_cube(deltas), 10000, true, dropped);
+  check_boundary_of_boundary(without);
+  const std::vector<std::size_t> bw = betti(without);
+  CAPTURE(bw);
+  std::size_t higher = 0;
+  for (std::size_t k = 1; k < bw.size(); ++k)
+    higher += bw[k];
+  REQUIRE(higher > 0);
+}
+
+TEST_CASE("the medusa of a box sheared through a cube keeps d d = 0 for radii around the groups' g",
+          "[medusa][kinetic][groups]") {
+  // rho^2 = 301 (cube and faces), 250 (faces only), 150 (no group): the builder's repair cells and
+  // the regular cells form a valid complex in every case.
+  const long rho2 = GENERATE(301L, 250L, 150L);
+  CAPTURE(rho2);
+  std::size_t groups = 0;
+  const complex::Medusa m = build(sheared_cube({-6, 6}), rho2, false, groups);
+  REQUIRE(groups == (rho2 >= 300 ? 7u : rho2 >= 200 ? 6u : 0u));
+  complex::validate_medusa(m, "sheared cube");
+  check_boundary_of_boundary(m);
+  const std::vector<std::size_t> b = betti(m);
+  CAPTURE(b);
+  REQUIRE(b.at(0) == 1);
+}
+
+TEST_CASE("the medusa of a square pyramid through a cospherical moment holds its 4-simplex and is acyclic",
+          "[medusa][kinetic][groups]") {
+  // rho^2 = 10^4: K(t) is the whole triangulation (two tetrahedra) at every t, the body is
+  // contractible, beta(M) = (1, 0, ...). The repair at u = 1/2 swaps the base diagonal; the groups are
+  // the five points (R^2 = 225) and the base (R^2 = 200). The two triangulations together hold all
+  // 10 edges and 10 triangles of the five points and 4 of the 5 tetrahedra, so the instant cells are
+  // exactly the flat base 3-simplex abcd and the 4-simplex abcde. (Here the two triangulations alone
+  // would leave no hole: they share the cone over the base boundary, a disc, so their union is
+  // contractible; the instant cells must keep it so.)
+  std::size_t groups = 0;
+  const complex::Medusa m = build(pyramid(), 10000, false, groups);
+  REQUIRE(groups == 2);
+  complex::validate_medusa(m, "pyramid");
+  check_boundary_of_boundary(m);
+  std::vector<std::vector<kinetic::VertexId>> instants;
+  for (const complex::Cell& c : m.cells)
+    if (c.kind == complex::CellKind::repair)
+      instants.push_back(c.vertices);
+  std::sort(instants.begin(), instants.end());
+  REQUIRE(instants == std::vector<std::vector<kinetic::VertexId>>{{0, 1, 2, 3}, {0, 1, 2, 3, 4}});
+  const std::vector<std::size_t> b = betti(m);
+  CAPTURE(b);
+  REQUIRE(b.at(0) == 1);
+  for (std::size_t k = 1; k < b.size(); ++k)
+    REQUIRE(b[k] == 0);
+}
