@@ -214,6 +214,29 @@ TEST_CASE("cells inserted and deleted in the middle of a run keep the audit gree
   REQUIRE(obs.complex().count(Simplex{40}) == 1);
 }
 
+TEST_CASE("a cell present at the last frame only adds nothing to the stream", "[kinetic][engine]") {
+  // K is reported up to K(t_end-) and t_end gets no instant cells (MATH.md 6.2): the run with the
+  // extra cell must give exactly the stream of the run without it.
+  const Trajectories without = testing::random_walk(22, 30, 5, 50, 5);
+  Trajectories with = without;
+  Trajectory late;
+  late.cell_id = 31;
+  late.type = 1;
+  late.first_frame = 4;
+  late.positions.push_back({25, 25, 25});
+  with.cells.push_back(late);
+  KineticAlphaComplex a(without, with_radius(100)), b(with, with_radius(100));
+  ReplayObserver oa(a), ob(b);
+  a.run(oa);
+  b.run(ob);
+  REQUIRE(ob.mismatches == 0);
+  REQUIRE(ob.inconsistencies == 0);
+  CHECK(b.statistics().insertions == 0);
+  CHECK(b.statistics().batches == a.statistics().batches);
+  CHECK(ob.complex() == oa.complex());
+  CHECK(ob.complex().count(Simplex{30}) == 0);
+}
+
 namespace {
 
 // Records each batch's time and step kinds.

@@ -81,19 +81,30 @@ AssembledRun assemble_trajectories(std::vector<CellSample> samples, const std::v
       previous_frame = frame;
     }
   }
+  // Cells present at one frame only: at an earlier frame they are inserted and deleted in that frame's
+  // batch; at the last frame they are outside K(t_end-), the state the run ends with, and t_end gets
+  // no instant cells (MATH.md 2.1, 5.6, 6.2), so they add nothing to the medusa. Both are said.
+  std::vector<std::int64_t> last_frame_ids;
+  const std::size_t last = frame_times.size() - 1;
   for (const kinetic::Trajectory& c : t.cells)
     if (c.positions.size() == 1 && frame_times.size() > 1)
-      single_frame_ids.push_back(c.cell_id);
-  if (!single_frame_ids.empty()) {
-    std::string ids;
-    for (std::size_t k = 0; k < single_frame_ids.size() && k < 10; ++k)
-      ids += (k ? ", " : "") + std::to_string(single_frame_ids[k]);
-    if (single_frame_ids.size() > 10)
-      ids += ", ...";
+      (c.first_frame == last ? last_frame_ids : single_frame_ids).push_back(c.cell_id);
+  auto listed = [](const std::vector<std::int64_t>& ids) {
+    std::string text;
+    for (std::size_t k = 0; k < ids.size() && k < 10; ++k)
+      text += (k ? ", " : "") + std::to_string(ids[k]);
+    return text + (ids.size() > 10 ? ", ..." : "");
+  };
+  if (!single_frame_ids.empty())
     run.warnings.push_back(std::to_string(single_frame_ids.size()) +
-                           " trajectories are present on a single frame (cells " + ids +
+                           " trajectories are present on a single frame (cells " + listed(single_frame_ids) +
                            "): inserted and deleted in the same frame batch (MATH.md 2.1, 5.6)");
-  }
+  if (!last_frame_ids.empty())
+    run.warnings.push_back(std::to_string(last_frame_ids.size()) +
+                           " trajectories are present at the last frame only (cells " +
+                           listed(last_frame_ids) +
+                           "): the run ends just before that frame, so they add nothing to the medusa "
+                           "(MATH.md 6.2)");
   return run;
 }
 
