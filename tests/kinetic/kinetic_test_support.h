@@ -153,4 +153,23 @@ inline Trajectories random_walk_2d(std::uint64_t seed, int n, int frames, int bo
   return t;
 }
 
+// Twelve cells on rays through the integer points of the circle of radius 5, moving radially at
+// different speeds (p_i(u) = c_i (10 + (u - 1/2) k_i), k_i even): all twelve are cocircular (radius
+// 50) exactly at u = 1/2 and at no other time, a massively degenerate planar batch.
+inline Trajectories cocircular_burst() {
+  const std::int64_t c[12][2] = {{5, 0},  {4, 3},   {3, 4},   {0, 5},  {-3, 4}, {-4, 3},
+                                 {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+  const std::int64_t k[6] = {2, -4, 6, -2, 4, -6};
+  Trajectories t;
+  t.dimension = 2;
+  t.scale = 1;
+  t.frame_times = {0, 100};
+  for (int i = 0; i < 12; ++i) {
+    const std::int64_t s0 = 10 - k[i % 6] / 2, s1 = 10 + k[i % 6] / 2;
+    t.cells.push_back(
+        {i + 1, 1 + i % 2, 0, {{c[i][0] * s0, c[i][1] * s0, 0}, {c[i][0] * s1, c[i][1] * s1, 0}}});
+  }
+  return t;
+}
+
 } // namespace medusa::kinetic::testing

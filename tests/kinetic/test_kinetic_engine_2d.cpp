@@ -344,3 +344,28 @@ TEST_CASE("planar: cells inserted and deleted in the middle of a run keep the au
   REQUIRE(obs.complex().count(Simplex{0}) == 0);
   REQUIRE(obs.complex().count(Simplex{40}) == 1);
 }
+
+TEST_CASE("planar: twelve cells becoming cocircular at one instant are resolved in one audited batch",
+          "[kinetic][engine][2d][degenerate]") {
+  // All in-circle certificates of the twelve-gon's diagonals vanish at u = 1/2 (t = 50), an exact
+  // rational time: one batch of 2-2 flips or a static repair (MATH.md 5.2), audited before and after.
+  auto rho2 = GENERATE(long(40 * 40), long(60 * 60));
+  CAPTURE(rho2);
+  Trajectories t = testing::cocircular_burst();
+  KineticAlphaComplex engine(t, with_radius(rho2));
+  ReplayObserver obs(engine);
+  BatchLog log;
+  Both both(obs, log);
+  engine.run(both);
+  const KineticStatistics& s = engine.statistics();
+  CAPTURE(s.flips22, s.hull_flips, s.static_rebuilds, s.audits_compared_with_cgal);
+  int at_half = 0;
+  for (const auto& b : log.batches)
+    if (b.time.time == 50.0)
+      ++at_half;
+  REQUIRE(at_half == 1);
+  REQUIRE(s.audits_compared_with_cgal > 0);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(obs.not_closed == 0);
+}

@@ -2,6 +2,7 @@
 // dimension, read_store's validators (d d = 0, facets, nested and disjoint lifetimes) pass, the Euler
 // characteristic of M agrees with its persistence, and a 2-2 flip with R_S <= rho adds its instant
 // 3-simplex (MATH.md 6.3 one dimension down).
+#include "kinetic/kinetic_test_support.h"
 #include "kinetic_run.h"
 #include "medusa/complex/store_reader.h"
 #include "medusa/io/run_reader.h"
@@ -87,5 +88,18 @@ TEST_CASE("the medusa of the real 2D sorting run records dimension 2 and passes 
   REQUIRE(m.input.dimension == 2);
   REQUIRE(m.cells_of_dimension(2).size() > 0);
   REQUIRE(m.cells_of_dimension(4).empty());
+  check_euler(m);
+}
+
+TEST_CASE("twelve cells becoming cocircular at one instant give a valid planar medusa",
+          "[medusa][kinetic][2d]") {
+  // The degenerate batch of tests/kinetic (all twelve on the circle of radius 50 at t = 50): with
+  // rho = 60 the 2-2 flips inside the batch carry instant 3-simplices whose facets must exist.
+  const kinetic::Trajectories t = kinetic::testing::cocircular_burst();
+  kinetic::SquaredRadius rho2;
+  rho2.num = 3600;
+  const complex::Medusa m = stored(t, "60", rho2, "burst2d");
+  REQUIRE(m.input.dimension == 2);
+  REQUIRE(m.cells_of_dimension(3).size() > 0);
   check_euler(m);
 }
