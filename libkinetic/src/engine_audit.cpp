@@ -35,28 +35,35 @@ void Engine::audit() {
     return; // the slab has no room left (event at u = 1)
   // The audit compares open conditions (valid on (now, next event)) with closed ones at q, so q must
   // avoid the isolated zeros of every certificate polynomial, such as a radius touching rho without
-  // crossing it (a tangential root, MATH.md 3.9): move q towards now until none vanishes there.
-  Rational q = rational_between(now, upper);
+  // crossing it (a tangential root, MATH.md 3.9): move q towards now until none vanishes there. The
+  // signs at q (0 only for identically-zero polynomials) serve the checks below.
+  std::vector<std::pair<Simplex, ExactPoly>> delaunay_polys, radius_polys;
   mpz_class p = P, qq = Q;
+  for (const auto& kv : tri.facets())
+    delaunay_polys.emplace_back(kv.first, to_exact_poly(delaunay_poly<mpz_class>(kv.first)));
+  for (const auto& kv : faces)
+    radius_polys.emplace_back(kv.first, to_exact_poly(radius_poly<mpz_class>(kv.first, p, qq)));
+  std::vector<int> delaunay_sign, radius_sign;
+  Rational q = rational_between(now, upper);
   for (int attempt = 0;; ++attempt) {
     const SlabTime at(q);
-    auto vanishes = [&](const Poly<mpz_class>& exact) {
-      ExactPoly f = to_exact_poly(exact);
-      return !CGAL::is_zero(f) && sign_at(f, at) == 0;
+    auto signs_at_q = [&](const std::vector<std::pair<Simplex, ExactPoly>>& polys, std::vector<int>& signs) {
+      signs.clear();
+      for (const auto& sf : polys) {
+        const bool zero = CGAL::is_zero(sf.second);
+        const int sg = zero ? 0 : sign_at(sf.second, at);
+        if (sg == 0 && !zero)
+          return false;
+        signs.push_back(sg);
+      }
+      return true;
     };
-    bool clear = true;
-    for (const auto& kv : tri.facets())
-      clear = clear && !vanishes(delaunay_poly<mpz_class>(kv.first));
-    for (const auto& kv : faces)
-      clear = clear && !vanishes(radius_poly<mpz_class>(kv.first, p, qq));
-    if (clear)
+    if (signs_at_q(delaunay_polys, delaunay_sign) && signs_at_q(radius_polys, radius_sign))
       break;
     if (attempt == 20)
       return; // no rational found quickly: skip this audit rather than report a false failure
     q = rational_between(now, at);
   }
-  SlabTime at(q);
-  auto sign_q = [&](const ExactPoly& f) { return sign_at(f, at); };
 
   // Combinatorial validity: every facet has two top simplices; the Euler characteristic is that of
   // the sphere S^dim.
@@ -76,22 +83,22 @@ void Engine::audit() {
     nv += a ? 1 : 0;
   if (!euler_characteristic_holds(dim, nv, ne, nf, nt))
     audit_failure("the Euler characteristic of the augmented triangulation is not that of a sphere");
-  // Local Delaunay, exactly, at q.
-  for (const auto& kv : tri.facets()) {
-    ExactPoly f = to_exact_poly(delaunay_poly<mpz_class>(kv.first));
-    if (!CGAL::is_zero(f) && sign_q(f) <= 0) {
+  // Local Delaunay, exactly, at q (identically-zero certificates are valid, MATH.md 3.9).
+  for (std::size_t i = 0; i < delaunay_polys.size(); ++i) {
+    const Simplex& facet = delaunay_polys[i].first;
+    if (delaunay_sign[i] < 0) {
       std::ostringstream os;
-      os << "facet " << kv.first << " is not locally Delaunay";
+      os << "facet " << facet << " is not locally Delaunay";
       audit_failure(os.str());
     }
-    auto it = facet_cert.find(kv.first);
+    auto it = facet_cert.find(facet);
     if (it == facet_cert.end() || !certs[static_cast<std::size_t>(it->second)].alive)
       audit_failure("a facet has no certificate");
   }
   // Radius flags and certificates.
-  for (const auto& kv : faces) {
-    ExactPoly f = to_exact_poly(radius_poly<mpz_class>(kv.first, p, qq));
-    bool is_short = sign_q(f) <= 0;
+  for (std::size_t i = 0; i < radius_polys.size(); ++i) {
+    const auto& kv = *faces.find(radius_polys[i].first);
+    bool is_short = radius_sign[i] <= 0;
     if (is_short != kv.second.is_short) {
       std::ostringstream os;
       os << "simplex " << kv.first << " has a wrong shortness flag";
