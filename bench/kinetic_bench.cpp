@@ -1,14 +1,21 @@
 // Kinetic benchmark: the kinetic Delaunay + alpha complex against the snapshot approach a user would
 // otherwise take (CGAL's static Delaunay_triangulation_3 + Fixed_alpha_shape_3 rebuilt at each
-// frame), on the same frames, in one process. Prints per-frame times, their ratio, events per
-// second, the certificate filter hit rate and peak memory.
+// frame; Delaunay_triangulation_2 + Alpha_shape_2 for planar runs), on the same frames, in one
+// process. Prints per-frame times, their ratio, events per second, the certificate filter hit rate
+// and peak memory.
 //
-// Usage: kinetic_bench [--csv cells.csv.gz --radius R] [--random N --frames F] ...
+// Usage: kinetic_bench [--csv cells.csv.gz|run-folder --radius R] [--random N --frames F] [--dim 2|3]
 // With no argument: the bundled large_3d run (4,945 cells, 11 frames) and random walks of 1,000 and
-// 10,000 cells over 5 frames.
+// 10,000 cells over 5 frames, then the planar cases: the real 2D run tests/data/cc3d/sorting_2d
+// (193 cells, 20 frames) and planar random walks of 1,000 and 10,000 cells. --dim 2 or 3 runs one
+// dimension only.
 #include "medusa/io/run_reader.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
 
+#include <CGAL/Alpha_shape_2.h>
+#include <CGAL/Alpha_shape_face_base_2.h>
+#include <CGAL/Alpha_shape_vertex_base_2.h>
+#include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Fixed_alpha_shape_3.h>
@@ -35,8 +42,34 @@ double peak_rss_mib() {
   return double(u.ru_maxrss) / 1024.0;
 }
 
+// Planar static baseline: CGAL Delaunay_triangulation_2 + Alpha_shape_2 (GENERAL mode, the alpha
+// complex with its lower-dimensional simplices) of the positions at each frame.
+double static_rebuild_seconds_2d(const Trajectories& t, std::size_t k, double rho2, std::size_t& in_k) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Vb = CGAL::Alpha_shape_vertex_base_2<K>;
+  using Fb = CGAL::Alpha_shape_face_base_2<K>;
+  using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+  using Dt = CGAL::Delaunay_triangulation_2<K, Tds>;
+  using Shape = CGAL::Alpha_shape_2<Dt>;
+  std::vector<K::Point_2> pts;
+  for (const Trajectory& c : t.cells)
+    if (c.present(k))
+      pts.emplace_back(double(c.at(k)[0]), double(c.at(k)[1]));
+  auto start = Clock::now();
+  Dt dt(pts.begin(), pts.end());
+  Shape shape(dt, rho2, Shape::GENERAL);
+  in_k = 0;
+  for (auto f = shape.finite_faces_begin(); f != shape.finite_faces_end(); ++f)
+    in_k += shape.classify(f) != Shape::EXTERIOR;
+  for (auto e = shape.finite_edges_begin(); e != shape.finite_edges_end(); ++e)
+    in_k += shape.classify(*e) != Shape::EXTERIOR;
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
 // Static baseline: CGAL Delaunay + fixed alpha shape of the positions at each frame.
 double static_rebuild_seconds(const Trajectories& t, std::size_t k, double rho2, std::size_t& in_k) {
+  if (t.dimension == 2)
+    return static_rebuild_seconds_2d(t, k, rho2, in_k);
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Vb = CGAL::Fixed_alpha_shape_vertex_base_3<K>;
   using Fb = CGAL::Fixed_alpha_shape_cell_base_3<K>;
@@ -106,12 +139,38 @@ Trajectories random_walk(std::uint64_t seed, int n, int frames) {
   return t;
 }
 
+// The planar analogue: the same spacing and steps in the plane z = 0.
+Trajectories random_walk_2d(std::uint64_t seed, int n, int frames) {
+  const std::int64_t unit = 1000000;
+  std::mt19937_64 rng(seed);
+  const double side = 5.0 * std::sqrt(double(n));
+  std::uniform_real_distribution<double> start(0, side * unit);
+  std::normal_distribution<double> step(0, 0.7 * unit);
+  Trajectories t;
+  t.dimension = 2;
+  for (int k = 0; k < frames; ++k)
+    t.frame_times.push_back(100 * k);
+  for (int i = 0; i < n; ++i) {
+    Trajectory c;
+    c.cell_id = i + 1;
+    c.type = 1 + i % 2;
+    GridPoint p{std::int64_t(start(rng)), std::int64_t(start(rng)), 0};
+    for (int k = 0; k < frames; ++k) {
+      c.positions.push_back(p);
+      p[0] += std::int64_t(step(rng));
+      p[1] += std::int64_t(step(rng));
+    }
+    t.cells.push_back(c);
+  }
+  return t;
+}
+
 void run_case(const std::string& name, const Trajectories& t, const std::string& radius) {
   KineticOptions options;
   options.rho2 = squared_radius_from_decimal(radius, t.scale);
   const double rho2 = options.rho2.num.get_d() / options.rho2.den.get_d();
-  std::printf("\n== %s: %zu cells, %zu frames, radius %s ==\n", name.c_str(), t.cells.size(), t.frames(),
-              radius.c_str());
+  std::printf("\n== %s (%dD): %zu cells, %zu frames, radius %s ==\n", name.c_str(), t.dimension, t.cells.size(),
+              t.frames(), radius.c_str());
   std::fflush(stdout);
   KineticAlphaComplex engine(t, options);
   FrameTimer timer;
@@ -120,7 +179,8 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
   engine.run(timer);
   double kinetic_total = std::chrono::duration<double>(Clock::now() - start).count();
   const KineticStatistics& s = engine.statistics();
-  std::size_t events = s.flips23 + s.flips32 + s.hull_flips + s.radius_events + s.insertions + s.deletions;
+  std::size_t events =
+      s.flips23 + s.flips32 + s.flips22 + s.hull_flips + s.radius_events + s.insertions + s.deletions;
 
   // Slab k-1 of the kinetic run ends at frame k; the static baseline rebuilds at frame k.
   std::printf("%-6s %14s %14s %8s\n", "frame", "kinetic ms", "static ms", "ratio");
@@ -137,9 +197,9 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
   std::printf("mean per frame: kinetic %.2f ms, static %.2f ms, ratio %.2f (target <= 1.0)\n",
               1e3 * kinetic_slabs / slabs, 1e3 * static_total / slabs, kinetic_slabs / static_total);
   std::printf("kinetic total %.2f s (initial triangulation %.2f s); events %zu (%.0f per second): "
-              "%zu 2-3, %zu 3-2, %zu hull flips, %zu radius events\n",
+              "%zu 2-3, %zu 3-2, %zu 2-2, %zu hull flips, %zu radius events\n",
               kinetic_total, timer.initialisation, events, events / kinetic_total, s.flips23, s.flips32,
-              s.hull_flips, s.radius_events);
+              s.flips22, s.hull_flips, s.radius_events);
   double built = double(s.certificates_built);
   const double doubles = double(s.filter_settled + s.interval_settled);
   std::printf("certificates built %zu; settled in doubles %.2f%% (target >= 99%%): %zu by the Bernstein "
@@ -164,7 +224,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
   std::string csv = MEDUSA_BENCH_DATA "/large_3d/cells.csv.gz", radius = "3";
   std::vector<int> randoms = {1000, 10000};
-  int frames = 5;
+  int frames = 5, only_dim = 0;
   bool csv_only = false, random_only = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--csv" && i + 1 < args.size()) {
@@ -179,22 +239,33 @@ int main(int argc, char** argv) {
       randoms.push_back(std::stoi(args[++i]));
     } else if (args[i] == "--frames" && i + 1 < args.size()) {
       frames = std::stoi(args[++i]);
+    } else if (args[i] == "--dim" && i + 1 < args.size() && (args[i + 1] == "2" || args[i + 1] == "3")) {
+      only_dim = std::stoi(args[++i]);
     } else {
       std::fprintf(stderr,
-                   "usage: kinetic_bench [--csv cells.csv.gz] [--radius R] [--random N]... [--frames F]\n");
+                   "usage: kinetic_bench [--csv cells.csv.gz|run-folder] [--radius R] [--random N]... "
+                   "[--frames F] [--dim 2|3]\n");
       return 2;
     }
   }
   try {
-    if (!random_only) {
-      medusa::io::RunOptions o;
-      o.source = medusa::io::RunSource::csv;
+    medusa::io::RunOptions o;
+    o.source = medusa::io::RunSource::csv;
+    const bool default_cases = !csv_only && !random_only;
+    if (!random_only && (only_dim != 2 || csv_only)) {
       medusa::io::RunData run = medusa::io::read_run(csv, o);
       run_case(csv, run.trajectories, radius);
     }
-    if (!csv_only)
+    if (!csv_only && only_dim != 2)
       for (int n : randoms)
         run_case("random walk", random_walk(42, n, frames), "3");
+    if (default_cases && only_dim != 3) {
+      const std::string planar = MEDUSA_TEST_DATA "/cc3d/sorting_2d";
+      run_case(planar, medusa::io::read_run(planar, o).trajectories, radius);
+    }
+    if (!csv_only && only_dim != 3)
+      for (int n : randoms)
+        run_case("planar random walk", random_walk_2d(42, n, frames), "3");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kinetic_bench: %s\n", e.what());
     return 1;

@@ -45,6 +45,13 @@ struct Engine {
   Interval Pi, Qi;
   std::shared_ptr<const SquaredRadius> rho2_shared;
 
+  // The dimension of the run (MATH.md 5.7): 3, or 2 for a planar run whose z is constant. Top
+  // simplices ("tets" below) have dim + 1 vertices, facets dim; the dimension-specific rules are
+  // delaunay_poly, orientation_poly, the flip rule (dimension_policy.h) and the static structures
+  // (static_delaunay.h). Everything else is shared.
+  int dim = 3;
+  std::size_t top_size() const { return static_cast<std::size_t>(dim) + 1; }
+
   // The current slab, time u inside it, the cells' motion in it and who is alive.
   std::size_t slab = 0;
   SlabTime now;
@@ -53,8 +60,8 @@ struct Engine {
 
   // Del(now+) and the alpha-complex state of its finite simplices.
   detail::Triangulation tri;
-  std::unordered_map<Simplex, int, SimplexHash> orient; // sign of O(sorted vertices), finite tets
-  std::unordered_map<Simplex, Face, SimplexHash> faces; // finite simplices of dimension 1..3 in Del
+  std::unordered_map<Simplex, int, SimplexHash> orient; // sign of O(sorted vertices), finite top simplices
+  std::unordered_map<Simplex, Face, SimplexHash> faces; // finite simplices of dimension 1..dim in Del
   std::unordered_map<Simplex, int, SimplexHash> facet_cert;
 
   // Certificates (recycled through free_certs) and their failure times.
@@ -85,8 +92,12 @@ struct Engine {
   static const Interval& pick(const mpz_class&, const Interval& approx, const Interval&) { return approx; }
   static const mpz_class& pick(const mpz_class& exact, const Interval&, const mpz_class&) { return exact; }
 
-  // Delaunay certificate of a facet, positive while valid (MATH.md 3.1, 3.2).
+  // Delaunay certificate of a facet, positive while valid (MATH.md 3.1, 3.2), in the run's dimension.
   template <class NT> Poly<NT> delaunay_poly(const Simplex& facet) const {
+    return dim == 2 ? delaunay_poly_2<NT>(facet) : delaunay_poly_3<NT>(facet);
+  }
+
+  template <class NT> Poly<NT> delaunay_poly_3(const Simplex& facet) const {
     const detail::Triangulation::Apices* ap = tri.apices(facet);
     VertexId p = ap->v[0], q = ap->v[1];
     if (is_finite(facet)) {
@@ -95,11 +106,11 @@ struct Engine {
         VertexId z = p == infinite_vertex ? q : p;
         std::array<VertexId, 4> seq{facet[0], facet[1], facet[2], z};
         Poly<NT> o = certificate::orientation<NT>(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(seq[3]));
-        return orientation_of(seq) > 0 ? o : -o;
+        return orientation_of(seq.data(), 4) > 0 ? o : -o;
       }
       std::array<VertexId, 4> seq{facet[0], facet[1], facet[2], p};
       Poly<NT> s = certificate::in_sphere<NT>(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(seq[3]), pt(q));
-      return orientation_of(seq) > 0 ? s : -s;
+      return orientation_of(seq.data(), 4) > 0 ? s : -s;
     }
     // Case B: facet (inf, a, b) between (inf, a, b, c) and (inf, a, b, d): hull facet abc, apex z of
     // the finite cell below it; the certificate O(a, b, c, d) oriented so that O(a, b, c, z) > 0.
@@ -108,7 +119,41 @@ struct Engine {
     VertexId z = tri.other_apex(hull, infinite_vertex);
     std::array<VertexId, 4> seq{a, b, c, z};
     Poly<NT> o = certificate::orientation<NT>(pt(a), pt(b), pt(c), pt(d));
-    return orientation_of(seq) > 0 ? o : -o;
+    return orientation_of(seq.data(), 4) > 0 ? o : -o;
+  }
+
+  // The planar analogue (MATH.md 3.2 one dimension down): a facet is an edge with two triangles.
+  template <class NT> Poly<NT> delaunay_poly_2(const Simplex& facet) const {
+    const detail::Triangulation::Apices* ap = tri.apices(facet);
+    VertexId p = ap->v[0], q = ap->v[1];
+    if (is_finite(facet)) {
+      if (p == infinite_vertex || q == infinite_vertex) {
+        // Case A: the orientation of the finite triangle on the hull edge; it fails when the apex
+        // reaches the hull line.
+        VertexId z = p == infinite_vertex ? q : p;
+        std::array<VertexId, 3> seq{facet[0], facet[1], z};
+        Poly<NT> o = certificate::orientation_2<NT>(pt(seq[0]), pt(seq[1]), pt(seq[2]));
+        return orientation_of(seq.data(), 3) > 0 ? o : -o;
+      }
+      // In-circle, positive while q is strictly outside the circle of (x, y, p): InC has the
+      // opposite sign convention to InS (certificate_polynomials.h).
+      std::array<VertexId, 3> seq{facet[0], facet[1], p};
+      Poly<NT> s = certificate::in_circle<NT>(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(q));
+      return orientation_of(seq.data(), 3) > 0 ? -s : s;
+    }
+    // Case B: facet (inf, a) between (inf, a, b) and (inf, a, c): hull edge ab, apex z of the finite
+    // triangle on it; the hull is convex at a while c is on z's side of the line ab.
+    VertexId a = facet[1], b = p, c = q;
+    VertexId z = tri.other_apex(Simplex{a, b}, infinite_vertex);
+    std::array<VertexId, 3> seq{a, b, z};
+    Poly<NT> o = certificate::orientation_2<NT>(pt(a), pt(b), pt(c));
+    return orientation_of(seq.data(), 3) > 0 ? o : -o;
+  }
+
+  // The orientation polynomial of a finite top simplex (a tetrahedron, a triangle in 2D).
+  template <class NT> Poly<NT> orientation_poly(const Simplex& t) const {
+    return t.size() == 3 ? certificate::orientation_2<NT>(pt(t[0]), pt(t[1]), pt(t[2]))
+                         : certificate::orientation<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(t[3]));
   }
 
   // The radius polynomial f of a finite simplex: f <= 0 iff short (MATH.md 3.3).
@@ -153,7 +198,7 @@ struct Engine {
 
   // ------------------------------------ certificates and their scheduling (engine_certificates.cpp)
 
-  int orientation_of(const std::array<VertexId, 4>& seq) const;
+  int orientation_of(const VertexId* seq, std::size_t n) const;
   int orientation_sign_plus(const Simplex& t);
   int new_cert(CertKind kind, const Simplex& key);
   void kill_cert(int id);
@@ -185,6 +230,8 @@ struct Engine {
   // ------------------------------------ flips (MATH.md 4.5) and radius events (engine_flips.cpp)
 
   void flip(const Simplex& facet, std::vector<Step>& steps);
+  void repair(std::vector<Step>& steps);
+  bool flippable_2(const Simplex& facet);
   void resolve_delaunay(std::vector<Step>& steps);
   void resolve_radius(Step& settle, std::unordered_map<Simplex, bool, SimplexHash>& old_k);
 
@@ -218,6 +265,7 @@ struct Engine {
 
   // ------------------------------------ the run (engine_run.cpp)
 
+  void check_planar() const;
   void initialise(Observer& observer);
   void run(Observer& observer);
 

@@ -1,6 +1,7 @@
 // The audit: the structure checked exactly against static CGAL computations at a rational time.
 #include "engine.h"
 
+#include "dimension_policy.h"
 #include "medusa/kinetic/error.h"
 #include "static_delaunay.h"
 
@@ -32,44 +33,72 @@ void Engine::audit() {
   }
   if (!(now < upper))
     return; // the slab has no room left (event at u = 1)
+  // The audit compares open conditions (valid on (now, next event)) with closed ones at q, so q must
+  // avoid the isolated zeros of every certificate polynomial, such as a radius touching rho without
+  // crossing it (a tangential root, MATH.md 3.9): move q towards now until none vanishes there. The
+  // signs at q (0 only for identically-zero polynomials) serve the checks below.
+  std::vector<std::pair<Simplex, ExactPoly>> delaunay_polys, radius_polys;
+  mpz_class p = P, qq = Q;
+  for (const auto& kv : tri.facets())
+    delaunay_polys.emplace_back(kv.first, to_exact_poly(delaunay_poly<mpz_class>(kv.first)));
+  for (const auto& kv : faces)
+    radius_polys.emplace_back(kv.first, to_exact_poly(radius_poly<mpz_class>(kv.first, p, qq)));
+  std::vector<int> delaunay_sign, radius_sign;
   Rational q = rational_between(now, upper);
-  SlabTime at(q);
-  auto sign_q = [&](const ExactPoly& f) { return sign_at(f, at); };
+  for (int attempt = 0;; ++attempt) {
+    const SlabTime at(q);
+    auto signs_at_q = [&](const std::vector<std::pair<Simplex, ExactPoly>>& polys, std::vector<int>& signs) {
+      signs.clear();
+      for (const auto& sf : polys) {
+        const bool zero = CGAL::is_zero(sf.second);
+        const int sg = zero ? 0 : sign_at(sf.second, at);
+        if (sg == 0 && !zero)
+          return false;
+        signs.push_back(sg);
+      }
+      return true;
+    };
+    if (signs_at_q(delaunay_polys, delaunay_sign) && signs_at_q(radius_polys, radius_sign))
+      break;
+    if (attempt == 20)
+      return; // no rational found quickly: skip this audit rather than report a false failure
+    q = rational_between(now, at);
+  }
 
-  // Combinatorial validity: every facet has two tetrahedra; Euler characteristic of S^3 is 0.
+  // Combinatorial validity: every facet has two top simplices; the Euler characteristic is that of
+  // the sphere S^dim.
   std::size_t nv = 1, ne = 0, nf = 0, nt = tri.tets().size();
   std::unordered_set<Simplex, SimplexHash> edges;
   for (const auto& kv : tri.facets()) {
     if (kv.second.count != 2)
-      audit_failure("a facet does not have two tetrahedra");
+      audit_failure("a facet does not have two top simplices");
     ++nf;
   }
   for (const Simplex& t : tri.tets())
-    for (std::size_t i = 0; i < 4; ++i)
-      for (std::size_t j = i + 1; j < 4; ++j)
+    for (std::size_t i = 0; i < t.size(); ++i)
+      for (std::size_t j = i + 1; j < t.size(); ++j)
         edges.insert(Simplex{t[i], t[j]});
   ne = edges.size();
   for (char a : alive)
     nv += a ? 1 : 0;
-  if (nv + nf != ne + nt)
-    audit_failure("the Euler characteristic of the augmented triangulation is not 0");
-  // Local Delaunay, exactly, at q.
-  for (const auto& kv : tri.facets()) {
-    ExactPoly f = to_exact_poly(delaunay_poly<mpz_class>(kv.first));
-    if (!CGAL::is_zero(f) && sign_q(f) <= 0) {
+  if (!euler_characteristic_holds(dim, nv, ne, nf, nt))
+    audit_failure("the Euler characteristic of the augmented triangulation is not that of a sphere");
+  // Local Delaunay, exactly, at q (identically-zero certificates are valid, MATH.md 3.9).
+  for (std::size_t i = 0; i < delaunay_polys.size(); ++i) {
+    const Simplex& facet = delaunay_polys[i].first;
+    if (delaunay_sign[i] < 0) {
       std::ostringstream os;
-      os << "facet " << kv.first << " is not locally Delaunay";
+      os << "facet " << facet << " is not locally Delaunay";
       audit_failure(os.str());
     }
-    auto it = facet_cert.find(kv.first);
+    auto it = facet_cert.find(facet);
     if (it == facet_cert.end() || !certs[static_cast<std::size_t>(it->second)].alive)
       audit_failure("a facet has no certificate");
   }
   // Radius flags and certificates.
-  mpz_class p = P, qq = Q;
-  for (const auto& kv : faces) {
-    ExactPoly f = to_exact_poly(radius_poly<mpz_class>(kv.first, p, qq));
-    bool is_short = sign_q(f) <= 0;
+  for (std::size_t i = 0; i < radius_polys.size(); ++i) {
+    const auto& kv = *faces.find(radius_polys[i].first);
+    bool is_short = radius_sign[i] <= 0;
     if (is_short != kv.second.is_short) {
       std::ostringstream os;
       os << "simplex " << kv.first << " has a wrong shortness flag";
@@ -85,10 +114,11 @@ void Engine::audit() {
       audit_failure(os.str());
     }
   }
-  // The alpha complex against CGAL's static Fixed_alpha_shape_3 at q.
+  // The alpha complex against CGAL's static Fixed_alpha_shape_3 (Alpha_shape_2 in 2D) at q.
   std::vector<Simplex> cgal_tets;
   Rational rho2(CGAL::Gmpz(P.get_mpz_t()), CGAL::Gmpz(Q.get_mpz_t()));
-  std::vector<Simplex> expected = detail::static_alpha_complex(static_input(alive_ids()), q, rho2, cgal_tets);
+  std::vector<Simplex> expected =
+      detail::static_alpha_complex(dim, static_input(alive_ids()), q, rho2, cgal_tets);
   std::unordered_set<Simplex, SimplexHash> cgal_set(cgal_tets.begin(), cgal_tets.end());
   bool same_triangulation = cgal_set.size() == tri.tets().size();
   for (const Simplex& t : tri.tets())

@@ -20,10 +20,10 @@ namespace medusa::kinetic::detail {
 namespace {
 
 // Parity of the permutation that sorts `seq` (+1 even, -1 odd).
-int permutation_sign(std::array<VertexId, 4> seq) {
+int permutation_sign(const VertexId* seq, std::size_t n) {
   int sign = 1;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
       if (seq[i] > seq[j])
         sign = -sign;
   return sign;
@@ -31,23 +31,20 @@ int permutation_sign(std::array<VertexId, 4> seq) {
 
 } // namespace
 
-// The oriented sign of the 4-sequence seq (finite tetrahedron of Del).
-int Engine::orientation_of(const std::array<VertexId, 4>& seq) const {
-  Simplex sorted = Simplex::from_range(seq.begin(), seq.end());
+// The oriented sign of the sequence seq of n = dim + 1 vertices (a finite top simplex of Del).
+int Engine::orientation_of(const VertexId* seq, std::size_t n) const {
+  Simplex sorted = Simplex::from_range(seq, seq + n);
   auto it = orient.find(sorted);
   if (it == orient.end()) {
     std::ostringstream os;
-    os << "no orientation for tetrahedron " << sorted;
+    os << "no orientation for top simplex " << sorted;
     throw InternalError(os.str());
   }
-  return it->second * permutation_sign(seq);
+  return it->second * permutation_sign(seq, n);
 }
 
 int Engine::orientation_sign_plus(const Simplex& t) {
-  return sign_plus_now([&](auto tag) {
-    using NT = decltype(tag);
-    return certificate::orientation<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(t[3]));
-  });
+  return sign_plus_now([&](auto tag) { return orientation_poly<decltype(tag)>(t); });
 }
 
 int Engine::new_cert(CertKind kind, const Simplex& key) {
@@ -105,8 +102,16 @@ void Engine::install(int id) {
     return;
   }
   ExactPoly f = to_exact_poly(exact);
-  if (CGAL::is_zero(f))
-    return; // identically zero: valid, never scheduled (MATH.md 3.9)
+  if (CGAL::is_zero(f)) {
+    // Identically zero: valid, never scheduled (MATH.md 3.9); but a radius polynomial f == 0 means
+    // R = rho throughout, which is short, so a face still flagged long fails now (e.g. two cells
+    // moving rigidly at distance exactly 2 rho from a frame on).
+    if (c.kind == CertKind::radius && !faces.at(c.key).is_short) {
+      ++stats.invalid_at_creation;
+      mark_invalid(id);
+    }
+    return;
+  }
   auto [slot, fresh] = root_cache.try_emplace(cache_key(c));
   if (fresh)
     slot->second = real_roots(f);
@@ -224,7 +229,7 @@ CacheKey Engine::cache_key(const Certificate& c) const {
     bool infinite = std::find(pts.begin(), pts.end(), infinite_vertex) != pts.end();
     k.v[0] = infinite ? 1 : 0;
     if (infinite) {
-      // Case A: the finite tetrahedron; case B: the four finite points (MATH.md 3.2).
+      // Case A: the finite top simplex; case B: its d + 1 finite points (MATH.md 3.2).
       pts.erase(std::remove(pts.begin(), pts.end(), infinite_vertex), pts.end());
     }
     std::sort(pts.begin(), pts.end());

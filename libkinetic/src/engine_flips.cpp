@@ -2,11 +2,12 @@
 // canonical order and radius events (5.2).
 #include "engine.h"
 
+#include "dimension_policy.h"
 #include "face.h"
+#include "medusa/kinetic/certificate_polynomials.h"
 #include "medusa/kinetic/error.h"
 
 #include <algorithm>
-#include <array>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
@@ -17,48 +18,28 @@ void Engine::flip(const Simplex& facet, std::vector<Step>& steps) {
   const detail::Triangulation::Apices* ap = tri.apices(facet);
   VertexId p = ap->v[0], q = ap->v[1];
   Step step;
-  std::vector<Simplex> removed, added;
-  std::array<VertexId, 5> group{facet[0], facet[1], facet[2], p, q};
-  // A 3-2 flip applies when an edge of the facet has exactly the three tetrahedra facet+p,
-  // facet+q and edge+p+q; otherwise the 2-3 flip of the facet.
-  bool three_two = false;
-  for (std::size_t i = 0; i < 3 && !three_two; ++i) {
-    Simplex e = facet.facet(i);
-    Simplex t{e[0], e[1], p, q};
-    if (tri.has_tet(t)) {
-      three_two = true;
-      VertexId z = facet[i];
-      removed = {Simplex{facet[0], facet[1], facet[2], p}, Simplex{facet[0], facet[1], facet[2], q}, t};
-      added = {Simplex{z, p, q, e[0]}, Simplex{z, p, q, e[1]}};
-    }
-  }
-  if (!three_two) {
-    removed = {Simplex{facet[0], facet[1], facet[2], p}, Simplex{facet[0], facet[1], facet[2], q}};
-    for (std::size_t i = 0; i < 3; ++i) {
-      Simplex e = facet.facet(i);
-      added.push_back(Simplex{e[0], e[1], p, q});
-    }
-  }
+  std::vector<VertexId> group(facet.begin(), facet.end());
+  group.push_back(p);
+  group.push_back(q);
+  FlipChange change = flip_change(dim, facet, p, q, tri);
+  const std::vector<Simplex>&removed = change.removed, &added = change.added;
+  const bool three_two = change.three_two;
   bool hull = std::find(group.begin(), group.end(), infinite_vertex) != group.end();
   for (const Simplex& t : added)
     if (is_finite(t) && orientation_sign_plus(t) == 0) {
-      // A new tetrahedron would stay flat: no elementary flip resolves this degenerate group
-      // (e.g. four points coplanar through the slab); MATH.md 5.2 step 3 asks for a static repair.
-      if (!now.is_rational())
-        ++stats.repairs_at_algebraic_times;
-      Step repair;
-      repair.kind = StepKind::repair;
-      std::unordered_map<Simplex, bool, SimplexHash> old_k;
-      record_tet_changes(repair, old_k);
-      repair.groups = degenerate_groups(repair.delaunay_removed, repair.delaunay_created);
-      settle_membership(old_k, repair);
-      repair.rank = steps.size() + 1;
-      steps.push_back(std::move(repair));
+      // A new top simplex would stay flat: no elementary flip resolves this degenerate group (e.g.
+      // four points coplanar through the slab); MATH.md 5.2 step 3 asks for a static repair.
+      repair(steps);
       return;
     }
-  step.kind = hull ? StepKind::hull_flip : (three_two ? StepKind::flip32 : StepKind::flip23);
+  step.kind = hull        ? StepKind::hull_flip
+              : dim == 2  ? StepKind::flip22
+              : three_two ? StepKind::flip32
+                          : StepKind::flip23;
   if (!hull) {
-    // The 4-simplex is an instant cell iff R_S <= rho and the old tetrahedra are in K (MATH.md 6.3).
+    // The simplex of the group (a 4-simplex; a 3-simplex in 2D) is an instant cell iff R_S <= rho and
+    // the old top simplices are in K (MATH.md 6.3). The old top simplices are inscribed in the
+    // group's sphere (circle) at now, so the radius of any of them is R_S.
     const Simplex& old = removed.front();
     int r = sign_at_now(
         [&](auto tag) { return radius_poly<decltype(tag)>(old, pick(P, Pi, tag), pick(Q, Qi, tag)); });
@@ -76,24 +57,86 @@ void Engine::flip(const Simplex& facet, std::vector<Step>& steps) {
   std::unordered_map<Simplex, bool, SimplexHash> old_k;
   change_tets(removed, added, old_k);
   settle_membership(old_k, step);
-  (hull ? stats.hull_flips : (three_two ? stats.flips32 : stats.flips23))++;
+  (hull ? stats.hull_flips : dim == 2 ? stats.flips22 : (three_two ? stats.flips32 : stats.flips23))++;
   step.rank = steps.size() + 1;
   steps.push_back(std::move(step));
+}
+
+// Static repair of the whole triangulation at now+ as one step (MATH.md 5.2 step 3, 5.4).
+void Engine::repair(std::vector<Step>& steps) {
+  if (!now.is_rational())
+    ++stats.repairs_at_algebraic_times;
+  Step step;
+  step.kind = StepKind::repair;
+  std::unordered_map<Simplex, bool, SimplexHash> old_k;
+  record_tet_changes(step, old_k);
+  // The non-simplicial Delaunay faces at now give instant cells (MATH.md 6.3); found in 3D only so
+  // far (engine_degenerate_groups.cpp), so a planar repair reports none.
+  if (dim == 3)
+    step.groups = degenerate_groups(step.delaunay_removed, step.delaunay_created);
+  settle_membership(old_k, step);
+  step.rank = steps.size() + 1;
+  steps.push_back(std::move(step));
+}
+
+// Whether the 2-2 flip of a failed edge yields a triangulation at now+ (MATH.md 5.2 step 2, "if its
+// configuration is flippable"): the new edge pq must not exist yet (a vertex of degree 3 cannot lose
+// an edge by a flip), a finite quadrilateral xpyq must be strictly convex (x and y strictly on either
+// side of pq just after now), and a new finite triangle of a hull flip must not stay flat. A failed
+// certificate in generic motion always passes; simultaneous degenerate failures may not.
+bool Engine::flippable_2(const Simplex& facet) {
+  const detail::Triangulation::Apices* ap = tri.apices(facet);
+  VertexId p = ap->v[0], q = ap->v[1];
+  if (tri.apices(Simplex{p, q}) != nullptr)
+    return false;
+  if (is_finite(facet) && p != infinite_vertex && q != infinite_vertex) {
+    auto side = [&](VertexId x) {
+      return sign_plus_now(
+          [&](auto tag) { return certificate::orientation_2<decltype(tag)>(pt(p), pt(q), pt(x)); });
+    };
+    return side(facet[0]) * side(facet[1]) < 0;
+  }
+  for (const Simplex& t : flip_change(dim, facet, p, q, tri).added)
+    if (is_finite(t) && orientation_sign_plus(t) == 0)
+      return false;
+  return true;
 }
 
 void Engine::resolve_delaunay(std::vector<Step>& steps) {
   std::size_t guard = 0;
   const std::size_t limit = 20 * traj.cells.size() + 1000;
   while (!pending_delaunay.empty()) {
-    auto [facet, id] = *pending_delaunay.begin();
-    pending_delaunay.erase(pending_delaunay.begin());
-    if (!certs[static_cast<std::size_t>(id)].alive || certs[static_cast<std::size_t>(id)].key != facet)
-      continue;
     if (++guard > limit) {
       std::ostringstream os;
       os << "no progress resolving degenerate Delaunay events in slab " << slab << " at u ~ " << now.approx();
       throw InternalError(os.str());
     }
+    if (dim == 2) {
+      // The first flippable failure in canonical order; a static repair when none is (MATH.md 5.2
+      // steps 2 and 3).
+      bool flipped = false;
+      for (auto it = pending_delaunay.begin(); it != pending_delaunay.end();) {
+        auto [facet, id] = *it;
+        if (!certs[static_cast<std::size_t>(id)].alive || certs[static_cast<std::size_t>(id)].key != facet) {
+          it = pending_delaunay.erase(it);
+          continue;
+        }
+        if (flippable_2(facet)) {
+          pending_delaunay.erase(it);
+          flip(facet, steps);
+          flipped = true;
+          break;
+        }
+        ++it;
+      }
+      if (!flipped && !pending_delaunay.empty())
+        repair(steps);
+      continue;
+    }
+    auto [facet, id] = *pending_delaunay.begin();
+    pending_delaunay.erase(pending_delaunay.begin());
+    if (!certs[static_cast<std::size_t>(id)].alive || certs[static_cast<std::size_t>(id)].key != facet)
+      continue;
     flip(facet, steps);
   }
 }

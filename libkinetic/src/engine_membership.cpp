@@ -33,7 +33,7 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
         touched_faces.insert(f);
         old_k.emplace(f, in_k(f));
       });
-      for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t i = 0; i < t.size(); ++i)
         touched_facets.insert(t.facet(i));
     }
   for (const Simplex& t : removed) {
@@ -46,7 +46,9 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
       int s = orientation_sign_plus(t);
       if (s == 0) {
         std::ostringstream os;
-        os << "cells " << t << " stay coplanar but form a Delaunay tetrahedron";
+        os << "cells " << t
+           << (dim == 2 ? " stay collinear but form a Delaunay triangle"
+                        : " stay coplanar but form a Delaunay tetrahedron");
         throw GeometryError(os.str());
       }
       orient[t] = s;
@@ -89,7 +91,7 @@ std::vector<Simplex> Engine::cofaces(const Simplex& s) const {
   for (const Simplex& t : tri.tets_containing(s)) {
     if (!is_finite(t))
       continue;
-    if (s.size() == 3) {
+    if (s.size() + 1 == t.size()) {
       result.insert(t);
       continue;
     }
@@ -157,15 +159,19 @@ bool Engine::has_coface_in_k(const Simplex& s) {
   for (const Simplex& t : tri.tets_containing(s)) {
     if (!is_finite(t))
       continue;
-    if (s.size() == 3) {
+    if (s.size() + 1 == t.size()) {
       if (in_k(t))
         return true;
       continue;
     }
     for (VertexId v : t)
       if (!s.contains(v)) {
-        std::array<VertexId, 3> tv{s[0], s[1], v};
-        if (in_k(Simplex::from_range(tv.begin(), tv.end())))
+        std::array<VertexId, 4> tv{};
+        std::size_t k = 0;
+        for (VertexId x : s)
+          tv[k++] = x;
+        tv[k++] = v;
+        if (in_k(Simplex::from_range(tv.begin(), tv.begin() + k)))
           return true;
       }
   }
@@ -187,8 +193,8 @@ void Engine::settle_membership(const std::unordered_map<Simplex, bool, SimplexHa
     if (it == faces.end())
       continue;
     Face& f = it->second;
-    if (s.size() == 4)
-      f.in_k = f.is_short;
+    if (s.size() == top_size())
+      f.in_k = f.is_short; // top simplices are always Gabriel (MATH.md 4.1)
     else
       f.in_k = (f.is_short && !has_coface_in_k(s) && gabriel_now(s)) || has_coface_in_k(s);
   }

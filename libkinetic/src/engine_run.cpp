@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <memory>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -18,6 +19,17 @@ Engine::Engine(const Trajectories& t, KineticOptions o) : traj(t), options(std::
   rho2_shared = std::make_shared<const SquaredRadius>(options.rho2);
   motion.resize(traj.cells.size());
   alive.assign(traj.cells.size(), 0);
+}
+
+// A planar run keeps every cell in one plane z = const: the 2D certificates ignore z, so a differing
+// z would be silently wrong.
+void Engine::check_planar() const {
+  for (const Trajectory& c : traj.cells)
+    for (std::size_t f = 0; f < c.positions.size(); ++f)
+      if (c.positions[f][2] != traj.cells.front().positions.front()[2])
+        throw InputError("cell " + std::to_string(c.cell_id) + " at frame " +
+                         std::to_string(c.first_frame + f) +
+                         ": z differs from the other cells' in a two-dimensional run");
 }
 
 void Engine::initialise(Observer& observer) {
@@ -45,8 +57,9 @@ void Engine::initialise(Observer& observer) {
 
 void Engine::run(Observer& observer) {
   traj.validate();
-  if (traj.dimension != 3)
-    throw GeometryError("the run is two-dimensional: the 3D kinetic alpha complex needs a 3D run");
+  dim = traj.dimension;
+  if (dim == 2)
+    check_planar();
   auto clock = std::chrono::steady_clock::now();
   initialise(observer);
   for (std::size_t k = 0; k + 1 < traj.frames(); ++k) {

@@ -28,18 +28,24 @@ std::vector<VertexId> Engine::alive_ids() const {
   return ids;
 }
 
-// Rebuilds Del of the current vertex set at now+ with CGAL and replaces the differing tetrahedra.
+// Rebuilds Del of the current vertex set at now+ with CGAL and replaces the differing top simplices.
 void Engine::rebuild_static(std::unordered_map<Simplex, bool, SimplexHash>& old_k) {
   ++stats.static_rebuilds;
   std::vector<VertexId> ids = alive_ids();
   int dimension = 0;
   std::vector<Simplex> tets =
-      now.is_rational() ? detail::delaunay_just_after(static_input(ids), now.rational(), dimension)
-                        : detail::delaunay_at(static_input(ids), rational_before_next_event(), dimension);
-  if (dimension < 3) {
-    if (ids.size() < 4)
-      throw GeometryError("fewer than 4 cells are present at frame " + std::to_string(slab) +
-                          ": the 3D alpha complex needs at least 4");
+      now.is_rational()
+          ? detail::delaunay_just_after(dim, static_input(ids), now.rational(), dimension)
+          : detail::delaunay_at(dim, static_input(ids), rational_before_next_event(), dimension);
+  if (dimension < dim) {
+    // MATH.md 5.7: degenerate input is reported, in either dimension.
+    if (ids.size() < top_size())
+      throw GeometryError("fewer than " + std::to_string(top_size()) + " cells are present at frame " +
+                          std::to_string(slab) + ": the " + std::to_string(dim) +
+                          "D alpha complex needs at least " + std::to_string(top_size()));
+    if (dim == 2)
+      throw GeometryError("all cells lie on one line at frame " + std::to_string(slab) +
+                          ": the 2D method needs cells spanning the plane");
     throw GeometryError("all cells lie in one plane at frame " + std::to_string(slab) +
                         " (a 2D run given as 3D data?): the 3D method needs cells spanning space");
   }

@@ -8,8 +8,13 @@ namespace medusa::kinetic::detail {
 ExactPoly KeyPolynomial::operator()() const {
   Poly<mpz_class> f;
   const auto& p = pts;
-  if (kind == 0)
+  // In-circle and planar orientation have one point fewer than in-sphere and orientation.
+  if (kind == 0 && count == 4)
+    f = certificate::in_circle<mpz_class>(p[0], p[1], p[2], p[3]);
+  else if (kind == 0)
     f = certificate::in_sphere<mpz_class>(p[0], p[1], p[2], p[3], p[4]);
+  else if (kind == 1 && count == 3)
+    f = certificate::orientation_2<mpz_class>(p[0], p[1], p[2]);
   else if (kind == 1)
     f = certificate::orientation<mpz_class>(p[0], p[1], p[2], p[3]);
   else if (count == 2)

@@ -14,7 +14,8 @@
 
 namespace medusa::kinetic::detail {
 
-// The kind of polynomial (0 in-sphere, 1 orientation, 2 radius), then its points, -2 padded.
+// The kind of polynomial (0 in-sphere or in-circle, 1 orientation, 2 radius), then its points, -2
+// padded (the number of points tells the 2D polynomials from the 3D ones).
 struct CacheKey {
   std::array<VertexId, 6> v;
   bool operator==(const CacheKey& o) const { return v == o.v; }
@@ -31,8 +32,9 @@ struct CacheKeyHash {
 using RootCache = std::unordered_map<CacheKey, RealRoots, CacheKeyHash>;
 
 // The exact polynomial behind a root-cache key, up to sign (MATH.md 3.1): the in-sphere determinant
-// of five points, the orientation of four, or the radius polynomial of a simplex. It copies the
-// points' motion, so it stays valid after the triangulation has moved on within the slab.
+// of five points (in-circle of four in 2D), the orientation of four (three in 2D), or the radius
+// polynomial of a simplex. It copies the points' motion, so it stays valid after the triangulation
+// has moved on within the slab.
 struct KeyPolynomial {
   int kind = 0; // 0 in-sphere, 1 orientation, 2 radius (as CacheKey::v[0])
   int count = 0;

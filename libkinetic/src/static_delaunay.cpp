@@ -1,5 +1,7 @@
 #include "static_delaunay.h"
 
+#include "static_delaunay_2.h"
+
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -50,7 +52,8 @@ std::vector<Simplex> triangulate(const std::vector<std::pair<typename K::Point_3
 
 } // namespace
 
-std::vector<Simplex> delaunay_just_after(const StaticInput& input, const CGAL::Gmpq& u, int& dimension) {
+std::vector<Simplex> delaunay_just_after(int dim, const StaticInput& input, const CGAL::Gmpq& u,
+                                         int& dimension) {
   // delta = 2^-k with the largest k <= 24 such that every coordinate 2^k a + b is an exact double;
   // invalid certificates left by a too large delta are repaired by flips at 0+ by the caller.
   double amax = 1, bmax = 1;
@@ -62,6 +65,8 @@ std::vector<Simplex> delaunay_just_after(const StaticInput& input, const CGAL::G
   int k = 24;
   while (k > 0 && std::ldexp(amax, k) + bmax >= std::ldexp(1.0, 52))
     --k;
+  if (u == 0 && k >= 8 && dim == 2)
+    return delaunay_2_scaled(input, k, dimension);
   if (u == 0 && k >= 8) {
     using K = CGAL::Exact_predicates_inexact_constructions_kernel;
     std::vector<std::pair<K::Point_3, VertexId>> pts;
@@ -75,10 +80,12 @@ std::vector<Simplex> delaunay_just_after(const StaticInput& input, const CGAL::G
     return triangulate<K>(pts, dimension);
   }
   // Exact rational points at u + 2^-40 (used at interior rational times and for huge coordinates).
-  return delaunay_at(input, u + CGAL::Gmpq(1, CGAL::Gmpz(1) << 40), dimension);
+  return delaunay_at(dim, input, u + CGAL::Gmpq(1, CGAL::Gmpz(1) << 40), dimension);
 }
 
-std::vector<Simplex> delaunay_at(const StaticInput& input, const CGAL::Gmpq& u, int& dimension) {
+std::vector<Simplex> delaunay_at(int dim, const StaticInput& input, const CGAL::Gmpq& u, int& dimension) {
+  if (dim == 2)
+    return delaunay_2_at(input, u, dimension);
   using K = CGAL::Exact_predicates_exact_constructions_kernel;
   std::vector<std::pair<K::Point_3, VertexId>> pts;
   for (std::size_t i = 0; i < input.ids.size(); ++i) {
@@ -89,8 +96,10 @@ std::vector<Simplex> delaunay_at(const StaticInput& input, const CGAL::Gmpq& u, 
   return triangulate<K>(pts, dimension);
 }
 
-std::vector<Simplex> static_alpha_complex(const StaticInput& input, const CGAL::Gmpq& u,
+std::vector<Simplex> static_alpha_complex(int dim, const StaticInput& input, const CGAL::Gmpq& u,
                                           const CGAL::Gmpq& rho2, std::vector<Simplex>& tets) {
+  if (dim == 2)
+    return static_alpha_complex_2(input, u, rho2, tets);
   using K = CGAL::Exact_predicates_exact_constructions_kernel;
   using Vbb = CGAL::Triangulation_vertex_base_with_info_3<VertexId, K>;
   using Vb = CGAL::Fixed_alpha_shape_vertex_base_3<K, Vbb>;

@@ -1,6 +1,8 @@
 // Static Delaunay triangulations and alpha complexes computed from scratch with CGAL: the initial
 // triangulation, insertions and deletions at frames (MATH.md 5.5, method A: points frozen at a small
-// rational delta after the frame) and the oracle of audit().
+// rational delta after the frame) and the oracle of audit(). `dim` is the dimension of the run: 3
+// (Delaunay_triangulation_3, Fixed_alpha_shape_3) or 2 (the points' x and y; Delaunay_triangulation_2,
+// Alpha_shape_2 in GENERAL mode).
 #pragma once
 
 #include "medusa/kinetic/moving_point.h"
@@ -17,19 +19,22 @@ struct StaticInput {
   std::vector<MovingPoint> motion;
 };
 
-// Tetrahedra (infinite vertex = -1) of the Delaunay triangulation of the points a + (u + delta) b
-// for the rational u and a small dyadic delta > 0 chosen so that the coordinates stay exact. Returns the
-// affine dimension of the point set in `dimension` (the tetrahedra are empty when it is below 3).
-std::vector<Simplex> delaunay_just_after(const StaticInput& input, const CGAL::Gmpq& u, int& dimension);
+// Top simplices (tetrahedra, triangles in 2D; infinite vertex = -1) of the Delaunay triangulation of
+// the points a + (u + delta) b for the rational u and a small dyadic delta > 0 chosen so that the
+// coordinates stay exact. Returns the affine dimension of the point set in `dimension` (the result
+// is empty when it is below dim).
+std::vector<Simplex> delaunay_just_after(int dim, const StaticInput& input, const CGAL::Gmpq& u,
+                                         int& dimension);
 
-// Tetrahedra of the Delaunay triangulation of the points a + u b exactly at the rational u (CGAL's
-// symbolic perturbation decides among cospherical sets).
-std::vector<Simplex> delaunay_at(const StaticInput& input, const CGAL::Gmpq& u, int& dimension);
+// Top simplices of the Delaunay triangulation of the points a + u b exactly at the rational u
+// (CGAL's symbolic perturbation decides among cospherical sets).
+std::vector<Simplex> delaunay_at(int dim, const StaticInput& input, const CGAL::Gmpq& u, int& dimension);
 
 // The finite simplices (all dimensions) of the fixed-radius alpha complex of the points a + u b,
 // u rational, radius^2 = rho2 (grid units), computed with CGAL's Delaunay_triangulation_3 and
-// Fixed_alpha_shape_3 over an exact kernel. `tets` receives the Delaunay tetrahedra (infinite = -1).
-std::vector<Simplex> static_alpha_complex(const StaticInput& input, const CGAL::Gmpq& u,
+// Fixed_alpha_shape_3 (2D: Delaunay_triangulation_2 and Alpha_shape_2) over an exact kernel. `tets`
+// receives the Delaunay top simplices (infinite = -1).
+std::vector<Simplex> static_alpha_complex(int dim, const StaticInput& input, const CGAL::Gmpq& u,
                                           const CGAL::Gmpq& rho2, std::vector<Simplex>& tets);
 
 } // namespace medusa::kinetic::detail

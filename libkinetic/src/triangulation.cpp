@@ -16,14 +16,14 @@ void Triangulation::clear() {
 void Triangulation::add_tet(const Simplex& t) {
   if (!tets_.insert(t).second) {
     std::ostringstream os;
-    os << "tetrahedron " << t << " added twice";
+    os << "top simplex " << t << " added twice";
     throw InternalError(os.str());
   }
-  for (std::size_t i = 0; i < 4; ++i) {
+  for (std::size_t i = 0; i < t.size(); ++i) {
     Apices& a = facets_[t.facet(i)];
     if (a.count == 2) {
       std::ostringstream os;
-      os << "facet " << t.facet(i) << " would get a third tetrahedron " << t;
+      os << "facet " << t.facet(i) << " would get a third top simplex " << t;
       throw InternalError(os.str());
     }
     a.v[a.count++] = t[i];
@@ -34,10 +34,10 @@ void Triangulation::add_tet(const Simplex& t) {
 void Triangulation::remove_tet(const Simplex& t) {
   if (tets_.erase(t) == 0) {
     std::ostringstream os;
-    os << "tetrahedron " << t << " removed but absent";
+    os << "top simplex " << t << " removed but absent";
     throw InternalError(os.str());
   }
-  for (std::size_t i = 0; i < 4; ++i) {
+  for (std::size_t i = 0; i < t.size(); ++i) {
     auto it = facets_.find(t.facet(i));
     Apices& a = it->second;
     if (a.v[0] == t[i]) {
@@ -62,7 +62,7 @@ VertexId Triangulation::other_apex(const Simplex& facet, VertexId apex) const {
   const Apices* a = apices(facet);
   if (a == nullptr || a->count != 2) {
     std::ostringstream os;
-    os << "facet " << facet << " does not have two tetrahedra";
+    os << "facet " << facet << " does not have two top simplices";
     throw InternalError(os.str());
   }
   return a->v[0] == apex ? a->v[1] : a->v[0];

@@ -1,7 +1,9 @@
-// The combinatorial Delaunay triangulation augmented with the infinite vertex: tetrahedra as sorted
-// vertex tuples (the infinite vertex is -1 and sorts first), facets with their two apices, and the
-// tetrahedra incident to each vertex. Geometry lives elsewhere: certificates decide validity, this
-// structure only records the combinatorics (flips are set operations, MATH.md 4.5).
+// The combinatorial Delaunay triangulation augmented with the infinite vertex: top simplices
+// ("tets": tetrahedra, or triangles in a planar run) as sorted vertex tuples (the infinite vertex is
+// -1 and sorts first), facets (triangles, or edges in 2D) with their two apices, and the top
+// simplices incident to each vertex. The dimension is the size of the simplices added. Geometry lives
+// elsewhere: certificates decide validity, this structure only records the combinatorics (flips are set
+// operations, MATH.md 4.5).
 #pragma once
 
 #include "medusa/kinetic/simplex.h"

@@ -148,8 +148,9 @@ void MedusaBuilder::step(const kinetic::Step& st, const VirtualTime& when) {
 
   std::map<std::vector<VertexId>, CellKind> instants;
   auto add = [&](std::vector<VertexId> v, CellKind kind) { instants.emplace(std::move(v), kind); };
-  // Flip (MATH.md 6.3): the 4-simplex of the five points when R_S <= rho and the old tetrahedra are in
-  // L_{r-1}; libkinetic decides this and reports it as in_alpha.
+  // Flip (MATH.md 6.3): the simplex of the flip group (the 4-simplex of a 2-3 / 3-2 flip, the
+  // 3-simplex of a planar 2-2 flip) when R_S <= rho and the old top simplices are in L_{r-1};
+  // libkinetic decides this and reports it as in_alpha.
   if (st.flip && st.flip->in_alpha) {
     std::vector<VertexId> v(st.flip->vertices.begin(), st.flip->vertices.end());
     std::sort(v.begin(), v.end());

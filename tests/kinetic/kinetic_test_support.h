@@ -44,7 +44,7 @@ public:
   }
 
   std::vector<double> times;
-  int step_counts[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  int step_counts[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
   int flips_in_alpha = 0, inconsistencies = 0, mismatches = 0, not_closed = 0;
   const std::set<Simplex>& complex() const { return k_; }
 
@@ -76,6 +76,98 @@ inline Trajectories random_walk(std::uint64_t seed, int n, int frames, int box, 
         x += d(rng);
     }
     t.cells.push_back(c);
+  }
+  return t;
+}
+
+// Whether two cells moving linearly from a0 to a1 and from b0 to b1 meet at some u in (0, 1].
+inline bool meet(const GridPoint& a0, const GridPoint& a1, const GridPoint& b0, const GridPoint& b1) {
+  // a0 + u (a1 - a0) = b0 + u (b1 - b0) in every coordinate: u d = -e with d, e per coordinate.
+  long num = 0, den = 0; // the common u = num / den once fixed
+  for (int i = 0; i < 3; ++i) {
+    long e = a0[i] - b0[i], d = (a1[i] - a0[i]) - (b1[i] - b0[i]);
+    if (d == 0) {
+      if (e != 0)
+        return false;
+      continue;
+    }
+    if (den == 0) {
+      num = -e;
+      den = d;
+    } else if (num * d != -e * den) {
+      return false;
+    }
+  }
+  if (den == 0)
+    return true; // identical motion from the same start
+  if (den < 0) {
+    num = -num;
+    den = -den;
+  }
+  return num > 0 && num <= den;
+}
+
+// The planar analogue: n cells walking in the plane z = 0, a run of dimension 2. Steps that would
+// make two cells meet (at a frame or inside a slab) are drawn again, so dense walks on a coarse grid
+// stay collision-free (MATH.md 2.5).
+inline Trajectories random_walk_2d(std::uint64_t seed, int n, int frames, int box, int step) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> start(0, box), d(-step, step);
+  Trajectories t;
+  t.dimension = 2;
+  t.scale = 1;
+  for (int k = 0; k < frames; ++k)
+    t.frame_times.push_back(100 * k);
+  std::set<GridPoint> used;
+  for (int i = 0; i < n; ++i) {
+    Trajectory c;
+    c.cell_id = i + 1;
+    c.type = 1 + i % 2;
+    GridPoint p;
+    do
+      p = {start(rng), start(rng), 0};
+    while (!used.insert(p).second);
+    c.positions.push_back(p);
+    t.cells.push_back(c);
+  }
+  for (int k = 1; k < frames; ++k)
+    for (int i = 0; i < n; ++i) {
+      const GridPoint from = t.cells[i].positions.back();
+      for (;;) {
+        GridPoint to{from[0] + d(rng), from[1] + d(rng), 0};
+        bool clash = false;
+        for (int j = 0; j < n && !clash; ++j) {
+          if (j == i)
+            continue;
+          const auto& q = t.cells[j].positions;
+          const GridPoint& q0 = q[k - 1];
+          const GridPoint& q1 = j < i ? q[k] : q[k - 1]; // cells not yet moved: assume they stay
+          clash = meet(from, to, q0, q1);
+        }
+        if (!clash) {
+          t.cells[i].positions.push_back(to);
+          break;
+        }
+      }
+    }
+  return t;
+}
+
+// Twelve cells on rays through the integer points of the circle of radius 5, moving radially at
+// different speeds (p_i(u) = c_i (10 + (u - 1/2) k_i), k_i even): all twelve are cocircular (radius
+// 50) exactly at u = 1/2 and at no other time, a massively degenerate planar batch.
+inline Trajectories cocircular_burst() {
+  const std::int64_t c[12][2] = {{5, 0},  {4, 3},   {3, 4},   {0, 5},  {-3, 4}, {-4, 3},
+                                 {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+  const std::int64_t k[6] = {2, -4, 6, -2, 4, -6};
+  Trajectories t;
+  t.dimension = 2;
+  t.scale = 1;
+  t.frame_times = {0, 100};
+  for (int i = 0; i < 12; ++i) {
+    const std::int64_t s0 = 10 - k[i % 6] / 2, s1 = 10 + k[i % 6] / 2;
+    t.cells.push_back(
+        {i + 1, 1 + i % 2, 0, {{c[i][0] * s0, c[i][1] * s0, 0}, {c[i][0] * s1, c[i][1] * s1, 0}}});
   }
   return t;
 }

@@ -119,3 +119,33 @@ TEST_CASE("a real run holds no momentary contact inside a batch and reports well
   REQUIRE(filter.momentary == 0);
   REQUIRE(groups.malformed == 0);
 }
+
+TEST_CASE("the real 2D sorting run keeps the audit green from its square-lattice start",
+          "[kinetic][real][2d]") {
+  // CC3D's cellsort_2D demo (100x100x1 lattice, 193 cells, 20 frames): read from the run folder, whose
+  // Simulation XML gives the z extent 1, so the run is planar. MCS 0 is a square lattice (every
+  // square cocircular): the engine starts from Del(t0+) and the audit compares with CGAL's
+  // Delaunay_triangulation_2 + Alpha_shape_2 in every audited slab.
+  medusa::io::RunOptions read;
+  read.source = medusa::io::RunSource::csv;
+  Trajectories t = medusa::io::read_run(MEDUSA_TEST_DATA "/cc3d/sorting_2d", read).trajectories;
+  REQUIRE(t.dimension == 2);
+  REQUIRE(t.cells.size() == 193);
+  REQUIRE(t.frames() == 20);
+  KineticOptions options;
+  options.rho2 = squared_radius_from_decimal("3", t.scale);
+  options.audit = true;
+  options.audit_stride = 100;
+  KineticAlphaComplex engine(t, options);
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  const KineticStatistics& s = engine.statistics();
+  CAPTURE(s.flips22, s.hull_flips, s.radius_events, s.static_rebuilds, s.audits, s.audits_compared_with_cgal);
+  REQUIRE(s.flips22 > 100);
+  REQUIRE(s.radius_events > 0);
+  REQUIRE(s.audits_compared_with_cgal >= 10);
+  REQUIRE(obs.step_counts[static_cast<int>(StepKind::flip22)] == static_cast<int>(s.flips22));
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(obs.not_closed == 0);
+}

@@ -55,6 +55,32 @@ Poly<NT> in_sphere(const MovingPoint& p0, const MovingPoint& p1, const MovingPoi
   return result - w[0] * det3(q[1], q[2], q[3]);
 }
 
+// Planar certificates (MATH.md 3.2 in dimension 2): the points move in the plane z = const, so only
+// x and y enter.
+
+// O2(p0,p1,p2) = det[p1-p0; p2-p0] over (x, y): the sign of CGAL::orientation for Point_2
+// (positive counterclockwise). Degree <= 2.
+template <class NT>
+Poly<NT> orientation_2(const MovingPoint& p0, const MovingPoint& p1, const MovingPoint& p2) {
+  const Vec<NT> a = difference<NT>(p0, p1), b = difference<NT>(p0, p2);
+  return a[0] * b[1] - a[1] * b[0];
+}
+
+// InC(p0,p1,p2; y) = det[(p_i - y, |p_i - y|^2)]_{i=0..2} over (x, y), degree <= 4. For O2(p0,p1,p2) > 0
+// it is > 0 iff y is strictly inside the circumcircle (the sign of CGAL::side_of_oriented_circle):
+// the opposite convention to in_sphere, as for every lifted determinant of odd size.
+template <class NT>
+Poly<NT> in_circle(const MovingPoint& p0, const MovingPoint& p1, const MovingPoint& p2,
+                   const MovingPoint& y) {
+  const Vec<NT> q[3] = {difference<NT>(y, p0), difference<NT>(y, p1), difference<NT>(y, p2)};
+  Poly<NT> w[3];
+  for (int i = 0; i < 3; ++i)
+    w[i] = q[i][0] * q[i][0] + q[i][1] * q[i][1];
+  auto minor = [&](int i, int j) { return q[i][0] * q[j][1] - q[i][1] * q[j][0]; };
+  // Expansion along the last column: det = w_0 m_12 - w_1 m_02 + w_2 m_01.
+  return w[0] * minor(1, 2) - w[1] * minor(0, 2) + w[2] * minor(0, 1);
+}
+
 // R1: Q|p-q|^2 - 4P <= 0 iff the edge is short (R <= rho, rho^2 = P/Q). Degree <= 2.
 template <class NT>
 Poly<NT> edge_radius(const MovingPoint& p, const MovingPoint& q, const NT& P, const NT& Q) {

@@ -8,7 +8,6 @@
 
 #include "medusa/kinetic/simplex.h"
 
-#include <array>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -34,15 +33,18 @@ enum class StepKind {
   insertion, // a cell appears at a frame (mitosis)
   deletion,  // a cell disappears at a frame (death)
   repair,    // static repair of a degenerate configuration (MATH.md 5.4)
-  settle     // the final re-evaluation of a batch (rank m+1, MATH.md 5.2 step 4)
+  settle,    // the final re-evaluation of a batch (rank m+1, MATH.md 5.2 step 4)
+  flip22     // finite 2-2 flip of a planar run (the 2D analogue of flip23 / flip32)
 };
 
 const char* to_string(StepKind kind);
 
-// The five points of a finite flip. `in_alpha` is the rule of MATH.md 6.3: R_S <= rho and the old
-// tetrahedra are in L_{r-1}; then the 4-simplex of the five points is an instant medusa cell.
+// The points of a finite flip: five for a 2-3 / 3-2 flip, four for a planar 2-2 flip. `in_alpha` is
+// the rule of MATH.md 6.3: R_S <= rho (the circumsphere, or circumcircle, of the group) and the old
+// top simplices are in L_{r-1}; then the simplex of the group (a 4-simplex, or a 3-simplex in 2D) is
+// an instant medusa cell.
 struct FlipGroup {
-  std::array<VertexId, 5> vertices{};
+  std::vector<VertexId> vertices; // sorted
   bool in_alpha = false;
 };
 
@@ -59,11 +61,11 @@ struct Step {
   StepKind kind = StepKind::settle;
   std::vector<Simplex> entered;          // L_r \ L_{r-1}, in increasing dimension
   std::vector<Simplex> left;             // L_{r-1} \ L_r, in increasing dimension
-  std::optional<FlipGroup> flip;         // for flip23 / flip32
+  std::optional<FlipGroup> flip;         // for flip23 / flip32 / flip22
   std::vector<DegenerateGroup> groups;   // for repair
   VertexId vertex = -1;                  // the inserted or deleted vertex
-  std::vector<Simplex> delaunay_removed; // finite Delaunay tetrahedra removed by the step
-  std::vector<Simplex> delaunay_created; // finite Delaunay tetrahedra created by the step
+  std::vector<Simplex> delaunay_removed; // finite top simplices (tetrahedra, triangles in 2D) removed
+  std::vector<Simplex> delaunay_created; // finite top simplices created by the step
 };
 
 // Receives the stream. All callbacks have empty defaults, so an observer overrides what it needs.

@@ -32,7 +32,7 @@ struct VirtualTime {
 
 enum class CellKind : std::uint8_t {
   regular = 0, // a maximal lifetime interval of a simplex of K(t)
-  flip = 1,    // the 4-simplex of a finite flip with R_S <= rho (instant)
+  flip = 1,    // the 4-simplex of a finite flip (3-simplex of a 2D 2-2 flip) with R_S <= rho (instant)
   join = 2,    // sigma + {p} at an insertion or deletion of p (instant)
   repair = 3   // a subset of a degenerate group found by a static repair (instant)
 };

@@ -1,0 +1,371 @@
+// The kinetic engine on planar runs (dimension 2) with the audit on: hand-built cases derived on
+// paper, randomised runs and adversarial inputs, every audited batch checked against CGAL's static
+// Delaunay_triangulation_2 + Alpha_shape_2 (GENERAL mode, exact kernel).
+#include "kinetic_test_support.h"
+#include "medusa/kinetic/error.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+
+using namespace medusa::kinetic;
+using medusa::kinetic::testing::ReplayObserver;
+
+namespace {
+
+Trajectories planar(std::vector<std::int64_t> frame_times) {
+  Trajectories t;
+  t.dimension = 2;
+  t.scale = 1;
+  t.frame_times = std::move(frame_times);
+  return t;
+}
+
+void still(Trajectories& t, std::int64_t id, std::int64_t x, std::int64_t y) {
+  t.cells.push_back({id, 1, 0, std::vector<GridPoint>(t.frames(), GridPoint{x, y, 0})});
+}
+
+void moving(Trajectories& t, std::int64_t id, std::vector<GridPoint> path) {
+  t.cells.push_back({id, 2, 0, path});
+}
+
+KineticOptions with_radius(long num, long den = 1, bool audit = true) {
+  KineticOptions o;
+  o.rho2.num = num;
+  o.rho2.den = den;
+  o.audit = audit;
+  return o;
+}
+
+// Records each batch's time, step kinds, flip groups, and the simplices entering and leaving K.
+struct BatchLog : Observer {
+  struct Entry {
+    EventTime time;
+    std::vector<StepKind> kinds;
+    std::vector<FlipGroup> flips;
+    std::vector<Simplex> entered, left;
+  };
+  std::vector<Entry> batches;
+  void batch(const EventTime& t, const std::vector<Step>& steps) override {
+    Entry e{t, {}, {}, {}, {}};
+    for (const Step& s : steps) {
+      e.kinds.push_back(s.kind);
+      if (s.flip)
+        e.flips.push_back(*s.flip);
+      e.entered.insert(e.entered.end(), s.entered.begin(), s.entered.end());
+      e.left.insert(e.left.end(), s.left.begin(), s.left.end());
+    }
+    batches.push_back(e);
+  }
+  int count(StepKind k) const {
+    int n = 0;
+    for (const Entry& e : batches)
+      n += static_cast<int>(std::count(e.kinds.begin(), e.kinds.end(), k));
+    return n;
+  }
+};
+
+// Both observers at once: the replay check and the log.
+struct Both : Observer {
+  ReplayObserver& replay;
+  BatchLog& log;
+  Both(ReplayObserver& r, BatchLog& l) : replay(r), log(l) {}
+  void initial(const EventTime& t, const std::vector<Simplex>& k) override { replay.initial(t, k); }
+  void batch(const EventTime& t, const std::vector<Step>& s) override {
+    replay.batch(t, s);
+    log.batch(t, s);
+  }
+};
+
+// a = (-5,0), b = (5,0), c = (0,-5) on the circle x^2 + y^2 = 25; d = (0, 10 - 8u) reaches the
+// circle at u = 5/8 (t = 62.5) and goes inside: the edge ab flips to cd there (R_S = 5).
+Trajectories cocircular_flip() {
+  Trajectories t = planar({0, 100});
+  still(t, 1, -5, 0);
+  still(t, 2, 5, 0);
+  still(t, 3, 0, -5);
+  moving(t, 4, {{0, 10, 0}, {0, 2, 0}});
+  return t;
+}
+
+} // namespace
+
+TEST_CASE("planar: two cells approaching make their edge short exactly at the predicted time",
+          "[kinetic][engine][2d]") {
+  // Cell 1 at (0,0) lies inside the triangle of cells 2, 3, 4 throughout, so Del never changes. Cell
+  // 4 moves from (40,0) to (10,0): |pq| = 40 - 30u; with rho = 10 the edge is short when |pq| <= 20,
+  // at u = 2/3, t = 200/3. Every other edge is longer than 90 and every triangle has R > 45.
+  Trajectories t = planar({0, 100});
+  still(t, 1, 0, 0);
+  still(t, 2, 0, 100);
+  still(t, 3, -7, -100);
+  moving(t, 4, {{40, 0, 0}, {10, 0, 0}});
+  KineticAlphaComplex engine(t, with_radius(100));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  const KineticStatistics& s = engine.statistics();
+  REQUIRE(s.radius_events == 1);
+  REQUIRE(s.flips22 + s.hull_flips == 0);
+  REQUIRE(obs.times.size() == 1);
+  REQUIRE(obs.times.front() == Approx(200.0 / 3).epsilon(1e-12));
+  REQUIRE(obs.complex() == std::set<Simplex>{Simplex{0}, Simplex{1}, Simplex{2}, Simplex{3}, Simplex{0, 3}});
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(s.audits_compared_with_cgal > 0);
+}
+
+TEST_CASE("planar: four points becoming cocircular flip their edge at that time with a 3-simplex",
+          "[kinetic][engine][2d]") {
+  // rho = 6 >= R_S = 5, and both old triangles are short just before t* (abd becomes short when d
+  // passes y ~ 9.317), so the flip's 3-simplex is an instant cell (MATH.md 6.3). Afterwards every edge
+  // of the new triangulation (length <= 10) and both new triangles (R^2 = (y^2 + 25)/2 <= 25) are
+  // short: K = 4 vertices, 5 edges, 2 triangles.
+  Trajectories t = cocircular_flip();
+  KineticAlphaComplex engine(t, with_radius(36));
+  ReplayObserver obs(engine);
+  BatchLog log;
+  Both both(obs, log);
+  engine.run(both);
+  const KineticStatistics& s = engine.statistics();
+  REQUIRE(s.flips22 == 1);
+  REQUIRE(s.hull_flips == 0);
+  REQUIRE(log.count(StepKind::flip22) == 1);
+  bool found = false;
+  for (const auto& b : log.batches)
+    for (const FlipGroup& g : b.flips) {
+      found = true;
+      REQUIRE(b.time.time == 62.5);
+      REQUIRE(g.vertices == std::vector<VertexId>{0, 1, 2, 3});
+      REQUIRE(g.in_alpha);
+      REQUIRE(std::count(b.left.begin(), b.left.end(), Simplex{0, 1}) == 1);
+      REQUIRE(std::count(b.entered.begin(), b.entered.end(), Simplex{2, 3}) == 1);
+    }
+  REQUIRE(found);
+  REQUIRE(obs.complex().size() == 4 + 5 + 2);
+  REQUIRE(obs.complex().count(Simplex{0, 2, 3}) == 1);
+  REQUIRE(obs.complex().count(Simplex{1, 2, 3}) == 1);
+  REQUIRE(obs.complex().count(Simplex{0, 1}) == 0);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(s.audits_compared_with_cgal > 0);
+}
+
+TEST_CASE("planar: with rho below the circle's radius the 2-2 flip adds no 3-simplex",
+          "[kinetic][engine][2d]") {
+  Trajectories t = cocircular_flip();
+  KineticAlphaComplex engine(t, with_radius(16));
+  ReplayObserver obs(engine);
+  BatchLog log;
+  Both both(obs, log);
+  engine.run(both);
+  REQUIRE(engine.statistics().flips22 == 1);
+  int flips = 0;
+  for (const auto& b : log.batches)
+    for (const FlipGroup& g : b.flips) {
+      ++flips;
+      REQUIRE(!g.in_alpha);
+    }
+  REQUIRE(flips == 1);
+  REQUIRE(obs.mismatches == 0);
+}
+
+TEST_CASE("planar: a cell leaving the hull through an edge makes a hull flip when its triangle flattens",
+          "[kinetic][engine][2d]") {
+  // d = (2,2) + u (6,6) crosses the hull edge bc (x + y = 10) at u = 1/2, t = 50: the orientation of
+  // bcd (a D-infinity certificate, case A) vanishes there. Afterwards the circle of abd contains c
+  // only when d = (s,s) with s > 10, never reached. rho = 1: every edge is longer than 2.
+  Trajectories t = planar({0, 100});
+  still(t, 1, 0, 0);
+  still(t, 2, 10, 0);
+  still(t, 3, 0, 10);
+  moving(t, 4, {{2, 2, 0}, {8, 8, 0}});
+  KineticAlphaComplex engine(t, with_radius(1));
+  BatchLog log;
+  engine.run(log);
+  REQUIRE(engine.statistics().radius_events == 0);
+  REQUIRE(engine.statistics().flips22 == 0);
+  REQUIRE(log.batches.size() == 1);
+  REQUIRE(log.batches[0].time.time == 50.0);
+  REQUIRE(log.count(StepKind::hull_flip) == 1);
+  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
+}
+
+TEST_CASE("planar: a triangle's radius event enters and leaves K at the predicted times",
+          "[kinetic][engine][2d]") {
+  // a = (0,0), b = (10,0), c = (5, 20 - 18u). The circumcentre is (5, k), k = (y^2 - 25)/(2y), R^2 =
+  // 25 + k^2; with rho = 25/4, R <= rho iff |y^2 - 25| <= 7.5 y iff 2.5 <= y <= 10: the triangle is
+  // short from u = 5/9 (t = 500/9) to u = 35/36 (t = 875/9).
+  Trajectories t = planar({0, 100});
+  still(t, 1, 0, 0);
+  still(t, 2, 10, 0);
+  moving(t, 3, {{5, 20, 0}, {5, 2, 0}});
+  KineticAlphaComplex engine(t, with_radius(625, 16));
+  ReplayObserver obs(engine);
+  BatchLog log;
+  Both both(obs, log);
+  engine.run(both);
+  double entered = -1, left = -1;
+  for (const auto& b : log.batches) {
+    if (std::count(b.entered.begin(), b.entered.end(), Simplex{0, 1, 2}))
+      entered = b.time.time;
+    if (std::count(b.left.begin(), b.left.end(), Simplex{0, 1, 2}))
+      left = b.time.time;
+  }
+  REQUIRE(entered == Approx(500.0 / 9).epsilon(1e-12));
+  REQUIRE(left == Approx(875.0 / 9).epsilon(1e-12));
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
+}
+
+TEST_CASE("planar: random walks keep the audit green between every pair of events",
+          "[kinetic][engine][2d][random]") {
+  auto [seed, n, frames, stride] = GENERATE(table<std::uint64_t, int, int, int>(
+      {{1, 20, 10, 1}, {2, 50, 10, 1}, {3, 100, 10, 1}, {5, 30, 20, 1}, {4, 200, 10, 4}}));
+  CAPTURE(seed, n, frames, stride);
+  const int box = static_cast<int>(1000 * std::sqrt(double(n)) * 2);
+  Trajectories t = testing::random_walk_2d(seed, n, frames, box, 600);
+  KineticOptions options = with_radius(1200 * 1200);
+  options.audit_stride = static_cast<std::size_t>(stride);
+  KineticAlphaComplex engine(t, options);
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  const KineticStatistics& s = engine.statistics();
+  CAPTURE(s.flips22, s.hull_flips, s.radius_events, s.audits, s.audits_compared_with_cgal);
+  REQUIRE(s.flips22 > 0);
+  REQUIRE(s.radius_events > 0);
+  REQUIRE(s.audits_compared_with_cgal > 0);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(obs.not_closed == 0);
+}
+
+TEST_CASE("planar: cells on an integer lattice start from the triangulation just after t0",
+          "[kinetic][engine][2d][degenerate]") {
+  // A 6x6 square lattice (every square cocircular) with random steps: the audit checks Del(t0+).
+  std::uint64_t seed = GENERATE(11, 12);
+  CAPTURE(seed);
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> d(-2000, 2000);
+  Trajectories t = planar({0, 100, 200, 300});
+  int id = 1;
+  for (int x = 0; x < 6; ++x)
+    for (int y = 0; y < 6; ++y) {
+      Trajectory c;
+      c.cell_id = id++;
+      c.type = 1;
+      GridPoint p{10000 * x, 10000 * y, 0};
+      for (int k = 0; k < 4; ++k) {
+        c.positions.push_back(p);
+        p[0] += d(rng);
+        p[1] += d(rng);
+      }
+      t.cells.push_back(c);
+    }
+  KineticAlphaComplex engine(t, with_radius(7000 * 7000));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
+}
+
+TEST_CASE("planar: stationary cells on a lattice produce no events", "[kinetic][engine][2d][degenerate]") {
+  // 4x4 square lattice of spacing 5, rho = 3: axis edges (R = 2.5) are short and Gabriel (the
+  // opposite corners of their squares are outside their diametral discs); diagonals and triangles
+  // (R = 3.54) are long. K = 16 vertices + 2 * 4 * 3 = 24 axis edges.
+  Trajectories t = planar({0, 100, 200});
+  int id = 1;
+  for (int x = 0; x < 4; ++x)
+    for (int y = 0; y < 4; ++y)
+      still(t, id++, 5 * x, 5 * y);
+  KineticAlphaComplex engine(t, with_radius(9));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  REQUIRE(engine.statistics().batches == 0);
+  REQUIRE(obs.complex().size() == 16 + 24);
+}
+
+TEST_CASE("planar: collinear cells are reported clearly, never a crash", "[kinetic][engine][2d]") {
+  Trajectories t = planar({0, 100});
+  for (int i = 0; i < 6; ++i)
+    t.cells.push_back({i + 1, 1, 0, {{i * 3, 2 * i * 3, 0}, {i * 3 + 1, 2 * (i * 3 + 1), 0}}});
+  Observer none;
+  KineticAlphaComplex first(t, with_radius(16));
+  REQUIRE_THROWS_AS(first.run(none), medusa::GeometryError);
+  KineticAlphaComplex second(t, with_radius(16));
+  REQUIRE_THROWS_WITH(second.run(none), Catch::Contains("one line"));
+}
+
+TEST_CASE("planar: a planar run whose z varies is refused", "[kinetic][engine][2d]") {
+  Trajectories t = cocircular_flip();
+  t.cells[2].positions[1][2] = 1;
+  Observer none;
+  KineticAlphaComplex engine(t, with_radius(16));
+  REQUIRE_THROWS_AS(engine.run(none), medusa::InputError);
+}
+
+TEST_CASE("planar: cells moving along shared lines repair degenerate groups and stay audited",
+          "[kinetic][engine][2d][degenerate]") {
+  // Small steps on a coarse integer grid: many triples stay collinear and quadruples cocircular
+  // through whole slabs (identically-zero certificates), so flips fall back to static repairs.
+  auto seed = GENERATE(range<std::uint64_t>(31, 34));
+  CAPTURE(seed);
+  Trajectories t = testing::random_walk_2d(seed, 40, 8, 30, 2);
+  KineticAlphaComplex engine(t, with_radius(25));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  const KineticStatistics& s = engine.statistics();
+  CAPTURE(s.flips22, s.hull_flips, s.static_rebuilds, s.audits, s.audits_compared_with_cgal);
+  REQUIRE(s.audits_compared_with_cgal > 0);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(obs.not_closed == 0);
+}
+
+TEST_CASE("planar: cells inserted and deleted in the middle of a run keep the audit green",
+          "[kinetic][engine][2d]") {
+  // A collision-free walk of 41 cells; cell 41 appears at frame 3 (its first positions dropped) and
+  // cell 1 disappears after frame 4.
+  Trajectories t = testing::random_walk_2d(21, 41, 8, 50, 5);
+  Trajectory& born = t.cells[40];
+  born.first_frame = 3;
+  born.positions.erase(born.positions.begin(), born.positions.begin() + 3);
+  t.cells[0].positions.resize(5);
+  KineticAlphaComplex engine(t, with_radius(100));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  REQUIRE(engine.statistics().insertions == 1);
+  REQUIRE(engine.statistics().deletions == 1);
+  REQUIRE(obs.step_counts[static_cast<int>(StepKind::insertion)] == 1);
+  REQUIRE(obs.step_counts[static_cast<int>(StepKind::deletion)] == 1);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(obs.complex().count(Simplex{0}) == 0);
+  REQUIRE(obs.complex().count(Simplex{40}) == 1);
+}
+
+TEST_CASE("planar: twelve cells becoming cocircular at one instant are resolved in one audited batch",
+          "[kinetic][engine][2d][degenerate]") {
+  // All in-circle certificates of the twelve-gon's diagonals vanish at u = 1/2 (t = 50), an exact
+  // rational time: one batch of 2-2 flips or a static repair (MATH.md 5.2), audited before and after.
+  auto rho2 = GENERATE(long(40 * 40), long(60 * 60));
+  CAPTURE(rho2);
+  Trajectories t = testing::cocircular_burst();
+  KineticAlphaComplex engine(t, with_radius(rho2));
+  ReplayObserver obs(engine);
+  BatchLog log;
+  Both both(obs, log);
+  engine.run(both);
+  const KineticStatistics& s = engine.statistics();
+  CAPTURE(s.flips22, s.hull_flips, s.static_rebuilds, s.audits_compared_with_cgal);
+  int at_half = 0;
+  for (const auto& b : log.batches)
+    if (b.time.time == 50.0)
+      ++at_half;
+  REQUIRE(at_half == 1);
+  REQUIRE(s.audits_compared_with_cgal > 0);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(obs.not_closed == 0);
+}
