@@ -143,12 +143,18 @@ TEST_CASE("A run with lattice z extent 1 is planar", "[io][run]") {
   CHECK(r.trajectories.dimension == 2);
   CHECK(r.trajectories.cells.size() == 2);
   CHECK(r.volumes.empty());
-  // Without the lattice the same data stays 3D, with a warning.
+  // With another or no lattice extent the same data is still planar, with a warning.
   RunOptions o;
   o.z_extent = 60;
-  const RunData r3 = read_run(dir.file("cells.csv"), o);
-  CHECK(r3.trajectories.dimension == 3);
-  CHECK(has_warning(r3, "every z is equal"));
+  const RunData r60 = read_run(dir.file("cells.csv"), o);
+  CHECK(r60.trajectories.dimension == 2);
+  CHECK(has_warning(r60, "every z is equal but the lattice z extent is 60; read as a planar (2D) run"));
+  io::test::TempDir alone; // no Simulation XML next to the CSV: the z extent is unknown
+  write(alone.file("cells.csv"),
+        "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n0,1,1,1.5,2,0\n0,2,2,3,4,0\n10,1,1,1,2,0\n10,2,2,3,4.25,0\n");
+  const RunData lone = read_run(alone.file("cells.csv"));
+  CHECK(lone.trajectories.dimension == 2);
+  CHECK(has_warning(lone, "the lattice z extent is unknown; read as a planar (2D) run"));
 }
 
 TEST_CASE("A planar run with differing z is refused naming the line and cell", "[io][run]") {

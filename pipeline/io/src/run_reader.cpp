@@ -177,9 +177,12 @@ RunData read_csv_run(const std::string& path, const RunOptions& options,
                        std::to_string(first.line) + " in a run with lattice z extent 1");
     dimension = 2;
   } else if (differing == csv.samples.end()) {
+    // Every centre in one plane z = const is a planar run whatever the lattice says (a 3D alpha
+    // complex of coplanar points has no tetrahedra, MATH.md 5.7): run it in 2D, and say so.
+    dimension = 2;
     run.warnings.push_back(path + ": every z is equal but the lattice z extent is " +
                            (z_extent ? std::to_string(*z_extent) : std::string("unknown")) +
-                           "; read as 3D (planar input is degenerate in 3D)");
+                           "; read as a planar (2D) run");
   }
   take_assembly(run, assemble_trajectories(std::move(csv.samples), run.sources, options.scale, dimension));
   name_types(run, csv.type_names);
