@@ -272,6 +272,7 @@ struct Engine {
   // ------------------------------------ degenerate groups of static repairs (engine_degenerate_groups.cpp)
 
   int orientation_at_now(const Simplex& t);
+  bool cospherical_at_now(const Simplex& t, VertexId y);
   bool concyclic_at_now(const Simplex& t);
   bool face_group_within_rho(const std::vector<VertexId>& p, const std::vector<VertexId>& apices,
                              const std::vector<Simplex>& cofaces);

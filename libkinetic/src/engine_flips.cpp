@@ -70,10 +70,9 @@ void Engine::repair(std::vector<Step>& steps) {
   step.kind = StepKind::repair;
   std::unordered_map<Simplex, bool, SimplexHash> old_k;
   record_tet_changes(step, old_k);
-  // The non-simplicial Delaunay faces at now give instant cells (MATH.md 6.3); found in 3D only so
-  // far (engine_degenerate_groups.cpp), so a planar repair reports none.
-  if (dim == 3)
-    step.groups = degenerate_groups(step.delaunay_removed, step.delaunay_created);
+  // The non-simplicial Delaunay faces at now give instant cells (MATH.md 6.3), in either dimension
+  // (engine_degenerate_groups.cpp).
+  step.groups = degenerate_groups(step.delaunay_removed, step.delaunay_created);
   settle_membership(old_k, step);
   step.rank = steps.size() + 1;
   steps.push_back(std::move(step));
