@@ -1,6 +1,6 @@
-// The medusa of runs with static repairs at cospherical moments: the instant cells of the repair's
-// degenerate groups (MATH.md 6.3) are present, d d = 0 (6.4), and the homology is that of the
-// space-time body (6.1), derived on paper.
+// The medusa of runs with static repairs at cospherical (3D) or cocircular (2D) moments: the instant
+// cells of the repair's degenerate groups (MATH.md 6.3) are present, d d = 0 (6.4), and the homology
+// is that of the space-time body (6.1), derived on paper.
 #include "medusa/complex/homology.h"
 #include "medusa/complex/medusa.h"
 #include "medusa/complex/medusa_builder.h"
@@ -50,6 +50,36 @@ kinetic::Trajectories pyramid() {
   still(3, {20, 20, 0});
   t.cells.push_back({4, 1, 0, {{-6, 20, 0}, {6, 20, 0}}});
   still(5, {10, 10, 20});
+  return t;
+}
+
+// The planar run of tests/kinetic/test_kinetic_degenerate_groups_2d.cpp (derivation there): a
+// rectangle p1 = (-104,17), p2 = (-104,23), p3 = (-96,17), p4 = (-96,23) (ids 0..3) and e (id 4)
+// reaching its circle (centre (-100,20), R^2 = 25) at t = 100 and staying on it; at t = 100 a static
+// repair forced by four cells momentarily collinear on x = 29 (ids 5..8) re-triangulates the pentagon:
+// p1 p2 p3 and p1 p3 e are removed, e p2 p3 and p1 e p2 created (p2 p3 p4 stays).
+kinetic::Trajectories planar_repair_with_pentagon() {
+  kinetic::Trajectories t;
+  t.dimension = 2;
+  t.scale = 1;
+  t.frame_times = {0, 100, 200};
+  auto path = [&](std::int64_t id, std::vector<kinetic::GridPoint> p) { t.cells.push_back({id, 1, 0, p}); };
+  auto still = [&](std::int64_t id, std::int64_t x, std::int64_t y) {
+    path(id, {{x, y, 0}, {x, y, 0}, {x, y, 0}});
+  };
+  still(1, -104, 17);
+  still(2, -104, 23);
+  still(3, -96, 17);
+  still(4, -96, 23);
+  path(5, {{-100, 11, 0}, {-100, 15, 0}, {-100, 15, 0}});
+  path(6, {{30, 25, 0}, {29, 27, 0}, {28, 27, 0}});
+  path(7, {{29, 19, 0}, {29, 21, 0}, {28, 22, 0}});
+  path(8, {{28, 24, 0}, {29, 26, 0}, {29, 25, 0}});
+  path(9, {{30, 15, 0}, {29, 13, 0}, {29, 15, 0}});
+  still(10, 20, 20);
+  still(11, 22, 10);
+  still(12, 21, 29);
+  still(13, 14, 16);
   return t;
 }
 
@@ -207,4 +237,63 @@ TEST_CASE("the medusa of a square pyramid through a cospherical moment holds its
   REQUIRE(b.at(0) == 1);
   for (std::size_t k = 1; k < b.size(); ++k)
     REQUIRE(b[k] == 0);
+}
+
+TEST_CASE("the medusa of a planar repair through five cocircular cells holds the pentagon's instant cells",
+          "[medusa][kinetic][groups][2d]") {
+  // rho^2 = 26 >= g = 25: the pentagon {0..4} is the repair's group. Every simplex of the pentagon that
+  // is Delaunay on either side of the repair has R <= 5 < rho and is in K there (the triangles are
+  // short top simplices, the edges their faces), so the instant cells are exactly the subsets of
+  // {0..4} in neither triangulation (MATH.md 6.3): the two edges p1 p4 = {0,3} and p4 e = {3,4}; of
+  // the ten triangles, the five other than p1 p2 p3, p2 p3 p4, p1 p3 e, e p2 p3, p1 e p2; all five
+  // 3-simplices and the 4-simplex: 13 cells, all instant.
+  const kinetic::Trajectories t = planar_repair_with_pentagon();
+  std::size_t groups = 0;
+  const complex::Medusa m = build(t, 26, false, groups);
+  REQUIRE(groups == 1);
+  complex::validate_medusa(m, "planar pentagon");
+  check_boundary_of_boundary(m);
+  std::vector<std::vector<kinetic::VertexId>> instants;
+  for (const complex::Cell& c : m.cells)
+    if (c.kind == complex::CellKind::repair) {
+      REQUIRE(c.birth == c.death);
+      instants.push_back(c.vertices);
+    }
+  std::sort(instants.begin(), instants.end());
+  const std::vector<std::vector<kinetic::VertexId>> expected = {
+      {0, 1, 2, 3}, {0, 1, 2, 3, 4}, {0, 1, 2, 4}, {0, 1, 3}, {0, 1, 3, 4}, {0, 2, 3}, {0, 2, 3, 4},
+      {0, 3},       {0, 3, 4},       {1, 2, 3, 4}, {1, 3, 4}, {2, 3, 4},    {3, 4}};
+  REQUIRE(instants == expected);
+  const std::vector<std::size_t> b = betti(m);
+  CAPTURE(b);
+
+  // Without the group the two triangulations of the quadrilateral p1 p2 e p3 (p1 p3 versus p2 e as
+  // diagonal), both alive at the repair's rank and sharing their boundary, form a 2-sphere that no
+  // cell fills: one spurious class more, in degree 2.
+  std::size_t dropped = 0;
+  const complex::Medusa without = build(t, 26, true, dropped);
+  check_boundary_of_boundary(without);
+  const std::vector<std::size_t> bw = betti(without);
+  CAPTURE(bw);
+  REQUIRE(b.at(0) == bw.at(0));
+  std::size_t higher = 0, higher_without = 0;
+  for (std::size_t k = 1; k < b.size(); ++k)
+    higher += b[k];
+  for (std::size_t k = 1; k < bw.size(); ++k)
+    higher_without += bw[k];
+  REQUIRE(higher_without == higher + 1);
+  REQUIRE(bw.at(2) == b.at(2) + 1);
+}
+
+TEST_CASE("the medusa of a planar repair with rho below the pentagon's radius has no repair cell",
+          "[medusa][kinetic][groups][2d]") {
+  // rho^2 = 24 < g = 25: no group, so no instant repair cell, and the medusa is still valid.
+  const kinetic::Trajectories t = planar_repair_with_pentagon();
+  std::size_t groups = 0;
+  const complex::Medusa m = build(t, 24, false, groups);
+  REQUIRE(groups == 0);
+  complex::validate_medusa(m, "planar pentagon");
+  check_boundary_of_boundary(m);
+  for (const complex::Cell& c : m.cells)
+    REQUIRE(c.kind != complex::CellKind::repair);
 }
