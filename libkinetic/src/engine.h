@@ -220,10 +220,33 @@ struct Engine {
                    std::unordered_map<Simplex, bool, SimplexHash>& old_k);
   bool is_short(const Simplex& s) const;
   std::vector<Simplex> cofaces(const Simplex& s) const;
+  // Calls f(c) for each finite (k+1)-coface c of s in Del (a coface may come twice, once per top
+  // simplex holding it) until f returns true; returns whether it did.
+  template <class F> bool for_each_coface(const Simplex& s, F&& f) const {
+    bool found = false;
+    tri.for_each_tet_containing(s, [&](const Simplex& t) {
+      if (found || !is_finite(t))
+        return;
+      if (s.size() + 1 == t.size()) {
+        found = f(t);
+        return;
+      }
+      for (VertexId v : t)
+        if (!found && !s.contains(v)) {
+          std::array<VertexId, 4> w{};
+          std::size_t k = 0;
+          for (VertexId x : s)
+            w[k++] = x;
+          w[k++] = v;
+          found = f(Simplex::from_range(w.begin(), w.begin() + k));
+        }
+    });
+    return found;
+  }
   bool in_frontier(const Simplex& s) const;
   void update_frontier(const Simplex& s);
   bool gabriel_now(const Simplex& s);
-  bool has_coface_in_k(const Simplex& s);
+  bool has_coface_in_k(const Simplex& s) const;
   void settle_membership(const std::unordered_map<Simplex, bool, SimplexHash>& old_k, Step& step);
   std::vector<Simplex> current_complex() const;
 

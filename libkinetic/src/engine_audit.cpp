@@ -83,6 +83,21 @@ void Engine::audit() {
     nv += a ? 1 : 0;
   if (!euler_characteristic_holds(dim, nv, ne, nf, nt))
     audit_failure("the Euler characteristic of the augmented triangulation is not that of a sphere");
+  // The finite faces recorded are exactly those of Del, each with its count of top simplices.
+  std::unordered_set<Simplex, SimplexHash> del_faces;
+  for (const Simplex& t : tri.tets())
+    for_each_face(t, [&](const Simplex& f) {
+      if (f.size() == 1 || !del_faces.insert(f).second)
+        return;
+      auto it = faces.find(f);
+      if (it == faces.end() || it->second.tets != static_cast<int>(tri.tets_containing(f).size())) {
+        std::ostringstream os;
+        os << "simplex " << f << " of Del has a wrong count of top simplices";
+        audit_failure(os.str());
+      }
+    });
+  if (del_faces.size() != faces.size())
+    audit_failure("a simplex not in Del is still recorded");
   // Local Delaunay, exactly, at q (identically-zero certificates are valid, MATH.md 3.9).
   for (std::size_t i = 0; i < delaunay_polys.size(); ++i) {
     const Simplex& facet = delaunay_polys[i].first;

@@ -36,9 +36,16 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
       for (std::size_t i = 0; i < t.size(); ++i)
         touched_facets.insert(t.facet(i));
     }
+  // Each face counts the top simplices (infinite ones included) that hold it, so its presence in
+  // Del after the change needs no search of the triangulation.
+  std::vector<Simplex> created;
   for (const Simplex& t : removed) {
     tri.remove_tet(t);
     orient.erase(t);
+    for_each_face(t, [&](const Simplex& f) {
+      if (f.size() > 1)
+        --faces.at(f).tets;
+    });
   }
   for (const Simplex& t : added) {
     tri.add_tet(t);
@@ -53,21 +60,26 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
       }
       orient[t] = s;
     }
+    for_each_face(t, [&](const Simplex& f) {
+      if (f.size() == 1)
+        return;
+      auto [it, fresh] = faces.try_emplace(f);
+      if (fresh)
+        created.push_back(f);
+      ++it->second.tets;
+    });
   }
   for (const Simplex& f : touched_faces) {
-    if (f.size() == 1)
-      continue;
-    bool present = !tri.tets_containing(f).empty();
     auto it = faces.find(f);
-    if (!present && it != faces.end()) {
+    if (it != faces.end() && it->second.tets == 0) {
       kill_cert(it->second.cert);
       faces.erase(it);
-    } else if (present && it == faces.end()) {
-      if (f.size() == 2 && slab + 1 < traj.frames())
-        check_collision(f);
-      Face& face = faces[f];
-      face.is_short = compute_short(f);
     }
+  }
+  for (const Simplex& f : created) {
+    if (f.size() == 2 && slab + 1 < traj.frames())
+      check_collision(f);
+    faces.at(f).is_short = compute_short(f);
   }
   // Frontier membership of every surviving touched simplex: their cofaces changed (MATH.md 4.4,
   // "after any change of Del"). Cofaces of new simplices are new, hence touched as well.
@@ -85,37 +97,22 @@ bool Engine::is_short(const Simplex& s) const {
   return it != faces.end() && it->second.is_short;
 }
 
-// The (k+1)-cofaces of a finite simplex in Del (finite ones only).
+// The (k+1)-cofaces of a finite simplex in Del (finite ones only), sorted.
 std::vector<Simplex> Engine::cofaces(const Simplex& s) const {
-  std::set<Simplex> result;
-  for (const Simplex& t : tri.tets_containing(s)) {
-    if (!is_finite(t))
-      continue;
-    if (s.size() + 1 == t.size()) {
-      result.insert(t);
-      continue;
-    }
-    for (VertexId v : t)
-      if (!s.contains(v)) {
-        std::array<VertexId, 4> w{};
-        std::size_t k = 0;
-        for (VertexId x : s)
-          w[k++] = x;
-        w[k++] = v;
-        result.insert(Simplex::from_range(w.begin(), w.begin() + k));
-      }
-  }
-  return {result.begin(), result.end()};
+  std::vector<Simplex> result;
+  for_each_coface(s, [&](const Simplex& c) {
+    result.push_back(c);
+    return false;
+  });
+  std::sort(result.begin(), result.end());
+  result.erase(std::unique(result.begin(), result.end()), result.end());
+  return result;
 }
 
 // The frontier (MATH.md 4.4): maximal short simplices and minimal long ones.
 bool Engine::in_frontier(const Simplex& s) const {
-  if (is_short(s)) {
-    for (const Simplex& c : cofaces(s))
-      if (is_short(c))
-        return false;
-    return true;
-  }
+  if (is_short(s))
+    return !for_each_coface(s, [&](const Simplex& c) { return is_short(c); });
   if (s.size() == 2)
     return true;
   for (std::size_t i = 0; i < s.size(); ++i)
@@ -137,45 +134,34 @@ void Engine::update_frontier(const Simplex& s) {
 }
 
 bool Engine::gabriel_now(const Simplex& s) {
-  // Not strictly inside the smallest circumball: sign^+ of G1/G2 >= 0 (MATH.md 3.4, 4.1 Lemma 4.2).
-  std::set<VertexId> link;
-  for (const Simplex& t : tri.tets_containing(s))
-    for (VertexId v : t)
-      if (v != infinite_vertex && !s.contains(v))
-        link.insert(v);
-  for (VertexId x : link) {
-    int g = sign_plus_now([&](auto tag) {
-      using NT = decltype(tag);
-      return s.size() == 2 ? certificate::gabriel_edge<NT>(pt(s[0]), pt(s[1]), pt(x))
-                           : certificate::gabriel_triangle<NT>(pt(s[0]), pt(s[1]), pt(s[2]), pt(x));
-    });
-    if (g < 0)
-      return false;
-  }
-  return true;
+  // Not strictly inside the smallest circumball: sign^+ of G1/G2 >= 0 (MATH.md 3.4, 4.1 Lemma 4.2),
+  // for every link vertex (each tested once).
+  std::array<VertexId, 64> seen{};
+  std::size_t n_seen = 0;
+  bool gabriel = true;
+  tri.for_each_tet_containing(s, [&](const Simplex& t) {
+    for (VertexId x : t) {
+      if (!gabriel || x == infinite_vertex || s.contains(x))
+        continue;
+      if (std::find(seen.begin(), seen.begin() + static_cast<std::ptrdiff_t>(n_seen), x) !=
+          seen.begin() + static_cast<std::ptrdiff_t>(n_seen))
+        continue;
+      if (n_seen < seen.size())
+        seen[n_seen++] = x;
+      int g = sign_plus_now([&](auto tag) {
+        using NT = decltype(tag);
+        return s.size() == 2 ? certificate::gabriel_edge<NT>(pt(s[0]), pt(s[1]), pt(x))
+                             : certificate::gabriel_triangle<NT>(pt(s[0]), pt(s[1]), pt(s[2]), pt(x));
+      });
+      if (g < 0)
+        gabriel = false;
+    }
+  });
+  return gabriel;
 }
 
-bool Engine::has_coface_in_k(const Simplex& s) {
-  for (const Simplex& t : tri.tets_containing(s)) {
-    if (!is_finite(t))
-      continue;
-    if (s.size() + 1 == t.size()) {
-      if (in_k(t))
-        return true;
-      continue;
-    }
-    for (VertexId v : t)
-      if (!s.contains(v)) {
-        std::array<VertexId, 4> tv{};
-        std::size_t k = 0;
-        for (VertexId x : s)
-          tv[k++] = x;
-        tv[k++] = v;
-        if (in_k(Simplex::from_range(tv.begin(), tv.begin() + k)))
-          return true;
-      }
-  }
-  return false;
+bool Engine::has_coface_in_k(const Simplex& s) const {
+  return for_each_coface(s, [&](const Simplex& c) { return in_k(c); });
 }
 
 // Re-evaluates membership (MATH.md 4.5 "re-eval") on the touched simplices, in decreasing
@@ -196,7 +182,7 @@ void Engine::settle_membership(const std::unordered_map<Simplex, bool, SimplexHa
     if (s.size() == top_size())
       f.in_k = f.is_short; // top simplices are always Gabriel (MATH.md 4.1)
     else
-      f.in_k = (f.is_short && !has_coface_in_k(s) && gabriel_now(s)) || has_coface_in_k(s);
+      f.in_k = has_coface_in_k(s) || (f.is_short && gabriel_now(s));
   }
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     bool before = old_k.at(*it), after = in_k(*it);

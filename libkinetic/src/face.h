@@ -14,6 +14,7 @@ struct Face {
   bool is_short = false;
   bool in_k = false;
   int cert = -1;
+  int tets = 0; // top simplices of Del (infinite ones included) that contain this simplex
 };
 
 template <class F> void for_each_face(const Simplex& t, F&& f) {

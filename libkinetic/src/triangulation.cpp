@@ -27,7 +27,10 @@ void Triangulation::add_tet(const Simplex& t) {
       throw InternalError(os.str());
     }
     a.v[a.count++] = t[i];
-    incident_[t[i]].push_back(t);
+    const std::size_t slot = static_cast<std::size_t>(t[i] + 1);
+    if (slot >= incident_.size())
+      incident_.resize(slot + 1);
+    incident_[slot].push_back(t);
   }
 }
 
@@ -46,10 +49,10 @@ void Triangulation::remove_tet(const Simplex& t) {
     --a.count;
     if (a.count == 0)
       facets_.erase(it);
-    auto& list = incident_[t[i]];
-    list.erase(std::find(list.begin(), list.end(), t));
-    if (list.empty())
-      incident_.erase(t[i]);
+    auto& list = incident_[static_cast<std::size_t>(t[i] + 1)];
+    // Order within the list is not used: swap with the last and pop.
+    *std::find(list.begin(), list.end(), t) = list.back();
+    list.pop_back();
   }
 }
 
@@ -70,19 +73,13 @@ VertexId Triangulation::other_apex(const Simplex& facet, VertexId apex) const {
 
 const std::vector<Simplex>& Triangulation::tets_of(VertexId v) const {
   static const std::vector<Simplex> none;
-  auto it = incident_.find(v);
-  return it == incident_.end() ? none : it->second;
+  const std::size_t slot = static_cast<std::size_t>(v + 1);
+  return slot < incident_.size() ? incident_[slot] : none;
 }
 
 std::vector<Simplex> Triangulation::tets_containing(const Simplex& s) const {
   std::vector<Simplex> result;
-  for (const Simplex& t : tets_of(s[0])) {
-    bool all = true;
-    for (VertexId v : s)
-      all = all && t.contains(v);
-    if (all)
-      result.push_back(t);
-  }
+  for_each_tet_containing(s, [&](const Simplex& t) { result.push_back(t); });
   return result;
 }
 

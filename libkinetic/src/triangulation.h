@@ -41,10 +41,44 @@ public:
   std::vector<Simplex> tets_containing(const Simplex& s) const;
   const std::vector<Simplex>& tets_of(VertexId v) const;
 
+  // Calls f(t) for every top simplex t containing s, without allocating: the queries of the
+  // frontier and membership rules (MATH.md 4.4, 4.5) run for every touched face of every event, so
+  // they scan the shortest incident list of s's vertices.
+  template <class F> void for_each_tet_containing(const Simplex& s, F&& f) const {
+    const std::vector<Simplex>& list = shortest_incident_list(s);
+    for (const Simplex& t : list)
+      if (contains_all(t, s))
+        f(t);
+  }
+  // Is s a face of some top simplex?
+  bool contains_face(const Simplex& s) const {
+    for (const Simplex& t : shortest_incident_list(s))
+      if (contains_all(t, s))
+        return true;
+    return false;
+  }
+
 private:
+  static bool contains_all(const Simplex& t, const Simplex& s) {
+    for (VertexId v : s)
+      if (!t.contains(v))
+        return false;
+    return true;
+  }
+  const std::vector<Simplex>& shortest_incident_list(const Simplex& s) const {
+    const std::vector<Simplex>* best = &tets_of(s[0]);
+    for (std::size_t i = 1; i < s.size(); ++i) {
+      const std::vector<Simplex>& l = tets_of(s[i]);
+      if (l.size() < best->size())
+        best = &l;
+    }
+    return *best;
+  }
+
   std::unordered_set<Simplex, SimplexHash> tets_;
   std::unordered_map<Simplex, Apices, SimplexHash> facets_;
-  std::unordered_map<VertexId, std::vector<Simplex>> incident_;
+  // Top simplices incident to each vertex, indexed by vertex id + 1 (the infinite vertex is -1).
+  std::vector<std::vector<Simplex>> incident_;
 };
 
 } // namespace medusa::kinetic::detail
