@@ -81,6 +81,13 @@ struct SimplexHash {
     std::size_t h = s.size();
     for (VertexId v : s)
       h = h * 0x9E3779B97F4A7C15ULL + static_cast<std::size_t>(v) + (h >> 29);
+    // Final avalanche (MurmurHash3's fmix64): the tables take the hash modulo a prime, and sets of
+    // simplices sharing vertices would otherwise crowd few buckets.
+    h ^= h >> 33;
+    h *= 0xFF51AFD7ED558CCDULL;
+    h ^= h >> 33;
+    h *= 0xC4CEB9FE1A85EC53ULL;
+    h ^= h >> 33;
     return h;
   }
 };
