@@ -7,6 +7,7 @@
 #include "certificate.h"
 #include "event_queue.h"
 #include "face.h"
+#include "flat_simplex_map.h"
 #include "root_cache.h"
 #include "static_delaunay.h"
 #include "triangulation.h"
@@ -28,11 +29,13 @@
 #include <memory>
 #include <set>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
 namespace medusa::kinetic::detail {
+
+// The membership in K, before the current step, of every simplex the step touched.
+using OldMembership = FlatSimplexMap<bool>;
 
 struct Engine {
   // The input and the outputs of the run.
@@ -60,9 +63,9 @@ struct Engine {
 
   // Del(now+) and the alpha-complex state of its finite simplices.
   detail::Triangulation tri;
-  std::unordered_map<Simplex, int, SimplexHash> orient; // sign of O(sorted vertices), finite top simplices
-  std::unordered_map<Simplex, Face, SimplexHash> faces; // finite simplices of dimension 1..dim in Del
-  std::unordered_map<Simplex, int, SimplexHash> facet_cert;
+  FlatSimplexMap<int> orient; // sign of O(sorted vertices), finite top simplices
+  FlatSimplexMap<Face> faces; // finite simplices of dimension 1..dim in Del
+  FlatSimplexMap<int> facet_cert;
 
   // Certificates (recycled through free_certs) and their failure times.
   std::vector<Certificate> certs;
@@ -217,7 +220,7 @@ struct Engine {
 
   bool in_k(const Simplex& s) const;
   void change_tets(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                   std::unordered_map<Simplex, bool, SimplexHash>& old_k);
+                   OldMembership& old_k);
   bool is_short(const Simplex& s) const;
   std::vector<Simplex> cofaces(const Simplex& s) const;
   // Calls f(c) for each finite (k+1)-coface c of s in Del (a coface may come twice, once per top
@@ -247,7 +250,7 @@ struct Engine {
   void update_frontier(const Simplex& s);
   bool gabriel_now(const Simplex& s);
   bool has_coface_in_k(const Simplex& s) const;
-  void settle_membership(const std::unordered_map<Simplex, bool, SimplexHash>& old_k, Step& step);
+  void settle_membership(const OldMembership& old_k, Step& step);
   std::vector<Simplex> current_complex() const;
 
   // ------------------------------------ flips (MATH.md 4.5) and radius events (engine_flips.cpp)
@@ -256,7 +259,7 @@ struct Engine {
   void repair(std::vector<Step>& steps);
   bool flippable_2(const Simplex& facet);
   void resolve_delaunay(std::vector<Step>& steps);
-  void resolve_radius(Step& settle, std::unordered_map<Simplex, bool, SimplexHash>& old_k);
+  void resolve_radius(Step& settle, OldMembership& old_k);
 
   // ------------------------------------ the event loop and batches (engine_event_loop.cpp)
 
@@ -269,7 +272,7 @@ struct Engine {
 
   detail::StaticInput static_input(const std::vector<VertexId>& ids) const;
   std::vector<VertexId> alive_ids() const;
-  void rebuild_static(std::unordered_map<Simplex, bool, SimplexHash>& old_k);
+  void rebuild_static(OldMembership& old_k);
   Rational rational_before_next_event() const;
 
   // ------------------------------------ collisions (engine_collisions.cpp)
@@ -284,7 +287,7 @@ struct Engine {
   void reinstall_all();
   void frame(Observer& observer, std::size_t k);
   void insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps);
-  void record_tet_changes(Step& step, std::unordered_map<Simplex, bool, SimplexHash>& old_k);
+  void record_tet_changes(Step& step, OldMembership& old_k);
 
   // ------------------------------------ the run (engine_run.cpp)
 

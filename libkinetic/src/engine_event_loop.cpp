@@ -3,7 +3,6 @@
 #include "engine.h"
 
 #include <algorithm>
-#include <unordered_map>
 #include <vector>
 
 namespace medusa::kinetic::detail {
@@ -44,7 +43,7 @@ void Engine::emit_batch(Observer& observer, std::vector<Step>& steps, bool at_fr
 // then the final re-evaluation (MATH.md 5.2).
 void Engine::process_batch(std::vector<Step>& steps) {
   resolve_delaunay(steps);
-  std::unordered_map<Simplex, bool, SimplexHash> old_k;
+  OldMembership old_k;
   Step settle;
   settle.kind = StepKind::settle;
   while (!pending_radius.empty()) {

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <sstream>
-#include <unordered_map>
 #include <vector>
 
 namespace medusa::kinetic::detail {
@@ -54,7 +53,7 @@ void Engine::flip(const Simplex& facet, std::vector<Step>& steps) {
     step.delaunay_removed = removed;
     step.delaunay_created = added;
   }
-  std::unordered_map<Simplex, bool, SimplexHash> old_k;
+  OldMembership old_k;
   change_tets(removed, added, old_k);
   settle_membership(old_k, step);
   (hull ? stats.hull_flips : dim == 2 ? stats.flips22 : (three_two ? stats.flips32 : stats.flips23))++;
@@ -68,7 +67,7 @@ void Engine::repair(std::vector<Step>& steps) {
     ++stats.repairs_at_algebraic_times;
   Step step;
   step.kind = StepKind::repair;
-  std::unordered_map<Simplex, bool, SimplexHash> old_k;
+  OldMembership old_k;
   record_tet_changes(step, old_k);
   // The non-simplicial Delaunay faces at now give instant cells (MATH.md 6.3), in either dimension
   // (engine_degenerate_groups.cpp).
@@ -141,7 +140,7 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
 }
 
 // Radius events: toggle shortness of the failed certificates, then one settle step.
-void Engine::resolve_radius(Step& settle, std::unordered_map<Simplex, bool, SimplexHash>& old_k) {
+void Engine::resolve_radius(Step& settle, OldMembership& old_k) {
   std::vector<std::pair<int, std::uint32_t>> failed;
   failed.swap(pending_radius);
   for (auto [id, version] : failed) {

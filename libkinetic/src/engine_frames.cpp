@@ -2,7 +2,6 @@
 #include "engine.h"
 
 #include <algorithm>
-#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -84,7 +83,7 @@ void Engine::insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps)
   Step step;
   step.kind = insert ? StepKind::insertion : StepKind::deletion;
   step.vertex = v;
-  std::unordered_map<Simplex, bool, SimplexHash> old_k;
+  OldMembership old_k;
   old_k.emplace(Simplex{v}, !insert);
   alive[static_cast<std::size_t>(v)] = insert ? 1 : 0;
   record_tet_changes(step, old_k);
@@ -95,7 +94,7 @@ void Engine::insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps)
   resolve_delaunay(steps);
 }
 
-void Engine::record_tet_changes(Step& step, std::unordered_map<Simplex, bool, SimplexHash>& old_k) {
+void Engine::record_tet_changes(Step& step, OldMembership& old_k) {
   std::unordered_set<Simplex, SimplexHash> before(tri.tets().begin(), tri.tets().end());
   rebuild_static(old_k);
   for (const Simplex& t : before)

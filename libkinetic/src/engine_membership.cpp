@@ -8,10 +8,7 @@
 
 #include <algorithm>
 #include <array>
-#include <set>
 #include <sstream>
-#include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 namespace medusa::kinetic::detail {
@@ -25,17 +22,22 @@ bool Engine::in_k(const Simplex& s) const {
 
 // Replaces tetrahedra; records the old membership of every touched finite simplex.
 void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                         std::unordered_map<Simplex, bool, SimplexHash>& old_k) {
-  std::unordered_set<Simplex, SimplexHash> touched_faces, touched_facets;
+                         OldMembership& old_k) {
+  // The finite faces and the facets of the changed top simplices, each once, in canonical order.
+  std::vector<Simplex> touched_faces, touched_facets;
   for (const auto* list : {&removed, &added})
     for (const Simplex& t : *list) {
       for_each_face(t, [&](const Simplex& f) {
-        touched_faces.insert(f);
+        touched_faces.push_back(f);
         old_k.emplace(f, in_k(f));
       });
       for (std::size_t i = 0; i < t.size(); ++i)
-        touched_facets.insert(t.facet(i));
+        touched_facets.push_back(t.facet(i));
     }
+  for (auto* v : {&touched_faces, &touched_facets}) {
+    std::sort(v->begin(), v->end());
+    v->erase(std::unique(v->begin(), v->end()), v->end());
+  }
   // Each face counts the top simplices (infinite ones included) that hold it, so its presence in
   // Del after the change needs no search of the triangulation.
   std::vector<Simplex> created;
@@ -166,7 +168,7 @@ bool Engine::has_coface_in_k(const Simplex& s) const {
 
 // Re-evaluates membership (MATH.md 4.5 "re-eval") on the touched simplices, in decreasing
 // dimension, and fills the step's entered/left lists.
-void Engine::settle_membership(const std::unordered_map<Simplex, bool, SimplexHash>& old_k, Step& step) {
+void Engine::settle_membership(const OldMembership& old_k, Step& step) {
   std::vector<Simplex> order;
   order.reserve(old_k.size());
   for (const auto& kv : old_k)

@@ -6,7 +6,6 @@
 #include <chrono>
 #include <memory>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace medusa::kinetic::detail {
@@ -38,13 +37,13 @@ void Engine::initialise(Observer& observer) {
   now = SlabTime();
   for (std::size_t i = 0; i < traj.cells.size(); ++i)
     alive[i] = traj.cells[i].present(0) && traj.cells[i].first_frame == 0;
-  std::unordered_map<Simplex, bool, SimplexHash> old_k;
+  OldMembership old_k;
   rebuild_static(old_k);
   std::vector<Step> ignored;
   resolve_delaunay(ignored); // Del(t0+) (MATH.md 5.5): fix what the frozen delta left
   pending_radius.clear();
   // Membership of every simplex, in decreasing dimension (MATH.md 4.6).
-  std::unordered_map<Simplex, bool, SimplexHash> all;
+  OldMembership all;
   for (const auto& kv : faces)
     all.emplace(kv.first, false);
   Step step;

@@ -5,7 +5,6 @@
 #include "static_delaunay.h"
 
 #include <string>
-#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -29,7 +28,7 @@ std::vector<VertexId> Engine::alive_ids() const {
 }
 
 // Rebuilds Del of the current vertex set at now+ with CGAL and replaces the differing top simplices.
-void Engine::rebuild_static(std::unordered_map<Simplex, bool, SimplexHash>& old_k) {
+void Engine::rebuild_static(OldMembership& old_k) {
   ++stats.static_rebuilds;
   std::vector<VertexId> ids = alive_ids();
   int dimension = 0;

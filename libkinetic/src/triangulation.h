@@ -6,10 +6,10 @@
 // operations, MATH.md 4.5).
 #pragma once
 
+#include "flat_simplex_map.h"
 #include "medusa/kinetic/simplex.h"
 
 #include <array>
-#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -36,7 +36,7 @@ public:
   VertexId other_apex(const Simplex& facet, VertexId apex) const;
 
   const std::unordered_set<Simplex, SimplexHash>& tets() const { return tets_; }
-  const std::unordered_map<Simplex, Apices, SimplexHash>& facets() const { return facets_; }
+  const FlatSimplexMap<Apices>& facets() const { return facets_; }
   // Tetrahedra containing every vertex of s.
   std::vector<Simplex> tets_containing(const Simplex& s) const;
   const std::vector<Simplex>& tets_of(VertexId v) const;
@@ -76,7 +76,7 @@ private:
   }
 
   std::unordered_set<Simplex, SimplexHash> tets_;
-  std::unordered_map<Simplex, Apices, SimplexHash> facets_;
+  FlatSimplexMap<Apices> facets_;
   // Top simplices incident to each vertex, indexed by vertex id + 1 (the infinite vertex is -1).
   std::vector<std::vector<Simplex>> incident_;
 };

@@ -49,7 +49,11 @@ public:
     return s;
   }
 
-  friend bool operator==(const Simplex& a, const Simplex& b) { return a.size_ == b.size_ && a.v_ == b.v_; }
+  // Unused slots hold -1, so the four entries decide (spelled out: hash tables compare keys often).
+  friend bool operator==(const Simplex& a, const Simplex& b) {
+    return a.size_ == b.size_ && a.v_[0] == b.v_[0] && a.v_[1] == b.v_[1] && a.v_[2] == b.v_[2] &&
+           a.v_[3] == b.v_[3];
+  }
   friend bool operator!=(const Simplex& a, const Simplex& b) { return !(a == b); }
   // Order by dimension, then lexicographically: the canonical order of MATH.md 5.2 and 7.2.
   friend bool operator<(const Simplex& a, const Simplex& b) {

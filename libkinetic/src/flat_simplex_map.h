@@ -1,0 +1,183 @@
+// A hash map from simplices to small values, stored flat (open addressing, linear probing,
+// backward-shift deletion). The engine looks up the alpha-complex state of every face of every
+// changed top simplex at every event (MATH.md 4.4, 4.5); a node-based std::unordered_map costs two
+// dependent cache misses per lookup there, this table one. The empty simplex (size 0) marks a free
+// slot, so keys must be non-empty.
+#pragma once
+
+#include "medusa/kinetic/error.h"
+#include "medusa/kinetic/simplex.h"
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+template <class V> class FlatSimplexMap {
+public:
+  struct Slot {
+    Simplex first;
+    V second{};
+    bool used() const { return first.size() != 0; }
+  };
+
+  template <class SlotT> class Iterator {
+  public:
+    Iterator(SlotT* p, SlotT* end) : p_(p), end_(end) { skip(); }
+    SlotT& operator*() const { return *p_; }
+    SlotT* operator->() const { return p_; }
+    Iterator& operator++() {
+      ++p_;
+      skip();
+      return *this;
+    }
+    friend bool operator==(const Iterator& a, const Iterator& b) { return a.p_ == b.p_; }
+    friend bool operator!=(const Iterator& a, const Iterator& b) { return a.p_ != b.p_; }
+
+  private:
+    friend class FlatSimplexMap;
+    void skip() {
+      while (p_ != end_ && !p_->used())
+        ++p_;
+    }
+    SlotT* p_;
+    SlotT* end_;
+  };
+  using iterator = Iterator<Slot>;
+  using const_iterator = Iterator<const Slot>;
+
+  iterator begin() { return {slots_.data(), slots_.data() + slots_.size()}; }
+  iterator end() { return {slots_.data() + slots_.size(), slots_.data() + slots_.size()}; }
+  const_iterator begin() const { return {slots_.data(), slots_.data() + slots_.size()}; }
+  const_iterator end() const { return {slots_.data() + slots_.size(), slots_.data() + slots_.size()}; }
+
+  std::size_t size() const { return size_; }
+  void clear() {
+    slots_.clear();
+    size_ = 0;
+  }
+
+  iterator find(const Simplex& s) {
+    std::size_t i = locate(s);
+    return i == npos ? end() : at_slot(i);
+  }
+  const_iterator find(const Simplex& s) const {
+    std::size_t i = locate(s);
+    return i == npos ? end() : const_iterator(slots_.data() + i, slots_.data() + slots_.size());
+  }
+  std::size_t count(const Simplex& s) const { return locate(s) == npos ? 0 : 1; }
+
+  V& at(const Simplex& s) { return const_cast<V&>(static_cast<const FlatSimplexMap&>(*this).at(s)); }
+  const V& at(const Simplex& s) const {
+    std::size_t i = locate(s);
+    if (i == npos)
+      throw InternalError("no state recorded for a simplex of the triangulation");
+    return slots_[i].second;
+  }
+  V& operator[](const Simplex& s) { return try_emplace(s).first->second; }
+  // Inserts (s, v) unless s is present; true when it was inserted.
+  std::pair<iterator, bool> emplace(const Simplex& s, const V& v) {
+    auto r = try_emplace(s);
+    if (r.second)
+      r.first->second = v;
+    return r;
+  }
+
+  // The slot of s, value-initialised if new; true when it was inserted.
+  std::pair<iterator, bool> try_emplace(const Simplex& s) {
+    if (4 * (size_ + 1) > 3 * slots_.size())
+      grow();
+    std::size_t i = home(s);
+    while (slots_[i].used()) {
+      if (slots_[i].first == s)
+        return {at_slot(i), false};
+      i = (i + 1) & mask();
+    }
+    slots_[i].first = s;
+    slots_[i].second = V{};
+    ++size_;
+    return {at_slot(i), true};
+  }
+
+  // Removes the entry at it; iterators to other entries may move (backward shift).
+  void erase(iterator it) {
+    std::size_t i = static_cast<std::size_t>(it.p_ - slots_.data());
+    std::size_t j = i;
+    for (;;) {
+      j = (j + 1) & mask();
+      if (!slots_[j].used())
+        break;
+      std::size_t k = home(slots_[j].first);
+      // Slot j may move back to i iff its home k is not cyclically within (i, j].
+      bool stays = i <= j ? (i < k && k <= j) : (i < k || k <= j);
+      if (!stays) {
+        slots_[i] = std::move(slots_[j]);
+        i = j;
+      }
+    }
+    slots_[i] = Slot{};
+    --size_;
+  }
+
+  std::size_t erase(const Simplex& s) {
+    iterator it = find(s);
+    if (it == end())
+      return 0;
+    erase(it);
+    return 1;
+  }
+
+private:
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+  std::size_t mask() const { return slots_.size() - 1; }
+  // Multiply-shift on the hash mixed with a seed of this table's own: copying entries from one
+  // table into another visits them in the first table's slot order, and with a shared home function
+  // they would arrive clustered in the second (linear probing then degrades to quadratic time).
+  std::size_t home(const Simplex& s) const {
+    const std::uint64_t h = static_cast<std::uint64_t>(SimplexHash()(s)) ^ seed_;
+    return static_cast<std::size_t>((h * 0x9E3779B97F4A7C15ULL) >> shift_);
+  }
+  // Distinct for every table of the process, and deterministic for a given sequence of tables.
+  static std::uint64_t next_seed() {
+    static std::atomic<std::uint64_t> tables{0};
+    std::uint64_t x = (tables.fetch_add(1) + 1) * 0xD6E8FEB86659FD93ULL;
+    x ^= x >> 32;
+    x *= 0xD6E8FEB86659FD93ULL;
+    return x ^ (x >> 32);
+  }
+  iterator at_slot(std::size_t i) { return {slots_.data() + i, slots_.data() + slots_.size()}; }
+
+  std::size_t locate(const Simplex& s) const {
+    if (slots_.empty())
+      return npos;
+    for (std::size_t i = home(s);; i = (i + 1) & mask()) {
+      if (!slots_[i].used())
+        return npos;
+      if (slots_[i].first == s)
+        return i;
+    }
+  }
+
+  void grow() {
+    std::vector<Slot> old;
+    old.swap(slots_);
+    slots_.assign(old.empty() ? 64 : 2 * old.size(), Slot{});
+    shift_ = 64;
+    for (std::size_t n = slots_.size(); n > 1; n >>= 1)
+      --shift_;
+    size_ = 0;
+    for (Slot& e : old)
+      if (e.used())
+        try_emplace(e.first).first->second = std::move(e.second);
+  }
+
+  std::vector<Slot> slots_;
+  std::size_t size_ = 0;
+  int shift_ = 64; // 64 - log2(number of slots)
+  std::uint64_t seed_ = next_seed();
+};
+
+} // namespace medusa::kinetic::detail

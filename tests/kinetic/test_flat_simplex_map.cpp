@@ -1,0 +1,100 @@
+// The flat hash map of the kinetic engine (libkinetic/src/flat_simplex_map.h) against
+// std::unordered_map as the oracle, through random insertions, erasures and look-ups.
+#include "flat_simplex_map.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <iostream>
+#include <random>
+#include <unordered_map>
+
+using medusa::kinetic::Simplex;
+using medusa::kinetic::SimplexHash;
+using medusa::kinetic::detail::FlatSimplexMap;
+
+namespace {
+
+Simplex random_simplex(std::mt19937_64& rng, int vertices) {
+  std::uniform_int_distribution<int> size(1, 4), vertex(-1, vertices);
+  const int n = size(rng);
+  std::int32_t v[4];
+  int k = 0;
+  while (k < n) {
+    std::int32_t x = vertex(rng);
+    bool fresh = true;
+    for (int i = 0; i < k; ++i)
+      fresh = fresh && v[i] != x;
+    if (fresh)
+      v[k++] = x;
+  }
+  return Simplex::from_range(v, v + n);
+}
+
+// Every key of the oracle is found with its value, and the table holds nothing else.
+void require_equal(const FlatSimplexMap<int>& table,
+                   const std::unordered_map<Simplex, int, SimplexHash>& oracle) {
+  REQUIRE(table.size() == oracle.size());
+  for (const auto& kv : oracle) {
+    auto it = table.find(kv.first);
+    REQUIRE(it != table.end());
+    REQUIRE(it->second == kv.second);
+  }
+  std::size_t visited = 0;
+  for (const auto& slot : table) {
+    REQUIRE(oracle.count(slot.first) == 1);
+    ++visited;
+  }
+  REQUIRE(visited == oracle.size());
+}
+
+} // namespace
+
+TEST_CASE("the flat simplex map agrees with std::unordered_map through random insertions and erasures") {
+  const std::uint64_t seed = std::random_device{}();
+  std::cout << "flat simplex map seed " << seed << '\n';
+  std::mt19937_64 rng(seed);
+  FlatSimplexMap<int> table;
+  std::unordered_map<Simplex, int, SimplexHash> oracle;
+  std::uniform_int_distribution<int> op(0, 9);
+  // Few vertices, so keys repeat and erasures hit present keys often (backward shifts happen).
+  for (int step = 0; step < 200000; ++step) {
+    Simplex s = random_simplex(rng, 40);
+    const int o = op(rng);
+    if (o < 5) {
+      auto [it, fresh] = table.try_emplace(s);
+      REQUIRE(fresh == (oracle.count(s) == 0));
+      it->second = step;
+      oracle[s] = step;
+    } else if (o < 8) {
+      REQUIRE(table.erase(s) == oracle.erase(s));
+    } else {
+      auto it = table.find(s);
+      REQUIRE((it != table.end()) == (oracle.count(s) == 1));
+      if (it != table.end())
+        REQUIRE(it->second == oracle.at(s));
+    }
+    if (step % 20000 == 0)
+      require_equal(table, oracle);
+  }
+  require_equal(table, oracle);
+}
+
+TEST_CASE("a flat simplex map filled in another table's slot order holds every entry") {
+  // Copying in slot order is the case a home function shared between tables would degrade
+  // (engine initialisation copies every face this way).
+  FlatSimplexMap<int> source;
+  std::unordered_map<Simplex, int, SimplexHash> oracle;
+  for (std::int32_t a = 0; a < 60; ++a)
+    for (std::int32_t b = a + 1; b < 60; ++b)
+      for (std::int32_t c = b + 1; c < 60; c += 7) {
+        Simplex s{a, b, c};
+        source[s] = a * 10000 + b * 100 + c;
+        oracle[s] = a * 10000 + b * 100 + c;
+      }
+  FlatSimplexMap<int> copy;
+  for (const auto& slot : source)
+    copy.emplace(slot.first, slot.second);
+  require_equal(copy, oracle);
+  REQUIRE_THROWS(copy.at(Simplex{-1, 0}));
+}
