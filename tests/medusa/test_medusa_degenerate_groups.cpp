@@ -6,6 +6,7 @@
 #include "medusa/complex/medusa_builder.h"
 #include "medusa/complex/store_reader.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "support/planar_repair_run.h"
 
 #include <catch2/catch.hpp>
 
@@ -53,35 +54,9 @@ kinetic::Trajectories pyramid() {
   return t;
 }
 
-// The planar run of tests/kinetic/test_kinetic_degenerate_groups_2d.cpp (derivation there): a
-// rectangle p1 = (-104,17), p2 = (-104,23), p3 = (-96,17), p4 = (-96,23) (ids 0..3) and e (id 4)
-// reaching its circle (centre (-100,20), R^2 = 25) at t = 100 and staying on it; at t = 100 a static
-// repair forced by four cells momentarily collinear on x = 29 (ids 5..8) re-triangulates the pentagon:
-// p1 p2 p3 and p1 p3 e are removed, e p2 p3 and p1 e p2 created (p2 p3 p4 stays).
-kinetic::Trajectories planar_repair_with_pentagon() {
-  kinetic::Trajectories t;
-  t.dimension = 2;
-  t.scale = 1;
-  t.frame_times = {0, 100, 200};
-  auto path = [&](std::int64_t id, std::vector<kinetic::GridPoint> p) { t.cells.push_back({id, 1, 0, p}); };
-  auto still = [&](std::int64_t id, std::int64_t x, std::int64_t y) {
-    path(id, {{x, y, 0}, {x, y, 0}, {x, y, 0}});
-  };
-  still(1, -104, 17);
-  still(2, -104, 23);
-  still(3, -96, 17);
-  still(4, -96, 23);
-  path(5, {{-100, 11, 0}, {-100, 15, 0}, {-100, 15, 0}});
-  path(6, {{30, 25, 0}, {29, 27, 0}, {28, 27, 0}});
-  path(7, {{29, 19, 0}, {29, 21, 0}, {28, 22, 0}});
-  path(8, {{28, 24, 0}, {29, 26, 0}, {29, 25, 0}});
-  path(9, {{30, 15, 0}, {29, 13, 0}, {29, 15, 0}});
-  still(10, 20, 20);
-  still(11, 22, 10);
-  still(12, 21, 29);
-  still(13, 14, 16);
-  return t;
-}
+// The planar run of tests/support/planar_repair_run.h: p1 p2 p3 and p1 p3 e are removed, e p2 p3
+// and p1 e p2 created (p2 p3 p4 stays).
+using medusa::test::planar_repair_with_pentagon;
 
 // Forwards the stream, optionally without the degenerate groups (to show what they fill).
 class Forward : public kinetic::Observer {
