@@ -1,6 +1,7 @@
 // Degenerate groups of static repairs (MATH.md 6.3, second bullet) and momentary contacts inside a
 // batch (6.2), on hand-built cases derived on paper, with the audit on.
 #include "batch_filter_check.h"
+#include "group_observer.h"
 #include "kinetic_test_support.h"
 
 #include <catch2/catch.hpp>
@@ -10,51 +11,14 @@
 
 using namespace medusa::kinetic;
 using medusa::kinetic::testing::BatchFilterCheck;
+using medusa::kinetic::testing::GroupObserver;
 using medusa::kinetic::testing::ReplayObserver;
 using medusa::kinetic::testing::TeeObserver;
+using medusa::kinetic::testing::with_radius;
 
 namespace {
 
 using Group = std::vector<VertexId>;
-
-// Besides the replay checks, records the degenerate groups of the repair steps and every simplex
-// that appears in a step.
-class GroupObserver : public ReplayObserver {
-public:
-  using ReplayObserver::ReplayObserver;
-  void batch(const EventTime& time, const std::vector<Step>& steps) override {
-    ReplayObserver::batch(time, steps);
-    for (const Step& s : steps) {
-      if (s.kind == StepKind::repair) {
-        ++repairs;
-        repair_at_frame = time.at_frame;
-        repair_u = time.u;
-      }
-      for (const DegenerateGroup& g : s.groups) {
-        groups.insert(g.vertices);
-        sorted = sorted && std::is_sorted(g.vertices.begin(), g.vertices.end());
-        only_in_repairs = only_in_repairs && s.kind == StepKind::repair;
-      }
-      for (const auto* list : {&s.entered, &s.left})
-        for (const Simplex& x : *list)
-          touched.insert(x);
-    }
-    batch_times.push_back(time.time);
-  }
-  int repairs = 0;
-  bool repair_at_frame = false, sorted = true, only_in_repairs = true;
-  double repair_u = -1;
-  std::set<Group> groups;
-  std::set<Simplex> touched;
-  std::vector<double> batch_times;
-};
-
-KineticOptions with_radius(long rho2) {
-  KineticOptions o;
-  o.rho2.num = rho2;
-  o.audit = true;
-  return o;
-}
 
 // A box of side 20 whose top face slides in x by delta (one value per frame, linear in between): a
 // parallelepiped, exactly a cube (all eight corners cospherical) when delta = 0. Vertex ids: bottom

@@ -10,6 +10,7 @@
 // through the new slab (identically-zero in-circles, MATH.md 5.3, never flipped), whose triangulation
 // the global rebuild re-chooses by CGAL's symbolic perturbation (5.4, 5.5): that set is a 2-cell of
 // D(t*) cut through by the repair, a degenerate group.
+#include "group_observer.h"
 #include "kinetic_test_support.h"
 #include "support/planar_repair_run.h"
 
@@ -19,46 +20,14 @@
 #include <vector>
 
 using namespace medusa::kinetic;
+using medusa::kinetic::testing::GroupObserver;
 using medusa::kinetic::testing::ReplayObserver;
+using medusa::kinetic::testing::with_radius;
 using medusa::test::planar_repair_with_pentagon;
 
 namespace {
 
 using Group = std::vector<VertexId>;
-
-// Besides the replay checks, records the repair steps (time, created triangles) and their groups.
-class GroupObserver : public ReplayObserver {
-public:
-  using ReplayObserver::ReplayObserver;
-  void batch(const EventTime& time, const std::vector<Step>& steps) override {
-    ReplayObserver::batch(time, steps);
-    for (const Step& s : steps) {
-      if (s.kind == StepKind::repair) {
-        ++repairs;
-        repair_at_frame = time.at_frame;
-        repair_time = time.time;
-        created.insert(s.delaunay_created.begin(), s.delaunay_created.end());
-        removed.insert(s.delaunay_removed.begin(), s.delaunay_removed.end());
-      }
-      for (const DegenerateGroup& g : s.groups) {
-        groups.insert(g.vertices);
-        only_in_repairs = only_in_repairs && s.kind == StepKind::repair;
-      }
-    }
-  }
-  int repairs = 0;
-  bool repair_at_frame = false, only_in_repairs = true;
-  double repair_time = -1;
-  std::set<Group> groups;
-  std::set<Simplex> created, removed;
-};
-
-KineticOptions with_radius(long rho2) {
-  KineticOptions o;
-  o.rho2.num = rho2;
-  o.audit = true;
-  return o;
-}
 
 } // namespace
 
