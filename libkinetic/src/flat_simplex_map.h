@@ -26,12 +26,12 @@ public:
 
   template <class SlotT> class Iterator {
   public:
-    Iterator(SlotT* p, SlotT* end) : p_(p), end_(end) { skip(); }
+    Iterator(SlotT* p, SlotT* end) : p_(p), end_(end) { skip_free_slots(); }
     SlotT& operator*() const { return *p_; }
     SlotT* operator->() const { return p_; }
     Iterator& operator++() {
       ++p_;
-      skip();
+      skip_free_slots();
       return *this;
     }
     friend bool operator==(const Iterator& a, const Iterator& b) { return a.p_ == b.p_; }
@@ -39,7 +39,8 @@ public:
 
   private:
     friend class FlatSimplexMap;
-    void skip() {
+    // Iterators only ever rest on used slots or at the end: advance past free ones.
+    void skip_free_slots() {
       while (p_ != end_ && !p_->used())
         ++p_;
     }
