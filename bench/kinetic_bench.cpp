@@ -4,11 +4,13 @@
 // process. Prints per-frame times, their ratio, events per second, the certificate filter hit rate
 // and peak memory.
 //
-// Usage: kinetic_bench [--csv cells.csv.gz|run-folder --radius R] [--random N --frames F] [--dim 2|3]
+// Usage: kinetic_bench [--csv cells.csv.gz|run-folder --radius R] [--random N --frames F --step S]
+//                     [--dim 2|3]
 // With no argument: the bundled large_3d run (4,945 cells, 11 frames) and random walks of 1,000 and
 // 10,000 cells over 5 frames, then the planar cases: the real 2D run tests/data/cc3d/sorting_2d
 // (193 cells, 20 frames) and planar random walks of 1,000 and 10,000 cells. --dim 2 or 3 runs one
-// dimension only.
+// dimension only. --step sets how far the random walks move per frame: the kinetic cost grows with
+// the events per frame, the static rebuild's does not.
 #include "medusa/io/run_reader.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
 
@@ -113,14 +115,14 @@ struct FrameTimer : Observer {
   }
 };
 
-Trajectories random_walk(std::uint64_t seed, int n, int frames) {
+Trajectories random_walk(std::uint64_t seed, int n, int frames, double step_sd) {
   // Cell-like spacing on the 10^-6 grid: CC3D cells of volume 125 are ~5 lattice units apart and
-  // move ~1 unit per 100 MCS.
+  // move ~1 unit per 100 MCS (step_sd = 0.7 lattice units per coordinate and frame by default).
   const std::int64_t unit = 1000000;
   std::mt19937_64 rng(seed);
   const double side = 5.0 * std::cbrt(double(n));
   std::uniform_real_distribution<double> start(0, side * unit);
-  std::normal_distribution<double> step(0, 0.7 * unit);
+  std::normal_distribution<double> step(0, step_sd * unit);
   Trajectories t;
   for (int k = 0; k < frames; ++k)
     t.frame_times.push_back(100 * k);
@@ -140,12 +142,12 @@ Trajectories random_walk(std::uint64_t seed, int n, int frames) {
 }
 
 // The planar analogue: the same spacing and steps in the plane z = 0.
-Trajectories random_walk_2d(std::uint64_t seed, int n, int frames) {
+Trajectories random_walk_2d(std::uint64_t seed, int n, int frames, double step_sd) {
   const std::int64_t unit = 1000000;
   std::mt19937_64 rng(seed);
   const double side = 5.0 * std::sqrt(double(n));
   std::uniform_real_distribution<double> start(0, side * unit);
-  std::normal_distribution<double> step(0, 0.7 * unit);
+  std::normal_distribution<double> step(0, step_sd * unit);
   Trajectories t;
   t.dimension = 2;
   for (int k = 0; k < frames; ++k)
@@ -169,8 +171,8 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
   KineticOptions options;
   options.rho2 = squared_radius_from_decimal(radius, t.scale);
   const double rho2 = options.rho2.num.get_d() / options.rho2.den.get_d();
-  std::printf("\n== %s (%dD): %zu cells, %zu frames, radius %s ==\n", name.c_str(), t.dimension, t.cells.size(),
-              t.frames(), radius.c_str());
+  std::printf("\n== %s (%dD): %zu cells, %zu frames, radius %s ==\n", name.c_str(), t.dimension,
+              t.cells.size(), t.frames(), radius.c_str());
   std::fflush(stdout);
   KineticAlphaComplex engine(t, options);
   FrameTimer timer;
@@ -203,12 +205,14 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
   double built = double(s.certificates_built);
   const double doubles = double(s.filter_settled + s.interval_settled);
   std::printf("certificates built %zu; settled in doubles %.2f%% (target >= 99%%): %zu by the Bernstein "
-              "filter, %zu by root isolation; exact %zu (%zu of them isolated in doubles on exact "
-              "coefficients, without CGAL); %zu failure times isolated in doubles; sign evaluations %zu "
-              "(exact %.2f%%)\n",
+              "filter, %zu by root isolation; %zu vanish exactly at their slab start (%.2f%%: one exact "
+              "static determinant, then doubles); exact polynomial %zu (%zu of them isolated in doubles "
+              "on exact coefficients, without CGAL); %zu failure times isolated in doubles; sign "
+              "evaluations %zu (exact %.2f%%)\n",
               s.certificates_built, built > 0 ? 100.0 * doubles / built : 0.0, s.filter_settled,
-              s.interval_settled, s.exact_settled, s.exact_filter_settled, s.interval_scheduled,
-              s.sign_evaluations,
+              s.interval_settled, s.start_zero_settled,
+              built > 0 ? 100.0 * s.start_zero_settled / built : 0.0, s.exact_settled, s.exact_filter_settled,
+              s.interval_scheduled, s.sign_evaluations,
               s.sign_evaluations ? 100.0 * s.sign_evaluations_exact / s.sign_evaluations : 0.0);
   std::printf(
       "exact certificates: %zu Delaunay, %zu radius; %zu with a failure time in the slab, %zu invalid "
@@ -225,6 +229,7 @@ int main(int argc, char** argv) {
   std::string csv = MEDUSA_BENCH_DATA "/large_3d/cells.csv.gz", radius = "3";
   std::vector<int> randoms = {1000, 10000};
   int frames = 5, only_dim = 0;
+  double step = 0.7;
   bool csv_only = false, random_only = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--csv" && i + 1 < args.size()) {
@@ -237,6 +242,8 @@ int main(int argc, char** argv) {
         randoms.clear();
       random_only = true;
       randoms.push_back(std::stoi(args[++i]));
+    } else if (args[i] == "--step" && i + 1 < args.size()) {
+      step = std::stod(args[++i]);
     } else if (args[i] == "--frames" && i + 1 < args.size()) {
       frames = std::stoi(args[++i]);
     } else if (args[i] == "--dim" && i + 1 < args.size() && (args[i + 1] == "2" || args[i + 1] == "3")) {
@@ -244,7 +251,9 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: kinetic_bench [--csv cells.csv.gz|run-folder] [--radius R] [--random N]... "
-                   "[--frames F] [--dim 2|3]\n");
+                   "[--frames F] [--step S] [--dim 2|3]\n"
+                   "  --step S: standard deviation of the random walks' step per frame and coordinate, in\n"
+                   "            lattice units (cells are 5 apart; default 0.7)\n");
       return 2;
     }
   }
@@ -258,14 +267,14 @@ int main(int argc, char** argv) {
     }
     if (!csv_only && only_dim != 2)
       for (int n : randoms)
-        run_case("random walk", random_walk(42, n, frames), "3");
+        run_case("random walk", random_walk(42, n, frames, step), "3");
     if (default_cases && only_dim != 3) {
       const std::string planar = MEDUSA_TEST_DATA "/cc3d/sorting_2d";
       run_case(planar, medusa::io::read_run(planar, o).trajectories, radius);
     }
     if (!csv_only && only_dim != 3)
       for (int n : randoms)
-        run_case("planar random walk", random_walk_2d(42, n, frames), "3");
+        run_case("planar random walk", random_walk_2d(42, n, frames, step), "3");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kinetic_bench: %s\n", e.what());
     return 1;

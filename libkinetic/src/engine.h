@@ -207,7 +207,9 @@ struct Engine {
   void kill_cert(int id);
   void install(int id);
   bool install_in_doubles(int id, const IntervalPoly& f);
-  bool schedule_first_change(int id, const IntervalPoly& f, int sign, double start, const CacheKey& key);
+  bool schedule_first_change(int id, const IntervalPoly& f, int sign, double start, const CacheKey& key,
+                             int shift = 0);
+  bool install_vanishing_at_start(int id, const IntervalPoly& f);
   bool install_from_exact_coefficients(int id, const Poly<mpz_class>& f);
   KeyPolynomial key_polynomial(const CacheKey& key) const;
   CacheKey cache_key(const Certificate& c) const;
@@ -220,7 +222,7 @@ struct Engine {
 
   bool in_k(const Simplex& s) const;
   void change_tets(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                   OldMembership& old_k);
+                   OldMembership& old_k, const int* added_orientations = nullptr);
   bool is_short(const Simplex& s) const;
   std::vector<Simplex> cofaces(const Simplex& s) const;
   // Calls f(c) for each finite (k+1)-coface c of s in Del (a coface may come twice, once per top

@@ -93,6 +93,10 @@ void Engine::install(int id) {
       ++stats.interval_settled;
       return;
     }
+    if (install_vanishing_at_start(id, f)) {
+      ++stats.start_zero_settled;
+      return;
+    }
   }
   ++stats.exact_settled;
   ++(c.kind == CertKind::delaunay ? stats.exact_delaunay : stats.exact_radius);
@@ -139,7 +143,17 @@ bool Engine::install_in_doubles(int id, const IntervalPoly& f) {
   now.enclosure(lo, hi);
   int sign;
   const IsolatedRoot* current = now.isolated();
-  if (current != nullptr && lo < hi && current->key == key.v) {
+  const bool same_polynomial =
+      current != nullptr && lo < hi && current->key == key.v && current->slab == slab;
+  if (same_polynomial && current->clear_hi > hi) {
+    // f = c * g for the polynomial g whose simple root is now, so f's sign just after now is
+    // -c * sign_lo and its next root lies beyond clear_hi: no exact arithmetic even though f is
+    // tiny near now.
+    const int c = proportionality_sign(f, current->enclosure, current->shift);
+    if (c != 0)
+      return schedule_first_change(id, f, -c * current->sign_lo, current->clear_hi, key);
+  }
+  if (same_polynomial) {
     // f is +-(the polynomial whose root is now): its only root in (lo, hi) is now itself, so its
     // sign just after now is its sign at hi (the flipped facet, the toggled radius certificate).
     sign = interval_sign(f, hi, hi);
@@ -152,13 +166,19 @@ bool Engine::install_in_doubles(int id, const IntervalPoly& f) {
 
 // With the sign of f just after now known and no other root of f in (now, start]: isolates the
 // first sign change of f after start, then marks the certificate invalid or schedules its failure.
+// f is the certificate's polynomial divided by u^shift.
 // False when doubles cannot decide; nothing is changed then.
-bool Engine::schedule_first_change(int id, const IntervalPoly& f, int sign, double start,
-                                   const CacheKey& key) {
+bool Engine::schedule_first_change(int id, const IntervalPoly& f, int sign, double start, const CacheKey& key,
+                                   int shift) {
   const Certificate& c = certs[static_cast<std::size_t>(id)];
-  FirstSignChange next = first_sign_change(f, start, 12);
-  if (next.status == FirstSignChange::Status::undecided || next.sign != sign)
-    return false;
+  FirstSignChange next;
+  if (start < 1.0) {
+    next = first_sign_change(f, start, 12);
+    if (next.status == FirstSignChange::Status::undecided || next.sign != sign)
+      return false;
+  } else {
+    next.status = FirstSignChange::Status::none; // nothing is left of the slab after start
+  }
   if (sign < 0) {
     ++stats.invalid_at_creation;
     mark_invalid(id);
@@ -168,15 +188,39 @@ bool Engine::schedule_first_change(int id, const IntervalPoly& f, int sign, doub
     ++stats.interval_scheduled;
     auto root = std::make_shared<IsolatedRoot>();
     root->enclosure = f;
+    root->shift = shift;
     root->lo = next.lo;
     root->hi = next.hi;
     root->sign_lo = sign;
+    root->clear_hi = next.hi;
     root->key = key.v;
     root->slab = slab;
     root->exact = key_polynomial(key);
     queue.push({SlabTime(std::move(root)), static_cast<std::uint32_t>(id), c.version});
   }
   return true;
+}
+
+// At a slab start (u = 0: t_0 and frames) an enclosure that straddles zero often belongs to a
+// certificate that vanishes there exactly: CC3D's initial lattice is full of cospherical and coplanar
+// sets (MATH.md 5.5). One exact static determinant proves f(0) = 0; then f = u h, h is enclosed by
+// f's enclosure shifted down, and the sign just after 0 is h(0)'s. False when this does not decide;
+// nothing is changed then.
+bool Engine::install_vanishing_at_start(int id, const IntervalPoly& f) {
+  const int n = f.degree_bound();
+  if (n < 1 || !now.is_rational() || now.rational() != 0)
+    return false;
+  IntervalPoly h;
+  for (int i = n; i >= 1; --i)
+    h = h * IntervalPoly(Interval(0), Interval(1)) + IntervalPoly(f[i]);
+  const int sign = interval_sign(h, 0.0, 0.0);
+  if (sign == 0)
+    return false;
+  const CacheKey key = cache_key(certs[static_cast<std::size_t>(id)]);
+  ++stats.start_zero_tests;
+  if (!key_polynomial(key).vanishes_at_start())
+    return false;
+  return schedule_first_change(id, h, sign, 0.0, key, 1);
 }
 
 // The second path, on the exact coefficients rounded outward to doubles (tight enclosures): at a
@@ -202,7 +246,7 @@ bool Engine::install_from_exact_coefficients(int id, const Poly<mpz_class>& f) {
     return install_in_doubles(id, g);
   // f = u^m g and g(0) = f_m != 0: the sign just after 0 is the sign of f_m.
   return schedule_first_change(id, g, sgn(f[m]) > 0 ? 1 : -1, 0.0,
-                               cache_key(certs[static_cast<std::size_t>(id)]));
+                               cache_key(certs[static_cast<std::size_t>(id)]), m);
 }
 
 KeyPolynomial Engine::key_polynomial(const CacheKey& key) const {

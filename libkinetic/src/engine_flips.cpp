@@ -8,6 +8,7 @@
 #include "medusa/kinetic/error.h"
 
 #include <algorithm>
+#include <array>
 #include <sstream>
 #include <vector>
 
@@ -24,8 +25,9 @@ void Engine::flip(const Simplex& facet, std::vector<Step>& steps) {
   const std::vector<Simplex>&removed = change.removed, &added = change.added;
   const bool three_two = change.three_two;
   bool hull = std::find(group.begin(), group.end(), infinite_vertex) != group.end();
-  for (const Simplex& t : added)
-    if (is_finite(t) && orientation_sign_plus(t) == 0) {
+  std::array<int, 3> orientations{};
+  for (std::size_t i = 0; i < added.size(); ++i)
+    if (is_finite(added[i]) && (orientations[i] = orientation_sign_plus(added[i])) == 0) {
       // A new top simplex would stay flat: no elementary flip resolves this degenerate group (e.g.
       // four points coplanar through the slab); MATH.md 5.2 step 3 asks for a static repair.
       repair(steps);
@@ -39,22 +41,22 @@ void Engine::flip(const Simplex& facet, std::vector<Step>& steps) {
     // The simplex of the group (a 4-simplex; a 3-simplex in 2D) is an instant cell iff R_S <= rho and
     // the old top simplices are in K (MATH.md 6.3). The old top simplices are inscribed in the
     // group's sphere (circle) at now, so the radius of any of them is R_S.
-    const Simplex& old = removed.front();
-    int r = sign_at_now(
-        [&](auto tag) { return radius_poly<decltype(tag)>(old, pick(P, Pi, tag), pick(Q, Qi, tag)); });
     bool old_in_k = true;
     for (const Simplex& t : removed)
       old_in_k = old_in_k && in_k(t);
+    const Simplex& old = removed.front();
     FlipGroup g;
     std::sort(group.begin(), group.end());
     g.vertices = group;
-    g.in_alpha = r <= 0 && old_in_k;
+    g.in_alpha = old_in_k && sign_at_now([&](auto tag) {
+                               return radius_poly<decltype(tag)>(old, pick(P, Pi, tag), pick(Q, Qi, tag));
+                             }) <= 0;
     step.flip = g;
     step.delaunay_removed = removed;
     step.delaunay_created = added;
   }
   OldMembership old_k;
-  change_tets(removed, added, old_k);
+  change_tets(removed, added, old_k, orientations.data());
   settle_membership(old_k, step);
   (hull ? stats.hull_flips : dim == 2 ? stats.flips22 : (three_two ? stats.flips32 : stats.flips23))++;
   step.rank = steps.size() + 1;

@@ -20,9 +20,10 @@ bool Engine::in_k(const Simplex& s) const {
   return it != faces.end() && it->second.in_k;
 }
 
-// Replaces tetrahedra; records the old membership of every touched finite simplex.
+// Replaces tetrahedra; records the old membership of every touched finite simplex. The caller may
+// pass the orientations sign^+ of the added top simplices (0 for infinite ones) it has computed.
 void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                         OldMembership& old_k) {
+                         OldMembership& old_k, const int* added_orientations) {
   // The finite faces and the facets of the changed top simplices, each once, in canonical order.
   std::vector<Simplex> touched_faces, touched_facets;
   for (const auto* list : {&removed, &added})
@@ -49,10 +50,11 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
         --faces.at(f).tets;
     });
   }
-  for (const Simplex& t : added) {
+  for (std::size_t i = 0; i < added.size(); ++i) {
+    const Simplex& t = added[i];
     tri.add_tet(t);
     if (is_finite(t)) {
-      int s = orientation_sign_plus(t);
+      int s = added_orientations != nullptr ? added_orientations[i] : orientation_sign_plus(t);
       if (s == 0) {
         std::ostringstream os;
         os << "cells " << t

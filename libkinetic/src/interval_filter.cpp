@@ -1,5 +1,6 @@
 #include "medusa/kinetic/interval_filter.h"
 
+#include <algorithm>
 #include <array>
 
 namespace medusa::kinetic {
@@ -117,6 +118,16 @@ int interval_sign(const IntervalPoly& f, double lo, double hi) {
   for (int i = n - 1; i >= 0; --i)
     acc = acc * u + f[i];
   return sign_of(acc);
+}
+
+int proportionality_sign(const IntervalPoly& f, const IntervalPoly& g, int shift) {
+  const int n = std::min(f.degree_bound() - shift, g.degree_bound());
+  for (int i = 0; i <= n; ++i) {
+    const int a = sign_of(f[i + shift]), b = sign_of(g[i]);
+    if (a != 0 && b != 0)
+      return a * b;
+  }
+  return 0;
 }
 
 } // namespace medusa::kinetic

@@ -5,9 +5,8 @@
 
 namespace medusa::kinetic::detail {
 
-ExactPoly KeyPolynomial::operator()() const {
+Poly<mpz_class> KeyPolynomial::coefficients(const std::array<MovingPoint, 5>& p) const {
   Poly<mpz_class> f;
-  const auto& p = pts;
   // In-circle and planar orientation have one point fewer than in-sphere and orientation.
   if (kind == 0 && count == 4)
     f = certificate::in_circle<mpz_class>(p[0], p[1], p[2], p[3]);
@@ -23,6 +22,19 @@ ExactPoly KeyPolynomial::operator()() const {
     f = certificate::triangle_radius<mpz_class>(p[0], p[1], p[2], rho2->num, rho2->den);
   else
     f = certificate::tetrahedron_radius<mpz_class>(p[0], p[1], p[2], p[3], rho2->num, rho2->den);
+  return f;
+}
+
+bool KeyPolynomial::vanishes_at_start() const {
+  std::array<MovingPoint, 5> frozen = pts;
+  for (MovingPoint& p : frozen)
+    p.b = {0, 0, 0};
+  const Poly<mpz_class> f = coefficients(frozen);
+  return f.degree_bound() < 0 || f[0] == 0;
+}
+
+ExactPoly KeyPolynomial::operator()() const {
+  const Poly<mpz_class> f = coefficients(pts);
   // Divide out u^m: the same roots in (0, 1], and no root at 0, where an isolating interval
   // starting at a frame may begin (CGAL's algebraic reals need a polynomial non-zero at the ends).
   Poly<mpz_class> g;

@@ -42,6 +42,13 @@ struct KeyPolynomial {
   std::shared_ptr<const SquaredRadius> rho2;
 
   ExactPoly operator()() const;
+
+  // Whether the polynomial vanishes at u = 0, exactly: its value there is the static determinant of
+  // the points frozen at the slab start, far cheaper than the whole polynomial in exact integers.
+  bool vanishes_at_start() const;
+
+private:
+  Poly<mpz_class> coefficients(const std::array<MovingPoint, 5>& p) const;
 };
 
 } // namespace medusa::kinetic::detail

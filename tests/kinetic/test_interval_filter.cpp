@@ -62,3 +62,18 @@ TEST_CASE("the Bernstein test on a subinterval uses that interval only", "[kinet
   REQUIRE(bernstein_sign(f, 0.75, 1.0) == 1);
   REQUIRE(bernstein_sign(f, 0.25, 0.75) == 0);
 }
+
+TEST_CASE("the sign of the factor between two enclosures of one polynomial is read off a coefficient",
+          "[kinetic][filter]") {
+  CGAL::Protect_FPU_rounding<true> guard;
+  IntervalPoly f = poly({0, 3, -1}); // 3u - u^2 = u (3 - u)
+  REQUIRE(proportionality_sign(f, poly({0, -6, 2})) == -1);
+  REQUIRE(proportionality_sign(f, poly({0, 1.5, -0.5})) == 1);
+  // With u divided out of f: g = 3 - u, so f = u g.
+  REQUIRE(proportionality_sign(f, poly({3, -1}), 1) == 1);
+  REQUIRE(proportionality_sign(f, poly({-3, 1}), 1) == -1);
+  // Enclosures that all contain zero decide nothing.
+  IntervalPoly wide;
+  wide = IntervalPoly{Interval(-1, 1)};
+  REQUIRE(proportionality_sign(wide, poly({2})) == 0);
+}

@@ -33,10 +33,16 @@ ExactPoly to_exact_poly(const Poly<mpz_class>& f);
 // refinement when they overlap, exact comparison last). Shared by every copy of the time, so a
 // refinement made once serves every later comparison.
 struct IsolatedRoot {
-  IntervalPoly enclosure;           // encloses the coefficients of the polynomial
+  IntervalPoly enclosure;           // encloses the coefficients of the polynomial divided by u^shift
+  int shift = 0;                    // (a root of multiplicity shift at the slab start divided out)
   std::function<ExactPoly()> exact; // the exact polynomial (any non-zero multiple of it)
   double lo = 0.0, hi = 0.0;        // lo < root < hi, or lo == hi == root once found exactly
   int sign_lo = 0;                  // sign of the polynomial at lo
+  // The right end of the piece that isolated the root: the polynomial has no root in (root,
+  // clear_hi] and its sign there, -sign_lo, was certified at clear_hi. Certificates built on the
+  // same points at this root (a flip's new interior facets) start their search for the next root
+  // there, where the enclosures still decide (MATH.md 3.8, caching).
+  double clear_hi = 0.0;
   std::array<std::int32_t, 6> key{{-1, -1, -1, -1, -1, -1}}; // which polynomial (-1: unknown) ...
   std::size_t slab = 0;                   // ... in which slab: equal (key, slab), same polynomial
   std::optional<AlgebraicReal> algebraic; // the exact root, built on first need

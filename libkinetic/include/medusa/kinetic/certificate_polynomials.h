@@ -12,11 +12,14 @@ namespace medusa::kinetic::certificate {
 
 template <class NT> using Vec = std::array<Poly<NT>, 3>;
 
-// q(u) - p(u) as three linear polynomials.
+// q(u) - p(u) as three polynomials of degree <= 1; a coordinate in which p and q move alike is a
+// constant, so the certificates of points at rest (frozen at a slab start) are static determinants.
 template <class NT> Vec<NT> difference(const MovingPoint& p, const MovingPoint& q) {
   Vec<NT> r;
-  for (int i = 0; i < 3; ++i)
-    r[i] = Poly<NT>(NT(static_cast<double>(q.a[i] - p.a[i])), NT(static_cast<double>(q.b[i] - p.b[i])));
+  for (int i = 0; i < 3; ++i) {
+    const NT a(static_cast<double>(q.a[i] - p.a[i]));
+    r[i] = q.b[i] == p.b[i] ? Poly<NT>(a) : Poly<NT>(a, NT(static_cast<double>(q.b[i] - p.b[i])));
+  }
   return r;
 }
 

@@ -31,4 +31,8 @@ int bernstein_sign_subdivided(const IntervalPoly& f, double lo, int depth);
 // +1 / -1 if f keeps that sign on the whole interval [lo, hi], 0 if undecided.
 int interval_sign(const IntervalPoly& f, double lo, double hi);
 
+// For f and u^shift g known to be the same polynomial up to a non-zero factor c: the sign of c, read
+// off the first coefficient whose enclosures exclude zero in both; 0 if none does.
+int proportionality_sign(const IntervalPoly& f, const IntervalPoly& g, int shift = 0);
+
 } // namespace medusa::kinetic

@@ -39,9 +39,13 @@ struct KineticStatistics {
   std::size_t filter_settled = 0;             // settled by the interval Bernstein filter
   std::size_t interval_settled = 0; // settled in doubles by certified root isolation (root_isolation.h)
   std::size_t interval_scheduled =
-      0;                         // failure times isolated in doubles, on intervals or on exact coefficients
-  std::size_t exact_settled = 0; // needed exact arithmetic (GMP and root isolation)
-  std::size_t exact_filter_settled = 0;             // of which settled by the filter on exact coefficients
+      0; // failure times isolated in doubles, on intervals or on exact coefficients
+  // vanish exactly at their slab start (u = 0), proven by one exact static determinant, and settled
+  // in doubles after dividing out u (CC3D's lattice at MCS 0, MATH.md 5.5)
+  std::size_t start_zero_settled = 0;
+  std::size_t start_zero_tests = 0;     // exact static determinants evaluated for this (zero or not)
+  std::size_t exact_settled = 0;        // needed the exact polynomial (GMP, root isolation)
+  std::size_t exact_filter_settled = 0; // of which settled by the filter on exact coefficients
   std::size_t exact_delaunay = 0, exact_radius = 0; // of which Delaunay / radius certificates
   std::size_t exact_scheduled = 0;                  // of which had a failure time in the slab
   std::size_t invalid_at_creation = 0;              // of which were invalid just after creation
