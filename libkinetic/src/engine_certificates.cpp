@@ -44,6 +44,27 @@ int Engine::orientation_of(const VertexId* seq, std::size_t n) const {
 }
 
 int Engine::orientation_sign_plus(const Simplex& t) {
+  const IsolatedRoot* current = now.isolated();
+  if (current != nullptr && current->slab == slab && t.size() == top_size() && is_finite(t)) {
+    // A hull flip at a root of this very orientation (the failed certificate of four finite points,
+    // three in 2D, MATH.md 3.2 case B) creates the top simplex that is flat at now: its sign just
+    // after now follows from the isolated root, as for the certificates of install_in_doubles.
+    CacheKey key;
+    key.v.fill(-2);
+    key.v[0] = 1;
+    std::copy(t.begin(), t.end(), key.v.begin() + 1);
+    double lo, hi;
+    now.enclosure(lo, hi);
+    if (current->key == key.v && lo < hi) {
+      CGAL::Protect_FPU_rounding<true> guard;
+      const IntervalPoly f = orientation_poly<Interval>(t);
+      const int c = proportionality_sign(f, current->enclosure, current->shift);
+      if (c != 0) {
+        ++stats.sign_evaluations;
+        return -c * current->sign_lo;
+      }
+    }
+  }
   return sign_plus_now([&](auto tag) { return orientation_poly<decltype(tag)>(t); });
 }
 

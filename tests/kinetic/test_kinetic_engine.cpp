@@ -104,7 +104,8 @@ TEST_CASE("random walks keep the audit green between every pair of events", "[ki
   ReplayObserver obs(engine);
   engine.run(obs);
   const KineticStatistics& s = engine.statistics();
-  CAPTURE(s.flips23, s.flips32, s.hull_flips, s.radius_events, s.audits, s.audits_compared_with_cgal);
+  CAPTURE(s.flips23, s.flips32, s.hull_flips, s.radius_events, s.audits, s.audits_compared_with_cgal,
+          s.sign_evaluations_exact, s.exact_settled);
   REQUIRE(s.flips23 + s.flips32 > 0);
   REQUIRE(s.radius_events > 0);
   REQUIRE(s.audits_compared_with_cgal > 0);
@@ -181,7 +182,7 @@ TEST_CASE("a CC3D-sized lattice settles every certificate without the exact poly
   engine.run(obs);
   const KineticStatistics& s = engine.statistics();
   CAPTURE(s.certificates_built, s.start_zero_settled, s.start_zero_tests, s.exact_settled, s.flips23,
-          s.flips32);
+          s.flips32, s.hull_flips, s.sign_evaluations, s.sign_evaluations_exact);
   REQUIRE(s.start_zero_settled > 0);
   REQUIRE(s.flips23 + s.flips32 > 0);
   // Left to the exact polynomial: those vanishing to second order at t0 (three collinear hull points
