@@ -26,6 +26,32 @@ Trajectories appendix_b() {
   return t;
 }
 
+// A 4x4x4 lattice of the given spacing (every lattice cube cospherical at t0) over four frames 100
+// apart, each cell stepping uniformly in [-step, step] per coordinate and frame.
+Trajectories jittered_lattice(std::uint64_t seed, std::int64_t spacing, std::int64_t step) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<std::int64_t> d(-step, step);
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100, 200, 300};
+  int id = 1;
+  for (std::int64_t x = 0; x < 4; ++x)
+    for (std::int64_t y = 0; y < 4; ++y)
+      for (std::int64_t z = 0; z < 4; ++z) {
+        Trajectory c;
+        c.cell_id = id++;
+        c.type = 1;
+        GridPoint p{spacing * x, spacing * y, spacing * z};
+        for (int k = 0; k < 4; ++k) {
+          c.positions.push_back(p);
+          for (auto& v : p)
+            v += d(rng);
+        }
+        t.cells.push_back(c);
+      }
+  return t;
+}
+
 KineticOptions with_radius(long rho2, bool audit = true) {
   KineticOptions o;
   o.rho2.num = rho2;
@@ -118,26 +144,9 @@ TEST_CASE("cells on an integer lattice start from the triangulation just after t
           "[kinetic][engine][degenerate]") {
   // A 4x4x4 lattice (every cube cospherical) with small random steps: the audit checks Del(t0+).
   // Steps are large against the lattice spacing (10000) so no degeneracy survives past t0.
-  std::mt19937_64 rng(11);
-  std::uniform_int_distribution<int> d(-2000, 2000);
-  Trajectories t;
-  t.scale = 1;
-  t.frame_times = {0, 100, 200, 300};
-  int id = 1;
-  for (int x = 0; x < 4; ++x)
-    for (int y = 0; y < 4; ++y)
-      for (int z = 0; z < 4; ++z) {
-        Trajectory c;
-        c.cell_id = id++;
-        c.type = 1;
-        GridPoint p{10000 * x, 10000 * y, 10000 * z};
-        for (int k = 0; k < 4; ++k) {
-          c.positions.push_back(p);
-          for (auto& v : p)
-            v += d(rng);
-        }
-        t.cells.push_back(c);
-      }
+  const std::uint64_t seed = 11;
+  CAPTURE(seed);
+  Trajectories t = jittered_lattice(seed, 10000, 2000);
   KineticAlphaComplex engine(t, with_radius(7000 * 7000));
   ReplayObserver obs(engine);
   engine.run(obs);
@@ -155,26 +164,7 @@ TEST_CASE("a CC3D-sized lattice settles every certificate without the exact poly
   // failed certificate's isolated root settles in doubles too.
   const std::uint64_t seed = 12;
   CAPTURE(seed);
-  std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> d(-2000000, 2000000);
-  Trajectories t;
-  t.scale = 1;
-  t.frame_times = {0, 100, 200, 300};
-  int id = 1;
-  for (int x = 0; x < 4; ++x)
-    for (int y = 0; y < 4; ++y)
-      for (int z = 0; z < 4; ++z) {
-        Trajectory c;
-        c.cell_id = id++;
-        c.type = 1;
-        GridPoint p{5000000 * x, 5000000 * y, 5000000 * z};
-        for (int k = 0; k < 4; ++k) {
-          c.positions.push_back(p);
-          for (auto& v : p)
-            v += d(rng);
-        }
-        t.cells.push_back(c);
-      }
+  Trajectories t = jittered_lattice(seed, 5000000, 2000000);
   KineticOptions options = with_radius(3500000L * 3500000L);
   options.audit_stride = 25;
   KineticAlphaComplex engine(t, options);
