@@ -13,6 +13,7 @@
 #include <array>
 #include <memory>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace medusa::kinetic::detail {
@@ -282,24 +283,31 @@ KeyPolynomial Engine::key_polynomial(const CacheKey& key) const {
 CacheKey Engine::cache_key(const Certificate& c) const {
   CacheKey k;
   k.v.fill(-2);
-  std::vector<VertexId> pts;
+  // At most d + 2 = 5 points, kept on the stack: this runs for every certificate isolated in doubles.
+  std::array<VertexId, 5> pts{};
+  std::size_t n = 0;
+  for (VertexId v : c.key)
+    pts[n++] = v;
   if (c.kind == CertKind::radius) {
     k.v[0] = 2;
-    pts.assign(c.key.begin(), c.key.end());
   } else {
     const detail::Triangulation::Apices* ap = tri.apices(c.key);
-    pts.assign(c.key.begin(), c.key.end());
-    pts.push_back(ap->v[0]);
-    pts.push_back(ap->v[1]);
-    bool infinite = std::find(pts.begin(), pts.end(), infinite_vertex) != pts.end();
+    pts[n++] = ap->v[0];
+    pts[n++] = ap->v[1];
+    auto* end = pts.begin() + static_cast<std::ptrdiff_t>(n);
+    bool infinite = std::find(pts.begin(), end, infinite_vertex) != end;
     k.v[0] = infinite ? 1 : 0;
     if (infinite) {
       // Case A: the finite top simplex; case B: its d + 1 finite points (MATH.md 3.2).
-      pts.erase(std::remove(pts.begin(), pts.end(), infinite_vertex), pts.end());
+      end = std::remove(pts.begin(), end, infinite_vertex);
+      n = static_cast<std::size_t>(end - pts.begin());
     }
-    std::sort(pts.begin(), pts.end());
+    // Insertion sort of at most five (std::sort here trips GCC 12's -Warray-bounds).
+    for (std::size_t i = 1; i < n; ++i)
+      for (std::size_t j = i; j > 0 && pts[j - 1] > pts[j]; --j)
+        std::swap(pts[j - 1], pts[j]);
   }
-  for (std::size_t i = 0; i < pts.size(); ++i)
+  for (std::size_t i = 0; i < n; ++i)
     k.v[i + 1] = pts[i];
   return k;
 }

@@ -95,7 +95,9 @@ void Engine::insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps)
 }
 
 void Engine::record_tet_changes(Step& step, OldMembership& old_k) {
-  std::unordered_set<Simplex, SimplexHash> before(tri.tets().begin(), tri.tets().end());
+  std::unordered_set<Simplex, SimplexHash> before;
+  for (const Simplex& t : tri.tets())
+    before.insert(t);
   rebuild_static(old_k);
   for (const Simplex& t : before)
     if (is_finite(t) && !tri.has_tet(t))
@@ -103,6 +105,9 @@ void Engine::record_tet_changes(Step& step, OldMembership& old_k) {
   for (const Simplex& t : tri.tets())
     if (is_finite(t) && !before.count(t))
       step.delaunay_created.push_back(t);
+  // Hash tables iterate in no meaningful order: the stream lists them sorted.
+  std::sort(step.delaunay_removed.begin(), step.delaunay_removed.end());
+  std::sort(step.delaunay_created.begin(), step.delaunay_created.end());
 }
 
 } // namespace medusa::kinetic::detail

@@ -28,10 +28,7 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
   std::vector<Simplex> touched_faces, touched_facets;
   for (const auto* list : {&removed, &added})
     for (const Simplex& t : *list) {
-      for_each_face(t, [&](const Simplex& f) {
-        touched_faces.push_back(f);
-        old_k.emplace(f, in_k(f));
-      });
+      for_each_face(t, [&](const Simplex& f) { touched_faces.push_back(f); });
       for (std::size_t i = 0; i < t.size(); ++i)
         touched_facets.push_back(t.facet(i));
     }
@@ -39,6 +36,8 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
     std::sort(v->begin(), v->end());
     v->erase(std::unique(v->begin(), v->end()), v->end());
   }
+  for (const Simplex& f : touched_faces)
+    old_k.emplace(f, in_k(f));
   // Each face counts the top simplices (infinite ones included) that hold it, so its presence in
   // Del after the change needs no search of the triangulation.
   std::vector<Simplex> created;

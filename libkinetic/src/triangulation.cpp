@@ -14,7 +14,7 @@ void Triangulation::clear() {
 }
 
 void Triangulation::add_tet(const Simplex& t) {
-  if (!tets_.insert(t).second) {
+  if (!tets_.emplace(t, 1).second) {
     std::ostringstream os;
     os << "top simplex " << t << " added twice";
     throw InternalError(os.str());

@@ -10,7 +10,6 @@
 #include "medusa/kinetic/simplex.h"
 
 #include <array>
-#include <unordered_set>
 #include <vector>
 
 namespace medusa::kinetic::detail {
@@ -35,7 +34,31 @@ public:
   const Apices* apices(const Simplex& facet) const;
   VertexId other_apex(const Simplex& facet, VertexId apex) const;
 
-  const std::unordered_set<Simplex, SimplexHash>& tets() const { return tets_; }
+  // The top simplices, iterable as simplices (`for (const Simplex& t : tri.tets())`).
+  class TetRange {
+  public:
+    class iterator {
+    public:
+      explicit iterator(FlatSimplexMap<char>::const_iterator it) : it_(it) {}
+      const Simplex& operator*() const { return it_->first; }
+      iterator& operator++() {
+        ++it_;
+        return *this;
+      }
+      friend bool operator!=(const iterator& a, const iterator& b) { return a.it_ != b.it_; }
+
+    private:
+      FlatSimplexMap<char>::const_iterator it_;
+    };
+    explicit TetRange(const FlatSimplexMap<char>& m) : m_(m) {}
+    iterator begin() const { return iterator(m_.begin()); }
+    iterator end() const { return iterator(m_.end()); }
+    std::size_t size() const { return m_.size(); }
+
+  private:
+    const FlatSimplexMap<char>& m_;
+  };
+  TetRange tets() const { return TetRange(tets_); }
   const FlatSimplexMap<Apices>& facets() const { return facets_; }
   // Tetrahedra containing every vertex of s.
   std::vector<Simplex> tets_containing(const Simplex& s) const;
@@ -75,7 +98,7 @@ private:
     return *best;
   }
 
-  std::unordered_set<Simplex, SimplexHash> tets_;
+  FlatSimplexMap<char> tets_; // a set: the values are unused
   FlatSimplexMap<Apices> facets_;
   // Top simplices incident to each vertex, indexed by vertex id + 1 (the infinite vertex is -1).
   std::vector<std::vector<Simplex>> incident_;
