@@ -52,10 +52,13 @@ Poly<NT> in_sphere(const MovingPoint& p0, const MovingPoint& p1, const MovingPoi
   Poly<NT> w[4];
   for (int i = 0; i < 4; ++i)
     w[i] = dot(q[i], q[i]);
-  // Expansion along the last column: det = sum_i (-1)^(i+3) w_i det(minor_i).
-  Poly<NT> result = w[3] * det3(q[0], q[1], q[2]) - w[2] * det3(q[0], q[1], q[3]);
-  result = result + w[1] * det3(q[0], q[2], q[3]);
-  return result - w[0] * det3(q[1], q[2], q[3]);
+  // Expansion along the last column: det = sum_i (-1)^(i+3) w_i det(minor_i), with the minors as
+  // triple products sharing two cross products, det(a, b, c) = (a x b).c = a.(b x c): this runs for
+  // every facet at every frame (MATH.md 2.3).
+  const Vec<NT> c01 = cross(q[0], q[1]), c23 = cross(q[2], q[3]);
+  Poly<NT> result = w[3] * dot(c01, q[2]) - w[2] * dot(c01, q[3]);
+  result = result + w[1] * dot(q[0], c23);
+  return result - w[0] * dot(q[1], c23);
 }
 
 // Planar certificates (MATH.md 3.2 in dimension 2): the points move in the plane z = const, so only
