@@ -203,6 +203,7 @@ struct Engine {
 
   int orientation_of(const VertexId* seq, std::size_t n) const;
   int orientation_sign_plus(const Simplex& t);
+  int sign_after_own_root(const IntervalPoly& f, const CacheKey& key) const;
   int new_cert(CertKind kind, const Simplex& key);
   void kill_cert(int id);
   void install(int id);

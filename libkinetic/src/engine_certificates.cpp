@@ -45,28 +45,31 @@ int Engine::orientation_of(const VertexId* seq, std::size_t n) const {
 }
 
 int Engine::orientation_sign_plus(const Simplex& t) {
-  const IsolatedRoot* current = now.isolated();
-  if (current != nullptr && current->slab == slab && t.size() == top_size() && is_finite(t)) {
+  if (now.isolated() != nullptr && t.size() == top_size() && is_finite(t)) {
     // A hull flip at a root of this very orientation (the failed certificate of four finite points,
-    // three in 2D, MATH.md 3.2 case B) creates the top simplex that is flat at now: its sign just
-    // after now follows from the isolated root, as for the certificates of install_in_doubles.
+    // three in 2D, MATH.md 3.2 case B) creates the top simplex that is flat at now.
     CacheKey key;
     key.v.fill(-2);
     key.v[0] = 1;
     std::copy(t.begin(), t.end(), key.v.begin() + 1);
-    double lo, hi;
-    now.enclosure(lo, hi);
-    if (current->key == key.v && lo < hi) {
-      CGAL::Protect_FPU_rounding<true> guard;
-      const IntervalPoly f = orientation_poly<Interval>(t);
-      const int c = proportionality_sign(f, current->enclosure, current->shift);
-      if (c != 0) {
-        ++stats.sign_evaluations;
-        return -c * current->sign_lo;
-      }
+    CGAL::Protect_FPU_rounding<true> guard;
+    if (const int s = sign_after_own_root(orientation_poly<Interval>(t), key); s != 0) {
+      ++stats.sign_evaluations;
+      return s;
     }
   }
   return sign_plus_now([&](auto tag) { return orientation_poly<decltype(tag)>(t); });
+}
+
+// For f whose polynomial (key) is, up to a factor c, the one whose isolated simple root is now: the
+// sign of f just after now, -c * sign_lo; 0 when f is not that polynomial or c is undecided.
+int Engine::sign_after_own_root(const IntervalPoly& f, const CacheKey& key) const {
+  const IsolatedRoot* current = now.isolated();
+  double lo, hi;
+  now.enclosure(lo, hi);
+  if (current == nullptr || !(lo < hi) || current->slab != slab || current->key != key.v)
+    return 0;
+  return -proportionality_sign(f, current->enclosure, current->shift) * current->sign_lo;
 }
 
 int Engine::new_cert(CertKind kind, const Simplex& key) {
@@ -168,12 +171,10 @@ bool Engine::install_in_doubles(int id, const IntervalPoly& f) {
   const bool same_polynomial =
       current != nullptr && lo < hi && current->key == key.v && current->slab == slab;
   if (same_polynomial && current->clear_hi > hi) {
-    // f = c * g for the polynomial g whose simple root is now, so f's sign just after now is
-    // -c * sign_lo and its next root lies beyond clear_hi: no exact arithmetic even though f is
-    // tiny near now.
-    const int c = proportionality_sign(f, current->enclosure, current->shift);
-    if (c != 0)
-      return schedule_first_change(id, f, -c * current->sign_lo, current->clear_hi, key);
+    // f's next root lies beyond clear_hi, so its sign just after now settles it: no exact arithmetic
+    // even though f is tiny near now.
+    if (const int s = sign_after_own_root(f, key); s != 0)
+      return schedule_first_change(id, f, s, current->clear_hi, key);
   }
   if (same_polynomial) {
     // f is +-(the polynomial whose root is now): its only root in (lo, hi) is now itself, so its
