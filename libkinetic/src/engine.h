@@ -13,6 +13,7 @@
 #include "triangulation.h"
 
 #include "medusa/kinetic/algebraic_time.h"
+#include "medusa/kinetic/certificate_enclosure.h"
 #include "medusa/kinetic/certificate_polynomials.h"
 #include "medusa/kinetic/interval_filter.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
@@ -125,6 +126,27 @@ struct Engine {
     return orientation_of(seq.data(), 4) > 0 ? o : -o;
   }
 
+  // The in-sphere (in-circle) certificate of a facet with two finite apices, enclosed from one pass
+  // in plain doubles (certificate_enclosure.h); false for the orientation certificates at the hull.
+  bool delaunay_enclosure(const Simplex& facet, IntervalPoly& f) const {
+    const detail::Triangulation::Apices* ap = tri.apices(facet);
+    const VertexId p = ap->v[0], q = ap->v[1];
+    if (!is_finite(facet) || p == infinite_vertex || q == infinite_vertex)
+      return false;
+    if (dim == 2) {
+      const std::array<VertexId, 3> seq{facet[0], facet[1], p};
+      f = in_circle_enclosure(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(q));
+      if (orientation_of(seq.data(), 3) > 0)
+        f = -f;
+      return true;
+    }
+    const std::array<VertexId, 4> seq{facet[0], facet[1], facet[2], p};
+    f = in_sphere_enclosure(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(seq[3]), pt(q));
+    if (orientation_of(seq.data(), 4) < 0)
+      f = -f;
+    return true;
+  }
+
   // The planar analogue (MATH.md 3.2 one dimension down): a facet is an edge with two triangles.
   template <class NT> Poly<NT> delaunay_poly_2(const Simplex& facet) const {
     const detail::Triangulation::Apices* ap = tri.apices(facet);
@@ -169,6 +191,25 @@ struct Engine {
   }
 
   template <class NT> Poly<NT> cert_poly(const Certificate& c) const;
+
+  // cert_poly<Interval> enclosed from one pass in plain doubles (certificate_enclosure.h): cheaper,
+  // wider. False for the orientation certificates at the hull.
+  bool cert_enclosure(const Certificate& c, IntervalPoly& f) const {
+    if (c.kind == CertKind::delaunay)
+      return delaunay_enclosure(c.key, f);
+    const Simplex& s = c.key;
+    if (s.size() == 2)
+      f = edge_radius_enclosure(pt(s[0]), pt(s[1]), Pi, Qi);
+    else if (s.size() == 3)
+      f = triangle_radius_enclosure(pt(s[0]), pt(s[1]), pt(s[2]), Pi, Qi);
+    else if (s.size() == 4)
+      f = tetrahedron_radius_enclosure(pt(s[0]), pt(s[1]), pt(s[2]), pt(s[3]), Pi, Qi);
+    else
+      return false; // a vertex carries no radius certificate
+    if (faces.at(c.key).is_short)
+      f = -f;
+    return true;
+  }
 
   // sign^+ at `now` of a polynomial given by a builder (called with an NT tag), filter first.
   template <class Build> int sign_plus_now(Build&& build) {

@@ -37,6 +37,8 @@ struct KineticStatistics {
   std::size_t repairs_at_algebraic_times = 0; // static repairs inside a slab (MATH.md 5.4)
   std::size_t certificates_built = 0;         // certificates created (Delaunay and radius)
   std::size_t filter_settled = 0;             // settled by the interval Bernstein filter
+  std::size_t double_filter_settled =
+      0;                            // of which on the enclosure from plain doubles (certificate_enclosure.h)
   std::size_t interval_settled = 0; // settled in doubles by certified root isolation (root_isolation.h)
   std::size_t interval_scheduled =
       0; // failure times isolated in doubles, on intervals or on exact coefficients

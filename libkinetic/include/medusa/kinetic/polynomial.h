@@ -21,6 +21,16 @@ public:
     c_[1] = b;
   }
 
+  // The zero polynomial with room for coefficients up to u^d, to be filled in.
+  static Poly zero_of_degree(int d) {
+    assert(d <= max_degree);
+    Poly r;
+    r.deg_ = d;
+    for (int i = 0; i <= d; ++i)
+      r.c_[i] = NT(0);
+    return r;
+  }
+
   int degree_bound() const { return deg_; } // highest stored index (coefficients may be zero)
   const NT& operator[](int i) const { return c_[i]; }
   NT& operator[](int i) { return c_[i]; }
