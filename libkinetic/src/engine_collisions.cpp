@@ -9,6 +9,10 @@
 
 namespace medusa::kinetic::detail {
 
+namespace {
+__extension__ typedef __int128 Int128; // GCC and Clang: products of two grid differences
+} // namespace
+
 void Engine::check_collisions_at_frame(std::size_t k) const {
   std::vector<std::pair<GridPoint, std::size_t>> pos;
   for (std::size_t i = 0; i < traj.cells.size(); ++i)
@@ -28,24 +32,33 @@ void Engine::check_collisions_at_frame(std::size_t k) const {
 // joined by a Delaunay edge just before they meet.
 void Engine::check_collision(const Simplex& e) const {
   const MovingPoint &p = pt(e[0]), &q = pt(e[1]);
-  bool has = true, fixed = false;
-  mpq_class root(-1);
-  for (int i = 0; i < 3 && has; ++i) {
-    std::int64_t da = p.a[i] - q.a[i], db = p.b[i] - q.b[i];
+  // p - q = d(u) = da + u db vanishes at one u in (0, 1) iff every coordinate does so at the same u:
+  // da_i = db_i = 0, or da_i / db_i = -u with |da_i| < |db_i| and opposite signs. Decided in
+  // integers (|da|, |db| < 2^41, so the cross products fit in 128 bits); only a real collision
+  // builds the rational root.
+  int pivot = -1;
+  for (int i = 0; i < 3; ++i) {
+    const std::int64_t da = p.a[i] - q.a[i], db = p.b[i] - q.b[i];
     if (db == 0) {
-      has = da == 0;
+      if (da != 0)
+        return;
       continue;
     }
-    mpq_class r(mpz_class(-da), mpz_class(db));
-    r.canonicalize();
-    if (!fixed) {
-      root = r;
-      fixed = true;
-    } else if (root != r) {
-      has = false;
+    if (da == 0 || (da > 0) == (db > 0) || (da > 0 ? da : -da) >= (db > 0 ? db : -db))
+      return; // this coordinate vanishes at u <= 0 or u >= 1
+    if (pivot < 0) {
+      pivot = i;
+    } else {
+      const std::int64_t pa = p.a[pivot] - q.a[pivot], pb = p.b[pivot] - q.b[pivot];
+      if (static_cast<Int128>(da) * pb != static_cast<Int128>(pa) * db)
+        return;
     }
   }
-  if (!has || !fixed || root <= 0 || root >= 1 || !(now < SlabTime(Rational(root.get_mpq_t()))))
+  if (pivot < 0)
+    return; // equal positions and velocities: excluded at the frame (check_collisions_at_frame)
+  mpq_class root(mpz_class(-(p.a[pivot] - q.a[pivot])), mpz_class(p.b[pivot] - q.b[pivot]));
+  root.canonicalize();
+  if (!(now < SlabTime(Rational(root.get_mpq_t()))))
     return;
   double t = double(traj.frame_times[slab]) +
              root.get_d() * double(traj.frame_times[slab + 1] - traj.frame_times[slab]);

@@ -228,6 +228,29 @@ TEST_CASE("colliding cells are an error naming both cells and the time", "[kinet
                       Catch::Contains("6") && Catch::Contains("7") && Catch::Contains("50"));
 }
 
+TEST_CASE("cells meeting along one axis at a third of the slab are an error at that time",
+          "[kinetic][engine]") {
+  // d = p8 - p9 = (30, 0, 0) - u (90, 0, 0) vanishes at u = 1/3, time 100/3; y and z agree throughout.
+  Trajectories t = appendix_b();
+  t.cells.push_back({8, 1, 0, {{100, 7, 9}, {40, 7, 9}}});
+  t.cells.push_back({9, 2, 0, {{70, 7, 9}, {100, 7, 9}}});
+  Observer none;
+  KineticAlphaComplex engine(t, with_radius(49));
+  REQUIRE_THROWS_WITH(engine.run(none), Catch::Contains("cells 8 and 9 collide at time 33.3"));
+}
+
+TEST_CASE("cells crossing each coordinate at different times do not collide", "[kinetic][engine]") {
+  // d = (30, -20, 0) + u (-90, 80, 0): x vanishes at u = 1/3 and y at u = 1/4, never both, and the
+  // reverse motion is the same near miss seen from the other cell.
+  Trajectories t = appendix_b();
+  t.cells.push_back({8, 1, 0, {{100, 7, 9}, {40, 67, 9}}});
+  t.cells.push_back({9, 2, 0, {{70, 27, 9}, {100, 7, 9}}});
+  Observer none;
+  KineticAlphaComplex engine(t, with_radius(49));
+  REQUIRE_NOTHROW(engine.run(none));
+  REQUIRE(engine.statistics().audits > 0);
+}
+
 TEST_CASE("cells inserted and deleted in the middle of a run keep the audit green", "[kinetic][engine]") {
   Trajectories t = testing::random_walk(21, 40, 8, 50, 5);
   // Cell 41 appears at frame 3; cell 1 disappears after frame 4.
