@@ -83,17 +83,38 @@ int bernstein_sign(const IntervalPoly& f, double lo, double hi) {
 }
 
 int bernstein_sign_subdivided(const IntervalPoly& f, double lo, int depth) {
+  // A definite sign change proves a root in [lo, 1], so no subdivision can settle f: certificates
+  // that fail inside the slab leave here after two evaluations instead of 2^depth pieces.
+  const int at_lo = interval_sign(f, lo, lo), at_hi = interval_sign(f, 1.0, 1.0);
+  if (at_lo * at_hi < 0)
+    return 0;
   // Depth-first over dyadic pieces of [lo, 1]; each piece must be decided with one common sign.
   struct Piece {
     double lo, hi;
     int depth;
   };
   Piece stack[64];
-  int top = 0, common = 0;
+  int top = 0, common = at_lo != 0 ? at_lo : at_hi;
   stack[top++] = {lo, 1.0, 0};
+  std::array<Interval, IntervalPoly::max_degree + 1> beta{};
   while (top > 0) {
     Piece p = stack[--top];
-    int s = bernstein_sign(f, p.lo, p.hi);
+    const int n = bernstein_coefficients(f, p.lo, p.hi, beta);
+    if (n < 0)
+      return 0;
+    // beta_0 and beta_n are f at the piece's ends, up to positive factors.
+    const int first = sign_of(beta[0]), last = sign_of(beta[static_cast<std::size_t>(n)]);
+    if ((first != 0 && common != 0 && first != common) || (last != 0 && common != 0 && last != common))
+      return 0;
+    int s = 0;
+    for (int j = 0; j <= n; ++j) {
+      const int sj = sign_of(beta[static_cast<std::size_t>(j)]);
+      if (sj == 0 || (s != 0 && sj != s)) {
+        s = 0;
+        break;
+      }
+      s = sj;
+    }
     if (s == 0) {
       double mid = 0.5 * (p.lo + p.hi);
       if (p.depth >= depth || top + 2 > 64 || !(p.lo < mid && mid < p.hi))

@@ -55,6 +55,19 @@ TEST_CASE("subdivision proves a polynomial without roots that one Bernstein test
   REQUIRE(bernstein_sign_subdivided(poly({3.99, -16, 16}), 0.0, 6) == 0);
 }
 
+TEST_CASE("subdivision settles negative polynomials and refuses every sign change", "[kinetic][filter]") {
+  CGAL::Protect_FPU_rounding<true> guard;
+  // -((4u - 2)^2 + 1/100) < 0 on [0, 1], with the same undecided first test as above.
+  REQUIRE(bernstein_sign_subdivided(poly({-4.01, 16, -16}), 0.0, 3) == -1);
+  // Opposite signs at the ends (a root at 1/2, or at 0.9678 in MATH.md Appendix B's certificate).
+  REQUIRE(bernstein_sign_subdivided(poly({-1, 2}), 0.0, 6) == 0);
+  REQUIRE(bernstein_sign_subdivided(poly({61, -94, 32}), 0.0, 6) == 0);
+  // After its root, on [0.97, 1], the same certificate is negative throughout.
+  REQUIRE(bernstein_sign_subdivided(poly({61, -94, 32}), 0.97, 6) == -1);
+  // A root of even multiplicity inside: (2u - 1)^2 vanishes at 1/2 without changing sign.
+  REQUIRE(bernstein_sign_subdivided(poly({1, -4, 4}), 0.0, 6) == 0);
+}
+
 TEST_CASE("the Bernstein test on a subinterval uses that interval only", "[kinetic][filter]") {
   CGAL::Protect_FPU_rounding<true> guard;
   IntervalPoly f = poly({-1, 2}); // root at 1/2
