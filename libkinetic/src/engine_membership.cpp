@@ -185,7 +185,9 @@ void Engine::settle_membership(const OldMembership& old_k, Step& step) {
     if (s.size() == top_size())
       f.in_k = f.is_short; // top simplices are always Gabriel (MATH.md 4.1)
     else
-      f.in_k = has_coface_in_k(s) || (f.is_short && gabriel_now(s));
+      // Every simplex of K is short (its smallest circumsphere is no larger than an empty sphere of
+      // radius <= rho, MATH.md 4.1), so a long one is out without looking at its cofaces.
+      f.in_k = f.is_short && (has_coface_in_k(s) || gabriel_now(s));
   }
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     bool before = old_k.at(*it), after = in_k(*it);

@@ -38,7 +38,14 @@ public:
   VertexId operator[](std::size_t i) const { return v_[i]; }
   const VertexId* begin() const { return v_.data(); }
   const VertexId* end() const { return v_.data() + size_; }
-  bool contains(VertexId x) const { return std::find(begin(), end(), x) != end(); }
+  // A plain loop: std::find is not inlined here, and this runs for every incident top simplex of
+  // every face the frontier and membership rules look at (MATH.md 4.4, 4.5).
+  bool contains(VertexId x) const {
+    for (std::size_t i = 0; i < size_; ++i)
+      if (v_[i] == x)
+        return true;
+    return false;
+  }
 
   // The facet without the i-th vertex.
   Simplex facet(std::size_t i) const {
