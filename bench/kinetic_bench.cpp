@@ -222,13 +222,14 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
   double built = double(s.certificates_built);
   const double doubles = double(s.filter_settled + s.interval_settled);
   std::printf("certificates built %zu; settled in doubles %.2f%% (target >= 99%%): %zu by the Bernstein "
-              "filter (%zu of them on the enclosure from plain doubles), %zu by root isolation; %zu vanish "
+              "filter (%zu of them on the enclosure from plain doubles), %zu by root isolation (%zu on the "
+              "enclosure from plain doubles); %zu vanish "
               "exactly at their slab start (%.2f%%: one exact "
               "static determinant, then doubles); exact polynomial %zu (%zu of them isolated in doubles "
               "on exact coefficients, without CGAL); %zu failure times isolated in doubles; sign "
               "evaluations %zu (exact %.2f%%)\n",
               s.certificates_built, built > 0 ? 100.0 * doubles / built : 0.0, s.filter_settled,
-              s.double_filter_settled, s.interval_settled, s.start_zero_settled,
+              s.double_filter_settled, s.interval_settled, s.double_isolation_settled, s.start_zero_settled,
               built > 0 ? 100.0 * s.start_zero_settled / built : 0.0, s.exact_settled, s.exact_filter_settled,
               s.interval_scheduled, s.sign_evaluations,
               s.sign_evaluations ? 100.0 * s.sign_evaluations_exact / s.sign_evaluations : 0.0);

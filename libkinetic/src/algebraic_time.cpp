@@ -122,6 +122,13 @@ bool SlabTime::refine_once() const {
   return refine_root(root_->enclosure, root_->lo, root_->hi, root_->sign_lo) != Refinement::stuck;
 }
 
+void SlabTime::sharpen(const IntervalPoly& tighter) const {
+  if (root_ && root_->wide) {
+    root_->enclosure = tighter;
+    root_->wide = false;
+  }
+}
+
 void SlabTime::tighten() const {
   while (refine_once()) {
   }

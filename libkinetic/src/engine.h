@@ -248,9 +248,11 @@ struct Engine {
   int new_cert(CertKind kind, const Simplex& key);
   void kill_cert(int id);
   void install(int id);
-  bool install_in_doubles(int id, const IntervalPoly& f);
+  // wide: f is the enclosure from plain doubles (certificate_enclosure.h), replaced by the interval
+  // one before its root is reported (Engine::run_slab).
+  bool install_in_doubles(int id, const IntervalPoly& f, bool wide = false);
   bool schedule_first_change(int id, const IntervalPoly& f, int sign, double start, const CacheKey& key,
-                             int shift = 0);
+                             int shift = 0, bool wide = false);
   bool install_vanishing_at_start(int id, const IntervalPoly& f);
   bool install_from_exact_coefficients(int id, const Poly<mpz_class>& f);
   KeyPolynomial key_polynomial(const CacheKey& key) const;

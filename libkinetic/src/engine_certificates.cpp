@@ -110,12 +110,20 @@ void Engine::install(int id) {
     double lo, hi;
     now.enclosure(lo, hi);
     IntervalPoly f;
-    // Most certificates hold through the slab: the enclosure from doubles proves it at a fraction
-    // of the cost of interval arithmetic; a certificate it cannot settle is recomputed tightly.
-    if (cert_enclosure(c, f) && bernstein_sign_subdivided(f, lo, 4) > 0) {
-      ++stats.filter_settled;
-      ++stats.double_filter_settled;
-      return;
+    // Most certificates hold through the slab, and most others have a simple root in it: the
+    // enclosure from doubles settles both at a fraction of the cost of interval arithmetic (it is
+    // an enclosure like any other, only wider). What it cannot settle is recomputed tightly.
+    if (cert_enclosure(c, f)) {
+      if (bernstein_sign_subdivided(f, lo, 4) > 0) {
+        ++stats.filter_settled;
+        ++stats.double_filter_settled;
+        return;
+      }
+      if (install_in_doubles(id, f, true)) {
+        ++stats.interval_settled;
+        ++stats.double_isolation_settled;
+        return;
+      }
     }
     f = cert_poly<Interval>(c);
     if (bernstein_sign_subdivided(f, lo, 4) > 0) {
@@ -169,7 +177,7 @@ void Engine::install(int id) {
 
 // The fast path of install (MATH.md 3.8): the sign just after now and the next failure time,
 // isolated in double interval arithmetic. False when doubles cannot decide; nothing is changed then.
-bool Engine::install_in_doubles(int id, const IntervalPoly& f) {
+bool Engine::install_in_doubles(int id, const IntervalPoly& f, bool wide) {
   const Certificate& c = certs[static_cast<std::size_t>(id)];
   const CacheKey key = cache_key(c);
   double lo, hi;
@@ -182,7 +190,7 @@ bool Engine::install_in_doubles(int id, const IntervalPoly& f) {
     // f's next root lies beyond clear_hi, so its sign just after now settles it: no exact arithmetic
     // even though f is tiny near now.
     if (const int s = sign_after_own_root(f, key); s != 0)
-      return schedule_first_change(id, f, s, current->clear_hi, key);
+      return schedule_first_change(id, f, s, current->clear_hi, key, 0, wide);
   }
   if (same_polynomial) {
     // f is +-(the polynomial whose root is now): its only root in (lo, hi) is now itself, so its
@@ -192,7 +200,7 @@ bool Engine::install_in_doubles(int id, const IntervalPoly& f) {
     // f keeps one sign on the enclosure of now: it does not vanish at now.
     sign = interval_sign(f, lo, hi);
   }
-  return sign != 0 && schedule_first_change(id, f, sign, hi, key);
+  return sign != 0 && schedule_first_change(id, f, sign, hi, key, 0, wide);
 }
 
 // With the sign of f just after now known and no other root of f in (now, start]: isolates the
@@ -200,7 +208,7 @@ bool Engine::install_in_doubles(int id, const IntervalPoly& f) {
 // f is the certificate's polynomial divided by u^shift.
 // False when doubles cannot decide; nothing is changed then.
 bool Engine::schedule_first_change(int id, const IntervalPoly& f, int sign, double start, const CacheKey& key,
-                                   int shift) {
+                                   int shift, bool wide) {
   const Certificate& c = certs[static_cast<std::size_t>(id)];
   FirstSignChange next;
   if (start < 1.0) {
@@ -220,6 +228,7 @@ bool Engine::schedule_first_change(int id, const IntervalPoly& f, int sign, doub
     auto root = std::make_shared<IsolatedRoot>();
     root->enclosure = f;
     root->shift = shift;
+    root->wide = wide;
     root->lo = next.lo;
     root->hi = next.hi;
     root->sign_lo = sign;

@@ -63,6 +63,10 @@ void Engine::run_slab(Observer& observer) {
     if (!c.alive || c.version != top.version)
       continue;
     now = top.u;
+    if (const IsolatedRoot* r = now.isolated(); r != nullptr && r->wide) {
+      CGAL::Protect_FPU_rounding<true> guard;
+      now.sharpen(cert_poly<Interval>(c));
+    }
     now.tighten();
     mark_invalid(static_cast<int>(top.cert));
     while (!queue.empty() && compare(queue.top().u, now) == 0) {

@@ -455,3 +455,20 @@ TEST_CASE("cells moving in shared planes repair degenerate groups mid-slab and s
   REQUIRE(obs.inconsistencies == 0);
   REQUIRE(obs.not_closed == 0);
 }
+
+TEST_CASE("certificates settled on the enclosures from doubles keep the audit green and the replay exact",
+          "[kinetic][engine]") {
+  const std::uint64_t seed = GENERATE(31, 32);
+  CAPTURE(seed);
+  Trajectories t = testing::random_walk(seed, 30, 4, 24, 3);
+  KineticAlphaComplex engine(t, with_radius(25));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  const KineticStatistics& s = engine.statistics();
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(s.audits > 0);
+  // Both paths ran: a filter proof and a root isolated on the enclosure from doubles.
+  REQUIRE(s.double_filter_settled > 0);
+  REQUIRE(s.double_isolation_settled > 0);
+  REQUIRE(s.flips23 + s.flips32 > 0);
+}

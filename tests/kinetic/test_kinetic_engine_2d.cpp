@@ -369,3 +369,20 @@ TEST_CASE("planar: twelve cells becoming cocircular at one instant are resolved 
   REQUIRE(obs.inconsistencies == 0);
   REQUIRE(obs.not_closed == 0);
 }
+
+TEST_CASE(
+    "planar: certificates settled on the enclosures from doubles keep the audit green and the replay exact",
+    "[kinetic][engine][2d]") {
+  const std::uint64_t seed = GENERATE(33, 34);
+  CAPTURE(seed);
+  Trajectories t = testing::random_walk_2d(seed, 40, 5, 40, 5);
+  KineticAlphaComplex engine(t, with_radius(36));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  const KineticStatistics& s = engine.statistics();
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(s.audits > 0);
+  REQUIRE(s.double_filter_settled > 0);
+  REQUIRE(s.double_isolation_settled > 0);
+  REQUIRE(s.flips22 > 0);
+}

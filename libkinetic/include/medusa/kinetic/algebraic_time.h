@@ -33,8 +33,9 @@ ExactPoly to_exact_poly(const Poly<mpz_class>& f);
 // refinement when they overlap, exact comparison last). Shared by every copy of the time, so a
 // refinement made once serves every later comparison.
 struct IsolatedRoot {
-  IntervalPoly enclosure;           // encloses the coefficients of the polynomial divided by u^shift
-  int shift = 0;                    // (a root of multiplicity shift at the slab start divided out)
+  IntervalPoly enclosure; // encloses the coefficients of the polynomial divided by u^shift
+  int shift = 0;          // (a root of multiplicity shift at the slab start divided out)
+  bool wide = false;      // enclosure from plain doubles: SlabTime::sharpen replaces it before reporting
   std::function<ExactPoly()> exact; // the exact polynomial (any non-zero multiple of it)
   double lo = 0.0, hi = 0.0;        // lo < root < hi, or lo == hi == root once found exactly
   int sign_lo = 0;                  // sign of the polynomial at lo
@@ -61,6 +62,10 @@ public:
   const AlgebraicReal& algebraic() const;
   // The isolated root behind an algebraic time found in doubles, or null.
   const IsolatedRoot* isolated() const { return root_.get(); }
+  // Replaces a wide enclosure of the isolated root's polynomial by a tighter one of the same
+  // polynomial: the isolating interval stays valid, and refinement then reaches the precision the
+  // reported double value needs.
+  void sharpen(const IntervalPoly& tighter) const;
   double approx() const;
   // An isolating interval [lo, hi] of u as doubles rounded outward (lo == hi for exact doubles).
   void enclosure(double& lo, double& hi) const;

@@ -40,6 +40,7 @@ struct KineticStatistics {
   std::size_t double_filter_settled =
       0;                            // of which on the enclosure from plain doubles (certificate_enclosure.h)
   std::size_t interval_settled = 0; // settled in doubles by certified root isolation (root_isolation.h)
+  std::size_t double_isolation_settled = 0; // of which on the enclosure from plain doubles
   std::size_t interval_scheduled =
       0; // failure times isolated in doubles, on intervals or on exact coefficients
   // vanish exactly at their slab start (u = 0), proven by one exact static determinant, and settled
