@@ -197,7 +197,15 @@ struct Engine {
   bool cert_enclosure(const Certificate& c, IntervalPoly& f) const {
     if (c.kind == CertKind::delaunay)
       return delaunay_enclosure(c.key, f);
-    const Simplex& s = c.key;
+    if (!radius_enclosure(c.key, f))
+      return false;
+    if (faces.at(c.key).is_short)
+      f = -f;
+    return true;
+  }
+
+  // radius_poly<Interval>(s) enclosed from one pass in plain doubles; false for a vertex.
+  bool radius_enclosure(const Simplex& s, IntervalPoly& f) const {
     if (s.size() == 2)
       f = edge_radius_enclosure(pt(s[0]), pt(s[1]), Pi, Qi);
     else if (s.size() == 3)
@@ -205,9 +213,7 @@ struct Engine {
     else if (s.size() == 4)
       f = tetrahedron_radius_enclosure(pt(s[0]), pt(s[1]), pt(s[2]), pt(s[3]), Pi, Qi);
     else
-      return false; // a vertex carries no radius certificate
-    if (faces.at(c.key).is_short)
-      f = -f;
+      return false;
     return true;
   }
 

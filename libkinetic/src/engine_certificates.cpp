@@ -365,6 +365,18 @@ void Engine::install_radius(const Simplex& s) {
 }
 
 bool Engine::compute_short(const Simplex& s) {
+  {
+    // Every face a flip creates asks this: the enclosure from doubles decides it away from R = rho.
+    CGAL::Protect_FPU_rounding<true> guard;
+    IntervalPoly f;
+    double lo, hi;
+    now.enclosure(lo, hi);
+    if (radius_enclosure(s, f))
+      if (const int sp = interval_sign(f, lo, hi); sp != 0) {
+        ++stats.sign_evaluations;
+        return sp < 0;
+      }
+  }
   int sp = sign_plus_now(
       [&](auto tag) { return radius_poly<decltype(tag)>(s, pick(P, Pi, tag), pick(Q, Qi, tag)); });
   return sp <= 0; // f == 0 identically means R = rho: short (MATH.md 3.9)
