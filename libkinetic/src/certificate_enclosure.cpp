@@ -1,6 +1,6 @@
 // Certified enclosures of the certificate polynomials from one pass in plain doubles.
 //
-// Why the bound holds. Every input coordinate x(u) = a + b u has integer a, b below 2^41 in
+// Why the bound holds. Every input coordinate x(u) = a + b u has integer a, b below 2^42 in
 // magnitude, exact in double. Let A and B bound |a| and |b| over all inputs, so each input is
 // bounded coefficientwise by M(u) = A + B u. Each operation on polynomials rounds each coefficient
 // with relative error at most u = 2^-52 (any IEEE rounding mode). By induction over the expression
@@ -22,8 +22,9 @@
 //     D = det(a, b, c) (7, 6 M^3), H = D^2 (18, 36 M^6).
 // So coefficient k of a degree-n result is within gamma_D * S * C(n, k) A^(n-k) B^k of the exact one
 // (S the constant above). We widen by (D + 8) u * S * C(n, k) A^(n-k) B^k: gamma_D <= (D + 1) u, and
-// the other 7 u cover the rounding of the bound itself (at most 9 products of positive numbers, each
-// within u) and of the two endpoints c -+ e (at most one ulp of |c| + e each).
+// rounding the endpoints c -+ e moves each by at most u (|c| + e), about u S C(n, k) A^(n-k) B^k, and
+// computing e itself loses at most a relative (1 - u)^8 (at most 8 rounded products of positive
+// numbers): the remaining 7 u cover both with room to spare (checked independently in review).
 // The radius certificates Q G - 4 P H (edges Q G - 4 P) then combine the two enclosures with the interval P
 // and Q in interval arithmetic, which needs the rounding mode upward (CGAL::Protect_FPU_rounding).
 #include "medusa/kinetic/certificate_enclosure.h"
