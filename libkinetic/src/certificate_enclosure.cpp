@@ -52,15 +52,6 @@ void magnitudes(const fixed::Vec<double, 1> (&q)[N], int coordinates, double& A,
 
 template <int N>
 IntervalPoly widen(const fixed::Poly<double, N>& f, int depth, double structure, double A, double B) {
-  static constexpr double binomial[9][9] = {{1},
-                                            {1, 1},
-                                            {1, 2, 1},
-                                            {1, 3, 3, 1},
-                                            {1, 4, 6, 4, 1},
-                                            {1, 5, 10, 10, 5, 1},
-                                            {1, 6, 15, 20, 15, 6, 1},
-                                            {1, 7, 21, 35, 35, 21, 7, 1},
-                                            {1, 8, 28, 56, 70, 56, 28, 8, 1}};
   const double scale = (depth + 8) * 0x1p-52 * structure;
   IntervalPoly r = IntervalPoly::zero_of_degree(N);
   double a_power[N + 1], b_power[N + 1];

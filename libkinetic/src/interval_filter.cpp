@@ -49,19 +49,10 @@ int bernstein_coefficients(const IntervalPoly& f, double lo, double hi,
     }
   }
   // beta_j = sum_{i<=j} C(n-i, j-i) g_i = C(n, j) b_j: the Bernstein coefficients up to positive factors.
-  static const double binom[9][9] = {{1},
-                                     {1, 1},
-                                     {1, 2, 1},
-                                     {1, 3, 3, 1},
-                                     {1, 4, 6, 4, 1},
-                                     {1, 5, 10, 10, 5, 1},
-                                     {1, 6, 15, 20, 15, 6, 1},
-                                     {1, 7, 21, 35, 35, 21, 7, 1},
-                                     {1, 8, 28, 56, 70, 56, 28, 8, 1}};
   for (int j = 0; j <= n; ++j) {
     Interval b(0);
     for (int i = 0; i <= j; ++i)
-      b += Interval(binom[n - i][j - i]) * g[i];
+      b += Interval(binomial[n - i][j - i]) * g[i];
     beta[static_cast<std::size_t>(j)] = b;
   }
   return n;

@@ -9,6 +9,18 @@
 
 namespace medusa::kinetic {
 
+// C(n, k) for n <= 8 (the largest certificate degree), as doubles: Bernstein conversions and error
+// bounds of degree-n polynomials.
+inline constexpr double binomial[9][9] = {{1},
+                                          {1, 1},
+                                          {1, 2, 1},
+                                          {1, 3, 3, 1},
+                                          {1, 4, 6, 4, 1},
+                                          {1, 5, 10, 10, 5, 1},
+                                          {1, 6, 15, 20, 15, 6, 1},
+                                          {1, 7, 21, 35, 35, 21, 7, 1},
+                                          {1, 8, 28, 56, 70, 56, 28, 8, 1}};
+
 template <class NT> class Poly {
 public:
   static constexpr int max_degree = 8;
