@@ -118,7 +118,6 @@ void SlabTime::enclosure(double& lo, double& hi) const {
 bool SlabTime::refine_once() const {
   if (!root_ || root_->lo == root_->hi)
     return false;
-  CGAL::Protect_FPU_rounding<true> guard;
   return refine_root(root_->enclosure, root_->lo, root_->hi, root_->sign_lo) != Refinement::stuck;
 }
 
@@ -130,6 +129,7 @@ void SlabTime::sharpen(const IntervalPoly& tighter) const {
 }
 
 void SlabTime::tighten() const {
+  CGAL::Protect_FPU_rounding<true> guard;
   while (refine_once()) {
   }
 }
@@ -144,24 +144,34 @@ int compare(const SlabTime& x, const SlabTime& y) {
   // the same root, and refinement ends with nested or disjoint intervals.
   // (Closed containment is enough: the polynomial does not vanish at the ends of an open isolating
   // interval, and an interval shrunk to a point is the root itself.)
-  const bool same_polynomial = x.root_ && y.root_ && x.root_->key[0] >= 0 && x.root_->key == y.root_->key &&
-                               x.root_->slab == y.root_->slab;
-  for (;;) {
-    double xl, xh, yl, yh;
-    x.enclosure(xl, xh);
-    y.enclosure(yl, yh);
-    if (xh < yl)
-      return -1;
-    if (yh < xl)
-      return 1;
-    if (same_polynomial && ((yl <= xl && xh <= yh) || (xl <= yl && yh <= xh)))
-      return 0;
-    // Overlapping enclosures: narrow the wider isolated root, then the other one.
-    const bool x_first = (xh - xl) >= (yh - yl);
-    const SlabTime& a = x_first ? x : y;
-    const SlabTime& b = x_first ? y : x;
-    if (!a.refine_once() && !b.refine_once())
-      break;
+  double xl, xh, yl, yh;
+  x.enclosure(xl, xh);
+  y.enclosure(yl, yh);
+  if (xh < yl)
+    return -1;
+  if (yh < xl)
+    return 1;
+  // Overlapping enclosures (rare in a queue of isolated roots): decide whether both are roots of one
+  // polynomial, then narrow the wider isolated root, then the other one.
+  const bool same_polynomial = x.root_ && y.root_ && x.root_->key[0] >= 0 && x.root_->slab == y.root_->slab &&
+                               x.root_->key == y.root_->key;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    for (;;) {
+      if (same_polynomial && ((yl <= xl && xh <= yh) || (xl <= yl && yh <= xh)))
+        return 0;
+      const bool x_first = (xh - xl) >= (yh - yl);
+      const SlabTime& a = x_first ? x : y;
+      const SlabTime& b = x_first ? y : x;
+      if (!a.refine_once() && !b.refine_once())
+        break;
+      x.enclosure(xl, xh);
+      y.enclosure(yl, yh);
+      if (xh < yl)
+        return -1;
+      if (yh < xl)
+        return 1;
+    }
   }
   const AlgebraicReal& a = x.algebraic();
   const AlgebraicReal& b = y.algebraic();

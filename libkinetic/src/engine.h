@@ -10,6 +10,7 @@
 #include "flat_simplex_map.h"
 #include "root_cache.h"
 #include "static_delaunay.h"
+#include "touched_faces.h"
 #include "triangulation.h"
 
 #include "medusa/kinetic/algebraic_time.h"
@@ -24,6 +25,7 @@
 
 #include <CGAL/FPU.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -85,6 +87,11 @@ struct Engine {
   // in-sphere of a 5-point set (the facet of a flip and the new interior facets), the orientation of
   // a 4-point set, the radius of a face (MATH.md 3.8, caching; cleared at every frame).
   RootCache root_cache;
+
+  // Scratch space of change_tets, kept to avoid an allocation per flip.
+  TouchedFaces touched_scratch;
+  std::vector<Simplex> created_scratch;
+  std::vector<VertexId> link_scratch; // gabriel_now's link vertices
 
   Engine(const Trajectories& t, KineticOptions o); // engine_run.cpp
 
@@ -275,10 +282,14 @@ struct Engine {
                    OldMembership& old_k, const int* added_orientations = nullptr);
   bool is_short(const Simplex& s) const;
   std::vector<Simplex> cofaces(const Simplex& s) const;
-  // Calls f(c) for each finite (k+1)-coface c of s in Del (a coface may come twice, once per top
-  // simplex holding it) until f returns true; returns whether it did.
+  // Calls f(c) for each finite (k+1)-coface c of s in Del until f returns true (once each, unless s
+  // has more than 64 of them); returns whether it did. A coface of lower dimension than the top simplices
+  // lies in several of them: it is s plus one vertex, so the vertices already used are remembered (the
+  // frontier and membership rules look up every coface in a hash table, MATH.md 4.4, 4.5).
   template <class F> bool for_each_coface(const Simplex& s, F&& f) const {
     bool found = false;
+    std::array<VertexId, 64> seen{};
+    std::size_t n_seen = 0;
     tri.for_each_tet_containing(s, [&](const Simplex& t) {
       if (found || !is_finite(t))
         return;
@@ -288,6 +299,11 @@ struct Engine {
       }
       for (VertexId v : t)
         if (!found && !s.contains(v)) {
+          const auto end = seen.begin() + static_cast<std::ptrdiff_t>(n_seen);
+          if (std::find(seen.begin(), end, v) != end)
+            continue;
+          if (n_seen < seen.size())
+            seen[n_seen++] = v;
           std::array<VertexId, 4> w{};
           std::size_t k = 0;
           for (VertexId x : s)

@@ -5,6 +5,7 @@
 #include "face.h"
 #include "medusa/kinetic/certificate_polynomials.h"
 #include "medusa/kinetic/error.h"
+#include "touched_faces.h"
 
 #include <algorithm>
 #include <array>
@@ -24,30 +25,11 @@ bool Engine::in_k(const Simplex& s) const {
 // pass the orientations sign^+ of the added top simplices (0 for infinite ones) it has computed.
 void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                          OldMembership& old_k, const int* added_orientations) {
-  // The finite faces and the facets of the changed top simplices, each once, in canonical order.
-  std::vector<Simplex> touched_faces, touched_facets;
-  for (const auto* list : {&removed, &added})
-    for (const Simplex& t : *list) {
-      for_each_face(t, [&](const Simplex& f) { touched_faces.push_back(f); });
-      for (std::size_t i = 0; i < t.size(); ++i)
-        touched_facets.push_back(t.facet(i));
-    }
-  for (auto* v : {&touched_faces, &touched_facets}) {
-    std::sort(v->begin(), v->end());
-    v->erase(std::unique(v->begin(), v->end()), v->end());
-  }
-  for (const Simplex& f : touched_faces)
-    old_k.emplace(f, in_k(f));
-  // Each face counts the top simplices (infinite ones included) that hold it, so its presence in
-  // Del after the change needs no search of the triangulation.
-  std::vector<Simplex> created;
+  TouchedFaces& touched = touched_scratch;
+  collect_touched_faces(removed, added, touched);
   for (const Simplex& t : removed) {
     tri.remove_tet(t);
     orient.erase(t);
-    for_each_face(t, [&](const Simplex& f) {
-      if (f.size() > 1)
-        --faces.at(f).tets;
-    });
   }
   for (std::size_t i = 0; i < added.size(); ++i) {
     const Simplex& t = added[i];
@@ -63,21 +45,24 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
       }
       orient[t] = s;
     }
-    for_each_face(t, [&](const Simplex& f) {
-      if (f.size() == 1)
-        return;
-      auto [it, fresh] = faces.try_emplace(f);
-      if (fresh)
-        created.push_back(f);
-      ++it->second.tets;
-    });
   }
-  for (const Simplex& f : touched_faces) {
-    auto it = faces.find(f);
-    if (it != faces.end() && it->second.tets == 0) {
+  // Each face counts the top simplices (infinite ones included) that hold it, so its presence in
+  // Del after the change needs no search of the triangulation.
+  std::vector<Simplex>& created = created_scratch;
+  created.clear();
+  for (const auto& [f, delta] : touched.faces) {
+    old_k.emplace(f, in_k(f));
+    if (f.size() == 1 || delta == 0)
+      continue;
+    auto [it, fresh] = faces.try_emplace(f);
+    if (fresh && delta < 0)
+      throw InternalError("a removed top simplex held a face that is not in the triangulation");
+    it->second.tets += delta;
+    if (it->second.tets == 0) {
       kill_cert(it->second.cert);
       faces.erase(it);
-    }
+    } else if (fresh)
+      created.push_back(f);
   }
   for (const Simplex& f : created) {
     if (f.size() == 2 && slab + 1 < traj.frames())
@@ -86,10 +71,10 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
   }
   // Frontier membership of every surviving touched simplex: their cofaces changed (MATH.md 4.4,
   // "after any change of Del"). Cofaces of new simplices are new, hence touched as well.
-  for (const Simplex& f : touched_faces)
+  for (const auto& [f, delta] : touched.faces)
     if (f.size() > 1 && faces.count(f))
       update_frontier(f);
-  for (const Simplex& f : touched_facets)
+  for (const Simplex& f : touched.facets)
     install_facet(f);
 }
 
@@ -138,29 +123,46 @@ void Engine::update_frontier(const Simplex& s) {
 
 bool Engine::gabriel_now(const Simplex& s) {
   // Not strictly inside the smallest circumball: sign^+ of G1/G2 >= 0 (MATH.md 3.4, 4.1 Lemma 4.2),
-  // for every link vertex (each tested once).
-  std::array<VertexId, 64> seen{};
-  std::size_t n_seen = 0;
-  bool gabriel = true;
+  // for every link vertex (each tested once). The certificates are first evaluated at now's
+  // enclosure only (certificate::PointAtTime); the few that this leaves undecided get sign^+ from
+  // their polynomials (sign_plus_now: interval polynomial, then exact).
+  std::vector<VertexId>& link = link_scratch;
+  link.clear();
   tri.for_each_tet_containing(s, [&](const Simplex& t) {
-    for (VertexId x : t) {
-      if (!gabriel || x == infinite_vertex || s.contains(x))
-        continue;
-      if (std::find(seen.begin(), seen.begin() + static_cast<std::ptrdiff_t>(n_seen), x) !=
-          seen.begin() + static_cast<std::ptrdiff_t>(n_seen))
-        continue;
-      if (n_seen < seen.size())
-        seen[n_seen++] = x;
-      int g = sign_plus_now([&](auto tag) {
-        using NT = decltype(tag);
-        return s.size() == 2 ? certificate::gabriel_edge<NT>(pt(s[0]), pt(s[1]), pt(x))
-                             : certificate::gabriel_triangle<NT>(pt(s[0]), pt(s[1]), pt(s[2]), pt(x));
-      });
-      if (g < 0)
-        gabriel = false;
-    }
+    for (VertexId x : t)
+      if (x != infinite_vertex && !s.contains(x) && std::find(link.begin(), link.end(), x) == link.end())
+        link.push_back(x);
   });
-  return gabriel;
+  std::size_t n_undecided = 0; // moved to the front of link
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    double lo, hi;
+    now.enclosure(lo, hi);
+    const Interval u(lo, hi);
+    auto at = [&](VertexId v) { return certificate::PointAtTime{&pt(v), u}; };
+    for (VertexId x : link) {
+      const Interval g =
+          s.size() == 2 ? certificate::gabriel_edge<Interval>(at(s[0]), at(s[1]), at(x))[0]
+                        : certificate::gabriel_triangle<Interval>(at(s[0]), at(s[1]), at(s[2]), at(x))[0];
+      if (g.sup() < 0 || g.inf() > 0)
+        ++stats.sign_evaluations;
+      if (g.sup() < 0)
+        return false;
+      if (!(g.inf() > 0))
+        link[n_undecided++] = x;
+    }
+  }
+  for (std::size_t i = 0; i < n_undecided; ++i) {
+    const VertexId x = link[i];
+    int g = sign_plus_now([&](auto tag) {
+      using NT = decltype(tag);
+      return s.size() == 2 ? certificate::gabriel_edge<NT>(pt(s[0]), pt(s[1]), pt(x))
+                           : certificate::gabriel_triangle<NT>(pt(s[0]), pt(s[1]), pt(s[2]), pt(x));
+    });
+    if (g < 0)
+      return false;
+  }
+  return true;
 }
 
 bool Engine::has_coface_in_k(const Simplex& s) const {

@@ -8,6 +8,7 @@
 #include <CGAL/Gmpz.h>
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <gmpxx.h>
 #include <random>
@@ -146,4 +147,57 @@ TEST_CASE("the enclosure from doubles settles a CC3D-scale certificate whenever 
   CAPTURE(decided, agreed);
   REQUIRE(decided > 500);
   REQUIRE(agreed >= 0.99 * decided);
+}
+
+TEST_CASE("certificates of points at a time enclose their polynomials' exact values on that time interval",
+          "[kinetic][certificate]") {
+  const std::uint64_t seed = GENERATE(41, 42);
+  CAPTURE(seed);
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> numerator(0, 1 << 20);
+  auto value_at = [](const Poly<mpz_class>& f, const mpq_class& u) {
+    mpq_class acc = 0;
+    for (int i = f.degree_bound(); i >= 0; --i)
+      acc = acc * u + mpq_class(f[i]);
+    return acc;
+  };
+  int checked = 0, decided = 0;
+  for (const Scale& scale : scales) {
+    CAPTURE(scale.name);
+    for (int trial = 0; trial < 100; ++trial) {
+      MovingPoint p[5];
+      for (auto& x : p)
+        x = random_point(rng, scale.position, scale.velocity);
+      // A point time (lo == hi, as at a frame) and a short interval (an isolated event time).
+      const double lo = std::ldexp(numerator(rng), -20);
+      const double hi = trial % 2 == 0 ? lo : lo + std::ldexp(1.0, -40);
+      Interval g_edge, g_triangle, o;
+      {
+        CGAL::Protect_FPU_rounding<true> guard;
+        const Interval u(lo, hi);
+        certificate::PointAtTime q[5];
+        for (int i = 0; i < 5; ++i)
+          q[i] = {&p[i], u};
+        g_edge = certificate::gabriel_edge<Interval>(q[0], q[1], q[2])[0];
+        g_triangle = certificate::gabriel_triangle<Interval>(q[0], q[1], q[2], q[3])[0];
+        o = certificate::orientation<Interval>(q[0], q[1], q[2], q[3])[0];
+      }
+      const Poly<mpz_class> exact[3] = {certificate::gabriel_edge<mpz_class>(p[0], p[1], p[2]),
+                                        certificate::gabriel_triangle<mpz_class>(p[0], p[1], p[2], p[3]),
+                                        certificate::orientation<mpz_class>(p[0], p[1], p[2], p[3])};
+      const Interval* enclosures[3] = {&g_edge, &g_triangle, &o};
+      for (int c = 0; c < 3; ++c)
+        for (double u : {lo, hi}) {
+          const mpq_class v = value_at(exact[c], mpq_class(u));
+          CAPTURE(c, u, enclosures[c]->inf(), enclosures[c]->sup(), v.get_d());
+          REQUIRE(mpq_class(enclosures[c]->inf()) <= v);
+          REQUIRE(v <= mpq_class(enclosures[c]->sup()));
+          ++checked;
+          decided += enclosures[c]->inf() > 0 || enclosures[c]->sup() < 0;
+        }
+    }
+  }
+  REQUIRE(checked == 2 * 3 * 3 * 100);
+  // Random points are in general position: nearly every sign is decided from the enclosure.
+  REQUIRE(decided >= checked * 95 / 100);
 }

@@ -78,7 +78,8 @@ public:
   friend bool operator==(const SlabTime& x, const SlabTime& y) { return compare(x, y) == 0; }
 
 private:
-  // One bisection step of an isolated root; false when doubles cannot narrow it further.
+  // One bisection step of an isolated root; false when doubles cannot narrow it further. The caller
+  // holds a CGAL::Protect_FPU_rounding guard (once for a whole refinement loop).
   bool refine_once() const;
 
   mutable bool rational_; // set lazily when an isolated root turns out to be a dyadic rational

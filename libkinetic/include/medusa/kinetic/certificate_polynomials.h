@@ -1,12 +1,15 @@
 // The certificate polynomials of MATH.md 3.1, written once for any number type NT (exact mpz_class
-// or a certified interval type). All are translation invariant and computed from coordinates
-// relative to the first point (MATH.md 1.5), so every input difference is an exact integer.
+// or a certified interval type) and any point type (moving points, or points at one time enclosure).
+// All are translation invariant and computed from coordinates relative to the first point (MATH.md
+// 1.5), so every input difference is an exact integer.
 #pragma once
 
+#include "medusa/kinetic/interval_filter.h"
 #include "medusa/kinetic/moving_point.h"
 #include "medusa/kinetic/polynomial.h"
 
 #include <array>
+#include <type_traits>
 
 namespace medusa::kinetic::certificate {
 
@@ -19,6 +22,29 @@ template <class NT> Vec<NT> difference(const MovingPoint& p, const MovingPoint& 
   for (int i = 0; i < 3; ++i) {
     const NT a(static_cast<double>(q.a[i] - p.a[i]));
     r[i] = q.b[i] == p.b[i] ? Poly<NT>(a) : Poly<NT>(a, NT(static_cast<double>(q.b[i] - p.b[i])));
+  }
+  return r;
+}
+
+// A moving point at one time u of its slab, u known by an enclosure (the current event time): the
+// certificates below, given such points, are their polynomials' values on that enclosure, as
+// constant interval polynomials. This serves the tests that need a sign at one time only (Gabriel,
+// MATH.md 3.4 and 4.5): a handful of interval operations instead of the whole polynomial. The
+// caller holds a CGAL::Protect_FPU_rounding guard.
+struct PointAtTime {
+  const MovingPoint* p;
+  Interval u;
+};
+
+// q(u) - p(u) = (q.a - p.a) + u (q.b - p.b) on the enclosure of u: integer differences first, as for
+// moving points (MATH.md 1.5).
+template <class NT> Vec<NT> difference(const PointAtTime& p, const PointAtTime& q) {
+  static_assert(std::is_same_v<NT, Interval>, "a point at a time enclosure has interval coordinates");
+  Vec<NT> r;
+  for (int i = 0; i < 3; ++i) {
+    const Interval a(static_cast<double>(q.p->a[i] - p.p->a[i]));
+    r[i] = q.p->b[i] == p.p->b[i] ? Poly<NT>(a)
+                                  : Poly<NT>(a + p.u * Interval(static_cast<double>(q.p->b[i] - p.p->b[i])));
   }
   return r;
 }
@@ -36,17 +62,14 @@ template <class NT> Poly<NT> det3(const Vec<NT>& x, const Vec<NT>& y, const Vec<
 }
 
 // O(p0,p1,p2,p3) = det[p1-p0; p2-p0; p3-p0]: the sign of CGAL::orientation. Degree <= 3.
-template <class NT>
-Poly<NT> orientation(const MovingPoint& p0, const MovingPoint& p1, const MovingPoint& p2,
-                     const MovingPoint& p3) {
+template <class NT, class Pt> Poly<NT> orientation(const Pt& p0, const Pt& p1, const Pt& p2, const Pt& p3) {
   return det3(difference<NT>(p0, p1), difference<NT>(p0, p2), difference<NT>(p0, p3));
 }
 
 // InS(p0,p1,p2,p3; y) = det[(p_i - y, |p_i - y|^2)], degree <= 5. For O(p0..p3) > 0 it is < 0 iff y
 // is strictly inside the circumsphere (MATH.md conventions).
-template <class NT>
-Poly<NT> in_sphere(const MovingPoint& p0, const MovingPoint& p1, const MovingPoint& p2, const MovingPoint& p3,
-                   const MovingPoint& y) {
+template <class NT, class Pt>
+Poly<NT> in_sphere(const Pt& p0, const Pt& p1, const Pt& p2, const Pt& p3, const Pt& y) {
   const Vec<NT> q[4] = {difference<NT>(y, p0), difference<NT>(y, p1), difference<NT>(y, p2),
                         difference<NT>(y, p3)};
   Poly<NT> w[4];
@@ -66,8 +89,7 @@ Poly<NT> in_sphere(const MovingPoint& p0, const MovingPoint& p1, const MovingPoi
 
 // O2(p0,p1,p2) = det[p1-p0; p2-p0] over (x, y): the sign of CGAL::orientation for Point_2
 // (positive counterclockwise). Degree <= 2.
-template <class NT>
-Poly<NT> orientation_2(const MovingPoint& p0, const MovingPoint& p1, const MovingPoint& p2) {
+template <class NT, class Pt> Poly<NT> orientation_2(const Pt& p0, const Pt& p1, const Pt& p2) {
   const Vec<NT> a = difference<NT>(p0, p1), b = difference<NT>(p0, p2);
   return a[0] * b[1] - a[1] * b[0];
 }
@@ -75,9 +97,7 @@ Poly<NT> orientation_2(const MovingPoint& p0, const MovingPoint& p1, const Movin
 // InC(p0,p1,p2; y) = det[(p_i - y, |p_i - y|^2)]_{i=0..2} over (x, y), degree <= 4. For O2(p0,p1,p2) > 0
 // it is > 0 iff y is strictly inside the circumcircle (the sign of CGAL::side_of_oriented_circle):
 // the opposite convention to in_sphere, as for every lifted determinant of odd size.
-template <class NT>
-Poly<NT> in_circle(const MovingPoint& p0, const MovingPoint& p1, const MovingPoint& p2,
-                   const MovingPoint& y) {
+template <class NT, class Pt> Poly<NT> in_circle(const Pt& p0, const Pt& p1, const Pt& p2, const Pt& y) {
   const Vec<NT> q[3] = {difference<NT>(y, p0), difference<NT>(y, p1), difference<NT>(y, p2)};
   Poly<NT> w[3];
   for (int i = 0; i < 3; ++i)
@@ -88,25 +108,23 @@ Poly<NT> in_circle(const MovingPoint& p0, const MovingPoint& p1, const MovingPoi
 }
 
 // R1: Q|p-q|^2 - 4P <= 0 iff the edge is short (R <= rho, rho^2 = P/Q). Degree <= 2.
-template <class NT>
-Poly<NT> edge_radius(const MovingPoint& p, const MovingPoint& q, const NT& P, const NT& Q) {
+template <class NT, class Pt> Poly<NT> edge_radius(const Pt& p, const Pt& q, const NT& P, const NT& Q) {
   Vec<NT> d = difference<NT>(p, q);
   return Q * dot(d, d) - Poly<NT>(NT(4) * P);
 }
 
 // R2: Q|a|^2|b|^2|a-b|^2 - 4P|a x b|^2, the degree-6 form of seed 000 (MATH.md 3.3).
-template <class NT>
-Poly<NT> triangle_radius(const MovingPoint& p0, const MovingPoint& p1, const MovingPoint& p2, const NT& P,
-                         const NT& Q) {
+template <class NT, class Pt>
+Poly<NT> triangle_radius(const Pt& p0, const Pt& p1, const Pt& p2, const NT& P, const NT& Q) {
   Vec<NT> a = difference<NT>(p0, p1), b = difference<NT>(p0, p2), c = difference<NT>(p1, p2);
   Vec<NT> n = cross(a, b);
   return Q * (dot(a, a) * dot(b, b) * dot(c, c)) - (NT(4) * P) * dot(n, n);
 }
 
 // R3: Q|N|^2 - 4P D^2 with N = |a|^2 (b x c) + |b|^2 (c x a) + |c|^2 (a x b), D = det(a,b,c). Degree <= 8.
-template <class NT>
-Poly<NT> tetrahedron_radius(const MovingPoint& p0, const MovingPoint& p1, const MovingPoint& p2,
-                            const MovingPoint& p3, const NT& P, const NT& Q) {
+template <class NT, class Pt>
+Poly<NT> tetrahedron_radius(const Pt& p0, const Pt& p1, const Pt& p2, const Pt& p3, const NT& P,
+                            const NT& Q) {
   Vec<NT> a = difference<NT>(p0, p1), b = difference<NT>(p0, p2), c = difference<NT>(p0, p3);
   Vec<NT> bc = cross(b, c), ca = cross(c, a), ab = cross(a, b);
   Poly<NT> la = dot(a, a), lb = dot(b, b), lc = dot(c, c);
@@ -118,15 +136,14 @@ Poly<NT> tetrahedron_radius(const MovingPoint& p0, const MovingPoint& p1, const 
 }
 
 // G1: (x-p).(x-q) >= 0 iff x is not strictly inside the diametral ball of pq. Degree <= 2.
-template <class NT> Poly<NT> gabriel_edge(const MovingPoint& p, const MovingPoint& q, const MovingPoint& x) {
+template <class NT, class Pt> Poly<NT> gabriel_edge(const Pt& p, const Pt& q, const Pt& x) {
   return dot(difference<NT>(p, x), difference<NT>(q, x));
 }
 
 // G2: |n|^2 |X|^2 - X.(w x n) >= 0 iff x is not strictly inside the smallest circumball of p0p1p2,
 // with a = p1-p0, b = p2-p0, n = a x b, w = |a|^2 b - |b|^2 a, X = x - p0. Degree <= 6.
-template <class NT>
-Poly<NT> gabriel_triangle(const MovingPoint& p0, const MovingPoint& p1, const MovingPoint& p2,
-                          const MovingPoint& x) {
+template <class NT, class Pt>
+Poly<NT> gabriel_triangle(const Pt& p0, const Pt& p1, const Pt& p2, const Pt& x) {
   Vec<NT> a = difference<NT>(p0, p1), b = difference<NT>(p0, p2), X = difference<NT>(p0, x);
   Vec<NT> n = cross(a, b);
   Poly<NT> la = dot(a, a), lb = dot(b, b);

@@ -63,10 +63,18 @@ public:
   }
   friend bool operator!=(const Simplex& a, const Simplex& b) { return !(a == b); }
   // Order by dimension, then lexicographically: the canonical order of MATH.md 5.2 and 7.2.
+  // Unused slots hold -1 and sizes are equal past the first test, so the four entries decide
+  // (spelled out: std::array's operator< is a library loop, and the engine sorts simplices often).
   friend bool operator<(const Simplex& a, const Simplex& b) {
     if (a.size_ != b.size_)
       return a.size_ < b.size_;
-    return a.v_ < b.v_;
+    if (a.v_[0] != b.v_[0])
+      return a.v_[0] < b.v_[0];
+    if (a.v_[1] != b.v_[1])
+      return a.v_[1] < b.v_[1];
+    if (a.v_[2] != b.v_[2])
+      return a.v_[2] < b.v_[2];
+    return a.v_[3] < b.v_[3];
   }
   friend std::ostream& operator<<(std::ostream& os, const Simplex& s) {
     os << '[';

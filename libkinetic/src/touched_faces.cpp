@@ -1,0 +1,133 @@
+#include "touched_faces.h"
+
+#include "face.h"
+#include "triangulation.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+
+namespace medusa::kinetic::detail {
+
+namespace {
+
+constexpr std::size_t max_local = 6; // a flip spans dim + 2 <= 5 vertices; room for one more
+
+int bits(unsigned m) { return __builtin_popcount(m); }
+
+// The non-empty subsets of {0..n-1} as bit masks, ordered by size and then lexicographically by
+// their sorted indices: over a sorted vertex set this is the canonical order of simplices.
+const std::vector<unsigned>& canonical_masks(std::size_t n) {
+  static const std::array<std::vector<unsigned>, max_local + 1> tables = [] {
+    std::array<std::vector<unsigned>, max_local + 1> t;
+    for (std::size_t k = 1; k <= max_local; ++k) {
+      for (unsigned m = 1; m < (1u << k); ++m)
+        t[k].push_back(m);
+      std::sort(t[k].begin(), t[k].end(), [](unsigned a, unsigned b) {
+        if (bits(a) != bits(b))
+          return bits(a) < bits(b);
+        // Lexicographic on the sorted indices: the lowest differing index decides, and the mask
+        // holding it comes first.
+        const unsigned low = (a ^ b) & -(a ^ b);
+        return (a & low) != 0;
+      });
+    }
+    return t;
+  }();
+  return tables[n];
+}
+
+Simplex from_mask(const std::array<VertexId, max_local>& vertices, unsigned mask) {
+  std::array<VertexId, 4> v{};
+  std::size_t k = 0;
+  for (std::size_t i = 0; mask != 0; ++i, mask >>= 1)
+    if (mask & 1u)
+      v[k++] = vertices[i];
+  return Simplex::from_range(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k));
+}
+
+// The subset enumeration; false when the top simplices span more than max_local vertices.
+bool collect_local(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+                   TouchedFaces& out) {
+  std::array<VertexId, max_local> vertices{};
+  std::size_t n = 0;
+  for (const auto* list : {&removed, &added})
+    for (const Simplex& t : *list)
+      for (VertexId v : t)
+        if (std::find(vertices.begin(), vertices.begin() + static_cast<std::ptrdiff_t>(n), v) ==
+            vertices.begin() + static_cast<std::ptrdiff_t>(n)) {
+          if (n == max_local)
+            return false;
+          vertices[n++] = v;
+        }
+  // Insertion sort: at most six entries (std::sort trips GCC 12's -Warray-bounds here).
+  for (std::size_t i = 1; i < n; ++i)
+    for (std::size_t j = i; j > 0 && vertices[j - 1] > vertices[j]; --j)
+      std::swap(vertices[j - 1], vertices[j]);
+  std::array<int, 1u << max_local> delta{};
+  std::uint64_t present = 0;
+  std::size_t top_size = 0;
+  for (const auto* list : {&removed, &added}) {
+    const int sign = list == &removed ? -1 : 1;
+    for (const Simplex& t : *list) {
+      top_size = t.size();
+      unsigned m = 0;
+      for (VertexId v : t)
+        m |= 1u << static_cast<unsigned>(
+                 std::find(vertices.begin(), vertices.begin() + static_cast<std::ptrdiff_t>(n), v) -
+                 vertices.begin());
+      for (unsigned s = m; s != 0; s = (s - 1) & m) {
+        present |= std::uint64_t{1} << s;
+        delta[s] += sign;
+      }
+    }
+  }
+  // The infinite vertex (-1) sorts first: faces through it are not finite simplices of Del.
+  const unsigned infinite = n > 0 && vertices[0] == infinite_vertex ? 1u : 0u;
+  for (unsigned m : canonical_masks(n)) {
+    if (!(present >> m & 1u))
+      continue;
+    if ((m & infinite) == 0)
+      out.faces.push_back({from_mask(vertices, m), delta[m]});
+    if (static_cast<std::size_t>(bits(m)) + 1 == top_size)
+      out.facets.push_back(from_mask(vertices, m));
+  }
+  return true;
+}
+
+void collect_sorted(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+                    TouchedFaces& out) {
+  std::vector<TouchedFace> all;
+  for (const auto* list : {&removed, &added}) {
+    const int sign = list == &removed ? -1 : 1;
+    for (const Simplex& t : *list) {
+      for_each_face(t, [&](const Simplex& f) { all.push_back({f, sign}); });
+      for (std::size_t i = 0; i < t.size(); ++i)
+        out.facets.push_back(t.facet(i));
+    }
+  }
+  std::sort(all.begin(), all.end(),
+            [](const TouchedFace& a, const TouchedFace& b) { return a.face < b.face; });
+  for (const TouchedFace& f : all)
+    if (!out.faces.empty() && out.faces.back().face == f.face)
+      out.faces.back().delta += f.delta;
+    else
+      out.faces.push_back(f);
+  std::sort(out.facets.begin(), out.facets.end());
+  out.facets.erase(std::unique(out.facets.begin(), out.facets.end()), out.facets.end());
+}
+
+} // namespace
+
+void collect_touched_faces(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+                           TouchedFaces& out) {
+  out.faces.clear();
+  out.facets.clear();
+  if (!collect_local(removed, added, out)) {
+    out.faces.clear();
+    out.facets.clear();
+    collect_sorted(removed, added, out);
+  }
+}
+
+} // namespace medusa::kinetic::detail
