@@ -91,7 +91,9 @@ void release_free_memory() {
 #endif
 }
 
-std::int64_t peak_rss_bytes() {
+namespace {
+
+std::int64_t read_peak_rss_bytes() {
   // VmHWM is the high-water mark of this process image. getrusage's ru_maxrss is the fallback only:
   // Linux carries it across execve, so a child of a large process (say a Python benchmark) would
   // report its parent's peak.
@@ -109,6 +111,17 @@ std::int64_t peak_rss_bytes() {
   if (getrusage(RUSAGE_SELF, &usage) != 0)
     return -1;
   return static_cast<std::int64_t>(usage.ru_maxrss) * 1024;
+}
+
+} // namespace
+
+std::int64_t peak_rss_bytes() {
+  // Linux reports VmHWM as max(recorded high-water mark, current RSS) and records the mark only when
+  // it unmaps pages: pages released by madvise (malloc_trim, release_free_memory) lower the current
+  // RSS without recording it, so a later reading can be lower. The peak seen so far cannot be.
+  static std::int64_t highest = -1;
+  highest = std::max(highest, read_peak_rss_bytes());
+  return highest;
 }
 
 } // namespace medusa::cli

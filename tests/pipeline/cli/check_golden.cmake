@@ -1,6 +1,6 @@
 # Golden-file test of one `medusa` command (GUDHI style): run it, check its exit code, and compare
 # its standard output, standard error and output files byte for byte with reference files.
-#   cmake -DCOMMAND=<words joined by |> -DEXPECT_CODE=<n> -DWORKDIR=<dir> -DGOLDEN_DIR=<dir>
+#   cmake -DCOMMAND=<words joined by |> -DEXPECT_CODE=<n> -DWORKDIR=<dir> -DTEST=<test name> -DGOLDEN_DIR=<dir>
 #         [-DSTDOUT=<golden name>] [-DSTDERR=<golden name>] [-DFILES=<output>=<golden name>|...]
 #         -DMEDUSA=<path of the medusa binary> -DSOURCE_DIR=<source tree> -P check_golden.cmake
 # Standard error must be empty unless STDERR names its golden file.
@@ -17,7 +17,7 @@
 # With the environment variable MEDUSA_UPDATE_GOLDEN=1 (scripts/update-golden), the normalised
 # outputs are written to the golden files instead of compared; the exit code is still checked.
 cmake_minimum_required(VERSION 3.18)
-foreach(required COMMAND EXPECT_CODE WORKDIR GOLDEN_DIR MEDUSA SOURCE_DIR)
+foreach(required COMMAND EXPECT_CODE WORKDIR TEST GOLDEN_DIR MEDUSA SOURCE_DIR)
   if(NOT DEFINED ${required})
     message(FATAL_ERROR "check_golden.cmake: -D${required}=... is missing")
   endif()
@@ -48,7 +48,9 @@ function(check_text what text name)
     message(STATUS "updated ${golden}")
     return()
   endif()
-  set(actual ${WORKDIR}/${name}.actual)
+  # Named after the test as well: tests of one golden file (diagrams on 1 and 3 threads) run in
+  # parallel in the same work folder.
+  set(actual ${WORKDIR}/${name}.${TEST}.actual)
   file(WRITE ${actual} "${text}")
   if(NOT EXISTS ${golden})
     set(failures "${failures}${what}: golden file ${golden} is missing (actual output in ${actual})\n"

@@ -21,7 +21,7 @@ function(medusa_golden_test name)
   endforeach()
   string(REPLACE ";" "|" files "${G_FILES}")
   add_test(NAME golden_${name}
-           COMMAND ${CMAKE_COMMAND} "-DCOMMAND=${command}" -DEXPECT_CODE=${G_CODE} -DWORKDIR=${GOLDEN_WORK}
+           COMMAND ${CMAKE_COMMAND} "-DCOMMAND=${command}" -DEXPECT_CODE=${G_CODE} -DWORKDIR=${GOLDEN_WORK} -DTEST=${name}
                    -DGOLDEN_DIR=${GOLDEN_DIR} -DSTDOUT=${G_STDOUT} -DSTDERR=${G_STDERR} "-DFILES=${files}"
                    -DMEDUSA=$<TARGET_FILE:medusa> -DSOURCE_DIR=${PROJECT_SOURCE_DIR} -P ${GOLDEN_CHECK})
   set_tests_properties(golden_${name} PROPERTIES LABELS "cli;golden")
