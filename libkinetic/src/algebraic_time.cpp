@@ -5,6 +5,7 @@
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Polynomial_traits_d.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace medusa::kinetic {
@@ -43,12 +44,12 @@ ExactPoly to_exact_poly(const Poly<mpz_class>& f) {
 SlabTime::SlabTime() : SlabTime(Rational(0)) {}
 
 SlabTime::SlabTime(const Rational& u) : rational_(true), q_(u) {
-  std::pair<double, double> i = CGAL::to_interval(q_);
+  std::pair<double, double> i = CGAL::to_interval(*q_);
   lo_ = i.first;
   hi_ = i.second;
 }
 
-SlabTime::SlabTime(const AlgebraicReal& u) : rational_(false), q_(0), a_(std::make_shared<AlgebraicReal>(u)) {
+SlabTime::SlabTime(const AlgebraicReal& u) : rational_(false), a_(std::make_shared<AlgebraicReal>(u)) {
   // Refine the isolating interval to about 2^-60 once, so that the certified interval filters at
   // this time see a point-like enclosure (the refinement is kept by the shared representation).
   kernel().approximate_absolute_1_object()(*a_, 60);
@@ -60,7 +61,7 @@ SlabTime::SlabTime(const AlgebraicReal& u) : rational_(false), q_(0), a_(std::ma
   hi_ = CGAL::to_interval(a_->high()).second;
 }
 
-SlabTime::SlabTime(std::shared_ptr<IsolatedRoot> root) : rational_(false), q_(0), root_(std::move(root)) {}
+SlabTime::SlabTime(std::shared_ptr<IsolatedRoot> root) : rational_(false), root_(std::move(root)) {}
 
 bool SlabTime::is_rational() const {
   if (root_)
@@ -74,7 +75,7 @@ const Rational& SlabTime::rational() const {
     q_ = Rational(root_->lo);
     rational_ = true;
   }
-  return q_;
+  return *q_;
 }
 
 const AlgebraicReal& SlabTime::algebraic() const {
@@ -101,7 +102,7 @@ double SlabTime::approx() const {
   if (root_)
     return 0.5 * (root_->lo + root_->hi);
   if (rational_)
-    return CGAL::to_double(q_);
+    return CGAL::to_double(*q_);
   return CGAL::to_double(kernel().approximate_relative_1_object()(*a_, 53).first);
 }
 
@@ -129,19 +130,22 @@ void SlabTime::sharpen(const IntervalPoly& tighter) const {
 }
 
 void SlabTime::tighten() const {
+  if (!root_ || root_->lo == root_->hi)
+    return;
   CGAL::Protect_FPU_rounding<true> guard;
-  while (refine_once()) {
-  }
+  narrow_root(root_->enclosure, root_->lo, root_->hi, root_->sign_lo, 0.0);
 }
 
 int compare(const SlabTime& x, const SlabTime& y) {
   if (x.root_ && x.root_ == y.root_)
     return 0;
   if (!x.root_ && !y.root_ && x.rational_ && y.rational_)
-    return x.q_ < y.q_ ? -1 : (y.q_ < x.q_ ? 1 : 0);
+    return *x.q_ < *y.q_ ? -1 : (*y.q_ < *x.q_ ? 1 : 0);
   // Two roots of one polynomial (a certificate rebuilt on the same points, e.g. a facet whose
   // neighbourhood changed): each open interval holds exactly one root of it, so nested intervals mean
-  // the same root, and refinement ends with nested or disjoint intervals.
+  // the same root. Overlapping ones (narrowed at different points, narrow_root) share a root iff
+  // the polynomial changes sign across their intersection, which lies in both and so holds at most
+  // one root; otherwise each root lies in its own interval outside the intersection.
   // (Closed containment is enough: the polynomial does not vanish at the ends of an open isolating
   // interval, and an interval shrunk to a point is the root itself.)
   double xl, xh, yl, yh;
@@ -158,8 +162,16 @@ int compare(const SlabTime& x, const SlabTime& y) {
   {
     CGAL::Protect_FPU_rounding<true> guard;
     for (;;) {
-      if (same_polynomial && ((yl <= xl && xh <= yh) || (xl <= yl && yh <= xh)))
-        return 0;
+      if (same_polynomial) {
+        if ((yl <= xl && xh <= yh) || (xl <= yl && yh <= xh))
+          return 0;
+        const double lo = std::max(xl, yl), hi = std::min(xh, yh);
+        for (const IsolatedRoot* r : {x.root_.get(), y.root_.get()}) {
+          const int s_lo = sign_at_point(r->enclosure, lo), s_hi = sign_at_point(r->enclosure, hi);
+          if (s_lo != 0 && s_hi != 0)
+            return s_lo != s_hi ? 0 : (xl < yl ? -1 : 1);
+        }
+      }
       const bool x_first = (xh - xl) >= (yh - yl);
       const SlabTime& a = x_first ? x : y;
       const SlabTime& b = x_first ? y : x;

@@ -317,7 +317,7 @@ struct Engine {
   bool in_frontier(const Simplex& s) const;
   void update_frontier(const Simplex& s);
   bool gabriel_now(const Simplex& s);
-  bool has_coface_in_k(const Simplex& s) const;
+  void count_in_facets(const Simplex& c, const Face& state, int sign);
   void settle_membership(const OldMembership& old_k, Step& step);
   std::vector<Simplex> current_complex() const;
 

@@ -95,6 +95,17 @@ void Engine::audit() {
         os << "simplex " << f << " of Del has a wrong count of top simplices";
         audit_failure(os.str());
       }
+      // The coface counts behind the frontier and membership rules, recounted by search.
+      int short_cofaces = 0, k_cofaces = 0;
+      for (const Simplex& c : cofaces(f)) {
+        short_cofaces += is_short(c);
+        k_cofaces += in_k(c);
+      }
+      if (it->second.short_cofaces != short_cofaces || it->second.k_cofaces != k_cofaces) {
+        std::ostringstream os;
+        os << "simplex " << f << " has wrong counts of short cofaces or cofaces in K";
+        audit_failure(os.str());
+      }
     });
   if (del_faces.size() != faces.size())
     audit_failure("a simplex not in Del is still recorded");

@@ -59,6 +59,7 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
       throw InternalError("a removed top simplex held a face that is not in the triangulation");
     it->second.tets += delta;
     if (it->second.tets == 0) {
+      count_in_facets(f, it->second, -1);
       kill_cert(it->second.cert);
       faces.erase(it);
     } else if (fresh)
@@ -67,7 +68,9 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
   for (const Simplex& f : created) {
     if (f.size() == 2 && slab + 1 < traj.frames())
       check_collision(f);
-    faces.at(f).is_short = compute_short(f);
+    Face& face = faces.at(f);
+    face.is_short = compute_short(f);
+    count_in_facets(f, face, +1);
   }
   // Frontier membership of every surviving touched simplex: their cofaces changed (MATH.md 4.4,
   // "after any change of Del"). Cofaces of new simplices are new, hence touched as well.
@@ -97,10 +100,25 @@ std::vector<Simplex> Engine::cofaces(const Simplex& s) const {
   return result;
 }
 
+// Adds sign to the coface counts of c's facets for each flag c holds (c about to gain or lose them,
+// or to enter or leave Del). Vertices keep no counts.
+void Engine::count_in_facets(const Simplex& c, const Face& state, int sign) {
+  if (c.size() <= 2 || (!state.is_short && !state.in_k))
+    return;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    auto it = faces.find(c.facet(i));
+    if (it == faces.end())
+      continue; // a facet leaving Del in the same change, already gone
+    it->second.short_cofaces += state.is_short ? sign : 0;
+    it->second.k_cofaces += state.in_k ? sign : 0;
+  }
+}
+
 // The frontier (MATH.md 4.4): maximal short simplices and minimal long ones.
 bool Engine::in_frontier(const Simplex& s) const {
-  if (is_short(s))
-    return !for_each_coface(s, [&](const Simplex& c) { return is_short(c); });
+  const Face& f = faces.at(s);
+  if (f.is_short)
+    return f.short_cofaces == 0;
   if (s.size() == 2)
     return true;
   for (std::size_t i = 0; i < s.size(); ++i)
@@ -165,10 +183,6 @@ bool Engine::gabriel_now(const Simplex& s) {
   return true;
 }
 
-bool Engine::has_coface_in_k(const Simplex& s) const {
-  return for_each_coface(s, [&](const Simplex& c) { return in_k(c); });
-}
-
 // Re-evaluates membership (MATH.md 4.5 "re-eval") on the touched simplices, in decreasing
 // dimension, and fills the step's entered/left lists.
 void Engine::settle_membership(const OldMembership& old_k, Step& step) {
@@ -184,12 +198,20 @@ void Engine::settle_membership(const OldMembership& old_k, Step& step) {
     if (it == faces.end())
       continue;
     Face& f = it->second;
+    bool in = false;
     if (s.size() == top_size())
-      f.in_k = f.is_short; // top simplices are always Gabriel (MATH.md 4.1)
+      in = f.is_short; // top simplices are always Gabriel (MATH.md 4.1)
     else
       // Every simplex of K is short (its smallest circumsphere is no larger than an empty sphere of
       // radius <= rho, MATH.md 4.1), so a long one is out without looking at its cofaces.
-      f.in_k = f.is_short && (has_coface_in_k(s) || gabriel_now(s));
+      in = f.is_short && (f.k_cofaces > 0 || gabriel_now(s));
+    if (in != f.in_k) {
+      // Cofaces are settled before faces (decreasing dimension): the counts read above are current.
+      Face only_k;
+      only_k.in_k = true;
+      count_in_facets(s, only_k, in ? +1 : -1);
+      f.in_k = in; // look-ups do not move entries: f is still this face's state
+    }
   }
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
     bool before = old_k.at(*it), after = in_k(*it);

@@ -1,6 +1,8 @@
 #include "medusa/kinetic/root_isolation.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace medusa::kinetic {
 
@@ -73,23 +75,106 @@ FirstSignChange first_sign_change(const IntervalPoly& f, double start, int max_d
   return result;
 }
 
+namespace {
+
+// f at the double x in interval arithmetic (Horner).
+Interval value_at(const IntervalPoly& f, double x) {
+  const int n = f.degree_bound();
+  Interval acc = n >= 0 ? f[n] : Interval(0);
+  const Interval u(x);
+  for (int i = n - 1; i >= 0; --i)
+    acc = acc * u + f[i];
+  return acc;
+}
+
+// Moves lo or hi to x inside (lo, hi) by the certified sign of f there.
+Refinement cut_at(const IntervalPoly& f, double x, double& lo, double& hi, int sign_lo) {
+  const Interval v = value_at(f, x);
+  if (v.inf() == 0 && v.sup() == 0) {
+    lo = hi = x;
+    return Refinement::exact;
+  }
+  const int s = certified_sign(v);
+  if (s == 0)
+    return Refinement::stuck;
+  (s == sign_lo ? lo : hi) = x;
+  return Refinement::narrowed;
+}
+
+// A root that is a short dyadic rational (an event at a simple rational time such as 5/8) is met
+// by rounding r, a point next to it, to fewer bits: f vanishes exactly there. Sets
+// lo = hi = that root and answers true; false when none of these roundings is a root in (lo, hi).
+bool dyadic_root_near(const IntervalPoly& f, double r, double& lo, double& hi) {
+  for (int bits = 4; bits <= 48; bits += 4) {
+    // Scaling by a power of two is exact, and std::round ignores the rounding mode.
+    const double x = std::ldexp(std::round(std::ldexp(r, bits)), -bits);
+    if (!(lo < x && x < hi))
+      continue;
+    const Interval v = value_at(f, x);
+    if (v.inf() == 0 && v.sup() == 0) {
+      lo = hi = x;
+      return true;
+    }
+  }
+  return false;
+}
+
+} // namespace
+
+int sign_at_point(const IntervalPoly& f, double x) { return certified_sign(value_at(f, x)); }
+
 Refinement refine_root(const IntervalPoly& f, double& lo, double& hi, int sign_lo) {
   const double mid = 0.5 * (lo + hi);
   if (!(lo < mid && mid < hi))
     return Refinement::stuck;
-  int n = f.degree_bound();
-  Interval acc = n >= 0 ? f[n] : Interval(0);
-  const Interval u(mid);
-  for (int i = n - 1; i >= 0; --i)
-    acc = acc * u + f[i];
-  if (acc.inf() == 0 && acc.sup() == 0) {
-    lo = hi = mid;
-    return Refinement::exact;
+  return cut_at(f, mid, lo, hi, sign_lo);
+}
+
+Refinement narrow_root(const IntervalPoly& f, double& lo, double& hi, int sign_lo, double width) {
+  const int n = f.degree_bound();
+  std::array<double, IntervalPoly::max_degree + 1> c{};
+  for (int i = 0; i <= n; ++i)
+    c[static_cast<std::size_t>(i)] = 0.5 * (f[i].inf() + f[i].sup());
+  // Newton's method on the midpoint polynomial from the middle of (lo, hi), kept inside it: only a
+  // proposal, so neither its rounding nor its convergence matters to correctness.
+  auto newton = [&](double x) {
+    for (int k = 0; k < 6; ++k) {
+      double v = c[static_cast<std::size_t>(n)], d = 0.0;
+      for (int i = n - 1; i >= 0; --i) {
+        d = d * x + v;
+        v = v * x + c[static_cast<std::size_t>(i)];
+      }
+      const double y = x - v / d;
+      if (!(lo < y && y < hi) || y == x)
+        break;
+      x = y;
+    }
+    return x;
+  };
+  for (int round = 0; round < 4 && hi - lo > width; ++round) {
+    const double r = newton(0.5 * (lo + hi));
+    const double ulp = std::nextafter(r, 2.0) - r;
+    const double e = std::max({0.25 * width, (hi - lo) * 0x1p-20, 4.0 * ulp});
+    bool moved = false;
+    for (double x : {r, r - e, r + e}) {
+      if (!(lo < x && x < hi))
+        continue;
+      const Refinement step = cut_at(f, x, lo, hi, sign_lo);
+      if (step == Refinement::exact ||
+          (x == r && step == Refinement::stuck && dyadic_root_near(f, r, lo, hi)))
+        return Refinement::exact;
+      moved = moved || step == Refinement::narrowed;
+    }
+    if (!moved)
+      break;
   }
-  int s = certified_sign(acc);
-  if (s == 0)
-    return Refinement::stuck;
-  (s == sign_lo ? lo : hi) = mid;
+  while (hi - lo > width) {
+    const Refinement step = refine_root(f, lo, hi, sign_lo);
+    if (step == Refinement::stuck && dyadic_root_near(f, 0.5 * (lo + hi), lo, hi))
+      return Refinement::exact; // as tight as doubles allow, and a short dyadic inside is the root
+    if (step != Refinement::narrowed)
+      return step;
+  }
   return Refinement::narrowed;
 }
 

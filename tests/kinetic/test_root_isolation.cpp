@@ -179,3 +179,87 @@ TEST_CASE("two isolations of one polynomial compare in doubles, without exact ar
   REQUIRE(compare(a, c) == -1);
   REQUIRE(compare(c, b) == 1);
 }
+
+TEST_CASE("narrowing reaches the requested width around the root, and the tightest interval doubles allow",
+          "[kinetic][isolation]") {
+  // (1000 u - p)(u + 1)(u - 2): p/1000 is its only root in (0, 1). Checked exactly: the integer
+  // polynomial has opposite signs at the narrowed ends (or vanishes at a dyadic root found exactly).
+  const unsigned seed = std::random_device{}();
+  CAPTURE(seed);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<long> num(1, 999);
+  int narrowed = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    // Expanded: 2p + (p - 2000) u - (1000 + p) u^2 + 1000 u^3.
+    const long p = num(rng);
+    const std::initializer_list<long> c = {2 * p, p - 2000, -1000 - p, 1000};
+    const Poly<mpz_class> e = exact_poly(c);
+    const double width = trial % 2 == 0 ? 0x1p-24 : 0.0;
+    CGAL::Protect_FPU_rounding<true> guard;
+    const IntervalPoly f = interval_poly(c);
+    const FirstSignChange r = first_sign_change(f, 0.0, 12);
+    REQUIRE(r.status == FirstSignChange::Status::root);
+    double lo = r.lo, hi = r.hi;
+    const Refinement step = narrow_root(f, lo, hi, r.sign, width);
+    CAPTURE(p, lo, hi);
+    auto exact_at = [&](double x) {
+      mpq_class acc = 0;
+      for (int i = e.degree_bound(); i >= 0; --i)
+        acc = acc * mpq_class(x) + mpq_class(e[i]);
+      return acc;
+    };
+    if (step == Refinement::exact) {
+      REQUIRE(lo == hi);
+      REQUIRE(exact_at(lo) == 0);
+      continue;
+    }
+    REQUIRE(r.lo <= lo);
+    REQUIRE(hi <= r.hi);
+    REQUIRE(sgn(exact_at(lo)) == r.sign);
+    REQUIRE(sgn(exact_at(hi)) == -r.sign);
+    if (width > 0)
+      REQUIRE(hi - lo <= width);
+    else {
+      // As tight as doubles allow: interval Horner at u <= 1 errs by at most about 2n u sum|c_i|
+      // (n = 3, u = 2^-53) on each side, so the sign is certified once |f| exceeds that, i.e.
+      // outside a zone of half-width 2n u sum|c_i| / |f'(root)| around the root, with
+      // f'(p/1000) = 1000 (r + 1)(r - 2). Twice that, plus a few ulps of slack.
+      const double r_ = p / 1000.0;
+      const double sum = 2.0 * p + std::abs(p - 2000.0) + (1000.0 + p) + 1000.0;
+      const double zone = 4.0 * 6.0 * 0x1p-53 * sum / std::abs(1000.0 * (r_ + 1.0) * (r_ - 2.0));
+      REQUIRE(hi - lo <= zone + 4 * 0x1p-52);
+    }
+    ++narrowed;
+  }
+  REQUIRE(narrowed > 0);
+}
+
+TEST_CASE(
+    "overlapping isolations of one polynomial, neither inside the other, compare without exact arithmetic",
+    "[kinetic][isolation]") {
+  // 16u^2 - 16u + 3 = (4u - 1)(4u - 3): roots 1/4 and 3/4. (0.2, 0.3) and (0.24, 0.5) both isolate
+  // 1/4: equal. (0.2, 0.5) isolates 1/4 and (0.4, 0.8) isolates 3/4: they overlap on (0.4, 0.5), where
+  // the polynomial keeps its sign, so the first is earlier. The exact polynomial would throw.
+  IntervalPoly f;
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    f = interval_poly({3, -16, 16});
+  }
+  auto make = [&](double lo, double hi, int sign_lo) {
+    auto root = std::make_shared<IsolatedRoot>();
+    root->enclosure = f;
+    root->lo = lo;
+    root->hi = hi;
+    root->sign_lo = sign_lo;
+    root->key = {0, 1, 2, 3, 4, 5};
+    root->slab = 3;
+    root->exact = []() -> ExactPoly { throw std::logic_error("exact polynomial requested"); };
+    return SlabTime(root);
+  };
+  const SlabTime a = make(0.2, 0.3, 1), b = make(0.24, 0.5, 1);
+  REQUIRE(compare(a, b) == 0);
+  REQUIRE(compare(b, a) == 0);
+  const SlabTime first = make(0.2, 0.5, 1), second = make(0.4, 0.8, -1);
+  REQUIRE(compare(first, second) == -1);
+  REQUIRE(compare(second, first) == 1);
+}

@@ -82,8 +82,8 @@ private:
   // holds a CGAL::Protect_FPU_rounding guard (once for a whole refinement loop).
   bool refine_once() const;
 
-  mutable bool rational_; // set lazily when an isolated root turns out to be a dyadic rational
-  mutable Rational q_;
+  mutable bool rational_;             // set lazily when an isolated root turns out to be a dyadic rational
+  mutable std::optional<Rational> q_; // set iff rational_ (no allocation for isolated roots)
   std::shared_ptr<IsolatedRoot> root_;
   mutable std::shared_ptr<AlgebraicReal> a_; // built on first need
   double lo_ = 0.0, hi_ = 0.0;               // enclosure of rational or CGAL-built times

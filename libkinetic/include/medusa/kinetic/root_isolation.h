@@ -32,6 +32,18 @@ FirstSignChange first_sign_change(const IntervalPoly& f, double start, int max_d
 // `sign_lo` at lo. `stuck` when f at the midpoint has no certified sign (the interval is then as
 // tight as doubles allow); `exact` when f vanishes exactly at the midpoint (lo = hi = the root).
 enum class Refinement { narrowed, exact, stuck };
+
+// The certified sign of f at the double x: +1, -1, or 0 when the enclosure does not decide.
+int sign_at_point(const IntervalPoly& f, double x);
+
 Refinement refine_root(const IntervalPoly& f, double& lo, double& hi, int sign_lo);
+
+// Narrows the isolating interval (lo, hi) as refine_root does, until it is no wider than `width`
+// (0: as tight as doubles allow). Newton steps on the midpoint polynomial propose a point and a
+// bracket around the root, and certified signs there decide them, so each round gains many bits
+// where bisection gains one; bisection finishes what they leave. `exact` when f vanishes exactly
+// at a proposed point (lo = hi = the root). The result is an isolating interval
+// whichever way the proposals go (every move is decided by a certified sign).
+Refinement narrow_root(const IntervalPoly& f, double& lo, double& hi, int sign_lo, double width);
 
 } // namespace medusa::kinetic
