@@ -149,12 +149,14 @@ int compare(const SlabTime& x, const SlabTime& y) {
   // (Closed containment is enough: the polynomial does not vanish at the ends of an open isolating
   // interval, and an interval shrunk to a point is the root itself.)
   double xl, xh, yl, yh;
-  x.enclosure(xl, xh);
-  y.enclosure(yl, yh);
-  if (xh < yl)
-    return -1;
-  if (yh < xl)
-    return 1;
+  // -1 or 1 when the current enclosures separate x and y, 0 while they overlap.
+  auto separated = [&] {
+    x.enclosure(xl, xh);
+    y.enclosure(yl, yh);
+    return xh < yl ? -1 : (yh < xl ? 1 : 0);
+  };
+  if (const int order = separated(); order != 0)
+    return order;
   // Overlapping enclosures (rare in a queue of isolated roots): decide whether both are roots of one
   // polynomial, then narrow the wider isolated root, then the other one.
   const bool same_polynomial = x.root_ && y.root_ && x.root_->key[0] >= 0 && x.root_->slab == y.root_->slab &&
@@ -177,12 +179,8 @@ int compare(const SlabTime& x, const SlabTime& y) {
       const SlabTime& b = x_first ? y : x;
       if (!a.refine_once() && !b.refine_once())
         break;
-      x.enclosure(xl, xh);
-      y.enclosure(yl, yh);
-      if (xh < yl)
-        return -1;
-      if (yh < xl)
-        return 1;
+      if (const int order = separated(); order != 0)
+        return order;
     }
   }
   const AlgebraicReal& a = x.algebraic();

@@ -282,42 +282,10 @@ struct Engine {
                    OldMembership& old_k, const int* added_orientations = nullptr);
   bool is_short(const Simplex& s) const;
   std::vector<Simplex> cofaces(const Simplex& s) const;
-  // Calls f(c) for each finite (k+1)-coface c of s in Del until f returns true (once each, unless s
-  // has more than 64 of them); returns whether it did. A coface of lower dimension than the top simplices
-  // lies in several of them: it is s plus one vertex, so the vertices already used are remembered (the
-  // frontier and membership rules look up every coface in a hash table, MATH.md 4.4, 4.5).
-  template <class F> bool for_each_coface(const Simplex& s, F&& f) const {
-    bool found = false;
-    std::array<VertexId, 64> seen{};
-    std::size_t n_seen = 0;
-    tri.for_each_tet_containing(s, [&](const Simplex& t) {
-      if (found || !is_finite(t))
-        return;
-      if (s.size() + 1 == t.size()) {
-        found = f(t);
-        return;
-      }
-      for (VertexId v : t)
-        if (!found && !s.contains(v)) {
-          const auto end = seen.begin() + static_cast<std::ptrdiff_t>(n_seen);
-          if (std::find(seen.begin(), end, v) != end)
-            continue;
-          if (n_seen < seen.size())
-            seen[n_seen++] = v;
-          std::array<VertexId, 4> w{};
-          std::size_t k = 0;
-          for (VertexId x : s)
-            w[k++] = x;
-          w[k++] = v;
-          found = f(Simplex::from_range(w.begin(), w.begin() + k));
-        }
-    });
-    return found;
-  }
   bool in_frontier(const Simplex& s) const;
   void update_frontier(const Simplex& s);
   bool gabriel_now(const Simplex& s);
-  void count_in_facets(const Simplex& c, const Face& state, int sign);
+  void count_in_facets(const Simplex& c, int short_delta, int k_delta);
   void settle_membership(const OldMembership& old_k, Step& step);
   std::vector<Simplex> current_complex() const;
 

@@ -153,9 +153,7 @@ void Engine::resolve_radius(Step& settle, OldMembership& old_k) {
     for_each_face(s, [&](const Simplex& f) { old_k.emplace(f, in_k(f)); });
     // Faces' membership depends on cofaces: also record the cofaces' faces through the closure.
     Face& f = faces.at(s);
-    Face only_short;
-    only_short.is_short = true;
-    count_in_facets(s, only_short, f.is_short ? -1 : +1);
+    count_in_facets(s, f.is_short ? -1 : +1, 0);
     f.is_short = !f.is_short;
     install_radius(s);
     ++stats.radius_events;

@@ -59,7 +59,7 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
       throw InternalError("a removed top simplex held a face that is not in the triangulation");
     it->second.tets += delta;
     if (it->second.tets == 0) {
-      count_in_facets(f, it->second, -1);
+      count_in_facets(f, -int(it->second.is_short), -int(it->second.in_k)); // leaving Del
       kill_cert(it->second.cert);
       faces.erase(it);
     } else if (fresh)
@@ -68,9 +68,9 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
   for (const Simplex& f : created) {
     if (f.size() == 2 && slab + 1 < traj.frames())
       check_collision(f);
-    Face& face = faces.at(f);
-    face.is_short = compute_short(f);
-    count_in_facets(f, face, +1);
+    const bool is_short = compute_short(f);
+    faces.at(f).is_short = is_short;
+    count_in_facets(f, int(is_short), 0); // a new face is not in K yet
   }
   // Frontier membership of every surviving touched simplex: their cofaces changed (MATH.md 4.4,
   // "after any change of Del"). Cofaces of new simplices are new, hence touched as well.
@@ -90,27 +90,37 @@ bool Engine::is_short(const Simplex& s) const {
 
 // The (k+1)-cofaces of a finite simplex in Del (finite ones only), sorted.
 std::vector<Simplex> Engine::cofaces(const Simplex& s) const {
+  // A coface is s plus one vertex of a finite top simplex holding s (it may come from several).
   std::vector<Simplex> result;
-  for_each_coface(s, [&](const Simplex& c) {
-    result.push_back(c);
-    return false;
+  tri.for_each_tet_containing(s, [&](const Simplex& t) {
+    if (!is_finite(t))
+      return;
+    for (VertexId v : t)
+      if (!s.contains(v)) {
+        std::array<VertexId, 4> w{};
+        std::size_t k = 0;
+        for (VertexId x : s)
+          w[k++] = x;
+        w[k++] = v;
+        result.push_back(Simplex::from_range(w.begin(), w.begin() + k));
+      }
   });
   std::sort(result.begin(), result.end());
   result.erase(std::unique(result.begin(), result.end()), result.end());
   return result;
 }
 
-// Adds sign to the coface counts of c's facets for each flag c holds (c about to gain or lose them,
-// or to enter or leave Del). Vertices keep no counts.
-void Engine::count_in_facets(const Simplex& c, const Face& state, int sign) {
-  if (c.size() <= 2 || (!state.is_short && !state.in_k))
+// Adds the changes of c's shortness and membership (+1 gained, -1 lost, 0 unchanged) to the coface
+// counts of c's facets. Vertices keep no counts.
+void Engine::count_in_facets(const Simplex& c, int short_delta, int k_delta) {
+  if (c.size() <= 2 || (short_delta == 0 && k_delta == 0))
     return;
   for (std::size_t i = 0; i < c.size(); ++i) {
     auto it = faces.find(c.facet(i));
     if (it == faces.end())
       continue; // a facet leaving Del in the same change, already gone
-    it->second.short_cofaces += state.is_short ? sign : 0;
-    it->second.k_cofaces += state.in_k ? sign : 0;
+    it->second.short_cofaces += short_delta;
+    it->second.k_cofaces += k_delta;
   }
 }
 
@@ -207,9 +217,7 @@ void Engine::settle_membership(const OldMembership& old_k, Step& step) {
       in = f.is_short && (f.k_cofaces > 0 || gabriel_now(s));
     if (in != f.in_k) {
       // Cofaces are settled before faces (decreasing dimension): the counts read above are current.
-      Face only_k;
-      only_k.in_k = true;
-      count_in_facets(s, only_k, in ? +1 : -1);
+      count_in_facets(s, 0, in ? +1 : -1);
       f.in_k = in; // look-ups do not move entries: f is still this face's state
     }
   }
