@@ -66,7 +66,6 @@ struct Engine {
 
   // Del(now+) and the alpha-complex state of its finite simplices.
   detail::Triangulation tri;
-  FlatSimplexMap<int> orient; // sign of O(sorted vertices), finite top simplices
   FlatSimplexMap<Face> faces; // finite simplices of dimension 1..dim in Del
   FlatSimplexMap<int> facet_cert;
 
@@ -92,6 +91,7 @@ struct Engine {
   TouchedFaces touched_scratch;
   std::vector<Simplex> created_scratch;
   std::vector<VertexId> link_scratch; // gabriel_now's link vertices
+  std::array<std::vector<std::pair<Simplex, bool>>, 4> settle_scratch; // settle_membership's buckets by size
 
   Engine(const Trajectories& t, KineticOptions o); // engine_run.cpp
 
@@ -282,8 +282,10 @@ struct Engine {
                    OldMembership& old_k, const int* added_orientations = nullptr);
   bool is_short(const Simplex& s) const;
   std::vector<Simplex> cofaces(const Simplex& s) const;
-  bool in_frontier(const Simplex& s) const;
-  void update_frontier(const Simplex& s);
+  bool in_frontier(const Simplex& s) const { return in_frontier(s, faces.at(s)); }
+  bool in_frontier(const Simplex& s, const Face& f) const;
+  void update_frontier(const Simplex& s) { update_frontier(s, faces.at(s)); }
+  void update_frontier(const Simplex& s, Face& f); // f: s's state
   bool gabriel_now(const Simplex& s);
   void count_in_facets(const Simplex& c, int short_delta, int k_delta);
   void settle_membership(const OldMembership& old_k, Step& step);

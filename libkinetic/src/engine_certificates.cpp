@@ -35,13 +35,13 @@ int permutation_sign(const VertexId* seq, std::size_t n) {
 // The oriented sign of the sequence seq of n = dim + 1 vertices (a finite top simplex of Del).
 int Engine::orientation_of(const VertexId* seq, std::size_t n) const {
   Simplex sorted = Simplex::from_range(seq, seq + n);
-  auto it = orient.find(sorted);
-  if (it == orient.end()) {
+  const int sign = tri.orientation(sorted);
+  if (sign == 0) {
     std::ostringstream os;
     os << "no orientation for top simplex " << sorted;
     throw InternalError(os.str());
   }
-  return it->second * permutation_sign(seq, n);
+  return sign * permutation_sign(seq, n);
 }
 
 int Engine::orientation_sign_plus(const Simplex& t) {
@@ -361,7 +361,7 @@ void Engine::install_facet(const Simplex& facet) {
 }
 
 void Engine::install_radius(const Simplex& s) {
-  Face& f = faces[s];
+  Face& f = faces.at(s);
   kill_cert(f.cert);
   f.cert = new_cert(CertKind::radius, s);
   install(f.cert);

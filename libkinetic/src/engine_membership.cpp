@@ -27,15 +27,13 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
                          OldMembership& old_k, const int* added_orientations) {
   TouchedFaces& touched = touched_scratch;
   collect_touched_faces(removed, added, touched);
-  for (const Simplex& t : removed) {
+  for (const Simplex& t : removed)
     tri.remove_tet(t);
-    orient.erase(t);
-  }
   for (std::size_t i = 0; i < added.size(); ++i) {
     const Simplex& t = added[i];
-    tri.add_tet(t);
+    int s = 0;
     if (is_finite(t)) {
-      int s = added_orientations != nullptr ? added_orientations[i] : orientation_sign_plus(t);
+      s = added_orientations != nullptr ? added_orientations[i] : orientation_sign_plus(t);
       if (s == 0) {
         std::ostringstream os;
         os << "cells " << t
@@ -43,8 +41,8 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
                         : " stay coplanar but form a Delaunay tetrahedron");
         throw GeometryError(os.str());
       }
-      orient[t] = s;
     }
+    tri.add_tet(t, s);
   }
   // Each face counts the top simplices (infinite ones included) that hold it, so its presence in
   // Del after the change needs no search of the triangulation.
@@ -75,8 +73,9 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
   // Frontier membership of every surviving touched simplex: their cofaces changed (MATH.md 4.4,
   // "after any change of Del"). Cofaces of new simplices are new, hence touched as well.
   for (const auto& [f, delta] : touched.faces)
-    if (f.size() > 1 && faces.count(f))
-      update_frontier(f);
+    if (f.size() > 1)
+      if (auto it = faces.find(f); it != faces.end())
+        update_frontier(f, it->second);
   for (const Simplex& f : touched.facets)
     install_facet(f);
 }
@@ -125,8 +124,7 @@ void Engine::count_in_facets(const Simplex& c, int short_delta, int k_delta) {
 }
 
 // The frontier (MATH.md 4.4): maximal short simplices and minimal long ones.
-bool Engine::in_frontier(const Simplex& s) const {
-  const Face& f = faces.at(s);
+bool Engine::in_frontier(const Simplex& s, const Face& f) const {
   if (f.is_short)
     return f.short_cofaces == 0;
   if (s.size() == 2)
@@ -138,9 +136,8 @@ bool Engine::in_frontier(const Simplex& s) const {
 }
 
 // Creates or drops the radius certificate of s so that exactly the frontier carries one.
-void Engine::update_frontier(const Simplex& s) {
-  Face& f = faces.at(s);
-  bool want = in_frontier(s);
+void Engine::update_frontier(const Simplex& s, Face& f) {
+  const bool want = in_frontier(s, f);
   if (want && f.cert < 0)
     install_radius(s);
   else if (!want && f.cert >= 0) {
@@ -194,40 +191,39 @@ bool Engine::gabriel_now(const Simplex& s) {
 }
 
 // Re-evaluates membership (MATH.md 4.5 "re-eval") on the touched simplices, in decreasing
-// dimension, and fills the step's entered/left lists.
+// dimension, and fills the step's entered/left lists (in no particular order: emit_batch sorts them).
 void Engine::settle_membership(const OldMembership& old_k, Step& step) {
-  std::vector<Simplex> order;
-  order.reserve(old_k.size());
-  for (const auto& kv : old_k)
-    order.push_back(kv.first);
-  std::sort(order.begin(), order.end(), [](const Simplex& a, const Simplex& b) { return b < a; });
-  for (const Simplex& s : order) {
-    if (s.size() == 1)
-      continue;
-    auto it = faces.find(s);
-    if (it == faces.end())
-      continue;
-    Face& f = it->second;
-    bool in = false;
-    if (s.size() == top_size())
-      in = f.is_short; // top simplices are always Gabriel (MATH.md 4.1)
-    else
-      // Every simplex of K is short (its smallest circumsphere is no larger than an empty sphere of
-      // radius <= rho, MATH.md 4.1), so a long one is out without looking at its cofaces.
-      in = f.is_short && (f.k_cofaces > 0 || gabriel_now(s));
-    if (in != f.in_k) {
-      // Cofaces are settled before faces (decreasing dimension): the counts read above are current.
-      count_in_facets(s, 0, in ? +1 : -1);
-      f.in_k = in; // look-ups do not move entries: f is still this face's state
+  // Only the order of dimensions matters (a simplex reads its cofaces' counts, never those of its
+  // peers): bucket by size instead of sorting.
+  auto& by_size = settle_scratch;
+  for (auto& bucket : by_size)
+    bucket.clear();
+  for (const auto& [s, before] : old_k)
+    by_size[s.size() - 1].emplace_back(s, before);
+  for (std::size_t k = by_size.size(); k-- > 0;)
+    for (const auto& [s, before] : by_size[k]) {
+      bool after = false;
+      if (s.size() == 1) {
+        after = in_k(s);
+      } else if (auto it = faces.find(s); it != faces.end()) {
+        Face& f = it->second;
+        if (s.size() == top_size())
+          after = f.is_short; // top simplices are always Gabriel (MATH.md 4.1)
+        else
+          // Every simplex of K is short (its smallest circumsphere is no larger than an empty sphere
+          // of radius <= rho, MATH.md 4.1), so a long one is out without looking at its cofaces.
+          after = f.is_short && (f.k_cofaces > 0 || gabriel_now(s));
+        if (after != f.in_k) {
+          // Cofaces are settled before faces (decreasing dimension): the counts read above are current.
+          count_in_facets(s, 0, after ? +1 : -1);
+          f.in_k = after; // look-ups do not move entries: f is still this face's state
+        }
+      }
+      if (before && !after)
+        step.left.push_back(s);
+      else if (!before && after)
+        step.entered.push_back(s);
     }
-  }
-  for (auto it = order.rbegin(); it != order.rend(); ++it) {
-    bool before = old_k.at(*it), after = in_k(*it);
-    if (before && !after)
-      step.left.push_back(*it);
-    else if (!before && after)
-      step.entered.push_back(*it);
-  }
 }
 
 std::vector<Simplex> Engine::current_complex() const {

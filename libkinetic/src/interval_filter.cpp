@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <optional>
 
 namespace medusa::kinetic {
 
@@ -26,10 +28,88 @@ int degree_of(const IntervalPoly& f) {
 
 } // namespace
 
+namespace {
+
+// The Bernstein coefficients of bernstein_coefficients from plain doubles: true when every one of
+// them has a certified sign (beta then holds enclosures), false when the caller must use intervals.
+// Proof (rounding upward, set by every caller's guard): for 0 <= lo < hi the map from the
+// coefficients a_i of f to beta_j is linear with non-negative weights (Taylor shift by lo >= 0,
+// scaling by (hi - lo)^i > 0, binomial sums). Three copies of it run side by side, on
+//  * c_i = mid(f_i): beta_j(c) in floating point. Every term reaches beta_j through a chain of at
+//    most k = n^2 + 3n + 4 roundings (the whole Taylor shift has n(n + 1) operations, the scaling
+//    adds n + 2 counting the powers of (hi - lo), the binomial sum n + 2), so the result is off by at
+//    most gamma_k times the same map on |c_i| (Higham, Accuracy and Stability of Numerical
+//    Algorithms, 3.1 and 3.5; gamma_k = k u / (1 - k u) <= k u (1 + 2 k u), u = 2^-52);
+//  * |c_i|, m_j: that map on absolute values, every operation on non-negative numbers rounded
+//    upward, so an upper bound;
+//  * r_i = max(sup - c_i, c_i - inf) rounded up, every true a_i lies in c_i +- r_i, and the map on
+//    r_i bounds how far beta_j(a) is from beta_j(c).
+// Underflow adds at most 2^-1074 per operation, scaled by weights below 2^15: 2^-1000 covers it
+// (a normal number: subnormal arithmetic costs microcode assists).
+bool bernstein_from_doubles(const IntervalPoly& f, int n, double lo, double hi,
+                            std::array<Interval, IntervalPoly::max_degree + 1>& beta) {
+  if (!(lo >= 0.0 && lo < hi))
+    return false;
+  constexpr std::size_t size = IntervalPoly::max_degree + 1;
+  std::array<double, size> c{}, m{}, r{};
+  const std::size_t top = static_cast<std::size_t>(n);
+  for (std::size_t i = 0; i <= top; ++i) {
+    const Interval& a = f[static_cast<int>(i)];
+    c[i] = 0.5 * (a.inf() + a.sup());
+    m[i] = std::fabs(c[i]);
+    r[i] = std::max(a.sup() - c[i], c[i] - a.inf());
+  }
+  if (lo != 0.0 || hi != 1.0) {
+    for (std::size_t k = 0; k < top; ++k)
+      for (std::size_t i = top; i-- > k;) {
+        c[i] += lo * c[i + 1];
+        m[i] += lo * m[i + 1];
+        r[i] += lo * r[i + 1];
+      }
+    const double s = hi - lo; // rounded upward: the |.| and radius maps only grow
+    double p = 1.0;
+    for (std::size_t i = 1; i <= top; ++i) {
+      p *= s;
+      c[i] *= p;
+      m[i] *= p;
+      r[i] *= p;
+    }
+  }
+  const double g = (double(n) * n + 3.0 * n + 4.0) * 0x1p-52;
+  const double gamma = g * (1.0 + 2.0 * g);
+  for (std::size_t j = 0; j <= top; ++j) {
+    double b = 0.0, bm = 0.0, br = 0.0;
+    for (std::size_t i = 0; i <= j; ++i) {
+      const double w = binomial[top - i][j - i];
+      b += w * c[i];
+      bm += w * m[i];
+      br += w * r[i];
+    }
+    const double bound = br + gamma * bm + 0x1p-1000;
+    // Rounding upward: b + bound is an upper bound, -((-b) + bound) a lower one.
+    const double upper = b + bound, lower = -((-b) + bound);
+    if (!std::isfinite(upper) || !std::isfinite(lower) || !(lower > 0 || upper < 0))
+      return false;
+    beta[j] = Interval(lower, upper);
+  }
+  return true;
+}
+
+} // namespace
+
+bool bernstein_coefficients_from_doubles(const IntervalPoly& f, double lo, double hi,
+                                         std::array<Interval, IntervalPoly::max_degree + 1>& beta) {
+  const int n = degree_of(f);
+  return n >= 0 && bernstein_from_doubles(f, n, lo, hi, beta);
+}
+
 int bernstein_coefficients(const IntervalPoly& f, double lo, double hi,
                            std::array<Interval, IntervalPoly::max_degree + 1>& beta) {
   int n = degree_of(f);
   if (n < 0)
+    return n;
+  // Plain doubles first: when they certify every sign, intervals could only tighten the enclosures.
+  if (bernstein_from_doubles(f, n, lo, hi, beta))
     return n;
   std::array<Interval, IntervalPoly::max_degree + 1> g{};
   for (int i = 0; i <= n; ++i)
@@ -121,7 +201,66 @@ int bernstein_sign_subdivided(const IntervalPoly& f, double lo, int depth) {
   return common;
 }
 
+namespace {
+
+// The enclosure of value_at_point from doubles, or nullopt when it is not finite. Proof (rounding
+// upward, as every caller's guard sets it, so each operation's relative error is below u = 2^-52
+// and, when the result is subnormal, its absolute error below 2^-1074):
+//  * c_i = mid(f_i) is any double; r_i = max(sup - c_i, c_i - inf) is rounded up, so every true
+//    coefficient a_i lies in [c_i - r_i, c_i + r_i], and |sum a_i x^i - sum c_i x^i| <= sum r_i |x|^i.
+//  * v = Horner of c at x in floating point: |v - sum c_i x^i| <= gamma_2n sum |c_i| |x|^i plus, for
+//    underflow, at most 2^-1074 per product, carried by |x|^k and the step's (1 + gamma): less than
+//    2^-1072 sum |x|^i (Higham, Accuracy and Stability of Numerical Algorithms, 5.1; gamma_k =
+//    k u / (1 - k u) <= k u (1 + 2 k u) for k u <= 1/2). The bound uses 2^-1000 instead: arithmetic
+//    on subnormal numbers costs a microcode assist, which made this path slower than interval Horner.
+//  * The three sums have non-negative terms, so evaluating them rounded upward gives upper bounds.
+std::optional<Interval> value_from_doubles(const IntervalPoly& f, int n, double x) {
+  const double ax = std::fabs(x);
+  const std::size_t top = static_cast<std::size_t>(n);
+  double v = 0.5 * (f[n].inf() + f[n].sup());
+  double radius = std::max(f[n].sup() - v, v - f[n].inf());
+  double magnitude = std::fabs(v), powers = 1.0;
+  for (std::size_t i = top; i-- > 0;) {
+    const Interval& a = f[static_cast<int>(i)];
+    const double c = 0.5 * (a.inf() + a.sup());
+    v = v * x + c;
+    radius = radius * ax + std::max(a.sup() - c, c - a.inf());
+    magnitude = magnitude * ax + std::fabs(c);
+    powers = powers * ax + 1.0;
+  }
+  const double g = 2.0 * n * 0x1p-52;
+  const double bound = radius + g * (1.0 + 2.0 * g) * magnitude + 0x1p-1000 * powers;
+  if (!std::isfinite(v) || !std::isfinite(bound))
+    return std::nullopt;
+  // Rounding upward: v + bound is an upper bound, -((-v) + bound) a lower one.
+  return Interval(-((-v) + bound), v + bound);
+}
+
+} // namespace
+
+std::optional<Interval> value_at_point_from_doubles(const IntervalPoly& f, double x) {
+  const int n = degree_of(f);
+  if (n < 0)
+    return Interval(0);
+  return value_from_doubles(f, n, x);
+}
+
+Interval value_at_point(const IntervalPoly& f, double x) {
+  const int n = degree_of(f);
+  if (n < 0)
+    return Interval(0);
+  if (const auto fast = value_from_doubles(f, n, x); fast && (fast->inf() > 0 || fast->sup() < 0))
+    return *fast;
+  const Interval u(x);
+  Interval acc = f[n];
+  for (int i = n - 1; i >= 0; --i)
+    acc = acc * u + f[i];
+  return acc;
+}
+
 int interval_sign(const IntervalPoly& f, double lo, double hi) {
+  if (lo == hi)
+    return sign_of(value_at_point(f, lo));
   int n = degree_of(f);
   if (n < 0)
     return 0;

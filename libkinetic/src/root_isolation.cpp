@@ -77,15 +77,8 @@ FirstSignChange first_sign_change(const IntervalPoly& f, double start, int max_d
 
 namespace {
 
-// f at the double x in interval arithmetic (Horner).
-Interval value_at(const IntervalPoly& f, double x) {
-  const int n = f.degree_bound();
-  Interval acc = n >= 0 ? f[n] : Interval(0);
-  const Interval u(x);
-  for (int i = n - 1; i >= 0; --i)
-    acc = acc * u + f[i];
-  return acc;
-}
+// f at the double x, certified (doubles with an error bound, then interval Horner).
+Interval value_at(const IntervalPoly& f, double x) { return value_at_point(f, x); }
 
 // Moves lo or hi to x inside (lo, hi) by the certified sign of f there.
 Refinement cut_at(const IntervalPoly& f, double x, double& lo, double& hi, int sign_lo) {
@@ -135,26 +128,37 @@ Refinement narrow_root(const IntervalPoly& f, double& lo, double& hi, int sign_l
   std::array<double, IntervalPoly::max_degree + 1> c{};
   for (int i = 0; i <= n; ++i)
     c[static_cast<std::size_t>(i)] = 0.5 * (f[i].inf() + f[i].sup());
-  // Newton's method on the midpoint polynomial from the middle of (lo, hi), kept inside it: only a
-  // proposal, so neither its rounding nor its convergence matters to correctness.
-  auto newton = [&](double x) {
-    for (int k = 0; k < 6; ++k) {
+  // Safeguarded Newton (Newton inside a shrinking bracket, halving when a step leaves it) on the
+  // midpoint polynomial: only a proposal, so neither its rounding nor its convergence matters to
+  // correctness. The isolating pieces handed in are wide (half the slab on average), where plain
+  // Newton from the middle often leaves the interval; the bracket makes every proposal land near the
+  // root, so two certified cuts around it usually finish the job.
+  auto propose = [&]() {
+    double a = lo, b = hi, x = 0.5 * (lo + hi);
+    for (int k = 0; k < 64; ++k) {
       double v = c[static_cast<std::size_t>(n)], d = 0.0;
       for (int i = n - 1; i >= 0; --i) {
         d = d * x + v;
         v = v * x + c[static_cast<std::size_t>(i)];
       }
-      const double y = x - v / d;
-      if (!(lo < y && y < hi) || y == x)
-        break;
+      if (v == 0.0)
+        return x;
+      ((v > 0) == (sign_lo > 0) ? a : b) = x;
+      double y = x - v / d;
+      if (!(a < y && y < b))
+        y = 0.5 * (a + b);
+      if (y == x || !(a < y && y < b))
+        return x;
       x = y;
     }
     return x;
   };
   for (int round = 0; round < 4 && hi - lo > width; ++round) {
-    const double r = newton(0.5 * (lo + hi));
+    const double r = propose();
     const double ulp = std::nextafter(r, 2.0) - r;
-    const double e = std::max({0.25 * width, (hi - lo) * 0x1p-20, 4.0 * ulp});
+    // Around a good proposal, cuts at +-width/4 finish in one round. Asked for the tightest interval
+    // (width 0), each round gains 20 bits instead, so that cuts never start inside the noise zone.
+    const double e = width > 0 ? std::max(0.25 * width, 4.0 * ulp) : std::max((hi - lo) * 0x1p-20, 4.0 * ulp);
     bool moved = false;
     for (double x : {r, r - e, r + e}) {
       if (!(lo < x && x < hi))

@@ -13,8 +13,8 @@ void Triangulation::clear() {
   incident_.clear();
 }
 
-void Triangulation::add_tet(const Simplex& t) {
-  if (!tets_.emplace(t, 1).second) {
+void Triangulation::add_tet(const Simplex& t, int orientation) {
+  if (!tets_.emplace(t, static_cast<signed char>(orientation)).second) {
     std::ostringstream os;
     os << "top simplex " << t << " added twice";
     throw InternalError(os.str());

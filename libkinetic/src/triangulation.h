@@ -22,7 +22,13 @@ class Triangulation {
 public:
   void clear();
   bool has_tet(const Simplex& t) const { return tets_.count(t) != 0; }
-  void add_tet(const Simplex& t);
+  // Adds t with the sign (+1 or -1) of the orientation of its sorted vertices, 0 for an infinite t.
+  void add_tet(const Simplex& t, int orientation);
+  // The sign given when t was added; 0 when t is infinite or absent.
+  int orientation(const Simplex& t) const {
+    auto it = tets_.find(t);
+    return it == tets_.end() ? 0 : it->second;
+  }
   void remove_tet(const Simplex& t);
 
   // The apices of facet f (the vertices completing it to its two tetrahedra); count is 2 in a
@@ -39,7 +45,7 @@ public:
   public:
     class iterator {
     public:
-      explicit iterator(FlatSimplexMap<char>::const_iterator it) : it_(it) {}
+      explicit iterator(FlatSimplexMap<signed char>::const_iterator it) : it_(it) {}
       const Simplex& operator*() const { return it_->first; }
       iterator& operator++() {
         ++it_;
@@ -48,15 +54,15 @@ public:
       friend bool operator!=(const iterator& a, const iterator& b) { return a.it_ != b.it_; }
 
     private:
-      FlatSimplexMap<char>::const_iterator it_;
+      FlatSimplexMap<signed char>::const_iterator it_;
     };
-    explicit TetRange(const FlatSimplexMap<char>& m) : m_(m) {}
+    explicit TetRange(const FlatSimplexMap<signed char>& m) : m_(m) {}
     iterator begin() const { return iterator(m_.begin()); }
     iterator end() const { return iterator(m_.end()); }
     std::size_t size() const { return m_.size(); }
 
   private:
-    const FlatSimplexMap<char>& m_;
+    const FlatSimplexMap<signed char>& m_;
   };
   TetRange tets() const { return TetRange(tets_); }
   const FlatSimplexMap<Apices>& facets() const { return facets_; }
@@ -98,7 +104,7 @@ private:
     return *best;
   }
 
-  FlatSimplexMap<char> tets_; // a set: the values are unused
+  FlatSimplexMap<signed char> tets_; // each top simplex with its orientation
   FlatSimplexMap<Apices> facets_;
   // Top simplices incident to each vertex, indexed by vertex id + 1 (the infinite vertex is -1).
   std::vector<std::vector<Simplex>> incident_;

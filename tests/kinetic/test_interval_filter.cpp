@@ -2,6 +2,13 @@
 
 #include <CGAL/FPU.h>
 #include <catch2/catch.hpp>
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <random>
+#include <vector>
 
 using namespace medusa::kinetic;
 
@@ -89,4 +96,158 @@ TEST_CASE("the sign of the factor between two enclosures of one polynomial is re
   IntervalPoly wide;
   wide = IntervalPoly{Interval(-1, 1)};
   REQUIRE(proportionality_sign(wide, poly({2})) == 0);
+}
+
+namespace {
+
+// The exact value at x of the polynomial whose coefficients are the lower (upper) ends of f's.
+mpq_class exact_value_of_ends(const IntervalPoly& f, double x, bool upper) {
+  mpq_class v = 0;
+  for (int i = f.degree_bound(); i >= 0; --i)
+    v = v * mpq_class(x) + mpq_class(upper ? f[i].sup() : f[i].inf());
+  return v;
+}
+
+} // namespace
+
+TEST_CASE("point values from doubles enclose every polynomial of the enclosure, cancellations included",
+          "[kinetic][filter]") {
+  // For x >= 0 the smallest and largest values over the coefficient box are those of the lower and
+  // upper ends: each is checked exactly in rationals. Polynomials are products of (u - r_k) in
+  // interval arithmetic (roots near x make the large coefficients cancel, the hard case for the
+  // bound), scaled by powers of two from 2^-300 to 2^300 and with their coefficients widened.
+  const unsigned seed = std::random_device{}();
+  CAPTURE(seed);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_int_distribution<int> degree(0, 8), scale(-300, 300), widen(0, 2);
+  CGAL::Protect_FPU_rounding<true> guard;
+  int decided = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int n = degree(rng);
+    const double x = trial % 10 == 0 ? std::ldexp(std::round(std::ldexp(unit(rng), 6)), -6) : unit(rng);
+    IntervalPoly f{Interval(std::ldexp(1.0, scale(rng)))};
+    for (int k = 0; k < n; ++k) {
+      // A root near x in half the factors, elsewhere anywhere in [-1, 2].
+      const double r = k % 2 == 0 ? x + 1e-6 * (unit(rng) - 0.5) : 3.0 * unit(rng) - 1.0;
+      f = f * IntervalPoly{Interval(-r), Interval(1)};
+    }
+    const int w = widen(rng);
+    for (int i = 0; i <= f.degree_bound(); ++i) {
+      const double m = std::max(std::fabs(f[i].inf()), std::fabs(f[i].sup()));
+      if (w > 0)
+        f[i] = f[i] + Interval(-m, m) * Interval(w == 1 ? 1e-15 : 1e-6);
+    }
+    CAPTURE(trial, n, x);
+    const std::optional<Interval> v = value_at_point_from_doubles(f, x);
+    REQUIRE(v.has_value());
+    REQUIRE(mpq_class(v->inf()) <= exact_value_of_ends(f, x, false));
+    REQUIRE(exact_value_of_ends(f, x, true) <= mpq_class(v->sup()));
+    const Interval full = value_at_point(f, x);
+    REQUIRE(mpq_class(full.inf()) <= exact_value_of_ends(f, x, false));
+    REQUIRE(exact_value_of_ends(f, x, true) <= mpq_class(full.sup()));
+    decided += v->inf() > 0 || v->sup() < 0;
+  }
+  // The cheap stage must actually settle signs, not only be safe.
+  REQUIRE(decided > 900);
+}
+
+TEST_CASE("a polynomial vanishing exactly at a dyadic point evaluates to exactly zero there",
+          "[kinetic][filter]") {
+  // (u - 5/8)(3u^2 + 1) = 3u^3 - 15/8 u^2 + u - 5/8: the doubles' bound cannot exclude zero, so the
+  // interval stage runs, and every one of its steps is exact.
+  CGAL::Protect_FPU_rounding<true> guard;
+  const IntervalPoly f = poly({-0.625, 1, -1.875, 3});
+  const Interval v = value_at_point(f, 0.625);
+  REQUIRE(v.inf() == 0);
+  REQUIRE(v.sup() == 0);
+  REQUIRE(value_at_point(f, 0.5).sup() < 0);
+  REQUIRE(value_at_point(f, 0.75).inf() > 0);
+}
+
+namespace {
+
+// beta_j of bernstein_coefficients, exactly: g(v) = f(lo + (hi - lo) v), then binomial sums.
+std::vector<mpq_class> exact_bernstein(const IntervalPoly& f, double lo, double hi, bool upper) {
+  const int n = f.degree_bound();
+  std::vector<mpq_class> a(static_cast<std::size_t>(n + 1)), g(a.size());
+  for (int i = 0; i <= n; ++i)
+    a[static_cast<std::size_t>(i)] = upper ? f[i].sup() : f[i].inf();
+  const mpq_class l(lo), s = mpq_class(hi) - mpq_class(lo);
+  mpz_class choose;
+  for (int i = 0; i <= n; ++i) {
+    mpq_class sum = 0, lp = 1;
+    for (int j = i; j <= n; ++j) {
+      mpz_bin_uiui(choose.get_mpz_t(), static_cast<unsigned long>(j), static_cast<unsigned long>(i));
+      sum += mpq_class(choose) * lp * a[static_cast<std::size_t>(j)];
+      lp *= l;
+    }
+    mpq_class sp = 1;
+    for (int k = 0; k < i; ++k)
+      sp *= s;
+    g[static_cast<std::size_t>(i)] = sum * sp;
+  }
+  std::vector<mpq_class> beta(a.size());
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= j; ++i) {
+      mpz_bin_uiui(choose.get_mpz_t(), static_cast<unsigned long>(n - i), static_cast<unsigned long>(j - i));
+      beta[static_cast<std::size_t>(j)] += mpq_class(choose) * g[static_cast<std::size_t>(i)];
+    }
+  return beta;
+}
+
+} // namespace
+
+TEST_CASE("Bernstein coefficients from doubles enclose those of every polynomial of the enclosure",
+          "[kinetic][filter]") {
+  // The map from coefficients to Bernstein coefficients on [lo, hi] within [0, 1] has non-negative
+  // weights, so over the coefficient box beta_j is smallest at the lower ends and largest at the
+  // upper ends: both are computed exactly in rationals. Polynomials as in the point-value case.
+  const unsigned seed = std::random_device{}();
+  CAPTURE(seed);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_int_distribution<int> degree(0, 8), scale(-300, 300), widen(0, 2);
+  CGAL::Protect_FPU_rounding<true> guard;
+  int certified = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const int n = degree(rng);
+    double lo = unit(rng), hi = unit(rng);
+    if (trial % 3 == 0)
+      hi = 1.0;
+    if (trial % 7 == 0)
+      lo = 0.0;
+    if (lo > hi)
+      std::swap(lo, hi);
+    if (!(lo < hi))
+      continue;
+    IntervalPoly f{Interval(std::ldexp(1.0, scale(rng)))};
+    for (int k = 0; k < n; ++k) {
+      const double r = k % 2 == 0 ? lo + (hi - lo) * unit(rng) : 3.0 * unit(rng) - 1.0;
+      f = f * IntervalPoly{Interval(-r), Interval(1)};
+    }
+    const int w = widen(rng);
+    for (int i = 0; i <= f.degree_bound(); ++i) {
+      const double m = std::max(std::fabs(f[i].inf()), std::fabs(f[i].sup()));
+      if (w > 0)
+        f[i] = f[i] + Interval(-m, m) * Interval(w == 1 ? 1e-15 : 1e-6);
+    }
+    CAPTURE(trial, n, lo, hi);
+    const std::vector<mpq_class> low = exact_bernstein(f, lo, hi, false), high = exact_bernstein(f, lo, hi, true);
+    std::array<Interval, IntervalPoly::max_degree + 1> beta{};
+    if (bernstein_coefficients_from_doubles(f, lo, hi, beta)) {
+      ++certified;
+      for (int j = 0; j <= f.degree_bound(); ++j) {
+        CAPTURE(j);
+        REQUIRE(mpq_class(beta[static_cast<std::size_t>(j)].inf()) <= low[static_cast<std::size_t>(j)]);
+        REQUIRE(high[static_cast<std::size_t>(j)] <= mpq_class(beta[static_cast<std::size_t>(j)].sup()));
+      }
+    }
+    REQUIRE(bernstein_coefficients(f, lo, hi, beta) == f.degree_bound());
+    for (int j = 0; j <= f.degree_bound(); ++j) {
+      REQUIRE(mpq_class(beta[static_cast<std::size_t>(j)].inf()) <= low[static_cast<std::size_t>(j)]);
+      REQUIRE(high[static_cast<std::size_t>(j)] <= mpq_class(beta[static_cast<std::size_t>(j)].sup()));
+    }
+  }
+  REQUIRE(certified > 1500);
 }

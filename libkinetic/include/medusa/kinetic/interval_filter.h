@@ -8,6 +8,7 @@
 #include <CGAL/Interval_nt.h>
 
 #include <array>
+#include <optional>
 
 namespace medusa::kinetic {
 
@@ -17,8 +18,13 @@ using IntervalPoly = Poly<Interval>;
 // The Bernstein coefficients of f on [lo, hi], each multiplied by a positive binomial (so with the
 // signs of the true coefficients), in beta[0..n]; returns n, the degree of f (-1 if f is empty).
 // beta[0] encloses f(lo) and beta[n] encloses f(hi).
+// Plain doubles with an a-priori error bound first; interval arithmetic when they leave a sign open.
 int bernstein_coefficients(const IntervalPoly& f, double lo, double hi,
                            std::array<Interval, IntervalPoly::max_degree + 1>& beta);
+// Its first stage alone: false when some sign stays open (beta is then unspecified); exposed so that
+// tests check its error bound.
+bool bernstein_coefficients_from_doubles(const IntervalPoly& f, double lo, double hi,
+                                         std::array<Interval, IntervalPoly::max_degree + 1>& beta);
 
 // +1 if f > 0 on [lo, hi], -1 if f < 0 on [lo, hi], 0 if the Bernstein enclosures do not decide.
 // lo < hi are doubles (any double is an exact dyadic rational).
@@ -27,6 +33,14 @@ int bernstein_sign(const IntervalPoly& f, double lo, double hi = 1.0);
 // As bernstein_sign on [lo, 1], subdividing up to `depth` times where the enclosures are too wide:
 // +1 / -1 when every piece has that sign, 0 otherwise (MATH.md 3.8, de Casteljau subdivision).
 int bernstein_sign_subdivided(const IntervalPoly& f, double lo, int depth);
+
+// An enclosure of f(x) at the double x, valid for every polynomial with coefficients in f's
+// intervals. Plain doubles with an a-priori error bound first (a few times cheaper than interval
+// Horner); when that enclosure holds zero, interval Horner, which is tighter and is [0, 0] exactly
+// when every step was exact (a proof that f vanishes at x).
+Interval value_at_point(const IntervalPoly& f, double x);
+// Its first stage alone (nullopt when not finite); exposed so that tests check its error bound.
+std::optional<Interval> value_at_point_from_doubles(const IntervalPoly& f, double x);
 
 // +1 / -1 if f keeps that sign on the whole interval [lo, hi], 0 if undecided.
 int interval_sign(const IntervalPoly& f, double lo, double hi);

@@ -39,7 +39,7 @@ int sign_at_point(const IntervalPoly& f, double x);
 Refinement refine_root(const IntervalPoly& f, double& lo, double& hi, int sign_lo);
 
 // Narrows the isolating interval (lo, hi) as refine_root does, until it is no wider than `width`
-// (0: as tight as doubles allow). Newton steps on the midpoint polynomial propose a point and a
+// (0: as tight as doubles allow). Safeguarded Newton steps on the midpoint polynomial propose a point and a
 // bracket around the root, and certified signs there decide them, so each round gains many bits
 // where bisection gains one; bisection finishes what they leave. `exact` when f vanishes exactly
 // at a proposed point (lo = hi = the root). The result is an isolating interval
