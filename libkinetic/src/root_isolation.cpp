@@ -160,10 +160,11 @@ Refinement narrow_root(const IntervalPoly& f, double& lo, double& hi, int sign_l
     // (width 0), each round gains 20 bits instead, so that cuts never start inside the noise zone.
     const double e = width > 0 ? std::max(0.25 * width, 4.0 * ulp) : std::max((hi - lo) * 0x1p-20, 4.0 * ulp);
     bool moved = false;
-    // The cut at r itself detects a root that is exactly r (then a short dyadic nearby), which is
-    // what the tightest interval is for: events at equal rational times must compare equal. On the
-    // way to a given width it is costly (f is tiny there, so doubles cannot decide, and the dyadic
-    // search follows) and rarely needed: the cuts around r come first, and r only if they fall short.
+    // The cut at r itself detects a root that is exactly r, which is what the tightest interval is
+    // for: events at equal rational times must compare equal. On the way to a given width it is
+    // costly (f is tiny there, so doubles cannot decide) and rarely needed: the cuts around r come
+    // first, and r only if they fall short. Short dyadic roots near r are searched for once, on the
+    // final interval (below), where few roundings of its middle fall inside it.
     const std::array<double, 3> cuts = width > 0 ? std::array<double, 3>{r - e, r + e, r}
                                                  : std::array<double, 3>{r, r - e, r + e};
     for (double x : cuts) {
@@ -172,8 +173,7 @@ Refinement narrow_root(const IntervalPoly& f, double& lo, double& hi, int sign_l
       if (!(lo < x && x < hi))
         continue;
       const Refinement step = cut_at(f, x, lo, hi, sign_lo);
-      if (step == Refinement::exact ||
-          (x == r && step == Refinement::stuck && dyadic_root_near(f, r, lo, hi)))
+      if (step == Refinement::exact)
         return Refinement::exact;
       moved = moved || step == Refinement::narrowed;
     }
