@@ -159,6 +159,12 @@ int bernstein_sign_subdivided(const IntervalPoly& f, double lo, int depth) {
   const int at_lo = interval_sign(f, lo, lo), at_hi = interval_sign(f, 1.0, 1.0);
   if (at_lo * at_hi < 0)
     return 0;
+  // The first Bernstein coefficient of every piece starting at lo is f(lo), computed by the same
+  // Horner steps as at_lo (the Taylor shift's constant term; the doubles' bound is only wider): when
+  // at_lo is undecided, no piece containing lo ever is. This is the common case of the certificates
+  // a flip creates, which vanish at now.
+  if (at_lo == 0)
+    return 0;
   // Depth-first over dyadic pieces of [lo, 1]; each piece must be decided with one common sign.
   struct Piece {
     double lo, hi;

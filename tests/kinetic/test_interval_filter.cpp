@@ -251,3 +251,15 @@ TEST_CASE("Bernstein coefficients from doubles enclose those of every polynomial
   }
   REQUIRE(certified > 1500);
 }
+
+TEST_CASE("the subdivided filter refuses a polynomial vanishing at the left end of its interval",
+          "[kinetic][filter]") {
+  // f = (4u - 1)(u + 1) vanishes at u = 1/4 and is positive on (1/4, 1]: "no root on [1/4, 1]" is
+  // false, so the filter must answer 0 (and does so without subdividing); just right of the root
+  // it proves the sign.
+  CGAL::Protect_FPU_rounding<true> guard;
+  const IntervalPoly f = poly({-1, 3, 4});
+  REQUIRE(bernstein_sign_subdivided(f, 0.25, 4) == 0);
+  REQUIRE(bernstein_sign_subdivided(f, 0.3, 4) == 1);
+  REQUIRE(bernstein_sign_subdivided(Interval(-1) * f, 0.3, 4) == -1);
+}
