@@ -100,6 +100,27 @@ TEST_CASE("the sign of the factor between two enclosures of one polynomial is re
 
 namespace {
 
+// A random interval polynomial for the bound tests: a product of up to 8 factors (u - r) in interval
+// arithmetic, half of them with a root in [near_lo, near_hi] (there the large coefficients cancel,
+// the hard case for error bounds), the others anywhere in [-1, 2]; scaled by a power of two from
+// 2^-300 to 2^300; its coefficients kept as computed, widened by 1e-15 or by 1e-6 relative.
+IntervalPoly random_test_polynomial(std::mt19937& rng, double near_lo, double near_hi) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_int_distribution<int> degree(0, 8), scale(-300, 300), widen(0, 2);
+  const int n = degree(rng);
+  IntervalPoly f{Interval(std::ldexp(1.0, scale(rng)))};
+  for (int k = 0; k < n; ++k) {
+    const double r = k % 2 == 0 ? near_lo + (near_hi - near_lo) * unit(rng) : 3.0 * unit(rng) - 1.0;
+    f = f * IntervalPoly{Interval(-r), Interval(1)};
+  }
+  const int w = widen(rng);
+  for (int i = 0; w > 0 && i <= f.degree_bound(); ++i) {
+    const double m = std::max(std::fabs(f[i].inf()), std::fabs(f[i].sup()));
+    f[i] = f[i] + Interval(-m, m) * Interval(w == 1 ? 1e-15 : 1e-6);
+  }
+  return f;
+}
+
 // The exact value at x of the polynomial whose coefficients are the lower (upper) ends of f's.
 mpq_class exact_value_of_ends(const IntervalPoly& f, double x, bool upper) {
   mpq_class v = 0;
@@ -113,32 +134,17 @@ mpq_class exact_value_of_ends(const IntervalPoly& f, double x, bool upper) {
 TEST_CASE("point values from doubles enclose every polynomial of the enclosure, cancellations included",
           "[kinetic][filter]") {
   // For x >= 0 the smallest and largest values over the coefficient box are those of the lower and
-  // upper ends: each is checked exactly in rationals. Polynomials are products of (u - r_k) in
-  // interval arithmetic (roots near x make the large coefficients cancel, the hard case for the
-  // bound), scaled by powers of two from 2^-300 to 2^300 and with their coefficients widened.
+  // upper ends: each is checked exactly in rationals, on polynomials with roots within 1e-6 of x.
   const unsigned seed = std::random_device{}();
   CAPTURE(seed);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::uniform_int_distribution<int> degree(0, 8), scale(-300, 300), widen(0, 2);
   CGAL::Protect_FPU_rounding<true> guard;
   int decided = 0;
   for (int trial = 0; trial < 3000; ++trial) {
-    const int n = degree(rng);
     const double x = trial % 10 == 0 ? std::ldexp(std::round(std::ldexp(unit(rng), 6)), -6) : unit(rng);
-    IntervalPoly f{Interval(std::ldexp(1.0, scale(rng)))};
-    for (int k = 0; k < n; ++k) {
-      // A root near x in half the factors, elsewhere anywhere in [-1, 2].
-      const double r = k % 2 == 0 ? x + 1e-6 * (unit(rng) - 0.5) : 3.0 * unit(rng) - 1.0;
-      f = f * IntervalPoly{Interval(-r), Interval(1)};
-    }
-    const int w = widen(rng);
-    for (int i = 0; i <= f.degree_bound(); ++i) {
-      const double m = std::max(std::fabs(f[i].inf()), std::fabs(f[i].sup()));
-      if (w > 0)
-        f[i] = f[i] + Interval(-m, m) * Interval(w == 1 ? 1e-15 : 1e-6);
-    }
-    CAPTURE(trial, n, x);
+    const IntervalPoly f = random_test_polynomial(rng, x - 5e-7, x + 5e-7);
+    CAPTURE(trial, f.degree_bound(), x);
     const std::optional<Interval> v = value_at_point_from_doubles(f, x);
     REQUIRE(v.has_value());
     REQUIRE(mpq_class(v->inf()) <= exact_value_of_ends(f, x, false));
@@ -202,16 +208,14 @@ TEST_CASE("Bernstein coefficients from doubles enclose those of every polynomial
           "[kinetic][filter]") {
   // The map from coefficients to Bernstein coefficients on [lo, hi] within [0, 1] has non-negative
   // weights, so over the coefficient box beta_j is smallest at the lower ends and largest at the
-  // upper ends: both are computed exactly in rationals. Polynomials as in the point-value case.
+  // upper ends: both are computed exactly in rationals, on polynomials with roots in [lo, hi].
   const unsigned seed = std::random_device{}();
   CAPTURE(seed);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::uniform_int_distribution<int> degree(0, 8), scale(-300, 300), widen(0, 2);
   CGAL::Protect_FPU_rounding<true> guard;
   int certified = 0;
   for (int trial = 0; trial < 2000; ++trial) {
-    const int n = degree(rng);
     double lo = unit(rng), hi = unit(rng);
     if (trial % 3 == 0)
       hi = 1.0;
@@ -221,18 +225,8 @@ TEST_CASE("Bernstein coefficients from doubles enclose those of every polynomial
       std::swap(lo, hi);
     if (!(lo < hi))
       continue;
-    IntervalPoly f{Interval(std::ldexp(1.0, scale(rng)))};
-    for (int k = 0; k < n; ++k) {
-      const double r = k % 2 == 0 ? lo + (hi - lo) * unit(rng) : 3.0 * unit(rng) - 1.0;
-      f = f * IntervalPoly{Interval(-r), Interval(1)};
-    }
-    const int w = widen(rng);
-    for (int i = 0; i <= f.degree_bound(); ++i) {
-      const double m = std::max(std::fabs(f[i].inf()), std::fabs(f[i].sup()));
-      if (w > 0)
-        f[i] = f[i] + Interval(-m, m) * Interval(w == 1 ? 1e-15 : 1e-6);
-    }
-    CAPTURE(trial, n, lo, hi);
+    const IntervalPoly f = random_test_polynomial(rng, lo, hi);
+    CAPTURE(trial, f.degree_bound(), lo, hi);
     const std::vector<mpq_class> low = exact_bernstein(f, lo, hi, false), high = exact_bernstein(f, lo, hi, true);
     std::array<Interval, IntervalPoly::max_degree + 1> beta{};
     if (bernstein_coefficients_from_doubles(f, lo, hi, beta)) {
