@@ -77,12 +77,9 @@ FirstSignChange first_sign_change(const IntervalPoly& f, double start, int max_d
 
 namespace {
 
-// f at the double x, certified (doubles with an error bound, then interval Horner).
-Interval value_at(const IntervalPoly& f, double x) { return value_at_point(f, x); }
-
 // Moves lo or hi to x inside (lo, hi) by the certified sign of f there.
 Refinement cut_at(const IntervalPoly& f, double x, double& lo, double& hi, int sign_lo) {
-  const Interval v = value_at(f, x);
+  const Interval v = value_at_point(f, x);
   if (v.inf() == 0 && v.sup() == 0) {
     lo = hi = x;
     return Refinement::exact;
@@ -103,7 +100,7 @@ bool dyadic_root_near(const IntervalPoly& f, double r, double& lo, double& hi) {
     const double x = std::ldexp(std::round(std::ldexp(r, bits)), -bits);
     if (!(lo < x && x < hi))
       continue;
-    const Interval v = value_at(f, x);
+    const Interval v = value_at_point(f, x);
     if (v.inf() == 0 && v.sup() == 0) {
       lo = hi = x;
       return true;
@@ -114,7 +111,7 @@ bool dyadic_root_near(const IntervalPoly& f, double r, double& lo, double& hi) {
 
 } // namespace
 
-int sign_at_point(const IntervalPoly& f, double x) { return certified_sign(value_at(f, x)); }
+int sign_at_point(const IntervalPoly& f, double x) { return certified_sign(value_at_point(f, x)); }
 
 Refinement refine_root(const IntervalPoly& f, double& lo, double& hi, int sign_lo) {
   const double mid = 0.5 * (lo + hi);
