@@ -90,7 +90,7 @@ struct Engine {
   // Scratch space of change_tets, kept to avoid an allocation per flip.
   TouchedFaces touched_scratch;
   std::vector<Simplex> created_scratch;
-  std::vector<VertexId> link_scratch; // gabriel_now's link vertices
+  std::vector<VertexId> link_scratch;                                  // gabriel_now's link vertices
   std::array<std::vector<std::pair<Simplex, bool>>, 4> settle_scratch; // settle_membership's buckets by size
 
   Engine(const Trajectories& t, KineticOptions o); // engine_run.cpp

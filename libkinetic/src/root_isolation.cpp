@@ -162,8 +162,8 @@ Refinement narrow_root(const IntervalPoly& f, double& lo, double& hi, int sign_l
     // costly (f is tiny there, so doubles cannot decide) and rarely needed: the cuts around r come
     // first, and r only if they fall short. Short dyadic roots near r are searched for once, on the
     // final interval (below), where few roundings of its middle fall inside it.
-    const std::array<double, 3> cuts = width > 0 ? std::array<double, 3>{r - e, r + e, r}
-                                                 : std::array<double, 3>{r, r - e, r + e};
+    const std::array<double, 3> cuts =
+        width > 0 ? std::array<double, 3>{r - e, r + e, r} : std::array<double, 3>{r, r - e, r + e};
     for (double x : cuts) {
       if (hi - lo <= width)
         break;

@@ -227,7 +227,8 @@ TEST_CASE("Bernstein coefficients from doubles enclose those of every polynomial
       continue;
     const IntervalPoly f = random_test_polynomial(rng, lo, hi);
     CAPTURE(trial, f.degree_bound(), lo, hi);
-    const std::vector<mpq_class> low = exact_bernstein(f, lo, hi, false), high = exact_bernstein(f, lo, hi, true);
+    const std::vector<mpq_class> low = exact_bernstein(f, lo, hi, false),
+                                 high = exact_bernstein(f, lo, hi, true);
     std::array<Interval, IntervalPoly::max_degree + 1> beta{};
     if (bernstein_coefficients_from_doubles(f, lo, hi, beta)) {
       ++certified;
