@@ -169,7 +169,7 @@ int compare(const SlabTime& x, const SlabTime& y) {
           return 0;
         const double lo = std::max(xl, yl), hi = std::min(xh, yh);
         for (const IsolatedRoot* r : {x.root_.get(), y.root_.get()}) {
-          const int s_lo = sign_at_point(r->enclosure, lo), s_hi = sign_at_point(r->enclosure, hi);
+          const int s_lo = interval_sign(r->enclosure, lo, lo), s_hi = interval_sign(r->enclosure, hi, hi);
           if (s_lo != 0 && s_hi != 0)
             return s_lo != s_hi ? 0 : (xl < yl ? -1 : 1);
         }

@@ -9,14 +9,6 @@ namespace medusa::kinetic {
 
 namespace {
 
-int sign_of(const Interval& x) {
-  if (x.inf() > 0)
-    return 1;
-  if (x.sup() < 0)
-    return -1;
-  return 0;
-}
-
 int degree_of(const IntervalPoly& f) {
   int n = f.degree_bound();
   // Trailing coefficients that are exactly zero do not count (they come from cancellations of
@@ -26,20 +18,53 @@ int degree_of(const IntervalPoly& f) {
   return n;
 }
 
-} // namespace
+// The two stages in plain doubles below share this. Rounding is upward (every caller's guard sets
+// it), so each operation's relative error is below u = 2^-52 and, for a subnormal result, its
+// absolute error below 2^-1074.
 
-namespace {
+// An interval coefficient as a double centre c and a radius r rounded up: the true coefficient lies
+// in [c - r, c + r].
+struct Centred {
+  double c, r;
+};
+Centred centred(const Interval& a) {
+  const double c = 0.5 * (a.inf() + a.sup());
+  return {c, std::max(a.sup() - c, c - a.inf())};
+}
+
+// gamma_k = k u / (1 - k u) <= k u (1 + 2 k u) for k u <= 1/2 (Higham, Accuracy and Stability of
+// Numerical Algorithms, 3.1): the relative error of a chain of k roundings.
+double gamma(double k) {
+  const double g = k * 0x1p-52;
+  return g * (1.0 + 2.0 * g);
+}
+
+// [v - bound, v + bound] rounded outward (upward: v + bound is an upper bound, -((-v) + bound) a
+// lower one); nullopt when not finite.
+std::optional<Interval> around(double v, double bound) {
+  const double upper = v + bound, lower = -((-v) + bound);
+  if (!std::isfinite(upper) || !std::isfinite(lower))
+    return std::nullopt;
+  return Interval(lower, upper);
+}
+
+// Horner in interval arithmetic at u (a point or an interval); n is f's degree.
+Interval horner(const IntervalPoly& f, int n, const Interval& u) {
+  Interval acc = f[n];
+  for (int i = n - 1; i >= 0; --i)
+    acc = acc * u + f[i];
+  return acc;
+}
 
 // The Bernstein coefficients of bernstein_coefficients from plain doubles: true when every one of
 // them has a certified sign (beta then holds enclosures), false when the caller must use intervals.
-// Proof (rounding upward, set by every caller's guard): for 0 <= lo < hi the map from the
-// coefficients a_i of f to beta_j is linear with non-negative weights (Taylor shift by lo >= 0,
-// scaling by (hi - lo)^i > 0, binomial sums). Three copies of it run side by side, on
+// Proof: for 0 <= lo < hi the map from the coefficients a_i of f to beta_j is linear with
+// non-negative weights (Taylor shift by lo >= 0, scaling by (hi - lo)^i > 0, binomial sums). Three
+// copies of it run side by side, on
 //  * c_i = mid(f_i): beta_j(c) in floating point. Every term reaches beta_j through a chain of at
 //    most k = n^2 + 3n + 4 roundings (the whole Taylor shift has n(n + 1) operations, the scaling
 //    adds n + 2 counting the powers of (hi - lo), the binomial sum n + 2), so the result is off by at
-//    most gamma_k times the same map on |c_i| (Higham, Accuracy and Stability of Numerical
-//    Algorithms, 3.1 and 3.5; gamma_k = k u / (1 - k u) <= k u (1 + 2 k u), u = 2^-52);
+//    most gamma_k times the same map on |c_i| (Higham, 3.5);
 //  * |c_i|, m_j: that map on absolute values, every operation on non-negative numbers rounded
 //    upward, so an upper bound;
 //  * r_i = max(sup - c_i, c_i - inf) rounded up, every true a_i lies in c_i +- r_i, and the map on
@@ -54,10 +79,10 @@ bool bernstein_from_doubles(const IntervalPoly& f, int n, double lo, double hi,
   std::array<double, size> c{}, m{}, r{};
   const std::size_t top = static_cast<std::size_t>(n);
   for (std::size_t i = 0; i <= top; ++i) {
-    const Interval& a = f[static_cast<int>(i)];
-    c[i] = 0.5 * (a.inf() + a.sup());
-    m[i] = std::fabs(c[i]);
-    r[i] = std::max(a.sup() - c[i], c[i] - a.inf());
+    const Centred a = centred(f[static_cast<int>(i)]);
+    c[i] = a.c;
+    m[i] = std::fabs(a.c);
+    r[i] = a.r;
   }
   if (lo != 0.0 || hi != 1.0) {
     for (std::size_t k = 0; k < top; ++k)
@@ -75,8 +100,7 @@ bool bernstein_from_doubles(const IntervalPoly& f, int n, double lo, double hi,
       r[i] *= p;
     }
   }
-  const double g = (double(n) * n + 3.0 * n + 4.0) * 0x1p-52;
-  const double gamma = g * (1.0 + 2.0 * g);
+  const double g = gamma(double(n) * n + 3.0 * n + 4.0);
   for (std::size_t j = 0; j <= top; ++j) {
     double b = 0.0, bm = 0.0, br = 0.0;
     for (std::size_t i = 0; i <= j; ++i) {
@@ -85,12 +109,10 @@ bool bernstein_from_doubles(const IntervalPoly& f, int n, double lo, double hi,
       bm += w * m[i];
       br += w * r[i];
     }
-    const double bound = br + gamma * bm + 0x1p-1000;
-    // Rounding upward: b + bound is an upper bound, -((-b) + bound) a lower one.
-    const double upper = b + bound, lower = -((-b) + bound);
-    if (!std::isfinite(upper) || !std::isfinite(lower) || !(lower > 0 || upper < 0))
+    const std::optional<Interval> enclosure = around(b, br + g * bm + 0x1p-1000);
+    if (!enclosure || certified_sign(*enclosure) == 0)
       return false;
-    beta[j] = Interval(lower, upper);
+    beta[j] = *enclosure;
   }
   return true;
 }
@@ -145,7 +167,7 @@ int bernstein_sign(const IntervalPoly& f, double lo, double hi) {
     return 0;
   int common = 0;
   for (int j = 0; j <= n; ++j) {
-    int s = sign_of(beta[static_cast<std::size_t>(j)]);
+    int s = certified_sign(beta[static_cast<std::size_t>(j)]);
     if (s == 0 || (common != 0 && s != common))
       return 0;
     common = s;
@@ -171,7 +193,7 @@ int bernstein_sign_subdivided(const IntervalPoly& f, double lo, int depth) {
     int depth;
   };
   Piece stack[64];
-  int top = 0, common = at_lo != 0 ? at_lo : at_hi;
+  int top = 0, common = at_lo;
   stack[top++] = {lo, 1.0, 0};
   std::array<Interval, IntervalPoly::max_degree + 1> beta{};
   while (top > 0) {
@@ -180,12 +202,12 @@ int bernstein_sign_subdivided(const IntervalPoly& f, double lo, int depth) {
     if (n < 0)
       return 0;
     // beta_0 and beta_n are f at the piece's ends, up to positive factors.
-    const int first = sign_of(beta[0]), last = sign_of(beta[static_cast<std::size_t>(n)]);
+    const int first = certified_sign(beta[0]), last = certified_sign(beta[static_cast<std::size_t>(n)]);
     if ((first != 0 && common != 0 && first != common) || (last != 0 && common != 0 && last != common))
       return 0;
     int s = 0;
     for (int j = 0; j <= n; ++j) {
-      const int sj = sign_of(beta[static_cast<std::size_t>(j)]);
+      const int sj = certified_sign(beta[static_cast<std::size_t>(j)]);
       if (sj == 0 || (s != 0 && sj != s)) {
         s = 0;
         break;
@@ -209,37 +231,26 @@ int bernstein_sign_subdivided(const IntervalPoly& f, double lo, int depth) {
 
 namespace {
 
-// The enclosure of value_at_point from doubles, or nullopt when it is not finite. Proof (rounding
-// upward, as every caller's guard sets it, so each operation's relative error is below u = 2^-52
-// and, when the result is subnormal, its absolute error below 2^-1074):
-//  * c_i = mid(f_i) is any double; r_i = max(sup - c_i, c_i - inf) is rounded up, so every true
-//    coefficient a_i lies in [c_i - r_i, c_i + r_i], and |sum a_i x^i - sum c_i x^i| <= sum r_i |x|^i.
-//  * v = Horner of c at x in floating point: |v - sum c_i x^i| <= gamma_2n sum |c_i| |x|^i plus, for
-//    underflow, at most 2^-1074 per product, carried by |x|^k and the step's (1 + gamma): less than
-//    2^-1072 sum |x|^i (Higham, Accuracy and Stability of Numerical Algorithms, 5.1; gamma_k =
-//    k u / (1 - k u) <= k u (1 + 2 k u) for k u <= 1/2). The bound uses 2^-1000 instead: arithmetic
-//    on subnormal numbers costs a microcode assist, which made this path slower than interval Horner.
-//  * The three sums have non-negative terms, so evaluating them rounded upward gives upper bounds.
+// The enclosure of value_at_point from doubles, or nullopt when it is not finite. Proof:
+//  * every true coefficient a_i lies in [c_i - r_i, c_i + r_i] (centred), so
+//    |sum a_i x^i - sum c_i x^i| <= sum r_i |x|^i;
+//  * v = Horner of c at x in floating point: |v - sum c_i x^i| <= gamma_2n sum |c_i| |x|^i (Higham,
+//    5.1) plus, for underflow, at most 2^-1074 per product, carried by |x|^k and the step's
+//    (1 + gamma): less than 2^-1072 sum |x|^i. The bound uses 2^-1000 instead: arithmetic on
+//    subnormal numbers costs a microcode assist, which made this path slower than interval Horner;
+//  * the three sums have non-negative terms, so evaluating them rounded upward gives upper bounds.
 std::optional<Interval> value_from_doubles(const IntervalPoly& f, int n, double x) {
   const double ax = std::fabs(x);
-  const std::size_t top = static_cast<std::size_t>(n);
-  double v = 0.5 * (f[n].inf() + f[n].sup());
-  double radius = std::max(f[n].sup() - v, v - f[n].inf());
-  double magnitude = std::fabs(v), powers = 1.0;
-  for (std::size_t i = top; i-- > 0;) {
-    const Interval& a = f[static_cast<int>(i)];
-    const double c = 0.5 * (a.inf() + a.sup());
-    v = v * x + c;
-    radius = radius * ax + std::max(a.sup() - c, c - a.inf());
-    magnitude = magnitude * ax + std::fabs(c);
+  const Centred lead = centred(f[n]);
+  double v = lead.c, radius = lead.r, magnitude = std::fabs(lead.c), powers = 1.0;
+  for (int i = n - 1; i >= 0; --i) {
+    const Centred a = centred(f[i]);
+    v = v * x + a.c;
+    radius = radius * ax + a.r;
+    magnitude = magnitude * ax + std::fabs(a.c);
     powers = powers * ax + 1.0;
   }
-  const double g = 2.0 * n * 0x1p-52;
-  const double bound = radius + g * (1.0 + 2.0 * g) * magnitude + 0x1p-1000 * powers;
-  if (!std::isfinite(v) || !std::isfinite(bound))
-    return std::nullopt;
-  // Rounding upward: v + bound is an upper bound, -((-v) + bound) a lower one.
-  return Interval(-((-v) + bound), v + bound);
+  return around(v, radius + gamma(2.0 * n) * magnitude + 0x1p-1000 * powers);
 }
 
 } // namespace
@@ -255,32 +266,22 @@ Interval value_at_point(const IntervalPoly& f, double x) {
   const int n = degree_of(f);
   if (n < 0)
     return Interval(0);
-  if (const auto fast = value_from_doubles(f, n, x); fast && (fast->inf() > 0 || fast->sup() < 0))
+  if (const auto fast = value_from_doubles(f, n, x); fast && certified_sign(*fast) != 0)
     return *fast;
-  const Interval u(x);
-  Interval acc = f[n];
-  for (int i = n - 1; i >= 0; --i)
-    acc = acc * u + f[i];
-  return acc;
+  return horner(f, n, Interval(x));
 }
 
 int interval_sign(const IntervalPoly& f, double lo, double hi) {
   if (lo == hi)
-    return sign_of(value_at_point(f, lo));
-  int n = degree_of(f);
-  if (n < 0)
-    return 0;
-  const Interval u(lo, hi);
-  Interval acc = f[n];
-  for (int i = n - 1; i >= 0; --i)
-    acc = acc * u + f[i];
-  return sign_of(acc);
+    return certified_sign(value_at_point(f, lo));
+  const int n = degree_of(f);
+  return n < 0 ? 0 : certified_sign(horner(f, n, Interval(lo, hi)));
 }
 
 int proportionality_sign(const IntervalPoly& f, const IntervalPoly& g, int shift) {
   const int n = std::min(f.degree_bound() - shift, g.degree_bound());
   for (int i = 0; i <= n; ++i) {
-    const int a = sign_of(f[i + shift]), b = sign_of(g[i]);
+    const int a = certified_sign(f[i + shift]), b = certified_sign(g[i]);
     if (a != 0 && b != 0)
       return a * b;
   }

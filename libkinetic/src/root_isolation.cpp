@@ -6,18 +6,6 @@
 
 namespace medusa::kinetic {
 
-namespace {
-
-int certified_sign(const Interval& x) {
-  if (x.inf() > 0)
-    return 1;
-  if (x.sup() < 0)
-    return -1;
-  return 0;
-}
-
-} // namespace
-
 FirstSignChange first_sign_change(const IntervalPoly& f, double start, int max_depth) {
   FirstSignChange result;
   struct Piece {
@@ -77,10 +65,13 @@ FirstSignChange first_sign_change(const IntervalPoly& f, double start, int max_d
 
 namespace {
 
+// An enclosure [0, 0] proves f vanishes there: interval Horner is exact only when every step was.
+bool is_exact_zero(const Interval& v) { return v.inf() == 0 && v.sup() == 0; }
+
 // Moves lo or hi to x inside (lo, hi) by the certified sign of f there.
 Refinement cut_at(const IntervalPoly& f, double x, double& lo, double& hi, int sign_lo) {
   const Interval v = value_at_point(f, x);
-  if (v.inf() == 0 && v.sup() == 0) {
+  if (is_exact_zero(v)) {
     lo = hi = x;
     return Refinement::exact;
   }
@@ -100,8 +91,7 @@ bool dyadic_root_near(const IntervalPoly& f, double r, double& lo, double& hi) {
     const double x = std::ldexp(std::round(std::ldexp(r, bits)), -bits);
     if (!(lo < x && x < hi))
       continue;
-    const Interval v = value_at_point(f, x);
-    if (v.inf() == 0 && v.sup() == 0) {
+    if (is_exact_zero(value_at_point(f, x))) {
       lo = hi = x;
       return true;
     }
@@ -110,8 +100,6 @@ bool dyadic_root_near(const IntervalPoly& f, double r, double& lo, double& hi) {
 }
 
 } // namespace
-
-int sign_at_point(const IntervalPoly& f, double x) { return certified_sign(value_at_point(f, x)); }
 
 Refinement refine_root(const IntervalPoly& f, double& lo, double& hi, int sign_lo) {
   const double mid = 0.5 * (lo + hi);

@@ -15,6 +15,9 @@ namespace medusa::kinetic {
 using Interval = CGAL::Interval_nt_advanced;
 using IntervalPoly = Poly<Interval>;
 
+// +1 / -1 when the enclosure x excludes zero on that side, 0 otherwise.
+inline int certified_sign(const Interval& x) { return x.inf() > 0 ? 1 : (x.sup() < 0 ? -1 : 0); }
+
 // The Bernstein coefficients of f on [lo, hi], each multiplied by a positive binomial (so with the
 // signs of the true coefficients), in beta[0..n]; returns n, the degree of f (-1 if f is empty).
 // beta[0] encloses f(lo) and beta[n] encloses f(hi).

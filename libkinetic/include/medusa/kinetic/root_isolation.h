@@ -33,9 +33,6 @@ FirstSignChange first_sign_change(const IntervalPoly& f, double start, int max_d
 // tight as doubles allow); `exact` when f vanishes exactly at the midpoint (lo = hi = the root).
 enum class Refinement { narrowed, exact, stuck };
 
-// The certified sign of f at the double x: +1, -1, or 0 when the enclosure does not decide.
-int sign_at_point(const IntervalPoly& f, double x);
-
 Refinement refine_root(const IntervalPoly& f, double& lo, double& hi, int sign_lo);
 
 // Narrows the isolating interval (lo, hi) as refine_root does, until it is no wider than `width`
