@@ -272,23 +272,57 @@ struct Engine {
   CacheKey cache_key(const Certificate& c) const;
   void mark_invalid(int id);
   void install_facet(const Simplex& facet);
-  void install_radius(const Simplex& s);
+  void install_radius(const Simplex& s) { install_radius(s, faces.at(s)); }
+  void install_radius(const Simplex& s, Face& f); // f: s's state
   bool compute_short(const Simplex& s);
 
   // ------------------------------------ Del changes, frontier, membership (engine_membership.cpp)
 
   bool in_k(const Simplex& s) const;
+  // Replaces top simplices and records the old membership of every touched simplex in old_k.
   void change_tets(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                    OldMembership& old_k, const int* added_orientations = nullptr);
+  // change_tets in three phases, for a flip: every touched face is looked up in `faces` once, and
+  // its entry is held in touched_scratch throughout (the flags, counts and frontier rules read only
+  // touched faces and their facets, which are touched too). apply_tet_change keeps the faces that
+  // leave Del, with no top simplex, until finish_tet_change erases them (erasing moves entries);
+  // settle_touched re-evaluates membership in between.
+  void apply_tet_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+                        const int* added_orientations);
+  void settle_touched(Step& step);
+  void finish_tet_change();
   bool is_short(const Simplex& s) const;
   std::vector<Simplex> cofaces(const Simplex& s) const;
+  // The state of a face of Del, or nullptr: from the table, or from the faces touched by the change
+  // being applied.
+  Face* state_in_table(const Simplex& s) {
+    auto it = faces.find(s);
+    return it == faces.end() ? nullptr : &it->second;
+  }
+  Face* state_in_touched(const Simplex& s) {
+    TouchedFace* t = touched_scratch.find(s);
+    return t == nullptr ? nullptr : t->state;
+  }
   bool in_frontier(const Simplex& s) const { return in_frontier(s, faces.at(s)); }
-  bool in_frontier(const Simplex& s, const Face& f) const;
+  bool in_frontier(const Simplex& s, const Face& f) const {
+    return in_frontier(s, f, [&](const Simplex& x) { return is_short(x); });
+  }
+  // facet_short(x): is facet x of s short.
+  template <class FacetShort>
+  static bool in_frontier(const Simplex& s, const Face& f, FacetShort&& facet_short);
   void update_frontier(const Simplex& s) { update_frontier(s, faces.at(s)); }
-  void update_frontier(const Simplex& s, Face& f); // f: s's state
+  void update_frontier(const Simplex& s, Face& f) { set_frontier(s, f, in_frontier(s, f)); } // f: s's state
+  void set_frontier(const Simplex& s, Face& f, bool want);
   bool gabriel_now(const Simplex& s);
-  void count_in_facets(const Simplex& c, int short_delta, int k_delta);
+  void count_in_facets(const Simplex& c, int short_delta, int k_delta) {
+    count_in_facets(c, short_delta, k_delta, [&](const Simplex& x) { return state_in_table(x); });
+  }
+  // state_of(x): the state of facet x of c, nullptr when x leaves Del in the same change.
+  template <class StateOf>
+  static void count_in_facets(const Simplex& c, int short_delta, int k_delta, StateOf&& state_of);
   void settle_membership(const OldMembership& old_k, Step& step);
+  // The membership of s just after now, given its state; updates the coface counts of its facets.
+  template <class StateOf> bool settle(const Simplex& s, Face& f, StateOf&& state_of);
   std::vector<Simplex> current_complex() const;
 
   // ------------------------------------ flips (MATH.md 4.5) and radius events (engine_flips.cpp)
@@ -348,6 +382,32 @@ struct Engine {
   [[noreturn]] void audit_failure(const std::string& what) const;
   void audit();
 };
+
+// Adds the changes of c's shortness and membership (+1 gained, -1 lost, 0 unchanged) to the coface
+// counts of c's facets. Vertices keep no counts.
+template <class StateOf>
+void Engine::count_in_facets(const Simplex& c, int short_delta, int k_delta, StateOf&& state_of) {
+  if (c.size() <= 2 || (short_delta == 0 && k_delta == 0))
+    return;
+  for (std::size_t i = 0; i < c.size(); ++i)
+    if (Face* f = state_of(c.facet(i))) {
+      f->short_cofaces += short_delta;
+      f->k_cofaces += k_delta;
+    }
+}
+
+// The frontier (MATH.md 4.4): maximal short simplices and minimal long ones.
+template <class FacetShort>
+bool Engine::in_frontier(const Simplex& s, const Face& f, FacetShort&& facet_short) {
+  if (f.is_short)
+    return f.short_cofaces == 0;
+  if (s.size() == 2)
+    return true;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (!facet_short(s.facet(i)))
+      return false;
+  return true;
+}
 
 template <class NT> Poly<NT> Engine::cert_poly(const Certificate& c) const {
   if (c.kind == CertKind::delaunay)

@@ -342,26 +342,29 @@ void Engine::mark_invalid(int id) {
 }
 
 void Engine::install_facet(const Simplex& facet) {
-  auto it = facet_cert.find(facet);
-  if (it != facet_cert.end()) {
-    kill_cert(it->second);
-    facet_cert.erase(it);
-  }
   const detail::Triangulation::Apices* ap = tri.apices(facet);
-  if (ap == nullptr)
+  auto it = facet_cert.find(facet);
+  if (it != facet_cert.end())
+    kill_cert(it->second);
+  if (ap == nullptr) {
+    if (it != facet_cert.end())
+      facet_cert.erase(it);
     return;
+  }
   if (ap->count != 2) {
     std::ostringstream os;
     os << "facet " << facet << " has " << ap->count << " tetrahedra";
     throw InternalError(os.str());
   }
-  int id = new_cert(CertKind::delaunay, facet);
-  facet_cert[facet] = id;
+  const int id = new_cert(CertKind::delaunay, facet);
+  if (it != facet_cert.end())
+    it->second = id; // the facet's entry is reused: one look-up per facet
+  else
+    facet_cert.emplace(facet, id);
   install(id);
 }
 
-void Engine::install_radius(const Simplex& s) {
-  Face& f = faces.at(s);
+void Engine::install_radius(const Simplex& s, Face& f) {
   kill_cert(f.cert);
   f.cert = new_cert(CertKind::radius, s);
   install(f.cert);

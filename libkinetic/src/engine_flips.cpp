@@ -55,9 +55,9 @@ void Engine::flip(const Simplex& facet, std::vector<Step>& steps) {
     step.delaunay_removed = removed;
     step.delaunay_created = added;
   }
-  OldMembership old_k;
-  change_tets(removed, added, old_k, orientations.data());
-  settle_membership(old_k, step);
+  apply_tet_change(removed, added, orientations.data());
+  settle_touched(step);
+  finish_tet_change();
   (hull ? stats.hull_flips : dim == 2 ? stats.flips22 : (three_two ? stats.flips32 : stats.flips23))++;
   step.rank = steps.size() + 1;
   steps.push_back(std::move(step));

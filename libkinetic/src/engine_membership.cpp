@@ -21,10 +21,18 @@ bool Engine::in_k(const Simplex& s) const {
   return it != faces.end() && it->second.in_k;
 }
 
-// Replaces tetrahedra; records the old membership of every touched finite simplex. The caller may
-// pass the orientations sign^+ of the added top simplices (0 for infinite ones) it has computed.
 void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                          OldMembership& old_k, const int* added_orientations) {
+  apply_tet_change(removed, added, added_orientations);
+  for (const TouchedFace& t : touched_scratch.faces)
+    old_k.emplace(t.face, t.old_in_k);
+  finish_tet_change();
+}
+
+// The caller may pass the orientations sign^+ of the added top simplices (0 for infinite ones) it
+// has computed.
+void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+                              const int* added_orientations) {
   TouchedFaces& touched = touched_scratch;
   collect_touched_faces(removed, added, touched);
   for (const Simplex& t : removed)
@@ -45,39 +53,63 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
     tri.add_tet(t, s);
   }
   // Each face counts the top simplices (infinite ones included) that hold it, so its presence in
-  // Del after the change needs no search of the triangulation.
+  // Del after the change needs no search of the triangulation. With room reserved, no entry moves
+  // while the new faces are added: the pointers held in `touched` stay valid until an erase.
+  faces.reserve(faces.size() + touched.faces.size());
+  auto state_of = [&](const Simplex& x) { return state_in_touched(x); };
   std::vector<Simplex>& created = created_scratch;
   created.clear();
-  for (const auto& [f, delta] : touched.faces) {
-    old_k.emplace(f, in_k(f));
-    if (f.size() == 1 || delta == 0)
+  for (TouchedFace& t : touched.faces) {
+    const Simplex& f = t.face;
+    t.state = nullptr;
+    t.leaves = false;
+    if (f.size() == 1) {
+      t.old_in_k = in_k(f);
       continue;
+    }
     auto [it, fresh] = faces.try_emplace(f);
-    if (fresh && delta < 0)
+    if (fresh && t.delta < 0)
       throw InternalError("a removed top simplex held a face that is not in the triangulation");
-    it->second.tets += delta;
-    if (it->second.tets == 0) {
-      count_in_facets(f, -int(it->second.is_short), -int(it->second.in_k)); // leaving Del
-      kill_cert(it->second.cert);
-      faces.erase(it);
+    Face& state = it->second;
+    t.state = &state;
+    t.old_in_k = state.in_k;
+    state.tets += t.delta;
+    t.leaves = state.tets == 0;
+    if (t.leaves) {
+      // Leaving Del: its facets are touched, and those staying lose it as a coface.
+      count_in_facets(f, -int(state.is_short), -int(state.in_k), state_of);
+      kill_cert(state.cert);
+      state.cert = -1;
+      state.is_short = state.in_k = false;
     } else if (fresh)
       created.push_back(f);
   }
   for (const Simplex& f : created) {
     if (f.size() == 2 && slab + 1 < traj.frames())
       check_collision(f);
-    const bool is_short = compute_short(f);
-    faces.at(f).is_short = is_short;
-    count_in_facets(f, int(is_short), 0); // a new face is not in K yet
+    Face& state = *state_of(f);
+    state.is_short = compute_short(f);
+    count_in_facets(f, int(state.is_short), 0, state_of); // a new face is not in K yet
   }
   // Frontier membership of every surviving touched simplex: their cofaces changed (MATH.md 4.4,
   // "after any change of Del"). Cofaces of new simplices are new, hence touched as well.
-  for (const auto& [f, delta] : touched.faces)
-    if (f.size() > 1)
-      if (auto it = faces.find(f); it != faces.end())
-        update_frontier(f, it->second);
+  for (TouchedFace& t : touched.faces)
+    if (t.state != nullptr && !t.leaves) {
+      Face& state = *t.state;
+      set_frontier(t.face, state,
+                   in_frontier(t.face, state, [&](const Simplex& x) { return state_of(x)->is_short; }));
+    }
   for (const Simplex& f : touched.facets)
     install_facet(f);
+}
+
+void Engine::finish_tet_change() {
+  // Erasing moves entries: no state pointer is read from here on.
+  for (TouchedFace& t : touched_scratch.faces) {
+    if (t.leaves)
+      faces.erase(t.face);
+    t.state = nullptr;
+  }
 }
 
 bool Engine::is_short(const Simplex& s) const {
@@ -109,37 +141,10 @@ std::vector<Simplex> Engine::cofaces(const Simplex& s) const {
   return result;
 }
 
-// Adds the changes of c's shortness and membership (+1 gained, -1 lost, 0 unchanged) to the coface
-// counts of c's facets. Vertices keep no counts.
-void Engine::count_in_facets(const Simplex& c, int short_delta, int k_delta) {
-  if (c.size() <= 2 || (short_delta == 0 && k_delta == 0))
-    return;
-  for (std::size_t i = 0; i < c.size(); ++i) {
-    auto it = faces.find(c.facet(i));
-    if (it == faces.end())
-      continue; // a facet leaving Del in the same change, already gone
-    it->second.short_cofaces += short_delta;
-    it->second.k_cofaces += k_delta;
-  }
-}
-
-// The frontier (MATH.md 4.4): maximal short simplices and minimal long ones.
-bool Engine::in_frontier(const Simplex& s, const Face& f) const {
-  if (f.is_short)
-    return f.short_cofaces == 0;
-  if (s.size() == 2)
-    return true;
-  for (std::size_t i = 0; i < s.size(); ++i)
-    if (!is_short(s.facet(i)))
-      return false;
-  return true;
-}
-
 // Creates or drops the radius certificate of s so that exactly the frontier carries one.
-void Engine::update_frontier(const Simplex& s, Face& f) {
-  const bool want = in_frontier(s, f);
+void Engine::set_frontier(const Simplex& s, Face& f, bool want) {
   if (want && f.cert < 0)
-    install_radius(s);
+    install_radius(s, f);
   else if (!want && f.cert >= 0) {
     kill_cert(f.cert);
     f.cert = -1;
@@ -190,6 +195,30 @@ bool Engine::gabriel_now(const Simplex& s) {
   return true;
 }
 
+// Every simplex of K is short (its smallest circumsphere is no larger than an empty sphere of
+// radius <= rho, MATH.md 4.1), so a long one is out without looking at its cofaces; top simplices
+// are always Gabriel (4.1). Cofaces are settled before faces (decreasing dimension), so the counts
+// read here are current.
+template <class StateOf> bool Engine::settle(const Simplex& s, Face& f, StateOf&& state_of) {
+  const bool after = s.size() == top_size() ? f.is_short : f.is_short && (f.k_cofaces > 0 || gabriel_now(s));
+  if (after != f.in_k) {
+    count_in_facets(s, 0, after ? +1 : -1, state_of);
+    f.in_k = after;
+  }
+  return after;
+}
+
+namespace {
+
+void record(const Simplex& s, bool before, bool after, Step& step) {
+  if (before && !after)
+    step.left.push_back(s);
+  else if (!before && after)
+    step.entered.push_back(s);
+}
+
+} // namespace
+
 // Re-evaluates membership (MATH.md 4.5 "re-eval") on the touched simplices, in decreasing
 // dimension, and fills the step's entered/left lists (in no particular order: emit_batch sorts them).
 void Engine::settle_membership(const OldMembership& old_k, Step& step) {
@@ -200,30 +229,30 @@ void Engine::settle_membership(const OldMembership& old_k, Step& step) {
     bucket.clear();
   for (const auto& [s, before] : old_k)
     by_size[s.size() - 1].emplace_back(s, before);
+  auto state_of = [&](const Simplex& x) { return state_in_table(x); };
   for (std::size_t k = by_size.size(); k-- > 0;)
     for (const auto& [s, before] : by_size[k]) {
       bool after = false;
-      if (s.size() == 1) {
+      if (s.size() == 1)
         after = in_k(s);
-      } else if (auto it = faces.find(s); it != faces.end()) {
-        Face& f = it->second;
-        if (s.size() == top_size())
-          after = f.is_short; // top simplices are always Gabriel (MATH.md 4.1)
-        else
-          // Every simplex of K is short (its smallest circumsphere is no larger than an empty sphere
-          // of radius <= rho, MATH.md 4.1), so a long one is out without looking at its cofaces.
-          after = f.is_short && (f.k_cofaces > 0 || gabriel_now(s));
-        if (after != f.in_k) {
-          // Cofaces are settled before faces (decreasing dimension): the counts read above are current.
-          count_in_facets(s, 0, after ? +1 : -1);
-          f.in_k = after; // look-ups do not move entries: f is still this face's state
-        }
-      }
-      if (before && !after)
-        step.left.push_back(s);
-      else if (!before && after)
-        step.entered.push_back(s);
+      else if (Face* f = state_in_table(s))
+        after = settle(s, *f, state_of);
+      record(s, before, after, step);
     }
+}
+
+// settle_membership on the faces of the change being applied (apply_tet_change), which are in
+// canonical order: backwards is decreasing dimension.
+void Engine::settle_touched(Step& step) {
+  auto state_of = [&](const Simplex& x) { return state_in_touched(x); };
+  for (auto it = touched_scratch.faces.rbegin(); it != touched_scratch.faces.rend(); ++it) {
+    bool after = false;
+    if (it->face.size() == 1)
+      after = in_k(it->face);
+    else if (!it->leaves)
+      after = settle(it->face, *it->state, state_of);
+    record(it->face, it->old_in_k, after, step);
+  }
 }
 
 std::vector<Simplex> Engine::current_complex() const {

@@ -119,6 +119,12 @@ void collect_sorted(const std::vector<Simplex>& removed, const std::vector<Simpl
 
 } // namespace
 
+TouchedFace* TouchedFaces::find(const Simplex& s) {
+  auto it = std::lower_bound(faces.begin(), faces.end(), s,
+                             [](const TouchedFace& f, const Simplex& key) { return f.face < key; });
+  return it != faces.end() && it->face == s ? &*it : nullptr;
+}
+
 void collect_touched_faces(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                            TouchedFaces& out) {
   out.faces.clear();

@@ -9,14 +9,27 @@
 
 namespace medusa::kinetic::detail {
 
+struct Face;
+
 struct TouchedFace {
   Simplex face;
   int delta = 0; // (added top simplices holding it) - (removed ones holding it)
+  // Filled by the engine while it applies the change: the face's entry in its table (none for a
+  // vertex), whether the face was in K before, and whether it leaves Del.
+  Face* state = nullptr;
+  bool old_in_k = false;
+  bool leaves = false;
 };
 
 struct TouchedFaces {
-  std::vector<TouchedFace> faces; // finite faces of every dimension, vertices included
-  std::vector<Simplex> facets;    // facets of the changed top simplices, infinite ones included
+  // Finite faces of every dimension, vertices included, in canonical order (by size, then
+  // lexicographically: sorted by Simplex's operator<). Every facet of a touched face is touched too
+  // (it lies in the same top simplex), so the engine finds it here by binary search.
+  std::vector<TouchedFace> faces;
+  std::vector<Simplex> facets; // facets of the changed top simplices, infinite ones included
+
+  // The entry of a touched face; nullptr when s is not touched.
+  TouchedFace* find(const Simplex& s);
 };
 
 // A flip changes top simplices spanned by at most dim + 2 vertices: their faces are enumerated as

@@ -8,6 +8,8 @@
 #include <iostream>
 #include <random>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 using medusa::kinetic::Simplex;
 using medusa::kinetic::SimplexHash;
@@ -97,4 +99,25 @@ TEST_CASE("a flat simplex map filled in another table's slot order holds every e
     copy.emplace(slot.first, slot.second);
   require_equal(copy, oracle);
   REQUIRE_THROWS(copy.at(Simplex{-1, 0}));
+}
+
+TEST_CASE("after reserve, new keys up to the reserved count move no entry of a flat simplex map") {
+  // The engine holds pointers to entries while it adds the faces of a change (apply_tet_change).
+  std::mt19937_64 rng(7);
+  FlatSimplexMap<int> table;
+  for (int i = 0; i < 200; ++i)
+    table[random_simplex(rng, 100)] = i;
+  const std::size_t before = table.size();
+  const std::size_t extra = 500; // more than the table's spare room: reserve must grow it
+  table.reserve(before + extra);
+  std::vector<std::pair<const FlatSimplexMap<int>::Slot*, Simplex>> held;
+  for (const auto& slot : table)
+    held.emplace_back(&slot, slot.first);
+  std::size_t inserted = 0;
+  while (inserted < extra)
+    if (table.try_emplace(random_simplex(rng, 100)).second)
+      ++inserted;
+  REQUIRE(table.size() == before + extra);
+  for (const auto& [slot, key] : held)
+    REQUIRE(slot->first == key);
 }

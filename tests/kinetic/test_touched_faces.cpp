@@ -99,3 +99,38 @@ TEST_CASE("the touched faces of a change spanning many vertices are sorted and m
     require_matches_oracle(removed, added);
   }
 }
+
+TEST_CASE("every touched face and each of its facets are found among the touched faces, nothing else is",
+          "[kinetic][triangulation]") {
+  // The engine looks the facets of a touched face up here (apply_tet_change), by binary search.
+  const std::uint64_t seed = GENERATE(41, 42);
+  CAPTURE(seed);
+  std::mt19937_64 rng(seed);
+  for (int trial = 0; trial < 100; ++trial) {
+    std::vector<Simplex> removed, added;
+    if (trial % 2 == 0) {
+      const std::vector<VertexId> g = random_group(rng, 5, trial % 3 == 0);
+      removed = {{g[0], g[1], g[2], g[3]}, {g[0], g[1], g[2], g[4]}};
+      added = {{g[0], g[1], g[3], g[4]}, {g[1], g[2], g[3], g[4]}, {g[0], g[2], g[3], g[4]}};
+    } else {
+      for (int k = 0; k < 4; ++k) {
+        const std::vector<VertexId> v = random_group(rng, 4, false);
+        (k % 2 == 0 ? removed : added).push_back(Simplex{v[0], v[1], v[2], v[3]});
+      }
+    }
+    TouchedFaces got;
+    collect_touched_faces(removed, added, got);
+    REQUIRE(!got.faces.empty());
+    for (TouchedFace& t : got.faces) {
+      CAPTURE(t.face);
+      REQUIRE(got.find(t.face) == &t);
+      if (t.face.size() > 1)
+        for (std::size_t i = 0; i < t.face.size(); ++i)
+          REQUIRE(got.find(t.face.facet(i)) != nullptr);
+    }
+    // Vertex ids are at most 40 (random_group): these are held by no changed top simplex.
+    REQUIRE(got.find(Simplex{41}) == nullptr);
+    REQUIRE(got.find(Simplex{41, 42}) == nullptr);
+    REQUIRE(got.find(Simplex{41, 42, 43, 44}) == nullptr);
+  }
+}
