@@ -117,20 +117,20 @@ struct Engine {
         VertexId z = p == infinite_vertex ? q : p;
         std::array<VertexId, 4> seq{facet[0], facet[1], facet[2], z};
         Poly<NT> o = certificate::orientation<NT>(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(seq[3]));
-        return orientation_of(seq.data(), 4) > 0 ? o : -o;
+        return orientation_of(seq.data(), 4, *ap, z) > 0 ? o : -o;
       }
       std::array<VertexId, 4> seq{facet[0], facet[1], facet[2], p};
       Poly<NT> s = certificate::in_sphere<NT>(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(seq[3]), pt(q));
-      return orientation_of(seq.data(), 4) > 0 ? s : -s;
+      return orientation_of(seq.data(), 4, *ap, p) > 0 ? s : -s;
     }
     // Case B: facet (inf, a, b) between (inf, a, b, c) and (inf, a, b, d): hull facet abc, apex z of
     // the finite cell below it; the certificate O(a, b, c, d) oriented so that O(a, b, c, z) > 0.
     VertexId a = facet[1], b = facet[2], c = p, d = q;
-    Simplex hull{a, b, c};
-    VertexId z = tri.other_apex(hull, infinite_vertex);
+    const detail::Triangulation::Apices& hull = tri.two_sided(Simplex{a, b, c});
+    VertexId z = hull.v[0] == infinite_vertex ? hull.v[1] : hull.v[0];
     std::array<VertexId, 4> seq{a, b, c, z};
     Poly<NT> o = certificate::orientation<NT>(pt(a), pt(b), pt(c), pt(d));
-    return orientation_of(seq.data(), 4) > 0 ? o : -o;
+    return orientation_of(seq.data(), 4, hull, z) > 0 ? o : -o;
   }
 
   // The in-sphere (in-circle) certificate of a facet with two finite apices, enclosed from one pass
@@ -143,13 +143,13 @@ struct Engine {
     if (dim == 2) {
       const std::array<VertexId, 3> seq{facet[0], facet[1], p};
       f = in_circle_enclosure(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(q));
-      if (orientation_of(seq.data(), 3) > 0)
+      if (orientation_of(seq.data(), 3, *ap, p) > 0)
         f = -f;
       return true;
     }
     const std::array<VertexId, 4> seq{facet[0], facet[1], facet[2], p};
     f = in_sphere_enclosure(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(seq[3]), pt(q));
-    if (orientation_of(seq.data(), 4) < 0)
+    if (orientation_of(seq.data(), 4, *ap, p) < 0)
       f = -f;
     return true;
   }
@@ -165,21 +165,22 @@ struct Engine {
         VertexId z = p == infinite_vertex ? q : p;
         std::array<VertexId, 3> seq{facet[0], facet[1], z};
         Poly<NT> o = certificate::orientation_2<NT>(pt(seq[0]), pt(seq[1]), pt(seq[2]));
-        return orientation_of(seq.data(), 3) > 0 ? o : -o;
+        return orientation_of(seq.data(), 3, *ap, z) > 0 ? o : -o;
       }
       // In-circle, positive while q is strictly outside the circle of (x, y, p): InC has the
       // opposite sign convention to InS (certificate_polynomials.h).
       std::array<VertexId, 3> seq{facet[0], facet[1], p};
       Poly<NT> s = certificate::in_circle<NT>(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(q));
-      return orientation_of(seq.data(), 3) > 0 ? -s : s;
+      return orientation_of(seq.data(), 3, *ap, p) > 0 ? -s : s;
     }
     // Case B: facet (inf, a) between (inf, a, b) and (inf, a, c): hull edge ab, apex z of the finite
     // triangle on it; the hull is convex at a while c is on z's side of the line ab.
     VertexId a = facet[1], b = p, c = q;
-    VertexId z = tri.other_apex(Simplex{a, b}, infinite_vertex);
+    const detail::Triangulation::Apices& hull = tri.two_sided(Simplex{a, b});
+    VertexId z = hull.v[0] == infinite_vertex ? hull.v[1] : hull.v[0];
     std::array<VertexId, 3> seq{a, b, z};
     Poly<NT> o = certificate::orientation_2<NT>(pt(a), pt(b), pt(c));
-    return orientation_of(seq.data(), 3) > 0 ? o : -o;
+    return orientation_of(seq.data(), 3, hull, z) > 0 ? o : -o;
   }
 
   // The orientation polynomial of a finite top simplex (a tetrahedron, a triangle in 2D).
@@ -255,7 +256,8 @@ struct Engine {
 
   // ------------------------------------ certificates and their scheduling (engine_certificates.cpp)
 
-  int orientation_of(const VertexId* seq, std::size_t n) const;
+  int orientation_of(const VertexId* seq, std::size_t n, const Triangulation::Apices& ap,
+                     VertexId apex) const;
   int orientation_sign_plus(const Simplex& t);
   int sign_after_own_root(const IntervalPoly& f, const CacheKey& key) const;
   int new_cert(CertKind kind, const Simplex& key);

@@ -32,19 +32,37 @@ int permutation_sign(const VertexId* seq, std::size_t n) {
 
 } // namespace
 
-// The oriented sign of the sequence seq of n = dim + 1 vertices (a finite top simplex of Del).
-int Engine::orientation_of(const VertexId* seq, std::size_t n) const {
-  Simplex sorted = Simplex::from_range(seq, seq + n);
-  const int sign = tri.orientation(sorted);
+// The oriented sign of the sequence seq of n = dim + 1 vertices: a finite top simplex of Del, the
+// facet whose record is ap plus its apex `apex`.
+int Engine::orientation_of(const VertexId* seq, std::size_t n, const Triangulation::Apices& ap,
+                           VertexId apex) const {
+  const int sign = ap.orientation_with(apex);
   if (sign == 0) {
     std::ostringstream os;
-    os << "no orientation for top simplex " << sorted;
+    os << "no orientation for top simplex " << Simplex::from_range(seq, seq + n);
     throw InternalError(os.str());
   }
   return sign * permutation_sign(seq, n);
 }
 
 int Engine::orientation_sign_plus(const Simplex& t) {
+  if (t.size() == top_size() && is_finite(t)) {
+    // The value on now's enclosure (certificate::PointAtTime): a new top simplex of a flip is far
+    // from flat at now, and a sign there is the sign just after now. A few interval operations
+    // instead of the polynomial.
+    CGAL::Protect_FPU_rounding<true> guard;
+    double lo, hi;
+    now.enclosure(lo, hi);
+    const Interval u(lo, hi);
+    auto at = [&](VertexId v) { return certificate::PointAtTime{&pt(v), u}; };
+    const Interval o = dim == 2
+                           ? certificate::orientation_2<Interval>(at(t[0]), at(t[1]), at(t[2]))[0]
+                           : certificate::orientation<Interval>(at(t[0]), at(t[1]), at(t[2]), at(t[3]))[0];
+    if (o.inf() > 0 || o.sup() < 0) {
+      ++stats.sign_evaluations;
+      return o.inf() > 0 ? 1 : -1;
+    }
+  }
   if (now.isolated() != nullptr && t.size() == top_size() && is_finite(t)) {
     // A hull flip at a root of this very orientation (the failed certificate of four finite points,
     // three in 2D, MATH.md 3.2 case B) creates the top simplex that is flat at now.

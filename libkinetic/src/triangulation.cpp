@@ -14,7 +14,7 @@ void Triangulation::clear() {
 }
 
 void Triangulation::add_tet(const Simplex& t, int orientation) {
-  if (!tets_.emplace(t, static_cast<signed char>(orientation)).second) {
+  if (!tets_.emplace(t, 0).second) {
     std::ostringstream os;
     os << "top simplex " << t << " added twice";
     throw InternalError(os.str());
@@ -26,7 +26,9 @@ void Triangulation::add_tet(const Simplex& t, int orientation) {
       os << "facet " << t.facet(i) << " would get a third top simplex " << t;
       throw InternalError(os.str());
     }
-    a.v[a.count++] = t[i];
+    a.v[static_cast<std::size_t>(a.count)] = t[i];
+    a.orientation[static_cast<std::size_t>(a.count)] = static_cast<signed char>(orientation);
+    ++a.count;
     const std::size_t slot = static_cast<std::size_t>(t[i] + 1);
     if (slot >= incident_.size())
       incident_.resize(slot + 1);
@@ -45,6 +47,7 @@ void Triangulation::remove_tet(const Simplex& t) {
     Apices& a = it->second;
     if (a.v[0] == t[i]) {
       a.v[0] = a.v[1];
+      a.orientation[0] = a.orientation[1];
     }
     --a.count;
     if (a.count == 0)
@@ -61,14 +64,14 @@ const Triangulation::Apices* Triangulation::apices(const Simplex& facet) const {
   return it == facets_.end() ? nullptr : &it->second;
 }
 
-VertexId Triangulation::other_apex(const Simplex& facet, VertexId apex) const {
+const Triangulation::Apices& Triangulation::two_sided(const Simplex& facet) const {
   const Apices* a = apices(facet);
   if (a == nullptr || a->count != 2) {
     std::ostringstream os;
     os << "facet " << facet << " does not have two top simplices";
     throw InternalError(os.str());
   }
-  return a->v[0] == apex ? a->v[1] : a->v[0];
+  return *a;
 }
 
 const std::vector<Simplex>& Triangulation::tets_of(VertexId v) const {

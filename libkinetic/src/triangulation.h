@@ -22,23 +22,34 @@ class Triangulation {
 public:
   void clear();
   bool has_tet(const Simplex& t) const { return tets_.count(t) != 0; }
-  // Adds t with the sign (+1 or -1) of the orientation of its sorted vertices, 0 for an infinite t.
+  // Adds t with the sign (+1 or -1) of the orientation of its sorted vertices, 0 for an infinite t;
+  // the sign is kept with t's facets (Apices).
   void add_tet(const Simplex& t, int orientation);
-  // The sign given when t was added; 0 when t is infinite or absent.
-  int orientation(const Simplex& t) const {
-    auto it = tets_.find(t);
-    return it == tets_.end() ? 0 : it->second;
-  }
   void remove_tet(const Simplex& t);
 
   // The apices of facet f (the vertices completing it to its two tetrahedra); count is 2 in a
-  // valid triangulation.
+  // valid triangulation. With each apex v[k], the orientation given to the top simplex f + v[k]
+  // when it was added: every certificate of the facet needs it (MATH.md 3.2), and the facet's record
+  // is at hand where the top simplex would take a look-up of its own.
   struct Apices {
     std::array<VertexId, 2> v{{0, 0}};
+    std::array<signed char, 2> orientation{{0, 0}};
     int count = 0;
+    // 0 when apex is not one.
+    int orientation_with(VertexId apex) const {
+      for (int k = 0; k < count; ++k)
+        if (v[static_cast<std::size_t>(k)] == apex)
+          return orientation[static_cast<std::size_t>(k)];
+      return 0;
+    }
   };
   const Apices* apices(const Simplex& facet) const;
-  VertexId other_apex(const Simplex& facet, VertexId apex) const;
+  // The record of a facet with two top simplices; InternalError otherwise.
+  const Apices& two_sided(const Simplex& facet) const;
+  VertexId other_apex(const Simplex& facet, VertexId apex) const {
+    const Apices& a = two_sided(facet);
+    return a.v[0] == apex ? a.v[1] : a.v[0];
+  }
 
   // The top simplices, iterable as simplices (`for (const Simplex& t : tri.tets())`).
   class TetRange {
@@ -104,7 +115,7 @@ private:
     return *best;
   }
 
-  FlatSimplexMap<signed char> tets_; // each top simplex with its orientation
+  FlatSimplexMap<signed char> tets_; // the top simplices (a set: the values are unused)
   FlatSimplexMap<Apices> facets_;
   // Top simplices incident to each vertex, indexed by vertex id + 1 (the infinite vertex is -1).
   std::vector<std::vector<Simplex>> incident_;
