@@ -158,11 +158,19 @@ bool Engine::gabriel_now(const Simplex& s) {
   // their polynomials (sign_plus_now: interval polynomial, then exact).
   std::vector<VertexId>& link = link_scratch;
   link.clear();
-  tri.for_each_tet_containing(s, [&](const Simplex& t) {
-    for (VertexId x : t)
-      if (x != infinite_vertex && !s.contains(x) && std::find(link.begin(), link.end(), x) == link.end())
+  if (s.size() == static_cast<std::size_t>(dim)) {
+    // A facet: its link is its two apices, kept with it.
+    const detail::Triangulation::Apices& ap = tri.two_sided(s);
+    for (VertexId x : ap.v)
+      if (x != infinite_vertex)
         link.push_back(x);
-  });
+  } else {
+    tri.for_each_tet_containing(s, [&](const Simplex& t) {
+      for (VertexId x : t)
+        if (x != infinite_vertex && !s.contains(x) && std::find(link.begin(), link.end(), x) == link.end())
+          link.push_back(x);
+    });
+  }
   std::size_t n_undecided = 0; // moved to the front of link
   {
     CGAL::Protect_FPU_rounding<true> guard;
