@@ -371,7 +371,7 @@ void Engine::install_facet(const Simplex& facet) {
   }
   if (ap->count != 2) {
     std::ostringstream os;
-    os << "facet " << facet << " has " << ap->count << " tetrahedra";
+    os << "facet " << facet << " has " << int(ap->count) << " tetrahedra";
     throw InternalError(os.str());
   }
   const int id = new_cert(CertKind::delaunay, facet);

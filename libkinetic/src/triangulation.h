@@ -10,6 +10,7 @@
 #include "medusa/kinetic/simplex.h"
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace medusa::kinetic::detail {
@@ -34,7 +35,7 @@ public:
   struct Apices {
     std::array<VertexId, 2> v{{0, 0}};
     std::array<signed char, 2> orientation{{0, 0}};
-    int count = 0;
+    std::int8_t count = 0; // small: the table holds a record per facet
     // 0 when apex is not one.
     int orientation_with(VertexId apex) const {
       for (int k = 0; k < count; ++k)
