@@ -243,7 +243,7 @@ bool Engine::schedule_first_change(int id, const IntervalPoly& f, int sign, doub
   }
   if (next.status == FirstSignChange::Status::root) {
     ++stats.interval_scheduled;
-    auto root = std::make_shared<IsolatedRoot>();
+    auto root = make_isolated_root(key_polynomial(key));
     root->enclosure = f;
     root->shift = shift;
     root->wide = wide;
@@ -256,7 +256,6 @@ bool Engine::schedule_first_change(int id, const IntervalPoly& f, int sign, doub
     narrow_root(root->enclosure, root->lo, root->hi, sign, 0x1p-24);
     root->key = key.v;
     root->slab = slab;
-    root->exact = key_polynomial(key);
     queue.push({SlabTime(std::move(root)), static_cast<std::uint32_t>(id), c.version});
   }
   return true;

@@ -44,13 +44,12 @@ SlabTime isolated_time(std::initializer_list<long> c, double start = 0.0) {
   IntervalPoly f = interval_poly(c);
   FirstSignChange r = first_sign_change(f, start, 12);
   REQUIRE(r.status == FirstSignChange::Status::root);
-  auto root = std::make_shared<IsolatedRoot>();
+  Poly<mpz_class> e = exact_poly(c);
+  auto root = make_isolated_root([e] { return to_exact_poly(e); });
   root->enclosure = f;
   root->lo = r.lo;
   root->hi = r.hi;
   root->sign_lo = r.sign;
-  Poly<mpz_class> e = exact_poly(c);
-  root->exact = [e] { return to_exact_poly(e); };
   return SlabTime(root);
 }
 
@@ -163,14 +162,14 @@ TEST_CASE("two isolations of one polynomial compare in doubles, without exact ar
   auto make = [&](double start) {
     FirstSignChange r = first_sign_change(f, start, 12);
     REQUIRE(r.status == FirstSignChange::Status::root);
-    auto root = std::make_shared<IsolatedRoot>();
+    auto root =
+        make_isolated_root([]() -> ExactPoly { throw std::logic_error("exact polynomial requested"); });
     root->enclosure = f;
     root->lo = r.lo;
     root->hi = r.hi;
     root->sign_lo = r.sign;
     root->key = {0, 1, 2, 3, 4, 5};
     root->slab = 7;
-    root->exact = []() -> ExactPoly { throw std::logic_error("exact polynomial requested"); };
     return SlabTime(root);
   };
   SlabTime a = make(0.0), b = make(0.1), c = make(0.5);
@@ -246,14 +245,14 @@ TEST_CASE(
     f = interval_poly({3, -16, 16});
   }
   auto make = [&](double lo, double hi, int sign_lo) {
-    auto root = std::make_shared<IsolatedRoot>();
+    auto root =
+        make_isolated_root([]() -> ExactPoly { throw std::logic_error("exact polynomial requested"); });
     root->enclosure = f;
     root->lo = lo;
     root->hi = hi;
     root->sign_lo = sign_lo;
     root->key = {0, 1, 2, 3, 4, 5};
     root->slab = 3;
-    root->exact = []() -> ExactPoly { throw std::logic_error("exact polynomial requested"); };
     return SlabTime(root);
   };
   const SlabTime a = make(0.2, 0.3, 1), b = make(0.24, 0.5, 1);

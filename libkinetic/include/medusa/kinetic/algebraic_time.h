@@ -13,9 +13,9 @@
 
 #include <array>
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace medusa::kinetic {
@@ -33,12 +33,16 @@ ExactPoly to_exact_poly(const Poly<mpz_class>& f);
 // refinement when they overlap, exact comparison last). Shared by every copy of the time, so a
 // refinement made once serves every later comparison.
 struct IsolatedRoot {
-  IntervalPoly enclosure; // encloses the coefficients of the polynomial divided by u^shift
-  int shift = 0;          // (a root of multiplicity shift at the slab start divided out)
-  bool wide = false;      // enclosure from plain doubles: SlabTime::sharpen replaces it before reporting
-  std::function<ExactPoly()> exact; // the exact polynomial (any non-zero multiple of it)
-  double lo = 0.0, hi = 0.0;        // lo < root < hi, or lo == hi == root once found exactly
-  int sign_lo = 0;                  // sign of the polynomial at lo
+  virtual ~IsolatedRoot() = default;
+  // The exact polynomial (any non-zero multiple of it): IsolatedRootOf below holds what computes
+  // it, in the same allocation (every scheduled event has one of these).
+  virtual ExactPoly exact() const = 0;
+
+  IntervalPoly enclosure;    // encloses the coefficients of the polynomial divided by u^shift
+  int shift = 0;             // (a root of multiplicity shift at the slab start divided out)
+  bool wide = false;         // enclosure from plain doubles: SlabTime::sharpen replaces it before reporting
+  double lo = 0.0, hi = 0.0; // lo < root < hi, or lo == hi == root once found exactly
+  int sign_lo = 0;           // sign of the polynomial at lo
   // The right end of the piece that isolated the root: the polynomial has no root in (root,
   // clear_hi] and its sign there, -sign_lo, was certified at clear_hi. Certificates built on the
   // same points at this root (a flip's new interior facets) start their search for the next root
@@ -48,6 +52,17 @@ struct IsolatedRoot {
   std::size_t slab = 0;                   // ... in which slab: equal (key, slab), same polynomial
   std::optional<AlgebraicReal> algebraic; // the exact root, built on first need
 };
+
+// An isolated root whose exact polynomial is source() (a callable returning ExactPoly).
+template <class Source> struct IsolatedRootOf final : IsolatedRoot {
+  explicit IsolatedRootOf(Source s) : source(std::move(s)) {}
+  ExactPoly exact() const override { return source(); }
+  Source source;
+};
+
+template <class Source> std::shared_ptr<IsolatedRootOf<Source>> make_isolated_root(Source source) {
+  return std::make_shared<IsolatedRootOf<Source>>(std::move(source));
+}
 
 // A time inside a slab: the parameter u, rational (frames, audits) or algebraic (events).
 class SlabTime {
