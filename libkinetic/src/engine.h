@@ -87,7 +87,8 @@ struct Engine {
   // a 4-point set, the radius of a face (MATH.md 3.8, caching; cleared at every frame).
   RootCache root_cache;
 
-  // Scratch space of change_tets, kept to avoid an allocation per flip.
+  // Scratch space of process_batch and change_tets, kept to avoid allocations per event.
+  OldMembership batch_scratch;
   TouchedFaces touched_scratch;
   std::vector<Simplex> created_scratch;
   std::vector<VertexId> link_scratch;                                  // gabriel_now's link vertices

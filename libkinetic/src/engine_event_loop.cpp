@@ -43,7 +43,8 @@ void Engine::emit_batch(Observer& observer, std::vector<Step>& steps, bool at_fr
 // then the final re-evaluation (MATH.md 5.2).
 void Engine::process_batch(std::vector<Step>& steps) {
   resolve_delaunay(steps);
-  OldMembership old_k;
+  OldMembership& old_k = batch_scratch;
+  old_k.clear();
   Step settle;
   settle.kind = StepKind::settle;
   while (!pending_radius.empty()) {

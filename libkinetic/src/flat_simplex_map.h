@@ -8,6 +8,7 @@
 #include "medusa/kinetic/error.h"
 #include "medusa/kinetic/simplex.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -62,8 +63,13 @@ public:
     while (4 * n > 3 * slots_.size())
       grow();
   }
+  // Empties the table. A small one keeps its slots: the engine empties its per-batch tables at
+  // every event, and an allocation there costs more than the reset.
   void clear() {
-    slots_.clear();
+    if (slots_.size() <= 256)
+      std::fill(slots_.begin(), slots_.end(), Slot{});
+    else
+      slots_ = std::vector<Slot>();
     size_ = 0;
   }
 

@@ -121,3 +121,30 @@ TEST_CASE("after reserve, new keys up to the reserved count move no entry of a f
   for (const auto& [slot, key] : held)
     REQUIRE(slot->first == key);
 }
+
+TEST_CASE("a cleared flat simplex map, small or large, holds nothing and takes new entries") {
+  // Small tables keep their slots when cleared (the engine's per-batch tables), large ones release them.
+  std::mt19937_64 rng(9);
+  for (int n : {10, 150, 2000}) {
+    CAPTURE(n);
+    FlatSimplexMap<int> table;
+    std::vector<Simplex> old_keys;
+    for (int i = 0; i < n; ++i) {
+      const Simplex s = random_simplex(rng, 60);
+      table[s] = i;
+      old_keys.push_back(s);
+    }
+    table.clear();
+    REQUIRE(table.size() == 0);
+    REQUIRE(table.begin() == table.end());
+    for (const Simplex& s : old_keys)
+      REQUIRE(table.find(s) == table.end());
+    std::unordered_map<Simplex, int, SimplexHash> oracle;
+    for (int i = 0; i < n; ++i) {
+      const Simplex s = random_simplex(rng, 60);
+      table[s] = -i;
+      oracle[s] = -i;
+    }
+    require_equal(table, oracle);
+  }
+}
