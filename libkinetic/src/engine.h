@@ -89,6 +89,7 @@ struct Engine {
 
   // Scratch space of process_batch and change_tets, kept to avoid allocations per event.
   OldMembership batch_scratch;
+  std::vector<std::pair<int, std::uint32_t>> radius_scratch; // resolve_radius's failed certificates
   TouchedFaces touched_scratch;
   std::vector<Simplex> created_scratch;
   std::vector<VertexId> link_scratch;                                  // gabriel_now's link vertices

@@ -143,7 +143,10 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
 
 // Radius events: toggle shortness of the failed certificates, then one settle step.
 void Engine::resolve_radius(Step& settle, OldMembership& old_k) {
-  std::vector<std::pair<int, std::uint32_t>> failed;
+  // Swapped with a kept buffer: certificates failing meanwhile go to pending_radius, and neither
+  // vector is reallocated per event.
+  std::vector<std::pair<int, std::uint32_t>>& failed = radius_scratch;
+  failed.clear();
   failed.swap(pending_radius);
   for (auto [id, version] : failed) {
     const Certificate& c = certs[static_cast<std::size_t>(id)];
