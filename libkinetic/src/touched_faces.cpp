@@ -102,7 +102,13 @@ bool collect_local(const std::vector<Simplex>& removed, const std::vector<Simple
 
 void collect_sorted(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                     TouchedFaces& out) {
-  std::vector<TouchedFace> all;
+  // Every occurrence of a face, before merging: a static rebuild of the whole triangulation lists
+  // about fifteen per top simplex, so these stay smaller than TouchedFace.
+  struct Occurrence {
+    Simplex face;
+    int delta;
+  };
+  std::vector<Occurrence> all;
   for (const auto* list : {&removed, &added}) {
     const int sign = list == &removed ? -1 : 1;
     for (const Simplex& t : *list) {
@@ -111,13 +117,12 @@ void collect_sorted(const std::vector<Simplex>& removed, const std::vector<Simpl
         out.facets.push_back(t.facet(i));
     }
   }
-  std::sort(all.begin(), all.end(),
-            [](const TouchedFace& a, const TouchedFace& b) { return a.face < b.face; });
-  for (const TouchedFace& f : all)
+  std::sort(all.begin(), all.end(), [](const Occurrence& a, const Occurrence& b) { return a.face < b.face; });
+  for (const Occurrence& f : all)
     if (!out.faces.empty() && out.faces.back().face == f.face)
       out.faces.back().delta += f.delta;
     else
-      out.faces.push_back(f);
+      out.faces.push_back({f.face, f.delta});
   std::sort(out.facets.begin(), out.facets.end());
   out.facets.erase(std::unique(out.facets.begin(), out.facets.end()), out.facets.end());
 }
