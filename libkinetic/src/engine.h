@@ -321,7 +321,8 @@ struct Engine {
   void count_in_facets(const Simplex& c, int short_delta, int k_delta) {
     count_in_facets(c, short_delta, k_delta, [&](const Simplex& x) { return state_in_table(x); });
   }
-  // state_of(x): the state of facet x of c, nullptr when x leaves Del in the same change.
+  // state_of(x): the state of facet x of c, or nullptr (nothing to count). A facet leaving Del in
+  // the same change may still be counted: its entry is erased at the end of the change.
   template <class StateOf>
   static void count_in_facets(const Simplex& c, int short_delta, int k_delta, StateOf&& state_of);
   void settle_membership(const OldMembership& old_k, Step& step);

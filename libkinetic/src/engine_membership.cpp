@@ -110,6 +110,12 @@ void Engine::finish_tet_change() {
       faces.erase(t.face);
     t.state = nullptr;
   }
+  // The scratch is kept for the next flip, but not at the size of a whole static rebuild (the
+  // initial triangulation, insertions and deletions): that would hold megabytes for the rest of the run.
+  if (touched_scratch.faces.capacity() > 4096) {
+    std::vector<TouchedFace>().swap(touched_scratch.faces);
+    std::vector<Simplex>().swap(touched_scratch.facets);
+  }
 }
 
 bool Engine::is_short(const Simplex& s) const {
