@@ -84,16 +84,11 @@ bool collect_local(const std::vector<Simplex>& removed, const std::vector<Simple
   }
   // The infinite vertex (-1) sorts first: faces through it are not finite simplices of Del.
   const unsigned infinite = n > 0 && vertices[0] == infinite_vertex ? 1u : 0u;
-  out.local_vertices = vertices;
-  out.local_count = n;
-  out.index_of_mask.fill(-1);
   for (unsigned m : canonical_masks(n)) {
     if (!(present >> m & 1u))
       continue;
-    if ((m & infinite) == 0) {
-      out.index_of_mask[m] = static_cast<std::int16_t>(out.faces.size());
+    if ((m & infinite) == 0)
       out.faces.push_back({from_mask(vertices, m), delta[m]});
-    }
     if (static_cast<std::size_t>(bits(m)) + 1 == top_size)
       out.facets.push_back(from_mask(vertices, m));
   }
@@ -130,19 +125,6 @@ void collect_sorted(const std::vector<Simplex>& removed, const std::vector<Simpl
 } // namespace
 
 TouchedFace* TouchedFaces::find(const Simplex& s) {
-  if (local_count > 0) {
-    unsigned mask = 0;
-    for (VertexId v : s) {
-      std::size_t i = 0;
-      while (i < local_count && local_vertices[i] != v)
-        ++i;
-      if (i == local_count)
-        return nullptr;
-      mask |= 1u << i;
-    }
-    const int index = index_of_mask[mask];
-    return index < 0 ? nullptr : &faces[static_cast<std::size_t>(index)];
-  }
   auto it = std::lower_bound(faces.begin(), faces.end(), s,
                              [](const TouchedFace& f, const Simplex& key) { return f.face < key; });
   return it != faces.end() && it->face == s ? &*it : nullptr;
@@ -152,11 +134,9 @@ void collect_touched_faces(const std::vector<Simplex>& removed, const std::vecto
                            TouchedFaces& out) {
   out.faces.clear();
   out.facets.clear();
-  out.local_count = 0;
   if (!collect_local(removed, added, out)) {
     out.faces.clear();
     out.facets.clear();
-    out.local_count = 0;
     collect_sorted(removed, added, out);
   }
 }

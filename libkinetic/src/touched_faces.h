@@ -5,9 +5,6 @@
 
 #include "medusa/kinetic/simplex.h"
 
-#include <array>
-#include <cstddef>
-#include <cstdint>
 #include <vector>
 
 namespace medusa::kinetic::detail {
@@ -33,13 +30,6 @@ struct TouchedFaces {
 
   // The entry of a touched face; nullptr when s is not touched.
   TouchedFace* find(const Simplex& s);
-
-  // A change spanning few vertices (a flip) is enumerated by subsets of them: then a face's entry
-  // is found from its subset's bit mask (index_of_mask, -1 for none). local_count is 0 otherwise,
-  // and find searches the sorted faces.
-  std::array<VertexId, 6> local_vertices{};
-  std::size_t local_count = 0;
-  std::array<std::int16_t, 64> index_of_mask{};
 };
 
 // A flip changes top simplices spanned by at most dim + 2 vertices: their faces are enumerated as
