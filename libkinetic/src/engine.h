@@ -101,6 +101,15 @@ struct Engine {
 
   const MovingPoint& pt(VertexId v) const { return motion[static_cast<std::size_t>(v)]; }
 
+  // The cells at now's enclosure, as a function of the vertex: a certificate given these points is
+  // its value at now (certificate::PointAtTime), a few interval operations where the polynomial
+  // costs many. The caller holds a CGAL::Protect_FPU_rounding guard.
+  auto points_at_now() const {
+    double lo, hi;
+    now.enclosure(lo, hi);
+    return [this, u = Interval(lo, hi)](VertexId v) { return certificate::PointAtTime{&pt(v), u}; };
+  }
+
   // rho^2 = P/Q as the number type of a certificate computation.
   static const Interval& pick(const mpz_class&, const Interval& approx, const Interval&) { return approx; }
   static const mpz_class& pick(const mpz_class& exact, const Interval&, const mpz_class&) { return exact; }

@@ -47,14 +47,10 @@ int Engine::orientation_of(const VertexId* seq, std::size_t n, const Triangulati
 
 int Engine::orientation_sign_plus(const Simplex& t) {
   if (t.size() == top_size() && is_finite(t)) {
-    // The value on now's enclosure (certificate::PointAtTime): a new top simplex of a flip is far
-    // from flat at now, and a sign there is the sign just after now. A few interval operations
-    // instead of the polynomial.
+    // The value at now first: a new top simplex of a flip is far from flat at now, and a sign there
+    // is the sign just after now.
     CGAL::Protect_FPU_rounding<true> guard;
-    double lo, hi;
-    now.enclosure(lo, hi);
-    const Interval u(lo, hi);
-    auto at = [&](VertexId v) { return certificate::PointAtTime{&pt(v), u}; };
+    const auto at = points_at_now();
     const Interval o = dim == 2
                            ? certificate::orientation_2<Interval>(at(t[0]), at(t[1]), at(t[2]))[0]
                            : certificate::orientation<Interval>(at(t[0]), at(t[1]), at(t[2]), at(t[3]))[0];

@@ -180,10 +180,7 @@ bool Engine::gabriel_now(const Simplex& s) {
   std::size_t n_undecided = 0; // moved to the front of link
   {
     CGAL::Protect_FPU_rounding<true> guard;
-    double lo, hi;
-    now.enclosure(lo, hi);
-    const Interval u(lo, hi);
-    auto at = [&](VertexId v) { return certificate::PointAtTime{&pt(v), u}; };
+    const auto at = points_at_now();
     for (VertexId x : link) {
       const Interval g =
           s.size() == 2 ? certificate::gabriel_edge<Interval>(at(s[0]), at(s[1]), at(x))[0]
