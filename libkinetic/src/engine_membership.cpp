@@ -31,10 +31,23 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
 
 // The caller may pass the orientations sign^+ of the added top simplices (0 for infinite ones) it
 // has computed.
+// A flip touches at most 2^(dim + 2) - 1 = 31 faces; a larger change overflows the cache anyway.
+constexpr std::size_t max_prefetched_faces = 32;
+
 void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                               const int* added_orientations) {
   TouchedFaces& touched = touched_scratch;
   collect_touched_faces(removed, added, touched);
+  if (touched.faces.size() <= max_prefetched_faces) {
+    // A flip: its records are requested together, so their cache misses overlap (FlatSimplexMap::prefetch).
+    for (const Simplex& t : removed)
+      tri.prefetch_tet(t);
+    for (const Simplex& f : touched.facets)
+      facet_cert.prefetch(f);
+    for (const TouchedFace& t : touched.faces)
+      if (t.face.size() > 1)
+        faces.prefetch(t.face);
+  }
   for (const Simplex& t : removed)
     tri.remove_tet(t);
   for (std::size_t i = 0; i < added.size(); ++i) {

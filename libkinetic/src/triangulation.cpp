@@ -8,19 +8,19 @@
 namespace medusa::kinetic::detail {
 
 void Triangulation::clear() {
-  tets_.clear();
+  tet_count_ = 0;
   facets_.clear();
   incident_.clear();
 }
 
 void Triangulation::add_tet(const Simplex& t, int orientation) {
-  if (!tets_.emplace(t, 0).second) {
-    std::ostringstream os;
-    os << "top simplex " << t << " added twice";
-    throw InternalError(os.str());
-  }
   for (std::size_t i = 0; i < t.size(); ++i) {
     Apices& a = facets_[t.facet(i)];
+    if (i == 0 && a.orientation_slot(t[0]) >= 0) {
+      std::ostringstream os;
+      os << "top simplex " << t << " added twice";
+      throw InternalError(os.str());
+    }
     if (a.count == 2) {
       std::ostringstream os;
       os << "facet " << t.facet(i) << " would get a third top simplex " << t;
@@ -34,16 +34,18 @@ void Triangulation::add_tet(const Simplex& t, int orientation) {
       incident_.resize(slot + 1);
     incident_[slot].push_back(t);
   }
+  ++tet_count_;
 }
 
 void Triangulation::remove_tet(const Simplex& t) {
-  if (tets_.erase(t) == 0) {
-    std::ostringstream os;
-    os << "top simplex " << t << " removed but absent";
-    throw InternalError(os.str());
-  }
   for (std::size_t i = 0; i < t.size(); ++i) {
     auto it = facets_.find(t.facet(i));
+    if (it == facets_.end() || it->second.orientation_slot(t[i]) < 0) {
+      // Only the first facet can fail: when t is present, all its facets hold it.
+      std::ostringstream os;
+      os << "top simplex " << t << " removed but absent";
+      throw InternalError(os.str());
+    }
     Apices& a = it->second;
     if (a.v[0] == t[i]) {
       a.v[0] = a.v[1];
@@ -56,6 +58,17 @@ void Triangulation::remove_tet(const Simplex& t) {
     // Order within the list is not used: swap with the last and pop.
     *std::find(list.begin(), list.end(), t) = list.back();
     list.pop_back();
+  }
+  --tet_count_;
+}
+
+void Triangulation::prefetch_tet(const Simplex& t) const {
+  for (std::size_t i = 0; i < t.size(); ++i)
+    facets_.prefetch(t.facet(i));
+  for (VertexId v : t) {
+    const std::size_t slot = static_cast<std::size_t>(v + 1);
+    if (slot < incident_.size() && !incident_[slot].empty())
+      __builtin_prefetch(incident_[slot].data());
   }
 }
 

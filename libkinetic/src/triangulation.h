@@ -22,11 +22,18 @@ inline bool is_finite(const Simplex& s) { return s[0] != infinite_vertex; }
 class Triangulation {
 public:
   void clear();
-  bool has_tet(const Simplex& t) const { return tets_.count(t) != 0; }
+  // A top simplex is known by its facets: t is present iff its facet without t[0] has apex t[0]. No
+  // table of top simplices is kept, which saves a hash-table operation per added or removed one.
+  bool has_tet(const Simplex& t) const {
+    const Apices* a = apices(t.facet(0));
+    return a != nullptr && a->orientation_slot(t[0]) >= 0;
+  }
   // Adds t with the sign (+1 or -1) of the orientation of its sorted vertices, 0 for an infinite t;
   // the sign is kept with t's facets (Apices).
   void add_tet(const Simplex& t, int orientation);
   void remove_tet(const Simplex& t);
+  // Starts loading the records that removing t will touch (FlatSimplexMap::prefetch).
+  void prefetch_tet(const Simplex& t) const;
 
   // The apices of facet f (the vertices completing it to its two tetrahedra); count is 2 in a
   // valid triangulation. With each apex v[k], the orientation given to the top simplex f + v[k]
@@ -36,12 +43,17 @@ public:
     std::array<VertexId, 2> v{{0, 0}};
     std::array<signed char, 2> orientation{{0, 0}};
     std::int8_t count = 0; // small: the table holds a record per facet
-    // 0 when apex is not one.
-    int orientation_with(VertexId apex) const {
+    // The index of apex in v; -1 when it is not one.
+    int orientation_slot(VertexId apex) const {
       for (int k = 0; k < count; ++k)
         if (v[static_cast<std::size_t>(k)] == apex)
-          return orientation[static_cast<std::size_t>(k)];
-      return 0;
+          return k;
+      return -1;
+    }
+    // 0 when apex is not one.
+    int orientation_with(VertexId apex) const {
+      const int k = orientation_slot(apex);
+      return k < 0 ? 0 : orientation[static_cast<std::size_t>(k)];
     }
   };
   const Apices* apices(const Simplex& facet) const;
@@ -52,31 +64,51 @@ public:
     return a.v[0] == apex ? a.v[1] : a.v[0];
   }
 
-  // The top simplices, iterable as simplices (`for (const Simplex& t : tri.tets())`).
+  // The top simplices, iterable as simplices (`for (const Simplex& t : tri.tets())`), in no
+  // meaningful order: each is listed from its one facet whose apex is its smallest vertex.
   class TetRange {
   public:
     class iterator {
     public:
-      explicit iterator(FlatSimplexMap<signed char>::const_iterator it) : it_(it) {}
-      const Simplex& operator*() const { return it_->first; }
+      using Slots = FlatSimplexMap<Apices>::const_iterator;
+      iterator(Slots it, Slots end) : it_(it), end_(end) { settle(); }
+      const Simplex& operator*() const { return current_; }
       iterator& operator++() {
-        ++it_;
+        ++k_;
+        settle();
         return *this;
       }
-      friend bool operator!=(const iterator& a, const iterator& b) { return a.it_ != b.it_; }
+      friend bool operator!=(const iterator& a, const iterator& b) { return a.it_ != b.it_ || a.k_ != b.k_; }
 
     private:
-      FlatSimplexMap<signed char>::const_iterator it_;
+      // Advances to the next (facet, apex) pair whose apex sorts before the facet's vertices.
+      void settle() {
+        for (; it_ != end_; ++it_, k_ = 0)
+          for (; k_ < it_->second.count; ++k_) {
+            const VertexId apex = it_->second.v[static_cast<std::size_t>(k_)];
+            if (apex < it_->first[0]) {
+              std::array<VertexId, 4> w{};
+              w[0] = apex;
+              std::copy(it_->first.begin(), it_->first.end(), w.begin() + 1);
+              current_ = Simplex::from_range(w.begin(), w.begin() + 1 + it_->first.size());
+              return;
+            }
+          }
+      }
+      Slots it_, end_;
+      int k_ = 0;
+      Simplex current_;
     };
-    explicit TetRange(const FlatSimplexMap<signed char>& m) : m_(m) {}
-    iterator begin() const { return iterator(m_.begin()); }
-    iterator end() const { return iterator(m_.end()); }
-    std::size_t size() const { return m_.size(); }
+    TetRange(const FlatSimplexMap<Apices>& m, std::size_t n) : m_(m), n_(n) {}
+    iterator begin() const { return iterator(m_.begin(), m_.end()); }
+    iterator end() const { return iterator(m_.end(), m_.end()); }
+    std::size_t size() const { return n_; }
 
   private:
-    const FlatSimplexMap<signed char>& m_;
+    const FlatSimplexMap<Apices>& m_;
+    std::size_t n_;
   };
-  TetRange tets() const { return TetRange(tets_); }
+  TetRange tets() const { return TetRange(facets_, tet_count_); }
   const FlatSimplexMap<Apices>& facets() const { return facets_; }
   // Tetrahedra containing every vertex of s.
   std::vector<Simplex> tets_containing(const Simplex& s) const;
@@ -116,7 +148,7 @@ private:
     return *best;
   }
 
-  FlatSimplexMap<signed char> tets_; // the top simplices (a set: the values are unused)
+  std::size_t tet_count_ = 0;
   FlatSimplexMap<Apices> facets_;
   // Top simplices incident to each vertex, indexed by vertex id + 1 (the infinite vertex is -1).
   std::vector<std::vector<Simplex>> incident_;
