@@ -305,6 +305,15 @@ struct Engine {
   void settle_touched(Step& step);
   void finish_tet_change();
   bool is_short(const Simplex& s) const;
+  // Has s (a triangle or tetrahedron; false for an edge) a facet flagged long? state_of(x): x's state.
+  template <class StateOf> static bool has_long_facet(const Simplex& s, StateOf&& state_of) {
+    if (s.size() < 3)
+      return false;
+    for (std::size_t i = 0; i < s.size(); ++i)
+      if (!state_of(s.facet(i))->is_short)
+        return true;
+    return false;
+  }
   std::vector<Simplex> cofaces(const Simplex& s) const;
   // The state of a face of Del, or nullptr: from the table, or from the faces touched by the change
   // being applied.

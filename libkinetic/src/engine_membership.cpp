@@ -101,7 +101,10 @@ void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::ve
     if (f.size() == 2 && slab + 1 < traj.frames())
       check_collision(f);
     Face& state = *state_of(f);
-    state.is_short = compute_short(f);
+    // Created in canonical order, f comes after its facets. A long facet makes f long (R is monotone,
+    // MATH.md 4.1) with no radius polynomial: f's longness is implied, as for any face with a long
+    // face (4.4, "skipped (implied)"), and f is not in the frontier.
+    state.is_short = !has_long_facet(f, state_of) && compute_short(f);
     count_in_facets(f, int(state.is_short), 0, state_of); // a new face is not in K yet
   }
   // Frontier membership of every surviving touched simplex: their cofaces changed (MATH.md 4.4,
