@@ -66,8 +66,8 @@ struct Engine {
 
   // Del(now+) and the alpha-complex state of its finite simplices.
   detail::Triangulation tri;
-  FlatSimplexMap<Face> faces; // finite simplices of dimension 1..dim in Del
-  FlatSimplexMap<int> facet_cert;
+  FlatSimplexMap<Face> faces;             // finite simplices of dimension 1..dim in Del
+  std::vector<int> dropped_certs_scratch; // certificates of facets that left Del (remove_tet)
 
   // Certificates (recycled through free_certs) and their failure times.
   std::vector<Certificate> certs;

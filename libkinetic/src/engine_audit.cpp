@@ -117,10 +117,18 @@ void Engine::audit() {
       os << "facet " << facet << " is not locally Delaunay";
       audit_failure(os.str());
     }
-    auto it = facet_cert.find(facet);
-    if (it == facet_cert.end() || !certs[static_cast<std::size_t>(it->second)].alive)
+    const detail::Triangulation::Apices* ap = tri.apices(facet);
+    if (ap == nullptr || ap->cert < 0 || !certs[static_cast<std::size_t>(ap->cert)].alive ||
+        certs[static_cast<std::size_t>(ap->cert)].key != facet)
       audit_failure("a facet has no certificate");
   }
+  // Exactly those: a certificate left alive without its simplex would still fire.
+  std::size_t alive_delaunay = 0, alive_radius = 0;
+  for (const Certificate& c : certs)
+    if (c.alive)
+      ++(c.kind == CertKind::delaunay ? alive_delaunay : alive_radius);
+  if (alive_delaunay != delaunay_polys.size())
+    audit_failure("a Delaunay certificate outlived its facet");
   // Radius flags and certificates.
   for (std::size_t i = 0; i < radius_polys.size(); ++i) {
     const auto& kv = *faces.find(radius_polys[i].first);
@@ -139,7 +147,10 @@ void Engine::audit() {
                        : " is on the frontier without a radius certificate");
       audit_failure(os.str());
     }
+    alive_radius -= certified ? 1 : 0;
   }
+  if (alive_radius != 0)
+    audit_failure("a radius certificate outlived its simplex");
   // The alpha complex against CGAL's static Fixed_alpha_shape_3 (Alpha_shape_2 in 2D) at q.
   std::vector<Simplex> cgal_tets;
   Rational rho2(CGAL::Gmpz(P.get_mpz_t()), CGAL::Gmpz(Q.get_mpz_t()));

@@ -354,27 +354,19 @@ void Engine::mark_invalid(int id) {
     pending_radius.emplace_back(id, c.version);
 }
 
+// A facet that left Del has no record any more: its certificate went with it (remove_tet).
 void Engine::install_facet(const Simplex& facet) {
-  const detail::Triangulation::Apices* ap = tri.apices(facet);
-  auto it = facet_cert.find(facet);
-  if (it != facet_cert.end())
-    kill_cert(it->second);
-  if (ap == nullptr) {
-    if (it != facet_cert.end())
-      facet_cert.erase(it);
+  detail::Triangulation::Apices* ap = tri.apices(facet);
+  if (ap == nullptr)
     return;
-  }
   if (ap->count != 2) {
     std::ostringstream os;
     os << "facet " << facet << " has " << int(ap->count) << " tetrahedra";
     throw InternalError(os.str());
   }
-  const int id = new_cert(CertKind::delaunay, facet);
-  if (it != facet_cert.end())
-    it->second = id; // the facet's entry is reused: one look-up per facet
-  else
-    facet_cert.emplace(facet, id);
-  install(id);
+  kill_cert(ap->cert);
+  ap->cert = new_cert(CertKind::delaunay, facet); // the table is not touched: ap stays valid
+  install(ap->cert);
 }
 
 void Engine::install_radius(const Simplex& s, Face& f) {

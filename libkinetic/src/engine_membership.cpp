@@ -42,14 +42,16 @@ void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::ve
     // A flip: its records are requested together, so their cache misses overlap (FlatSimplexMap::prefetch).
     for (const Simplex& t : removed)
       tri.prefetch_tet(t);
-    for (const Simplex& f : touched.facets)
-      facet_cert.prefetch(f);
     for (const TouchedFace& t : touched.faces)
       if (t.face.size() > 1)
         faces.prefetch(t.face);
   }
+  std::vector<int>& dropped = dropped_certs_scratch;
+  dropped.clear();
   for (const Simplex& t : removed)
-    tri.remove_tet(t);
+    tri.remove_tet(t, dropped);
+  for (int id : dropped)
+    kill_cert(id);
   for (std::size_t i = 0; i < added.size(); ++i) {
     const Simplex& t = added[i];
     int s = 0;

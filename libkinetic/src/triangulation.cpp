@@ -37,7 +37,7 @@ void Triangulation::add_tet(const Simplex& t, int orientation) {
   ++tet_count_;
 }
 
-void Triangulation::remove_tet(const Simplex& t) {
+void Triangulation::remove_tet(const Simplex& t, std::vector<int>& dropped_certs) {
   for (std::size_t i = 0; i < t.size(); ++i) {
     auto it = facets_.find(t.facet(i));
     if (it == facets_.end() || it->second.orientation_slot(t[i]) < 0) {
@@ -52,8 +52,11 @@ void Triangulation::remove_tet(const Simplex& t) {
       a.orientation[0] = a.orientation[1];
     }
     --a.count;
-    if (a.count == 0)
+    if (a.count == 0) {
+      if (a.cert >= 0)
+        dropped_certs.push_back(a.cert);
       facets_.erase(it);
+    }
     auto& list = incident_[static_cast<std::size_t>(t[i] + 1)];
     // Order within the list is not used: swap with the last and pop.
     *std::find(list.begin(), list.end(), t) = list.back();
@@ -73,6 +76,11 @@ void Triangulation::prefetch_tet(const Simplex& t) const {
 }
 
 const Triangulation::Apices* Triangulation::apices(const Simplex& facet) const {
+  auto it = facets_.find(facet);
+  return it == facets_.end() ? nullptr : &it->second;
+}
+
+Triangulation::Apices* Triangulation::apices(const Simplex& facet) {
   auto it = facets_.find(facet);
   return it == facets_.end() ? nullptr : &it->second;
 }

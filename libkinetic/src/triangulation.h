@@ -31,7 +31,9 @@ public:
   // Adds t with the sign (+1 or -1) of the orientation of its sorted vertices, 0 for an infinite t;
   // the sign is kept with t's facets (Apices).
   void add_tet(const Simplex& t, int orientation);
-  void remove_tet(const Simplex& t);
+  // Removes t; a facet left with no top simplex goes, and its certificate id (Apices::cert), if it
+  // had one, is appended to dropped_certs for the caller to retire.
+  void remove_tet(const Simplex& t, std::vector<int>& dropped_certs);
   // Starts loading the records that removing t will touch (FlatSimplexMap::prefetch).
   void prefetch_tet(const Simplex& t) const;
 
@@ -43,6 +45,9 @@ public:
     std::array<VertexId, 2> v{{0, 0}};
     std::array<signed char, 2> orientation{{0, 0}};
     std::int8_t count = 0; // small: the table holds a record per facet
+    // The engine's Delaunay certificate of the facet (-1: none). Kept in the facet's record rather
+    // than a table of its own: installing a certificate then takes one look-up, not two.
+    int cert = -1;
     // The index of apex in v; -1 when it is not one.
     int orientation_slot(VertexId apex) const {
       for (int k = 0; k < count; ++k)
@@ -57,6 +62,7 @@ public:
     }
   };
   const Apices* apices(const Simplex& facet) const;
+  Apices* apices(const Simplex& facet);
   // The record of a facet with two top simplices; InternalError otherwise.
   const Apices& two_sided(const Simplex& facet) const;
   VertexId other_apex(const Simplex& facet, VertexId apex) const {

@@ -1,6 +1,6 @@
 // Triangulation (the engine's combinatorial Del) keeps no table of its top simplices: presence and
 // the iteration over them are read off the facets' apices. Checked against a std::set oracle under
-// random additions and removals.
+// random additions and removals, as is the certificate id each facet carries.
 #include "medusa/kinetic/error.h"
 #include "triangulation.h"
 
@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <random>
 #include <set>
 #include <vector>
@@ -65,10 +66,13 @@ TEST_CASE("top simplices are found and listed from their facets alone, each once
       REQUIRE(tri.has_tet(t) == present);
       if (present && rng() % 2 == 0) {
         REQUIRE_THROWS_AS(tri.add_tet(t, is_finite(t) ? 1 : 0), medusa::InternalError);
-        tri.remove_tet(t);
+        std::vector<int> dropped;
+        tri.remove_tet(t, dropped);
+        REQUIRE(dropped.empty()); // no facet here carries a certificate
         oracle.erase(t);
       } else if (!present && rng() % 3 == 0) {
-        REQUIRE_THROWS_AS(tri.remove_tet(t), medusa::InternalError);
+        std::vector<int> dropped;
+        REQUIRE_THROWS_AS(tri.remove_tet(t, dropped), medusa::InternalError);
       } else if (!present && fits(t, tri)) {
         tri.add_tet(t, is_finite(t) ? 1 : 0);
         oracle.insert(t);
@@ -78,5 +82,59 @@ TEST_CASE("top simplices are found and listed from their facets alone, each once
     }
     REQUIRE(oracle.size() > 20); // the walk did build something to list
     require_matches(tri, oracle);
+  }
+}
+
+TEST_CASE("a facet's certificate id is handed back when its last top simplex goes, and only then",
+          "[kinetic][triangulation]") {
+  const unsigned seed = GENERATE(31u, 32u);
+  std::mt19937 rng(seed);
+  for (const std::size_t size : {std::size_t{3}, std::size_t{4}}) {
+    CAPTURE(seed, size);
+    Triangulation tri;
+    std::set<Simplex> tets;
+    std::map<Simplex, int> cert_of; // the oracle: the id given to each facet present
+    int next_id = 0, handed_back = 0;
+    for (int step = 0; step < 3000; ++step) {
+      const Simplex t = random_simplex(rng, size, true);
+      if (tets.count(t) != 0) {
+        // The facets of t that no other top simplex holds go, with their ids.
+        std::vector<int> expected;
+        for (std::size_t i = 0; i < t.size(); ++i) {
+          const Simplex f = t.facet(i);
+          const bool shared = std::any_of(tets.begin(), tets.end(), [&](const Simplex& u) {
+            return u != t && std::includes(u.begin(), u.end(), f.begin(), f.end());
+          });
+          if (!shared) {
+            expected.push_back(cert_of.at(f));
+            cert_of.erase(f);
+          }
+        }
+        std::vector<int> dropped;
+        tri.remove_tet(t, dropped);
+        tets.erase(t);
+        std::sort(expected.begin(), expected.end());
+        std::sort(dropped.begin(), dropped.end());
+        REQUIRE(dropped == expected);
+        handed_back += static_cast<int>(dropped.size());
+      } else if (fits(t, tri)) {
+        tri.add_tet(t, is_finite(t) ? 1 : 0);
+        tets.insert(t);
+        for (std::size_t i = 0; i < t.size(); ++i) {
+          Triangulation::Apices* a = tri.apices(t.facet(i));
+          REQUIRE(a != nullptr);
+          if (a->cert < 0) {
+            REQUIRE(cert_of.count(t.facet(i)) == 0); // a new record starts without one
+            a->cert = next_id;
+            cert_of[t.facet(i)] = next_id++;
+          }
+        }
+      }
+      // Facets that stay keep their ids.
+      if (step % 100 == 0)
+        for (const auto& [f, id] : cert_of)
+          REQUIRE(tri.apices(f)->cert == id);
+    }
+    REQUIRE(handed_back > 20); // the walk did remove facets
   }
 }
