@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 namespace medusa::kinetic {
 
@@ -86,9 +87,16 @@ Refinement cut_at(const IntervalPoly& f, double x, double& lo, double& hi, int s
 // by rounding r, a point next to it, to fewer bits: f vanishes exactly there. Sets
 // lo = hi = that root and answers true; false when none of these roundings is a root in (lo, hi).
 bool dyadic_root_near(const IntervalPoly& f, double r, double& lo, double& hi) {
+  if (!(r >= 0.0 && r <= 1.0))
+    return false; // event times lie in the slab [0, 1]
+  double scale = 1.0;
   for (int bits = 4; bits <= 48; bits += 4) {
-    // Scaling by a power of two is exact, and std::round ignores the rounding mode.
-    const double x = std::ldexp(std::round(std::ldexp(r, bits)), -bits);
+    // Scaling by a power of two is exact (r is in [0, 1], far from overflow and underflow), and so
+    // is the conversion of an integer below 2^49 back to double. Which rounding of r * 2^bits the
+    // integer is (the mode is upward here) does not matter: x is only a candidate, checked exactly.
+    // This runs for every event time tightened: no libm calls.
+    scale *= 16.0;
+    const double x = static_cast<double>(static_cast<std::int64_t>(r * scale + 0.5)) / scale;
     if (!(lo < x && x < hi))
       continue;
     if (is_exact_zero(value_at_point(f, x))) {

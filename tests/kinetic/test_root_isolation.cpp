@@ -262,3 +262,39 @@ TEST_CASE(
   REQUIRE(compare(first, second) == -1);
   REQUIRE(compare(second, first) == 1);
 }
+
+TEST_CASE("the tightest narrowing finds every short dyadic root exactly", "[kinetic][isolation]") {
+  // f = (2^b u - k) h(u), h > 0 on [0, 1] with small integer coefficients: every coefficient is an
+  // exact double, so f vanishes exactly (as a point interval) at k / 2^b and nowhere near it, and
+  // narrowing to width 0 must end on lo == hi == k / 2^b (events at equal rational times compare
+  // equal, MATH.md 3.7).
+  const unsigned seed = std::random_device{}();
+  CAPTURE(seed);
+  std::mt19937_64 rng(seed);
+  CGAL::Protect_FPU_rounding<true> guard;
+  int cases = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const int b = 4 + static_cast<int>(rng() % 21); // up to 24 bits
+    const long scale = 1L << b;
+    const long k = 1 + static_cast<long>(rng() % static_cast<unsigned long>(scale - 1));
+    std::array<long, 5> h{};
+    for (long& c : h)
+      c = 1 + static_cast<long>(rng() % (1u << 20)); // positive: h > 0 on [0, 1]
+    std::array<long, 6> c{};
+    for (std::size_t i = 0; i < h.size(); ++i) {
+      c[i] += -k * h[i];
+      c[i + 1] += scale * h[i];
+    }
+    IntervalPoly f = IntervalPoly::zero_of_degree(5);
+    for (int i = 0; i <= 5; ++i)
+      f[i] = Interval(static_cast<double>(c[static_cast<std::size_t>(i)]));
+    const double q = static_cast<double>(k) / static_cast<double>(scale);
+    double lo = std::max(0.0, q - 0x1p-20), hi = std::min(1.0, q + 0x1p-20);
+    CAPTURE(b, k);
+    REQUIRE(narrow_root(f, lo, hi, -1, 0.0) == Refinement::exact);
+    REQUIRE(lo == q);
+    REQUIRE(hi == q);
+    ++cases;
+  }
+  REQUIRE(cases == 2000);
+}
