@@ -84,11 +84,16 @@ bool collect_local(const std::vector<Simplex>& removed, const std::vector<Simple
   }
   // The infinite vertex (-1) sorts first: faces through it are not finite simplices of Del.
   const unsigned infinite = n > 0 && vertices[0] == infinite_vertex ? 1u : 0u;
+  out.local = vertices;
+  out.local_count = n;
+  out.index_of_mask.fill(-1);
   for (unsigned m : canonical_masks(n)) {
     if (!(present >> m & 1u))
       continue;
-    if ((m & infinite) == 0)
+    if ((m & infinite) == 0) {
+      out.index_of_mask[m] = static_cast<std::int8_t>(out.faces.size());
       out.faces.push_back({from_mask(vertices, m), delta[m]});
+    }
     if (static_cast<std::size_t>(bits(m)) + 1 == top_size)
       out.facets.push_back(from_mask(vertices, m));
   }
@@ -125,6 +130,20 @@ void collect_sorted(const std::vector<Simplex>& removed, const std::vector<Simpl
 } // namespace
 
 TouchedFace* TouchedFaces::find(const Simplex& s) {
+  if (local_count != 0) {
+    // Both vertex lists are sorted: one merge pass gives s's mask over `local`.
+    unsigned mask = 0;
+    std::size_t j = 0;
+    for (VertexId v : s) {
+      while (j < local_count && local[j] < v)
+        ++j;
+      if (j == local_count || local[j] != v)
+        return nullptr;
+      mask |= 1u << j++;
+    }
+    const int index = index_of_mask[mask];
+    return index < 0 ? nullptr : &faces[static_cast<std::size_t>(index)];
+  }
   auto it = std::lower_bound(faces.begin(), faces.end(), s,
                              [](const TouchedFace& f, const Simplex& key) { return f.face < key; });
   return it != faces.end() && it->face == s ? &*it : nullptr;
@@ -134,9 +153,11 @@ void collect_touched_faces(const std::vector<Simplex>& removed, const std::vecto
                            TouchedFaces& out) {
   out.faces.clear();
   out.facets.clear();
+  out.local_count = 0;
   if (!collect_local(removed, added, out)) {
     out.faces.clear();
     out.facets.clear();
+    out.local_count = 0;
     collect_sorted(removed, added, out);
   }
 }

@@ -5,6 +5,8 @@
 
 #include "medusa/kinetic/simplex.h"
 
+#include <array>
+#include <cstdint>
 #include <vector>
 
 namespace medusa::kinetic::detail {
@@ -30,6 +32,13 @@ struct TouchedFaces {
 
   // The entry of a touched face; nullptr when s is not touched.
   TouchedFace* find(const Simplex& s);
+
+  // A flip's faces are subsets of its few vertices (collect_touched_faces): then a face is found by
+  // its bit mask over `local` (an index into `faces`, -1 for none) instead of by binary search.
+  // local_count is 0 for larger changes.
+  std::array<VertexId, 6> local{};
+  std::size_t local_count = 0;
+  std::array<std::int8_t, 64> index_of_mask{};
 };
 
 // A flip changes top simplices spanned by at most dim + 2 vertices: their faces are enumerated as

@@ -102,7 +102,8 @@ TEST_CASE("the touched faces of a change spanning many vertices are sorted and m
 
 TEST_CASE("every touched face and each of its facets are found among the touched faces, nothing else is",
           "[kinetic][triangulation]") {
-  // The engine looks the facets of a touched face up here (apply_tet_change), by binary search.
+  // The engine looks the facets of a touched face up here (apply_tet_change): by bit mask over a
+  // flip's vertices, by binary search for larger changes.
   const std::uint64_t seed = GENERATE(41, 42);
   CAPTURE(seed);
   std::mt19937_64 rng(seed);
@@ -132,5 +133,18 @@ TEST_CASE("every touched face and each of its facets are found among the touched
     REQUIRE(got.find(Simplex{41}) == nullptr);
     REQUIRE(got.find(Simplex{41, 42}) == nullptr);
     REQUIRE(got.find(Simplex{41, 42, 43, 44}) == nullptr);
+    // Faces through the infinite vertex are not touched faces, even among the flip's vertices.
+    if (removed.front()[0] == -1)
+      REQUIRE(got.find(Simplex{-1, removed.front()[1]}) == nullptr);
   }
+  // Six vertices, two top simplices sharing an edge: a pair or triple of the six held by neither
+  // is not touched, though all its vertices are.
+  TouchedFaces got;
+  collect_touched_faces({Simplex{1, 2, 3, 4}}, {Simplex{3, 4, 5, 6}}, got);
+  REQUIRE(got.faces.size() == 2 * 15 - 3);
+  REQUIRE(got.find(Simplex{1, 5}) == nullptr);
+  REQUIRE(got.find(Simplex{2, 3, 6}) == nullptr);
+  REQUIRE(got.find(Simplex{3, 4})->delta == 0);
+  REQUIRE(got.find(Simplex{5, 6})->delta == 1);
+  REQUIRE(got.find(Simplex{1, 2, 3})->delta == -1);
 }
