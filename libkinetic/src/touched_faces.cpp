@@ -40,9 +40,8 @@ const std::vector<unsigned>& canonical_masks(std::size_t n) {
 Simplex from_mask(const std::array<VertexId, max_local>& vertices, unsigned mask) {
   std::array<VertexId, 4> v{};
   std::size_t k = 0;
-  for (std::size_t i = 0; mask != 0; ++i, mask >>= 1)
-    if (mask & 1u)
-      v[k++] = vertices[i];
+  for (; mask != 0; mask &= mask - 1) // one step per set bit, lowest first
+    v[k++] = vertices[static_cast<std::size_t>(__builtin_ctz(mask))];
   return Simplex::from_range(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k));
 }
 

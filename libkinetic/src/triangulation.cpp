@@ -4,16 +4,19 @@
 
 #include <algorithm>
 #include <sstream>
+#include <utility>
 
 namespace medusa::kinetic::detail {
 
 void Triangulation::clear() {
+  memo_ = nullptr;
   tet_count_ = 0;
   facets_.clear();
   incident_.clear();
 }
 
 void Triangulation::add_tet(const Simplex& t, int orientation) {
+  memo_ = nullptr;
   for (std::size_t i = 0; i < t.size(); ++i) {
     Apices& a = facets_[t.facet(i)];
     if (i == 0 && a.orientation_slot(t[0]) >= 0) {
@@ -38,6 +41,7 @@ void Triangulation::add_tet(const Simplex& t, int orientation) {
 }
 
 void Triangulation::remove_tet(const Simplex& t, std::vector<int>& dropped_certs) {
+  memo_ = nullptr;
   for (std::size_t i = 0; i < t.size(); ++i) {
     auto it = facets_.find(t.facet(i));
     if (it == facets_.end() || it->second.orientation_slot(t[i]) < 0) {
@@ -76,13 +80,19 @@ void Triangulation::prefetch_tet(const Simplex& t) const {
 }
 
 const Triangulation::Apices* Triangulation::apices(const Simplex& facet) const {
+  if (memo_ != nullptr && memo_key_ == facet)
+    return memo_;
   auto it = facets_.find(facet);
-  return it == facets_.end() ? nullptr : &it->second;
+  if (it == facets_.end())
+    return nullptr;
+  memo_key_ = facet;
+  memo_ = &it->second;
+  return memo_;
 }
 
 Triangulation::Apices* Triangulation::apices(const Simplex& facet) {
-  auto it = facets_.find(facet);
-  return it == facets_.end() ? nullptr : &it->second;
+  // The record is in this (non-const) triangulation's own table.
+  return const_cast<Apices*>(std::as_const(*this).apices(facet));
 }
 
 const Triangulation::Apices& Triangulation::two_sided(const Simplex& facet) const {

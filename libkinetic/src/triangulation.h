@@ -156,6 +156,11 @@ private:
 
   std::size_t tet_count_ = 0;
   FlatSimplexMap<Apices> facets_;
+  // The last facet looked up and its record: installing a facet's certificate reads the record
+  // three times (the certificate, its polynomial, its cache key). Any change of the table may move
+  // records, so add_tet, remove_tet and clear forget it.
+  mutable Simplex memo_key_;
+  mutable const Apices* memo_ = nullptr;
   // Top simplices incident to each vertex, indexed by vertex id + 1 (the infinite vertex is -1).
   std::vector<std::vector<Simplex>> incident_;
 };
