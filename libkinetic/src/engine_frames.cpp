@@ -26,8 +26,7 @@ void Engine::set_slab_motion(std::size_t k) {
 }
 
 void Engine::reinstall_all() {
-  while (!queue.empty())
-    queue.pop();
+  queue.clear();
   root_cache.clear();
   std::vector<Simplex> fs;
   for (const auto& kv : tri.facets())

@@ -4,34 +4,84 @@
 
 #include "medusa/kinetic/algebraic_time.h"
 
+#include <algorithm>
 #include <cstdint>
-#include <queue>
 #include <utility>
 #include <vector>
 
 namespace medusa::kinetic::detail {
 
 struct QueueEntry {
-  QueueEntry(SlabTime time, std::uint32_t c, std::uint32_t v) : u(std::move(time)), cert(c), version(v) {
-    u.enclosure(lo, hi);
-  }
+  QueueEntry(SlabTime time, std::uint32_t c, std::uint32_t v) : u(std::move(time)), cert(c), version(v) {}
   SlabTime u;
-  std::uint32_t cert;
-  std::uint32_t version;
-  // An enclosure of u when the entry was made. Refinement only narrows u's own enclosure, so this
-  // one stays valid: most comparisons in the heap are decided here, without calling compare().
-  double lo = 0.0, hi = 0.0;
-};
-struct LaterFirst {
-  bool operator()(const QueueEntry& a, const QueueEntry& b) const {
-    if (b.hi < a.lo)
-      return true;
-    if (a.hi < b.lo)
-      return false;
-    return compare(b.u, a.u) < 0;
-  }
+  std::uint32_t cert = 0;
+  std::uint32_t version = 0;
 };
 
-using EventQueue = std::priority_queue<QueueEntry, std::vector<QueueEntry>, LaterFirst>;
+// A binary heap of small keys over a pool of entries. A time (SlabTime) is large and holds shared
+// pointers, so the heap moves 24-byte keys instead: a queue holds about one entry per certificate
+// scheduled in the slab (100,000 at 10,000 cells), and each push or pop moves about log2 of that
+// many. Most comparisons are decided on the keys' doubles; only overlapping ones read the pool.
+class EventQueue {
+public:
+  bool empty() const { return heap_.empty(); }
+  std::size_t size() const { return heap_.size(); }
+  // The earliest entry; valid until the next push or pop.
+  const QueueEntry& top() const { return pool_[heap_.front().slot]; }
+
+  void push(QueueEntry e) {
+    std::uint32_t slot;
+    if (!free_.empty()) {
+      slot = free_.back();
+      free_.pop_back();
+      pool_[slot] = std::move(e);
+    } else {
+      slot = static_cast<std::uint32_t>(pool_.size());
+      pool_.push_back(std::move(e));
+    }
+    Key k;
+    k.slot = slot;
+    pool_[slot].u.enclosure(k.lo, k.hi);
+    heap_.push_back(k);
+    std::push_heap(heap_.begin(), heap_.end(), LaterFirst{&pool_});
+  }
+
+  void pop() {
+    std::pop_heap(heap_.begin(), heap_.end(), LaterFirst{&pool_});
+    const std::uint32_t slot = heap_.back().slot;
+    heap_.pop_back();
+    // The slot keeps its time until reused (a default time would allocate a rational): at most
+    // the queue's largest size of them.
+    free_.push_back(slot);
+  }
+
+  void clear() {
+    heap_.clear();
+    pool_.clear();
+    free_.clear();
+  }
+
+private:
+  struct Key {
+    // An enclosure of the time when the entry was made. Refinement only narrows the time's own
+    // enclosure, so this one stays valid.
+    double lo = 0.0, hi = 0.0;
+    std::uint32_t slot = 0;
+  };
+  struct LaterFirst {
+    const std::vector<QueueEntry>* pool;
+    bool operator()(const Key& a, const Key& b) const {
+      if (b.hi < a.lo)
+        return true;
+      if (a.hi < b.lo)
+        return false;
+      return compare((*pool)[b.slot].u, (*pool)[a.slot].u) < 0;
+    }
+  };
+
+  std::vector<Key> heap_;
+  std::vector<QueueEntry> pool_;
+  std::vector<std::uint32_t> free_;
+};
 
 } // namespace medusa::kinetic::detail
