@@ -123,7 +123,7 @@ void Engine::audit() {
       audit_failure("a facet has no certificate");
   }
   // Exactly those: a certificate left alive without its simplex would still fire.
-  std::size_t alive_delaunay = 0, alive_radius = 0;
+  std::size_t alive_delaunay = 0, alive_radius = 0, certified_radius = 0;
   for (const Certificate& c : certs)
     if (c.alive)
       ++(c.kind == CertKind::delaunay ? alive_delaunay : alive_radius);
@@ -147,9 +147,9 @@ void Engine::audit() {
                        : " is on the frontier without a radius certificate");
       audit_failure(os.str());
     }
-    alive_radius -= certified ? 1 : 0;
+    certified_radius += certified ? 1 : 0;
   }
-  if (alive_radius != 0)
+  if (alive_radius != certified_radius)
     audit_failure("a radius certificate outlived its simplex");
   // The alpha complex against CGAL's static Fixed_alpha_shape_3 (Alpha_shape_2 in 2D) at q.
   std::vector<Simplex> cgal_tets;

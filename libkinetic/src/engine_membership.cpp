@@ -29,10 +29,11 @@ void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<
   finish_tet_change();
 }
 
-// The caller may pass the orientations sign^+ of the added top simplices (0 for infinite ones) it
-// has computed.
 // A flip touches at most 2^(dim + 2) - 1 = 31 faces; a larger change overflows the cache anyway.
 constexpr std::size_t max_prefetched_faces = 32;
+
+// The caller may pass the orientations sign^+ of the added top simplices (0 for infinite ones) it
+// has computed.
 
 void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                               const int* added_orientations) {

@@ -11,7 +11,7 @@ namespace medusa::kinetic::detail {
 
 namespace {
 
-constexpr std::size_t max_local = 6; // a flip spans dim + 2 <= 5 vertices; room for one more
+constexpr std::size_t max_local = TouchedFaces::max_local;
 
 int bits(unsigned m) { return __builtin_popcount(m); }
 
@@ -153,10 +153,9 @@ void collect_touched_faces(const std::vector<Simplex>& removed, const std::vecto
   out.faces.clear();
   out.facets.clear();
   out.local_count = 0;
-  if (!collect_local(removed, added, out)) {
+  if (!collect_local(removed, added, out)) { // it gives up before setting local_count
     out.faces.clear();
     out.facets.clear();
-    out.local_count = 0;
     collect_sorted(removed, added, out);
   }
 }

@@ -36,9 +36,10 @@ struct TouchedFaces {
   // A flip's faces are subsets of its few vertices (collect_touched_faces): then a face is found by
   // its bit mask over `local` (an index into `faces`, -1 for none) instead of by binary search.
   // local_count is 0 for larger changes.
-  std::array<VertexId, 6> local{};
+  static constexpr std::size_t max_local = 6; // a flip spans dim + 2 <= 5 vertices; room for one more
+  std::array<VertexId, max_local> local{};
   std::size_t local_count = 0;
-  std::array<std::int8_t, 64> index_of_mask{};
+  std::array<std::int8_t, std::size_t{1} << max_local> index_of_mask{};
 };
 
 // A flip changes top simplices spanned by at most dim + 2 vertices: their faces are enumerated as
