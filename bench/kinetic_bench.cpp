@@ -12,6 +12,8 @@
 // dimension only. --step sets how far the random walks move per frame: the kinetic cost grows with
 // the events per frame, the static rebuild's does not.
 #include "medusa/io/run_reader.h"
+#include "medusa/kinetic/certificate_enclosure.h"
+#include "medusa/kinetic/interval_filter.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
 
 #include <CGAL/Alpha_shape_2.h>
@@ -23,9 +25,14 @@
 #include <CGAL/Fixed_alpha_shape_3.h>
 #include <CGAL/Fixed_alpha_shape_cell_base_3.h>
 #include <CGAL/Fixed_alpha_shape_vertex_base_3.h>
+#include <CGAL/Gmpz.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #include <sys/resource.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -93,6 +100,121 @@ double static_rebuild_seconds(const Trajectories& t, std::size_t k, double rho2,
   for (auto e = shape.finite_edges_begin(); e != shape.finite_edges_end(); ++e)
     in_k += shape.classify(*e) != Shape::EXTERIOR;
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The certificate arithmetic alone (MATH.md 3): the least a certificate costs in libkinetic is its
+// polynomial enclosed from doubles (certificate_enclosure.h) and the first Bernstein filter on it,
+// the path that settles most certificates. Timed per formula on every facet, edge, triangle and
+// tetrahedron of CGAL's triangulation at frame k over slab k (best of three passes), then multiplied
+// by the certificates the kinetic run built of each formula, it is a floor under the kinetic time
+// that no bookkeeping, queue or memory-layout change can go below. Hull orientations are counted at
+// zero cost, and certificates that need root isolation at the cost of the filter alone.
+struct FormulaCosts {
+  double in_sphere = 0;           // seconds per in-sphere (in-circle in 2D) certificate
+  std::array<double, 3> radius{}; // per edge, triangle, tetrahedron radius certificate
+};
+
+template <std::size_t N, class Build>
+double seconds_per_certificate(const std::vector<std::array<int, N>>& tuples, Build&& build, int& sink) {
+  if (tuples.empty())
+    return 0;
+  double best = 1e300;
+  for (int pass = 0; pass < 3; ++pass) {
+    auto start = Clock::now();
+    for (const auto& t : tuples)
+      sink += bernstein_sign_subdivided(build(t), 0.0, 4);
+    best = std::min(best, std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  return best / double(tuples.size());
+}
+
+FormulaCosts formula_costs(const Trajectories& t, std::size_t k, const SquaredRadius& rho2) {
+  std::vector<MovingPoint> moving;
+  std::vector<std::pair<std::array<double, 3>, int>> at_k;
+  for (const Trajectory& c : t.cells)
+    if (c.present(k) && c.present(k + 1)) {
+      MovingPoint m;
+      for (int i = 0; i < 3; ++i) {
+        m.a[i] = c.at(k)[i];
+        m.b[i] = c.at(k + 1)[i] - c.at(k)[i];
+      }
+      at_k.push_back({{double(m.a[0]), double(m.a[1]), double(m.a[2])}, int(moving.size())});
+      moving.push_back(m);
+    }
+  CGAL::Protect_FPU_rounding<true> guard;
+  const Interval P(CGAL::to_interval(CGAL::Gmpz(rho2.num.get_mpz_t())));
+  const Interval Q(CGAL::to_interval(CGAL::Gmpz(rho2.den.get_mpz_t())));
+  const auto& m = moving;
+  FormulaCosts cost;
+  int sink = 0;
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::vector<std::array<int, 2>> edges;
+  std::vector<std::array<int, 3>> triangles;
+  if (t.dimension == 2) {
+    using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
+    using Dt = CGAL::Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<Vb>>;
+    std::vector<std::pair<K::Point_2, int>> pts;
+    for (const auto& [x, i] : at_k)
+      pts.push_back({K::Point_2(x[0], x[1]), i});
+    Dt dt(pts.begin(), pts.end());
+    std::vector<std::array<int, 4>> in_circle;
+    for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+      const auto f = e->first;
+      const int i = e->second;
+      const int a = f->vertex(Dt::cw(i))->info(), b = f->vertex(Dt::ccw(i))->info();
+      edges.push_back({a, b});
+      const auto g = f->neighbor(i);
+      if (!dt.is_infinite(f) && !dt.is_infinite(g))
+        in_circle.push_back({a, b, f->vertex(i)->info(), dt.mirror_vertex(f, i)->info()});
+    }
+    for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
+      triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+    cost.in_sphere = seconds_per_certificate(
+        in_circle, [&](const auto& v) { return in_circle_enclosure(m[v[0]], m[v[1]], m[v[2]], m[v[3]]); },
+        sink);
+  } else {
+    using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
+    using Dt = CGAL::Delaunay_triangulation_3<K, CGAL::Triangulation_data_structure_3<Vb>>;
+    std::vector<std::pair<K::Point_3, int>> pts;
+    for (const auto& [x, i] : at_k)
+      pts.push_back({K::Point_3(x[0], x[1], x[2]), i});
+    Dt dt(pts.begin(), pts.end());
+    std::vector<std::array<int, 5>> in_sphere;
+    std::vector<std::array<int, 4>> tets;
+    for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
+      tets.push_back(
+          {c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
+      for (int i = 0; i < 4; ++i) {
+        const auto n = c->neighbor(i);
+        if (!dt.is_infinite(n) && &*c < &*n)
+          in_sphere.push_back({c->vertex((i + 1) & 3)->info(), c->vertex((i + 2) & 3)->info(),
+                               c->vertex((i + 3) & 3)->info(), c->vertex(i)->info(),
+                               dt.mirror_vertex(c, i)->info()});
+      }
+    }
+    for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
+      edges.push_back({e->first->vertex(e->second)->info(), e->first->vertex(e->third)->info()});
+    for (auto f = dt.finite_facets_begin(); f != dt.finite_facets_end(); ++f)
+      triangles.push_back({f->first->vertex((f->second + 1) & 3)->info(),
+                           f->first->vertex((f->second + 2) & 3)->info(),
+                           f->first->vertex((f->second + 3) & 3)->info()});
+    cost.in_sphere = seconds_per_certificate(
+        in_sphere,
+        [&](const auto& v) { return in_sphere_enclosure(m[v[0]], m[v[1]], m[v[2]], m[v[3]], m[v[4]]); },
+        sink);
+    cost.radius[2] = seconds_per_certificate(
+        tets,
+        [&](const auto& v) { return tetrahedron_radius_enclosure(m[v[0]], m[v[1]], m[v[2]], m[v[3]], P, Q); },
+        sink);
+  }
+  cost.radius[0] = seconds_per_certificate(
+      edges, [&](const auto& v) { return edge_radius_enclosure(m[v[0]], m[v[1]], P, Q); }, sink);
+  cost.radius[1] = seconds_per_certificate(
+      triangles, [&](const auto& v) { return triangle_radius_enclosure(m[v[0]], m[v[1]], m[v[2]], P, Q); },
+      sink);
+  if (sink == 42) // keeps the filter calls from being optimised away
+    std::fputs("", stdout);
+  return cost;
 }
 
 // seconds[k] = time of slab k (its events and the frame batch that ends it); `initialisation` the
@@ -237,6 +359,20 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
       "exact certificates: %zu Delaunay, %zu radius; %zu with a failure time in the slab, %zu invalid "
       "at creation, %zu root-cache hits\n",
       s.exact_delaunay, s.exact_radius, s.exact_scheduled, s.invalid_at_creation, s.root_cache_hits);
+  if (t.frames() > 1) {
+    const FormulaCosts c = formula_costs(t, (t.frames() - 2) / 2, options.rho2);
+    const double floor = double(s.built_in_sphere) * c.in_sphere + double(s.built_radius[0]) * c.radius[0] +
+                         double(s.built_radius[1]) * c.radius[1] + double(s.built_radius[2]) * c.radius[2];
+    const double static_all = static_first + static_total, kinetic_all = timer.initialisation + kinetic_slabs;
+    std::printf("certificate arithmetic floor (enclosure from doubles + first filter, per formula at frame "
+                "%zu): %zu in-sphere at %.0f ns, %zu hull orientations at 0, radius %zu edges at %.0f ns, "
+                "%zu triangles at %.0f ns, %zu tetrahedra at %.0f ns: %.3f s for the run, %.2f of the "
+                "static rebuilds (no kinetic run of these certificates can have a lower ratio); the "
+                "kinetic run takes %.1fx this floor\n",
+                (t.frames() - 2) / 2, s.built_in_sphere, 1e9 * c.in_sphere, s.built_hull, s.built_radius[0],
+                1e9 * c.radius[0], s.built_radius[1], 1e9 * c.radius[1], s.built_radius[2], 1e9 * c.radius[2],
+                floor, floor / static_all, kinetic_all / floor);
+  }
   std::printf("peak memory (RSS so far) %.1f MiB\n", peak_rss_mib());
   std::fflush(stdout);
 }

@@ -274,6 +274,7 @@ struct Engine {
   int new_cert(CertKind kind, const Simplex& key);
   void kill_cert(int id);
   void install(int id);
+  void count_built(const Certificate& c, bool enclosed);
   // wide: f is the enclosure from plain doubles (certificate_enclosure.h), replaced by the interval
   // one before its root is reported (Engine::run_slab).
   bool install_in_doubles(int id, const IntervalPoly& f, bool wide = false);

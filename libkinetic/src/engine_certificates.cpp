@@ -114,6 +114,15 @@ void Engine::kill_cert(int id) {
   free_certs.push_back(id);
 }
 
+// Counts a certificate built by its formula; `enclosed` says cert_enclosure took it, which it does for
+// every certificate but the hull orientations.
+void Engine::count_built(const Certificate& c, bool enclosed) {
+  if (c.kind == CertKind::delaunay)
+    ++(enclosed ? stats.built_in_sphere : stats.built_hull);
+  else
+    ++stats.built_radius.at(c.key.size() - 2);
+}
+
 // Evaluates a fresh certificate at `now`: schedules its next failure in (now, 1), or queues it in
 // the current batch when it is already invalid just after now (MATH.md 3.7, 3.9).
 void Engine::install(int id) {
@@ -127,7 +136,9 @@ void Engine::install(int id) {
     // Most certificates hold through the slab, and most others have a simple root in it: the
     // enclosure from doubles settles both at a fraction of the cost of interval arithmetic (it is
     // an enclosure like any other, only wider). What it cannot settle is recomputed tightly.
-    if (cert_enclosure(c, f)) {
+    const bool enclosed = cert_enclosure(c, f);
+    count_built(c, enclosed);
+    if (enclosed) {
       if (bernstein_sign_subdivided(f, lo, 4) > 0) {
         ++stats.filter_settled;
         ++stats.double_filter_settled;

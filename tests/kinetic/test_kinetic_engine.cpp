@@ -3,9 +3,14 @@
 #include "kinetic_test_support.h"
 #include "medusa/kinetic/error.h"
 
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <catch2/catch.hpp>
 
+#include <array>
+
 #include <cmath>
+#include <random>
 
 using namespace medusa::kinetic;
 using medusa::kinetic::testing::ReplayObserver;
@@ -471,4 +476,63 @@ TEST_CASE("certificates settled on the enclosures from doubles keep the audit gr
   REQUIRE(s.double_filter_settled > 0);
   REQUIRE(s.double_isolation_settled > 0);
   REQUIRE(s.flips23 + s.flips32 > 0);
+}
+
+TEST_CASE("certificates built at the start are counted by formula as CGAL's triangulation has faces",
+          "[kinetic][engine][statistics]") {
+  // Stationary cells over one slab: every facet of Del(t0+) gets one Delaunay certificate (in-sphere
+  // between two finite tetrahedra, orientation otherwise, MATH.md 3.2), and every frontier simplex one
+  // radius certificate (MATH.md 4.4). With rho below every half edge length all edges are long and in
+  // F and nothing else is; with rho above every circumradius F is the finite tetrahedra. The last
+  // frame rebuilds nothing (no slab follows), so each is built once.
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Dt = CGAL::Delaunay_triangulation_3<K>;
+  const std::uint64_t seed = 31;
+  CAPTURE(seed);
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> coord(0, 1000);
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100};
+  std::vector<K::Point_3> pts;
+  for (int i = 0; i < 40; ++i) {
+    GridPoint p{coord(rng), coord(rng), coord(rng)};
+    pts.emplace_back(double(p[0]), double(p[1]), double(p[2]));
+    t.cells.push_back({i + 1, 1, 0, {p, p}});
+  }
+  Dt dt(pts.begin(), pts.end());
+  REQUIRE(dt.number_of_vertices() == pts.size());
+  std::size_t finite_pairs = 0, all_facets = 0;
+  for (auto f = dt.all_facets_begin(); f != dt.all_facets_end(); ++f) {
+    ++all_facets;
+    finite_pairs += !dt.is_infinite(f->first) && !dt.is_infinite(dt.mirror_facet(*f).first);
+  }
+  REQUIRE(finite_pairs > 0);
+  REQUIRE(all_facets > finite_pairs);
+  // The two radii are far from every edge and circumradius (integer coordinates: squared lengths are
+  // exact in doubles).
+  const long tiny = 1, huge = 100000000000000L;
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
+    REQUIRE(CGAL::squared_distance(e->first->vertex(e->second)->point(),
+                                   e->first->vertex(e->third)->point()) > 4.0 * tiny);
+  for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+    REQUIRE(CGAL::squared_radius(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                                 c->vertex(3)->point()) < 0.5 * double(huge));
+
+  for (const long rho2 : {tiny, huge}) {
+    CAPTURE(rho2);
+    KineticAlphaComplex engine(t, with_radius(rho2));
+    ReplayObserver obs(engine);
+    engine.run(obs);
+    const KineticStatistics& s = engine.statistics();
+    CHECK(s.built_in_sphere == finite_pairs);
+    CHECK(s.built_hull == all_facets - finite_pairs);
+    const std::array<std::size_t, 3> radius =
+        rho2 == tiny ? std::array<std::size_t, 3>{dt.number_of_finite_edges(), 0, 0}
+                     : std::array<std::size_t, 3>{0, 0, dt.number_of_finite_cells()};
+    CHECK(s.built_radius == radius);
+    CHECK(s.built_in_sphere + s.built_hull + s.built_radius[0] + s.built_radius[1] + s.built_radius[2] ==
+          s.certificates_built);
+    REQUIRE(obs.mismatches == 0);
+  }
 }

@@ -7,6 +7,7 @@
 
 #include <gmpxx.h>
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -36,7 +37,11 @@ struct KineticStatistics {
   std::size_t insertions = 0, deletions = 0, static_rebuilds = 0;
   std::size_t repairs_at_algebraic_times = 0; // static repairs inside a slab (MATH.md 5.4)
   std::size_t certificates_built = 0;         // certificates created (Delaunay and radius)
-  std::size_t filter_settled = 0;             // settled by the interval Bernstein filter
+  // The same certificates by formula (MATH.md 3.2-3.4); the four add up to certificates_built.
+  std::size_t built_in_sphere = 0; // in-sphere (in-circle in 2D) of a facet with two finite apices
+  std::size_t built_hull = 0;      // orientation of a facet at the hull (the infinite vertex involved)
+  std::array<std::size_t, 3> built_radius{}; // radius of an edge, a triangle, a tetrahedron
+  std::size_t filter_settled = 0;            // settled by the interval Bernstein filter
   std::size_t double_filter_settled =
       0;                            // of which on the enclosure from plain doubles (certificate_enclosure.h)
   std::size_t interval_settled = 0; // settled in doubles by certified root isolation (root_isolation.h)
