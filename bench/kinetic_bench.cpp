@@ -365,13 +365,14 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
                          double(s.built_radius[1]) * c.radius[1] + double(s.built_radius[2]) * c.radius[2];
     const double static_all = static_first + static_total, kinetic_all = timer.initialisation + kinetic_slabs;
     std::printf("certificate arithmetic floor (enclosure from doubles + first filter, per formula at frame "
-                "%zu): %zu in-sphere at %.0f ns, %zu hull orientations at 0, radius %zu edges at %.0f ns, "
+                "%zu): %zu %s at %.0f ns, %zu hull orientations at 0, radius %zu edges at %.0f ns, "
                 "%zu triangles at %.0f ns, %zu tetrahedra at %.0f ns: %.3f s for the run, %.2f of the "
                 "static rebuilds (no change outside the certificate arithmetic can bring the ratio below "
                 "this); the kinetic run takes %.1fx this floor\n",
-                (t.frames() - 2) / 2, s.built_in_sphere, 1e9 * c.in_sphere, s.built_hull, s.built_radius[0],
-                1e9 * c.radius[0], s.built_radius[1], 1e9 * c.radius[1], s.built_radius[2], 1e9 * c.radius[2],
-                floor, floor / static_all, kinetic_all / floor);
+                (t.frames() - 2) / 2, s.built_in_sphere, t.dimension == 2 ? "in-circle" : "in-sphere",
+                1e9 * c.in_sphere, s.built_hull, s.built_radius[0], 1e9 * c.radius[0], s.built_radius[1],
+                1e9 * c.radius[1], s.built_radius[2], 1e9 * c.radius[2], floor, floor / static_all,
+                kinetic_all / floor);
     // What the target leaves for everything else (queue, triangulation, membership, isolation and
     // narrowing of failure times), per event, against what it costs now.
     if (events > 0)
