@@ -102,30 +102,39 @@ double static_rebuild_seconds(const Trajectories& t, std::size_t k, double rho2,
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The certificate arithmetic alone (MATH.md 3): the least a certificate costs in libkinetic is its
-// polynomial enclosed from doubles (certificate_enclosure.h) and the first Bernstein filter on it,
-// the path that settles most certificates. Timed per formula on every facet, edge, triangle and
-// tetrahedron of CGAL's triangulation at frame k over slab k (best of three passes), then multiplied
-// by the certificates the kinetic run built of each formula, it is a floor under the kinetic time
-// that no bookkeeping, queue or memory-layout change can go below. Hull orientations are counted at
-// zero cost, and certificates that need root isolation at the cost of the filter alone.
+// The certificate arithmetic alone (MATH.md 3). Every certificate libkinetic builds needs at least
+// its polynomial, enclosed from doubles (certificate_enclosure.h) on the cheapest path; most are then
+// settled by one Bernstein filter on it. Both are timed per formula on every facet, edge, triangle
+// and tetrahedron of CGAL's triangulation at frame k over slab k (best of three passes). Multiplied
+// by the certificates of each formula the kinetic run built, the first is a floor under the kinetic
+// time that no bookkeeping, queue or memory-layout change can go below (hull orientations counted at
+// zero cost); the second is what the certificates cost when the filter settles every one.
 struct FormulaCosts {
-  double in_sphere = 0;           // seconds per in-sphere (in-circle in 2D) certificate
-  std::array<double, 3> radius{}; // per edge, triangle, tetrahedron radius certificate
+  // seconds per certificate: in-sphere (in-circle in 2D), edge, triangle, tetrahedron radius
+  std::array<double, 4> build{}, filter{};
+  double times(const KineticStatistics& s, const std::array<double, 4>& c) const {
+    return double(s.built_in_sphere) * c[0] + double(s.built_radius[0]) * c[1] +
+           double(s.built_radius[1]) * c[2] + double(s.built_radius[2]) * c[3];
+  }
 };
 
 template <std::size_t N, class Build>
-double seconds_per_certificate(const std::vector<std::array<int, N>>& tuples, Build&& build, int& sink) {
+void time_formula(const std::vector<std::array<int, N>>& tuples, Build&& build, double& build_seconds,
+                  double& filter_seconds, int& sink) {
   if (tuples.empty())
-    return 0;
-  double best = 1e300;
-  for (int pass = 0; pass < 3; ++pass) {
-    auto start = Clock::now();
-    for (const auto& t : tuples)
-      sink += bernstein_sign_subdivided(build(t), 0.0, 4);
-    best = std::min(best, std::chrono::duration<double>(Clock::now() - start).count());
+    return;
+  for (const bool filter : {false, true}) {
+    double best = 1e300;
+    for (int pass = 0; pass < 3; ++pass) {
+      auto start = Clock::now();
+      for (const auto& t : tuples) {
+        const IntervalPoly f = build(t);
+        sink += filter ? bernstein_sign_subdivided(f, 0.0, 4) : certified_sign(f[0]);
+      }
+      best = std::min(best, std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    (filter ? filter_seconds : build_seconds) = best / double(tuples.size());
   }
-  return best / double(tuples.size());
 }
 
 FormulaCosts formula_costs(const Trajectories& t, std::size_t k, const SquaredRadius& rho2) {
@@ -169,9 +178,9 @@ FormulaCosts formula_costs(const Trajectories& t, std::size_t k, const SquaredRa
     }
     for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
       triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
-    cost.in_sphere = seconds_per_certificate(
+    time_formula(
         in_circle, [&](const auto& v) { return in_circle_enclosure(m[v[0]], m[v[1]], m[v[2]], m[v[3]]); },
-        sink);
+        cost.build[0], cost.filter[0], sink);
   } else {
     using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
     using Dt = CGAL::Delaunay_triangulation_3<K, CGAL::Triangulation_data_structure_3<Vb>>;
@@ -198,21 +207,22 @@ FormulaCosts formula_costs(const Trajectories& t, std::size_t k, const SquaredRa
       triangles.push_back({f->first->vertex((f->second + 1) & 3)->info(),
                            f->first->vertex((f->second + 2) & 3)->info(),
                            f->first->vertex((f->second + 3) & 3)->info()});
-    cost.in_sphere = seconds_per_certificate(
+    time_formula(
         in_sphere,
         [&](const auto& v) { return in_sphere_enclosure(m[v[0]], m[v[1]], m[v[2]], m[v[3]], m[v[4]]); },
-        sink);
-    cost.radius[2] = seconds_per_certificate(
+        cost.build[0], cost.filter[0], sink);
+    time_formula(
         tets,
         [&](const auto& v) { return tetrahedron_radius_enclosure(m[v[0]], m[v[1]], m[v[2]], m[v[3]], P, Q); },
-        sink);
+        cost.build[3], cost.filter[3], sink);
   }
-  cost.radius[0] = seconds_per_certificate(
-      edges, [&](const auto& v) { return edge_radius_enclosure(m[v[0]], m[v[1]], P, Q); }, sink);
-  cost.radius[1] = seconds_per_certificate(
+  time_formula(
+      edges, [&](const auto& v) { return edge_radius_enclosure(m[v[0]], m[v[1]], P, Q); }, cost.build[1],
+      cost.filter[1], sink);
+  time_formula(
       triangles, [&](const auto& v) { return triangle_radius_enclosure(m[v[0]], m[v[1]], m[v[2]], P, Q); },
-      sink);
-  if (sink == 42) // keeps the filter calls from being optimised away
+      cost.build[2], cost.filter[2], sink);
+  if (sink == 42) // keeps the timed calls from being optimised away
     std::fputs("", stdout);
   return cost;
 }
@@ -360,21 +370,21 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
       "at creation, %zu root-cache hits\n",
       s.exact_delaunay, s.exact_radius, s.exact_scheduled, s.invalid_at_creation, s.root_cache_hits);
   if (t.frames() > 1) {
-    const FormulaCosts c = formula_costs(t, (t.frames() - 2) / 2, options.rho2);
-    const double floor = double(s.built_in_sphere) * c.in_sphere + double(s.built_radius[0]) * c.radius[0] +
-                         double(s.built_radius[1]) * c.radius[1] + double(s.built_radius[2]) * c.radius[2];
+    const std::size_t k = (t.frames() - 2) / 2;
+    const FormulaCosts c = formula_costs(t, k, options.rho2);
+    const double floor = c.times(s, c.build), filtered = c.times(s, c.filter);
     const double static_all = static_first + static_total, kinetic_all = timer.initialisation + kinetic_slabs;
-    std::printf("certificate arithmetic floor (enclosure from doubles + first filter, per formula at frame "
-                "%zu): %zu %s at %.0f ns, %zu hull orientations at 0, radius %zu edges at %.0f ns, "
-                "%zu triangles at %.0f ns, %zu tetrahedra at %.0f ns: %.3f s for the run, %.2f of the "
-                "static rebuilds (no change outside the certificate arithmetic can bring the ratio below "
-                "this); the kinetic run takes %.1fx this floor\n",
-                (t.frames() - 2) / 2, s.built_in_sphere, t.dimension == 2 ? "in-circle" : "in-sphere",
-                1e9 * c.in_sphere, s.built_hull, s.built_radius[0], 1e9 * c.radius[0], s.built_radius[1],
-                1e9 * c.radius[1], s.built_radius[2], 1e9 * c.radius[2], floor, floor / static_all,
-                kinetic_all / floor);
-    // What the target leaves for everything else (queue, triangulation, membership, isolation and
-    // narrowing of failure times), per event, against what it costs now.
+    std::printf("certificate arithmetic floor (polynomials enclosed from doubles, timed per formula at frame "
+                "%zu): %zu %s at %.0f ns, %zu hull orientations at 0, radius %zu edges at %.0f ns, %zu "
+                "triangles at %.0f ns, %zu tetrahedra at %.0f ns: %.3f s for the run, %.2f of the static "
+                "rebuilds (no change outside the certificate arithmetic can bring the ratio below this); "
+                "with one Bernstein filter each, %.3f s, %.2f; the kinetic run takes %.1fx the floor\n",
+                k, s.built_in_sphere, t.dimension == 2 ? "in-circle" : "in-sphere", 1e9 * c.build[0],
+                s.built_hull, s.built_radius[0], 1e9 * c.build[1], s.built_radius[1], 1e9 * c.build[2],
+                s.built_radius[2], 1e9 * c.build[3], floor, floor / static_all, filtered,
+                filtered / static_all, kinetic_all / floor);
+    // What the target leaves for everything else (filters, queue, triangulation, membership,
+    // isolation and narrowing of failure times), per event, against what it costs now.
     if (events > 0)
       std::printf("beyond the floor: %.2f us per event now; a ratio of 1 leaves %.2f us per event\n",
                   1e6 * (kinetic_all - floor) / double(events), 1e6 * (static_all - floor) / double(events));
