@@ -1,7 +1,8 @@
 // Kinetic benchmark: the kinetic Delaunay + alpha complex against the snapshot approach a user would
 // otherwise take (CGAL's static Delaunay_triangulation_3 + Fixed_alpha_shape_3 rebuilt at each
 // frame; Delaunay_triangulation_2 + Alpha_shape_2 for planar runs), on the same frames, in one
-// process. Prints per-frame times, their ratio, events per second, the certificate filter hit rate
+// process. Prints per-frame times, their ratio, events per second, the certificate filter hit rate,
+// the certificate arithmetic floor (what the run's certificates cost before any event processing)
 // and peak memory.
 //
 // Usage: kinetic_bench [--csv cells.csv.gz|run-folder --radius R] [--random N --frames F --step S]
