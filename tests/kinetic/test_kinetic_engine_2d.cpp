@@ -4,8 +4,11 @@
 #include "kinetic_test_support.h"
 #include "medusa/kinetic/error.h"
 
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -385,4 +388,57 @@ TEST_CASE(
   REQUIRE(s.double_filter_settled > 0);
   REQUIRE(s.double_isolation_settled > 0);
   REQUIRE(s.flips22 > 0);
+}
+
+TEST_CASE("planar: certificates built at the start are counted by formula as CGAL's triangulation has faces",
+          "[kinetic][engine][2d][statistics]") {
+  // The planar analogue of the 3D case: stationary cells over one slab; every edge of Del(t0+) gets
+  // one Delaunay certificate (in-circle between two finite triangles, orientation otherwise, MATH.md
+  // 3.2 one dimension down) and every frontier simplex one radius certificate (4.4): with rho below
+  // every half edge length the finite edges, with rho above every circumradius the finite triangles.
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Dt = CGAL::Delaunay_triangulation_2<K>;
+  const std::uint64_t seed = 37;
+  CAPTURE(seed);
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> coord(0, 1000);
+  Trajectories t = planar({0, 100});
+  std::vector<K::Point_2> pts;
+  for (int i = 0; i < 40; ++i) {
+    const int x = coord(rng), y = coord(rng);
+    pts.emplace_back(x, y);
+    still(t, i + 1, x, y);
+  }
+  Dt dt(pts.begin(), pts.end());
+  REQUIRE(dt.number_of_vertices() == pts.size());
+  std::size_t finite_pairs = 0, all_edges = 0, finite_edges = 0;
+  for (auto e = dt.all_edges_begin(); e != dt.all_edges_end(); ++e) {
+    ++all_edges;
+    finite_edges += !dt.is_infinite(*e);
+    finite_pairs += !dt.is_infinite(e->first) && !dt.is_infinite(e->first->neighbor(e->second));
+  }
+  REQUIRE(finite_pairs > 0);
+  REQUIRE(all_edges > finite_pairs);
+  const long tiny = 1, huge = 100000000000000L;
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
+    REQUIRE(dt.segment(*e).squared_length() > 4.0 * tiny);
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
+    REQUIRE(CGAL::squared_radius(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) <
+            0.5 * double(huge));
+
+  for (const long rho2 : {tiny, huge}) {
+    CAPTURE(rho2);
+    KineticAlphaComplex engine(t, with_radius(rho2));
+    ReplayObserver obs(engine);
+    engine.run(obs);
+    const KineticStatistics& s = engine.statistics();
+    CHECK(s.built_in_sphere == finite_pairs);
+    CHECK(s.built_hull == all_edges - finite_pairs);
+    const std::array<std::size_t, 3> radius = rho2 == tiny
+                                                  ? std::array<std::size_t, 3>{finite_edges, 0, 0}
+                                                  : std::array<std::size_t, 3>{0, dt.number_of_faces(), 0};
+    CHECK(s.built_radius == radius);
+    CHECK(s.built_in_sphere + s.built_hull + s.built_radius[0] + s.built_radius[1] == s.certificates_built);
+    REQUIRE(obs.mismatches == 0);
+  }
 }
