@@ -46,12 +46,6 @@ struct RunArguments {
   bool audit = false, snap = false, periodic_as_open = false, quiet = false, progress = false;
 };
 
-// Kinetic events: every certificate failure processed (flips, radius events) and every insertion or
-// deletion of a cell at a frame.
-std::uint64_t kinetic_events(const kinetic::KineticStatistics& s) {
-  return s.flips23 + s.flips32 + s.hull_flips + s.radius_events + s.insertions + s.deletions;
-}
-
 // Forwards the event stream to the builder; reports progress and polls for interrupts. It also
 // times the builder (which streams the store) apart from the kinetic engine that calls it.
 // libkinetic reports t_end with the batch index of the last event batch, while the builder wants
@@ -72,19 +66,19 @@ public:
     check_interrupted();
     last_batch_ = std::max(last_batch_, time.batch);
     timed([&] { next_.batch(time, steps); });
-    meter_.update(frames_reached_, kinetic_events(engine_.statistics()));
+    meter_.update(frames_reached_, engine_.statistics().events());
   }
   void frame(std::size_t k, const kinetic::EventTime& time) override {
     check_interrupted();
     timed([&] { next_.frame(k, time); });
     frames_reached_ = k + 1;
     peak_rss_at_frame_.push_back(peak_rss_bytes());
-    meter_.update(frames_reached_, kinetic_events(engine_.statistics()));
+    meter_.update(frames_reached_, engine_.statistics().events());
   }
   void finish(const kinetic::EventTime& t_end) override {
     kinetic::EventTime end = t_end;
     end.batch = std::max(end.batch, last_batch_ + 1);
-    meter_.finish_kinetic(kinetic_events(engine_.statistics()));
+    meter_.finish_kinetic(engine_.statistics().events());
     meter_.stage("medusa store: closing");
     timed([&] { next_.finish(end); });
     peak_rss_at_frame_.push_back(peak_rss_bytes());
@@ -254,12 +248,13 @@ void write_timings(const std::string& path, const RunArguments& args, const io::
     rss[name] = timings.peak_rss_after(name);
   j["peak_rss_bytes_after_stage"] = rss;
   j["peak_rss_bytes_at_frame"] = peak_rss_at_frame;
-  const std::uint64_t events = kinetic_events(stats);
+  const std::uint64_t events = stats.events();
   const double kinetic_seconds = timings.wall("kinetic");
   j["events"] = events;
   j["events_per_second"] = kinetic_seconds > 0 ? static_cast<double>(events) / kinetic_seconds : 0.0;
   j["event_counts"] = {{"flips23", stats.flips23},
                        {"flips32", stats.flips32},
+                       {"flips22", stats.flips22},
                        {"hull_flips", stats.hull_flips},
                        {"radius_events", stats.radius_events},
                        {"insertions", stats.insertions},

@@ -78,9 +78,14 @@ void write_run_summary(std::ostream& out, const complex::Medusa& medusa,
   out << "cells: " << input.cells.size() << " trajectories, frames: " << input.frames() << " (MCS " << mcs(t0)
       << " to " << mcs(t_end) << "), dimension " << input.dimension << "\n"
       << "radius: " << radius_text << " lattice units\n"
-      << "events: " << stats.flips23 + stats.flips32 + stats.hull_flips << " flips (" << stats.flips23
-      << " 2-3, " << stats.flips32 << " 3-2, " << stats.hull_flips << " hull), " << stats.radius_events
-      << " radius events, " << stats.insertions << " insertions, " << stats.deletions << " deletions\n"
+      << "events: " << stats.flips23 + stats.flips32 + stats.flips22 + stats.hull_flips << " flips (";
+  // A planar run flips 2-2, a 3D run 2-3 and 3-2 (the hull flips of either are counted apart).
+  if (input.dimension == 2)
+    out << stats.flips22 << " 2-2, ";
+  else
+    out << stats.flips23 << " 2-3, " << stats.flips32 << " 3-2, ";
+  out << stats.hull_flips << " hull), " << stats.radius_events << " radius events, " << stats.insertions
+      << " insertions, " << stats.deletions << " deletions\n"
       << "medusa cells:";
   for (int k = 0; k <= 4; ++k)
     out << " dim " << k << ": " << medusa.cells_of_dimension(k).size() << (k < 4 ? "," : "\n");

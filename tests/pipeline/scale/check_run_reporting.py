@@ -134,6 +134,35 @@ def check_threads_give_identical_diagrams(medusa, data, work):
             fail(f"{name} differs between --threads 1 and --threads 2")
 
 
+EVENT_KINDS = ["flips23", "flips32", "flips22", "hull_flips", "radius_events", "insertions", "deletions"]
+
+
+def check_planar_run_reports_its_2_2_flips(medusa, data, work):
+    """A planar run flips 2-2: the summary, --timings' events and its event counts all include them."""
+    out = run(medusa, work, [data, "-o", "run.h5", "--radius", "3", "--timings", "t.json"]).stdout
+    print(out)
+    with open(os.path.join(work, "t.json")) as f:
+        t = json.load(f)
+    c = t["event_counts"]
+    print(c)
+    if "dimension 2" not in out:
+        fail("the input is not read as a planar run")
+    if not (c["flips22"] > 0 and c["flips23"] == c["flips32"] == 0):
+        fail(f"expected 2-2 flips only: {c}")
+    if t["events"] != sum(c[k] for k in EVENT_KINDS):
+        fail(f"events {t['events']} is not the sum of {c}")
+    m = re.search(r"events: (\d+) flips \((\d+) 2-2, (\d+) hull\), (\d+) radius events, (\d+) insertions, "
+                  r"(\d+) deletions", out)
+    if not m:
+        fail("no planar events line (flips 2-2 and hull) on stdout")
+    flips, f22, hull, radius, insertions, deletions = (int(x) for x in m.groups())
+    if (f22, hull, radius, insertions, deletions) != (c["flips22"], c["hull_flips"], c["radius_events"],
+                                                      c["insertions"], c["deletions"]):
+        fail(f"summary counts {m.groups()} differ from --timings {c}")
+    if flips != f22 + hull or flips + radius + insertions + deletions != t["events"]:
+        fail(f"summary: {flips} flips is not {f22} + {hull}, or the total is not {t['events']}")
+
+
 def check_timings_file(medusa, data, work):
     # This script holds 256 MiB while medusa runs: Linux carries getrusage's peak across execve, and
     # the peak reported must still be medusa's own (a 3-frame run of 251 cells needs far less).
@@ -166,7 +195,7 @@ def check_timings_file(medusa, data, work):
         fail("no events line on stdout")
     summary_events = sum(int(x) for x in m.groups())
     c = t["event_counts"]
-    parts = c["flips23"] + c["flips32"] + c["hull_flips"] + c["radius_events"] + c["insertions"] + c["deletions"]
+    parts = sum(c[k] for k in EVENT_KINDS)
     if not (t["events"] == parts == summary_events and t["events"] > 0):
         fail(f"events {t['events']}, parts {parts}, summary {summary_events}")
     if t["store"]["bytes"] != os.path.getsize(os.path.join(work, "run.h5")):
@@ -190,6 +219,7 @@ CHECKS = {
     "stdout": check_stdout_same_with_progress,
     "threads": check_threads_give_identical_diagrams,
     "timings": check_timings_file,
+    "planar_events": check_planar_run_reports_its_2_2_flips,
 }
 
 if __name__ == "__main__":

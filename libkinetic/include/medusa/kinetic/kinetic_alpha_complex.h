@@ -61,6 +61,12 @@ struct KineticStatistics {
   std::size_t sign_evaluations = 0, sign_evaluations_exact = 0;
   std::size_t audits = 0, audits_compared_with_cgal = 0;
   std::vector<double> seconds_per_frame;
+
+  // Every certificate failure processed (flips of each kind, radius events) and every insertion or
+  // deletion of a cell at a frame.
+  std::size_t events() const {
+    return flips23 + flips32 + flips22 + hull_flips + radius_events + insertions + deletions;
+  }
 };
 
 class KineticAlphaComplex {
