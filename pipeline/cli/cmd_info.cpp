@@ -28,7 +28,8 @@ void info_command(const std::string& path) {
     std::cout << "MCS: " << input.frame_times.front() << " to " << input.frame_times.back() << "\n";
   std::cout << "batches: " << medusa.batches.size() << "\n"
             << "medusa cells: " << medusa.cells.size() << "\n";
-  for (int k = 0; k <= 4; ++k)
+  // Space-time cells go up to one dimension above space (a 2-3 flip in 3D, a 2-2 flip in the plane).
+  for (int k = 0; k <= input.dimension + 1; ++k)
     std::cout << "  dimension " << k << ": " << medusa.cells_of_dimension(k).size() << "\n";
   const std::vector<int> types = vertex_types(medusa);
   std::cout << "cell types:";

@@ -87,8 +87,9 @@ void write_run_summary(std::ostream& out, const complex::Medusa& medusa,
   out << stats.hull_flips << " hull), " << stats.radius_events << " radius events, " << stats.insertions
       << " insertions, " << stats.deletions << " deletions\n"
       << "medusa cells:";
-  for (int k = 0; k <= 4; ++k)
-    out << " dim " << k << ": " << medusa.cells_of_dimension(k).size() << (k < 4 ? "," : "\n");
+  const int top = input.dimension + 1; // space-time cells go one dimension above space
+  for (int k = 0; k <= top; ++k)
+    out << " dim " << k << ": " << medusa.cells_of_dimension(k).size() << (k < top ? "," : "\n");
   for (const persistence::Diagram& d : diagrams) {
     if (d.direction != persistence::Direction::forward)
       continue;
