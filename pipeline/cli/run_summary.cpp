@@ -18,10 +18,22 @@ std::string mcs(double t) {
 const char* const feature_names[] = {"cluster", "loop", "cavity"};
 const char* const feature_plurals[] = {"clusters", "loops", "cavities"};
 
+// H2 of a planar run's medusa is no cavity of the flat tissue: its space-time lives in R^3, where by
+// MATH.md 7.6's argument for H3 one dimension down every H2 class is a bubble of space-time (a hole
+// that opened inside the tissue and closed again, born when it closes) and none of positive length
+// dies (tests/medusa/test_medusa_2d.cpp checks it on the real 2D run).
+void describe_planar_bubbles(std::ostream& out, const persistence::Diagram& diagram) {
+  std::size_t count = 0;
+  for (const persistence::PersistencePair& p : diagram.pairs)
+    count += p.dim == 2 && !p.zero_length ? 1 : 0;
+  out << "  " << count << (count == 1 ? " space-time bubble" : " space-time bubbles")
+      << " (holes that opened inside the tissue and closed again)\n";
+}
+
 } // namespace
 
-void describe_forward_diagram(std::ostream& out, const persistence::Diagram& diagram, double t0,
-                              double t_end) {
+void describe_forward_diagram(std::ostream& out, const persistence::Diagram& diagram, double t0, double t_end,
+                              int dimension) {
   // Components alive just after t0: born in batch 0 and not killed there (zero-length pairs are
   // killed in their birth batch, MATH.md 7.5). Those alive at the end are the essential classes.
   std::size_t at_start = 0, at_end = 0;
@@ -45,6 +57,10 @@ void describe_forward_diagram(std::ostream& out, const persistence::Diagram& dia
   // without being filled stays one (MATH.md 7.5, 7.6). The longest-lived filled one is the telling
   // feature; essential classes are counted apart.
   for (int k = 1; k <= 2; ++k) {
+    if (k == 2 && dimension == 2) {
+      describe_planar_bubbles(out, diagram);
+      continue;
+    }
     const persistence::PersistencePair* longest = nullptr;
     std::size_t filled = 0, never = 0;
     for (const persistence::PersistencePair& p : diagram.pairs) {
@@ -100,10 +116,11 @@ void write_run_summary(std::ostream& out, const complex::Medusa& medusa,
       const std::string name = index < input.type_names.size() ? input.type_names[index] : "";
       out << "type " << d.cell_type << (name.empty() ? "" : " (" + name + ")") << ":\n";
     }
-    describe_forward_diagram(out, d, t0, t_end);
+    describe_forward_diagram(out, d, t0, t_end, input.dimension);
   }
-  out << "(forward filtration; \"never filled\" counts loops and cavities that no cells ever filled, "
-         "including those that broke open instead: see README, Reading the summary)\n";
+  out << "(forward filtration; \"never filled\" counts loops" << (input.dimension == 2 ? "" : " and cavities")
+      << " that no cells ever filled, including those that broke open instead: see README, Reading the "
+         "summary)\n";
 }
 
 } // namespace medusa::cli

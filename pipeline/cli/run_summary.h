@@ -16,8 +16,9 @@ void write_run_summary(std::ostream& out, const complex::Medusa& medusa,
                        const kinetic::KineticStatistics& stats,
                        const std::vector<persistence::Diagram>& diagrams, const std::string& radius_text);
 
-// One line per degree H0..H2 of a forward diagram in plain words.
-void describe_forward_diagram(std::ostream& out, const persistence::Diagram& diagram, double t0,
-                              double t_end);
+// One line per degree H0..H2 of a forward diagram in plain words; `dimension` is the run's (2 or 3):
+// H2 is a cavity of the tissue in 3D, a bubble of space-time in the plane.
+void describe_forward_diagram(std::ostream& out, const persistence::Diagram& diagram, double t0, double t_end,
+                              int dimension);
 
 } // namespace medusa::cli

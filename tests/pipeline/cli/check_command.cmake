@@ -1,6 +1,6 @@
 # Runs one command and checks its exit code and output (GUDHI-style CLI tests).
 #   cmake -DCOMMAND=<;-list> -DEXPECT_CODE=<n> [-DWORKDIR=dir] [-DSTDOUT_REGEX=re;...]
-#         [-DSTDERR_REGEX=re] [-DONE_STDERR_LINE=ON] [-DEVERY_STDOUT_LINE=re] [-DEXPECT_FILES=f;...]
+#         [-DSTDOUT_NOT_REGEX=re;...] [-DSTDERR_REGEX=re] [-DONE_STDERR_LINE=ON] [-DEVERY_STDOUT_LINE=re] [-DEXPECT_FILES=f;...]
 #         -P check_command.cmake
 cmake_minimum_required(VERSION 3.18)
 if(NOT WORKDIR)
@@ -17,6 +17,11 @@ endif()
 foreach(re IN LISTS STDOUT_REGEX)
   if(NOT out MATCHES "${re}")
     message(FATAL_ERROR "stdout does not match '${re}'")
+  endif()
+endforeach()
+foreach(re IN LISTS STDOUT_NOT_REGEX)
+  if(out MATCHES "${re}")
+    message(FATAL_ERROR "stdout matches '${re}'")
   endif()
 endforeach()
 if(DEFINED STDERR_REGEX AND NOT err MATCHES "${STDERR_REGEX}")
