@@ -4,7 +4,10 @@
 
 #include "medusa/kinetic/kinetic_alpha_complex.h"
 
+#include <catch2/catch.hpp>
+
 #include <algorithm>
+#include <array>
 #include <random>
 #include <set>
 #include <vector>
@@ -170,6 +173,27 @@ inline Trajectories cocircular_burst() {
         {i + 1, 1 + i % 2, 0, {{c[i][0] * s0, c[i][1] * s0, 0}, {c[i][0] * s1, c[i][1] * s1, 0}}});
   }
   return t;
+}
+
+// Certificates built by formula: in-sphere (in-circle), hull orientation, edge, triangle and
+// tetrahedron radius (KineticStatistics::built_*).
+using FormulaCounts = std::array<std::size_t, 5>;
+
+// Runs the engine on t with rho^2 = rho2 and the audit on, replaying its stream, and returns the
+// certificates it built by formula; they must add up to certificates_built.
+inline FormulaCounts built_by_formula(const Trajectories& t, long rho2) {
+  KineticOptions options;
+  options.rho2.num = rho2;
+  options.audit = true;
+  KineticAlphaComplex engine(t, options);
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  REQUIRE(obs.mismatches == 0);
+  const KineticStatistics& s = engine.statistics();
+  const FormulaCounts counts{s.built_in_sphere, s.built_hull, s.built_radius[0], s.built_radius[1],
+                             s.built_radius[2]};
+  REQUIRE(counts[0] + counts[1] + counts[2] + counts[3] + counts[4] == s.certificates_built);
+  return counts;
 }
 
 } // namespace medusa::kinetic::testing

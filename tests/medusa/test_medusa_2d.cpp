@@ -29,6 +29,13 @@ complex::Medusa stored(const kinetic::Trajectories& t, const std::string& radius
   return m;
 }
 
+// The real 2D CompuCell3D run (193 cells, 20 frames), from its CSV.
+kinetic::Trajectories real_2d_run() {
+  io::RunOptions options;
+  options.source = io::RunSource::csv;
+  return io::read_run(std::string(MEDUSA_TEST_DATA) + "/cc3d/sorting_2d", options).trajectories;
+}
+
 void check_euler(const complex::Medusa& m) {
   long long chi = 0;
   for (const complex::Cell& c : m.cells)
@@ -78,11 +85,7 @@ TEST_CASE("a 2-2 flip of four cocircular cells with R_S <= rho adds an instant 3
 
 TEST_CASE("the medusa of the real 2D sorting run records dimension 2 and passes the validators",
           "[medusa][kinetic][2d][cc3d]") {
-  io::RunOptions options;
-  options.source = io::RunSource::csv;
-  const kinetic::Trajectories all =
-      io::read_run(std::string(MEDUSA_TEST_DATA) + "/cc3d/sorting_2d", options).trajectories;
-  const kinetic::Trajectories t = first_frames(all, 6);
+  const kinetic::Trajectories t = first_frames(real_2d_run(), 6);
   REQUIRE(t.dimension == 2);
   const complex::Medusa m = stored(t, "3", kinetic::squared_radius_from_decimal("3", t.scale), "sorting2d");
   REQUIRE(m.input.dimension == 2);
@@ -112,12 +115,10 @@ TEST_CASE("in a planar run's forward filtration every finite H2 class has zero l
   // cells are added, so a class of positive length never dies: H2 classes are bubbles of space-time
   // (a hole that opened inside the tissue and closed again, born when it closes), all essential or
   // on the diagonal. The summary of `medusa run` names them so (run_summary.cpp).
-  io::RunOptions options;
-  options.source = io::RunSource::csv;
-  const kinetic::Trajectories t =
-      io::read_run(std::string(MEDUSA_TEST_DATA) + "/cc3d/sorting_2d", options).trajectories;
+  const kinetic::Trajectories t = real_2d_run();
   REQUIRE(t.dimension == 2);
-  const complex::Medusa m = stored(t, "3", kinetic::squared_radius_from_decimal("3", t.scale), "sorting2d_h2");
+  const complex::Medusa m =
+      stored(t, "3", kinetic::squared_radius_from_decimal("3", t.scale), "sorting2d_h2");
   const persistence::Filtration f = persistence::make_filtration(m.cells, persistence::Direction::forward);
   const persistence::Diagram d = persistence::compute_diagram(m.cells, f);
   std::size_t essential = 0, finite = 0, positive = 0;
