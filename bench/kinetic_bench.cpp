@@ -367,8 +367,10 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
               s.sign_evaluations ? 100.0 * s.sign_evaluations_exact / s.sign_evaluations : 0.0);
   std::printf(
       "exact certificates: %zu Delaunay, %zu radius; %zu with a failure time in the slab, %zu invalid "
-      "at creation, %zu root-cache hits\n",
-      s.exact_delaunay, s.exact_radius, s.exact_scheduled, s.invalid_at_creation, s.root_cache_hits);
+      "at creation, %zu root-cache hits; event times not told apart by their isolating intervals: %zu "
+      "given their exact polynomial rounded to intervals, %zu compared as algebraic reals\n",
+      s.exact_delaunay, s.exact_radius, s.exact_scheduled, s.invalid_at_creation, s.root_cache_hits,
+      s.times_sharpened, s.times_compared_algebraically);
   if (t.frames() > 1) {
     const std::size_t k = (t.frames() - 2) / 2;
     const FormulaCosts c = formula_costs(t, k, options.rho2);

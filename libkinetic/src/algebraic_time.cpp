@@ -92,7 +92,7 @@ const AlgebraicReal& SlabTime::algebraic() const {
   // The exact root: the square-free part of the polynomial keeps the simple root, the only one in
   // the open interval (lo, hi), where the polynomial does not vanish at either end.
   using Traits = CGAL::Polynomial_traits_d<ExactPoly>;
-  ExactPoly f = Traits::Make_square_free()(root_->exact());
+  ExactPoly f = Traits::Make_square_free()(root_->exact_polynomial());
   root_->algebraic = AlgebraicReal(f, Rational(root_->lo), Rational(root_->hi));
   a_ = std::make_shared<AlgebraicReal>(*root_->algebraic);
   return *a_;
@@ -119,7 +119,8 @@ void SlabTime::enclosure(double& lo, double& hi) const {
 bool SlabTime::refine_once() const {
   if (!root_ || root_->lo == root_->hi)
     return false;
-  return refine_root(root_->enclosure, root_->lo, root_->hi, root_->sign_lo) != Refinement::stuck;
+  return refine_root(root_->bisection_polynomial(), root_->lo, root_->hi, root_->sign_lo) !=
+         Refinement::stuck;
 }
 
 void SlabTime::sharpen(const IntervalPoly& tighter) const {
@@ -129,11 +130,40 @@ void SlabTime::sharpen(const IntervalPoly& tighter) const {
   }
 }
 
+namespace {
+thread_local TimeComparisonCounts comparison_counts;
+} // namespace
+
+TimeComparisonCounts time_comparison_counts() { return comparison_counts; }
+
+bool SlabTime::sharpen_from_exact() const {
+  if (!root_ || root_->sharp || root_->lo == root_->hi)
+    return false;
+  // exact() is the polynomial up to a non-zero factor, with u^m divided out: the same roots in
+  // (0, 1]. Its sign at lo (or, opposite, at hi) orients it like the enclosure: the polynomial does
+  // not vanish at either end, so its rounding usually certifies one of them. At u = 0 the division by
+  // u^m may change the sign, so lo = 0 is not used.
+  const ExactPoly& p = root_->exact_polynomial();
+  IntervalPoly t = IntervalPoly::zero_of_degree(p.degree());
+  for (int i = 0; i <= p.degree(); ++i) {
+    const std::pair<double, double> c = CGAL::to_interval(p[i]);
+    t[i] = Interval(c.first, c.second);
+  }
+  int s = root_->lo > 0.0 ? certified_sign(value_at_point(t, root_->lo)) : 0;
+  if (s == 0)
+    s = -certified_sign(value_at_point(t, root_->hi));
+  if (s == 0)
+    return false;
+  root_->sharp = std::make_unique<const IntervalPoly>(s == root_->sign_lo ? t : -t);
+  ++comparison_counts.sharpened;
+  return true;
+}
+
 void SlabTime::tighten() const {
   if (!root_ || root_->lo == root_->hi)
     return;
   CGAL::Protect_FPU_rounding<true> guard;
-  narrow_root(root_->enclosure, root_->lo, root_->hi, root_->sign_lo, 0.0);
+  narrow_root(root_->bisection_polynomial(), root_->lo, root_->hi, root_->sign_lo, 0.0);
 }
 
 int compare(const SlabTime& x, const SlabTime& y) {
@@ -177,12 +207,15 @@ int compare(const SlabTime& x, const SlabTime& y) {
       const bool x_first = (xh - xl) >= (yh - yl);
       const SlabTime& a = x_first ? x : y;
       const SlabTime& b = x_first ? y : x;
-      if (!a.refine_once() && !b.refine_once())
+      // Stuck in doubles: go on with the exact polynomials rounded to intervals before turning to
+      // algebraic reals.
+      if (!a.refine_once() && !b.refine_once() && !a.sharpen_from_exact() && !b.sharpen_from_exact())
         break;
       if (const int order = separated(); order != 0)
         return order;
     }
   }
+  ++comparison_counts.algebraic;
   const AlgebraicReal& a = x.algebraic();
   const AlgebraicReal& b = y.algebraic();
   return a < b ? -1 : (b < a ? 1 : 0);

@@ -60,6 +60,7 @@ void Engine::run(Observer& observer) {
   if (dim == 2)
     check_planar();
   auto clock = std::chrono::steady_clock::now();
+  const TimeComparisonCounts comparisons_before = time_comparison_counts();
   initialise(observer);
   for (std::size_t k = 0; k + 1 < traj.frames(); ++k) {
     frame(observer, k);
@@ -68,6 +69,9 @@ void Engine::run(Observer& observer) {
     stats.seconds_per_frame.push_back(std::chrono::duration<double>(t - clock).count());
     clock = t;
   }
+  const TimeComparisonCounts comparisons_after = time_comparison_counts();
+  stats.times_sharpened = comparisons_after.sharpened - comparisons_before.sharpened;
+  stats.times_compared_algebraically = comparisons_after.algebraic - comparisons_before.algebraic;
   // t_end: the reported state is K(t_end-) (MATH.md conventions).
   slab = traj.frames() - 1;
   now = SlabTime();

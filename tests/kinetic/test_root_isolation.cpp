@@ -119,7 +119,9 @@ TEST_CASE("times isolated in doubles compare exactly, equal roots of different p
   // them, so the comparison goes exact and answers equal.
   SlabTime a = isolated_time({-1, 0, 2});
   SlabTime b = isolated_time({-3, 0, 6});
+  const TimeComparisonCounts before = time_comparison_counts();
   REQUIRE(compare(a, b) == 0);
+  REQUIRE(time_comparison_counts().algebraic - before.algebraic == 1);
   REQUIRE(a == b);
   // 1/sqrt(2) < 0.7072 = 884/1250 and > 0.7071; against rationals and another root (4u^2 - 2u - 1 has
   // the root (1 + sqrt(5)) / 4 ~ 0.809).
@@ -130,6 +132,48 @@ TEST_CASE("times isolated in doubles compare exactly, equal roots of different p
   REQUIRE(!(c < a));
   // The exact value agrees with CGAL's isolation of the same polynomial.
   REQUIRE(CGAL::to_double(a.algebraic()) == Approx(std::sqrt(0.5)).epsilon(1e-15));
+}
+
+TEST_CASE("roots whose wide enclosures leave bisection stuck are told apart on the exact polynomial "
+          "rounded to intervals, without algebraic reals",
+          "[kinetic][isolation]") {
+  // 10^6 u - 371001 and 10^6 u - 371002: roots 0.371001 < 0.371002. Their enclosures, as if from
+  // plain doubles, are widened by 5000 on each coefficient, so neither sign is certified on
+  // [0.3640, 0.3780] and bisection of the isolating intervals (0.3, 0.45) is stuck at once. Each
+  // exact polynomial is asked for once (the rounding to intervals), and no algebraic real is built.
+  int requests = 0;
+  auto make = [&](long c0) {
+    auto root = make_isolated_root([c0, &requests] {
+      ++requests;
+      return to_exact_poly(exact_poly({c0, 1000000}));
+    });
+    root->enclosure = IntervalPoly{Interval(static_cast<double>(c0) - 5000, static_cast<double>(c0) + 5000),
+                                   Interval(1000000 - 5000, 1000000 + 5000)};
+    root->wide = true;
+    root->lo = 0.3;
+    root->hi = 0.45;
+    root->sign_lo = -1;
+    return SlabTime(root);
+  };
+  SlabTime a = make(-371001), b = make(-371002);
+  const TimeComparisonCounts before = time_comparison_counts();
+  REQUIRE(compare(a, b) == -1);
+  REQUIRE(compare(b, a) == 1);
+  CHECK(requests == 2);
+  REQUIRE(time_comparison_counts().sharpened - before.sharpened == 2);
+  REQUIRE(time_comparison_counts().algebraic == before.algebraic);
+  REQUIRE_FALSE(a.isolated()->algebraic.has_value());
+  REQUIRE_FALSE(b.isolated()->algebraic.has_value());
+  REQUIRE(a.isolated()->sharp != nullptr);
+  REQUIRE(b.isolated()->sharp != nullptr);
+  // The sharpened enclosures still isolate the roots: both ends bracket them.
+  double lo, hi;
+  a.enclosure(lo, hi);
+  REQUIRE(lo < 0.371001);
+  REQUIRE(0.371001 < hi);
+  b.enclosure(lo, hi);
+  REQUIRE(lo < 0.371002);
+  REQUIRE(0.371002 < hi);
 }
 
 TEST_CASE("isolated times of random quadratics order as their exact roots do", "[kinetic][isolation]") {

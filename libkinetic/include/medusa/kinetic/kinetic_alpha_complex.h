@@ -59,6 +59,9 @@ struct KineticStatistics {
   std::size_t invalid_at_creation = 0;              // of which were invalid just after creation
   std::size_t root_cache_hits = 0; // exact certificates whose roots came from the slab's cache
   std::size_t sign_evaluations = 0, sign_evaluations_exact = 0;
+  // Event times whose isolating intervals overlapped and stayed stuck in doubles (MATH.md 3.7): roots
+  // given their exact polynomial rounded to intervals, and comparisons left to algebraic reals.
+  std::size_t times_sharpened = 0, times_compared_algebraically = 0;
   std::size_t audits = 0, audits_compared_with_cgal = 0;
   std::vector<double> seconds_per_frame;
 
