@@ -94,7 +94,7 @@ void write_run_summary(std::ostream& out, const complex::Medusa& medusa,
   out << "cells: " << input.cells.size() << " trajectories, frames: " << input.frames() << " (MCS " << mcs(t0)
       << " to " << mcs(t_end) << "), dimension " << input.dimension << "\n"
       << "radius: " << radius_text << " lattice units\n"
-      << "events: " << stats.flips23 + stats.flips32 + stats.flips22 + stats.hull_flips << " flips (";
+      << "events: " << stats.flips() << " flips (";
   // A planar run flips 2-2, a 3D run 2-3 and 3-2 (the hull flips of either are counted apart).
   if (input.dimension == 2)
     out << stats.flips22 << " 2-2, ";

@@ -490,17 +490,10 @@ TEST_CASE("certificates built at the start are counted by formula as CGAL's tria
   using Dt = CGAL::Delaunay_triangulation_3<K>;
   const std::uint64_t seed = 31;
   CAPTURE(seed);
-  std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> coord(0, 1000);
-  Trajectories t;
-  t.scale = 1;
-  t.frame_times = {0, 100};
+  const Trajectories t = testing::random_walk(seed, 40, 2, 1000, 0); // step 0: still
   std::vector<K::Point_3> pts;
-  for (int i = 0; i < 40; ++i) {
-    GridPoint p{coord(rng), coord(rng), coord(rng)};
-    pts.emplace_back(double(p[0]), double(p[1]), double(p[2]));
-    t.cells.push_back({i + 1, 1, 0, {p, p}});
-  }
+  for (const Trajectory& c : t.cells)
+    pts.emplace_back(double(c.at(0)[0]), double(c.at(0)[1]), double(c.at(0)[2]));
   Dt dt(pts.begin(), pts.end());
   REQUIRE(dt.number_of_vertices() == pts.size());
   std::size_t finite_pairs = 0, all_facets = 0;

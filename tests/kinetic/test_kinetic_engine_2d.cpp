@@ -402,15 +402,10 @@ TEST_CASE("planar: certificates built at the start are counted by formula as CGA
   using Dt = CGAL::Delaunay_triangulation_2<K>;
   const std::uint64_t seed = 37;
   CAPTURE(seed);
-  std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> coord(0, 1000);
-  Trajectories t = planar({0, 100});
+  const Trajectories t = testing::random_walk_2d(seed, 40, 2, 1000, 0); // step 0: still
   std::vector<K::Point_2> pts;
-  for (int i = 0; i < 40; ++i) {
-    const int x = coord(rng), y = coord(rng);
-    pts.emplace_back(x, y);
-    still(t, i + 1, x, y);
-  }
+  for (const Trajectory& c : t.cells)
+    pts.emplace_back(double(c.at(0)[0]), double(c.at(0)[1]));
   Dt dt(pts.begin(), pts.end());
   REQUIRE(dt.number_of_vertices() == pts.size());
   std::size_t finite_pairs = 0, all_edges = 0, finite_edges = 0;

@@ -65,11 +65,11 @@ struct KineticStatistics {
   std::size_t audits = 0, audits_compared_with_cgal = 0;
   std::vector<double> seconds_per_frame;
 
+  // Flips of every kind (2-3 and 3-2 in 3D, 2-2 in the plane, hull flips in either).
+  std::size_t flips() const { return flips23 + flips32 + flips22 + hull_flips; }
   // Every certificate failure processed (flips of each kind, radius events) and every insertion or
   // deletion of a cell at a frame.
-  std::size_t events() const {
-    return flips23 + flips32 + flips22 + hull_flips + radius_events + insertions + deletions;
-  }
+  std::size_t events() const { return flips() + radius_events + insertions + deletions; }
 };
 
 class KineticAlphaComplex {
