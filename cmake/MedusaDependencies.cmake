@@ -10,6 +10,15 @@ endmacro()
 
 find_package(CGAL QUIET)
 medusa_require(CGAL_FOUND libcgal-dev "CGAL 5.5")
+# CGAL as medusa uses it. CGAL_NO_CORE: with GMP present, CGAL 5.5 enables its header-only CORE
+# library, and <CGAL/Polynomial.h> (through the default Arithmetic_kernel) then compiles CORE's
+# non-template inline functions and vtables into every translation unit, about half of each one's
+# compile time. medusa never uses CORE: its exact types are GMP's (Gmpz, mpq_class, Mpzf), whose
+# selection does not depend on CORE (CGAL/Number_types/internal/Exact_type_selector.h). One
+# definition for every target, since it changes CGAL::Arithmetic_kernel.
+add_library(medusa_cgal INTERFACE)
+target_link_libraries(medusa_cgal INTERFACE CGAL::CGAL)
+target_compile_definitions(medusa_cgal INTERFACE CGAL_NO_CORE=1)
 
 find_path(GMPXX_INCLUDE_DIR gmpxx.h)
 find_library(GMPXX_LIBRARY gmpxx)
