@@ -37,4 +37,24 @@ std::vector<Simplex> delaunay_at(int dim, const StaticInput& input, const CGAL::
 std::vector<Simplex> static_alpha_complex(int dim, const StaticInput& input, const CGAL::Gmpq& u,
                                           const CGAL::Gmpq& rho2, std::vector<Simplex>& tets);
 
+// The same per dimension D = dim, specialised in static_delaunay_2.cpp and static_delaunay_3.cpp (the
+// functions above choose the points and dispatch): Delaunay top simplices of the points 2^k a + b
+// (exact in doubles), of the points a + u b exactly, and the alpha complex at u.
+template <int D> std::vector<Simplex> delaunay_of_scaled(const StaticInput& input, int k, int& dimension);
+template <int D>
+std::vector<Simplex> delaunay_of_exact(const StaticInput& input, const CGAL::Gmpq& u, int& dimension);
+template <int D>
+std::vector<Simplex> alpha_complex_of_exact(const StaticInput& input, const CGAL::Gmpq& u,
+                                            const CGAL::Gmpq& rho2, std::vector<Simplex>& tops);
+template <> std::vector<Simplex> delaunay_of_scaled<2>(const StaticInput&, int, int&);
+template <> std::vector<Simplex> delaunay_of_scaled<3>(const StaticInput&, int, int&);
+template <> std::vector<Simplex> delaunay_of_exact<2>(const StaticInput&, const CGAL::Gmpq&, int&);
+template <> std::vector<Simplex> delaunay_of_exact<3>(const StaticInput&, const CGAL::Gmpq&, int&);
+template <>
+std::vector<Simplex> alpha_complex_of_exact<2>(const StaticInput&, const CGAL::Gmpq&, const CGAL::Gmpq&,
+                                               std::vector<Simplex>&);
+template <>
+std::vector<Simplex> alpha_complex_of_exact<3>(const StaticInput&, const CGAL::Gmpq&, const CGAL::Gmpq&,
+                                               std::vector<Simplex>&);
+
 } // namespace medusa::kinetic::detail
