@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <initializer_list>
 #include <ostream>
@@ -56,10 +57,14 @@ public:
     return s;
   }
 
-  // Unused slots hold -1, so the four entries decide (spelled out: hash tables compare keys often).
+  // Unused slots hold -1, so the four entries decide. Compared as two 64-bit words without a branch
+  // between them: hash tables and the triangulation's incident lists compare keys often, and entries
+  // that differ in a late vertex made the chain of four tests mispredict.
   friend bool operator==(const Simplex& a, const Simplex& b) {
-    return a.size_ == b.size_ && a.v_[0] == b.v_[0] && a.v_[1] == b.v_[1] && a.v_[2] == b.v_[2] &&
-           a.v_[3] == b.v_[3];
+    std::uint64_t x[2], y[2];
+    std::memcpy(x, a.v_.data(), sizeof x);
+    std::memcpy(y, b.v_.data(), sizeof y);
+    return ((x[0] ^ y[0]) | (x[1] ^ y[1]) | std::uint64_t(a.size_ ^ b.size_)) == 0;
   }
   friend bool operator!=(const Simplex& a, const Simplex& b) { return !(a == b); }
   // Order by dimension, then lexicographically: the canonical order of MATH.md 5.2 and 7.2.
@@ -93,6 +98,8 @@ private:
 
   std::array<VertexId, 4> v_{{-1, -1, -1, -1}};
   std::uint8_t size_ = 0;
+  static_assert(sizeof(std::array<VertexId, 4>) == 2 * sizeof(std::uint64_t),
+                "operator== reads v_ as two words");
 };
 
 struct SimplexHash {
