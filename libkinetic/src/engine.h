@@ -353,7 +353,7 @@ struct Engine {
 
   void flip(const Simplex& facet, std::vector<Step>& steps);
   void repair(std::vector<Step>& steps);
-  bool flippable_2(const Simplex& facet);
+  bool flippable(const Simplex& facet);
   void resolve_delaunay(std::vector<Step>& steps);
   void resolve_radius(Step& settle, OldMembership& old_k);
 

@@ -79,65 +79,129 @@ void Engine::repair(std::vector<Step>& steps) {
   steps.push_back(std::move(step));
 }
 
-// Whether the 2-2 flip of a failed edge yields a triangulation at now+ (MATH.md 5.2 step 2, "if its
-// configuration is flippable"): the new edge pq must not exist yet (a vertex of degree 3 cannot lose
-// an edge by a flip), a finite quadrilateral xpyq must be strictly convex (x and y strictly on either
-// side of pq just after now), and a new finite triangle of a hull flip must not stay flat. A failed
-// certificate in generic motion always passes; simultaneous degenerate failures may not.
-bool Engine::flippable_2(const Simplex& facet) {
+// Whether the elementary flip of a failed facet yields a triangulation at now+ (MATH.md 5.2 step 2,
+// "if its configuration is flippable"). A failed certificate in generic motion always passes;
+// simultaneous degenerate failures (six or more cospherical points, an edge of degree four, a cycle
+// of flips) may not, and step 3 then asks for a static repair.
+bool Engine::flippable(const Simplex& facet) {
   const detail::Triangulation::Apices* ap = tri.apices(facet);
-  VertexId p = ap->v[0], q = ap->v[1];
-  if (tri.apices(Simplex{p, q}) != nullptr)
-    return false;
-  if (is_finite(facet) && p != infinite_vertex && q != infinite_vertex) {
-    auto side = [&](VertexId x) {
-      return sign_plus_now(
-          [&](auto tag) { return certificate::orientation_2<decltype(tag)>(pt(p), pt(q), pt(x)); });
+  const VertexId p = ap->v[0], q = ap->v[1];
+  if (dim == 2) {
+    // 2-2: the new edge pq must not exist yet (a vertex of degree 3 cannot lose an edge by a flip),
+    // and a finite quadrilateral xpyq must be strictly convex (x and y strictly on either side of pq).
+    if (tri.apices(Simplex{p, q}) != nullptr)
+      return false;
+    if (is_finite(facet) && p != infinite_vertex && q != infinite_vertex) {
+      auto side = [&](VertexId x) {
+        return sign_plus_now(
+            [&](auto tag) { return certificate::orientation_2<decltype(tag)>(pt(p), pt(q), pt(x)); });
+      };
+      return side(facet[0]) * side(facet[1]) < 0;
+    }
+  } else if (is_finite(facet) && p != infinite_vertex && q != infinite_vertex) {
+    // 2-3: the segment pq crosses the triangle's interior; 3-2 (the edge e0e1 of the facet has the
+    // third tetrahedron e0 e1 p q): the edge crosses the triangle z p q of its ring. A line ab crosses
+    // a triangle xyz (whose plane separates a and b, as it does here) iff orient(a, b, x, y),
+    // orient(a, b, y, z) and orient(a, b, z, x) have one sign, none zero.
+    auto crosses = [&](VertexId a, VertexId b, VertexId x, VertexId y, VertexId z) {
+      auto side = [&](VertexId u, VertexId v) {
+        {
+          // At now's enclosure first: in generic motion no four of the group are coplanar at now.
+          CGAL::Protect_FPU_rounding<true> guard;
+          const auto at = points_at_now();
+          const Interval o = certificate::orientation<Interval>(at(a), at(b), at(u), at(v))[0];
+          if (o.inf() > 0 || o.sup() < 0) {
+            ++stats.sign_evaluations;
+            return o.inf() > 0 ? 1 : -1;
+          }
+        }
+        return sign_plus_now(
+            [&](auto tag) { return certificate::orientation<decltype(tag)>(pt(a), pt(b), pt(u), pt(v)); });
+      };
+      const int s = side(x, y);
+      return s != 0 && side(y, z) == s && side(z, x) == s;
     };
-    return side(facet[0]) * side(facet[1]) < 0;
+    const FlipChange change = flip_change(dim, facet, p, q, tri);
+    if (!change.three_two)
+      return crosses(p, q, facet[0], facet[1], facet[2]);
+    // flip_change gives the 3-2 flip's new tetrahedra as z p q e0 and z p q e1.
+    const Simplex& t0 = change.added[0];
+    const Simplex& t1 = change.added[1];
+    VertexId e0 = -2, e1 = -2, z = -2;
+    for (VertexId v : t0)
+      if (!t1.contains(v))
+        e0 = v;
+    for (VertexId v : t1)
+      if (!t0.contains(v))
+        e1 = v;
+    for (VertexId v : facet)
+      if (v != e0 && v != e1)
+        z = v;
+    return crosses(e0, e1, z, p, q);
   }
-  for (const Simplex& t : flip_change(dim, facet, p, q, tri).added)
+  // A hull flip. Around the infinite vertex the orientations above do not decide, so first the
+  // combinatorics: the flip must not create a simplex that is there already (a 2-3 flip's edge pq,
+  // a 3-2 flip's triangle z p q), which simultaneous failures on a flat hull (a lattice) can set up;
+  // then its new finite top simplices must not stay flat.
+  const FlipChange change = flip_change(dim, facet, p, q, tri);
+  if (dim == 3) {
+    if (!change.three_two && tri.contains_face(Simplex{p, q}))
+      return false;
+    if (change.three_two) {
+      const Simplex& t0 = change.added[0];
+      const Simplex& t1 = change.added[1];
+      std::array<VertexId, 3> shared{};
+      std::size_t k = 0;
+      for (VertexId v : t0)
+        if (t1.contains(v) && k < shared.size())
+          shared[k++] = v;
+      if (k == 3 && tri.apices(Simplex{shared[0], shared[1], shared[2]}) != nullptr)
+        return false;
+    }
+  }
+  for (const Simplex& t : change.added)
     if (is_finite(t) && orientation_sign_plus(t) == 0)
       return false;
   return true;
 }
 
 void Engine::resolve_delaunay(std::vector<Step>& steps) {
-  std::size_t guard = 0;
+  // A batch of simultaneous degenerate failures can cycle through flips (MATH.md 5.2 step 3, "a cycle
+  // of flips"): past this many elementary flips in one batch, a static repair settles it.
   const std::size_t limit = 20 * traj.cells.size() + 1000;
+  std::size_t flips_in_batch = 0, repairs_in_batch = 0;
   while (!pending_delaunay.empty()) {
-    if (++guard > limit) {
-      std::ostringstream os;
-      os << "no progress resolving degenerate Delaunay events in slab " << slab << " at u ~ " << now.approx();
-      throw InternalError(os.str());
-    }
-    if (dim == 2) {
-      // The first flippable failure in canonical order; a static repair when none is (MATH.md 5.2
-      // steps 2 and 3).
-      bool flipped = false;
+    // The first flippable failure in canonical order; a static repair when none is, or when the
+    // flips do not converge (MATH.md 5.2 steps 2 and 3).
+    bool flipped = false;
+    if (flips_in_batch < limit)
       for (auto it = pending_delaunay.begin(); it != pending_delaunay.end();) {
         auto [facet, id] = *it;
         if (!certs[static_cast<std::size_t>(id)].alive || certs[static_cast<std::size_t>(id)].key != facet) {
           it = pending_delaunay.erase(it);
           continue;
         }
-        if (flippable_2(facet)) {
+        if (flippable(facet)) {
           pending_delaunay.erase(it);
           flip(facet, steps);
+          ++flips_in_batch;
           flipped = true;
           break;
         }
         ++it;
       }
-      if (!flipped && !pending_delaunay.empty())
-        repair(steps);
+    if (flipped || pending_delaunay.empty())
       continue;
+    // A repair gives Del(now+) (MATH.md 5.4), so failures left after it can only be those its
+    // rational stand-in for now+ (rational_before_next_event) settled differently; a few more rounds
+    // of flips settle them, and more than that is a bug.
+    if (++repairs_in_batch > 3) {
+      std::ostringstream os;
+      os << "no progress resolving degenerate Delaunay events in slab " << slab << " at u ~ " << now.approx();
+      throw InternalError(os.str());
     }
-    auto [facet, id] = *pending_delaunay.begin();
-    pending_delaunay.erase(pending_delaunay.begin());
-    if (!certs[static_cast<std::size_t>(id)].alive || certs[static_cast<std::size_t>(id)].key != facet)
-      continue;
-    flip(facet, steps);
+    repair(steps);
+    flips_in_batch = 0;
   }
 }
 

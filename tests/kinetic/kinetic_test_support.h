@@ -196,4 +196,47 @@ inline FormulaCounts built_by_formula(const Trajectories& t, long rho2) {
   return counts;
 }
 
+// A dense walk on a coarse integer lattice, with births and deaths: the stress input behind the
+// "dense lattice" regression tests. From the seed alone: 3D (two seeds in three) or planar, up to
+// 42 cells (3D) or 67 (2D) in a box a few lattice steps wide (at most a third of its sites taken),
+// steps of 0-2, about a tenth of the cells born at a later frame and a tenth dying early, rho between
+// 0.5 and 4.4 and an audit stride of 1-6. Many cells are cospherical, coplanar or at exactly rho at
+// once, and events coincide with frames. Returns false for a seed whose box is too small for its
+// cells (nothing generated).
+struct DenseLatticeRun {
+  bool two_d = false;
+  int n = 0, frames = 0, box = 0, step = 0;
+  Trajectories trajectories;
+  KineticOptions options;
+};
+inline bool dense_lattice_run(std::uint64_t seed, DenseLatticeRun& run) {
+  std::mt19937_64 rng(seed * 7919);
+  run.two_d = rng() % 3 == 0;
+  run.n = 8 + int(rng() % (run.two_d ? 60 : 35));
+  run.frames = 3 + int(rng() % 6);
+  run.box = 3 + int(rng() % 12);
+  run.step = int(rng() % 3);
+  if (run.two_d && run.n > (2 * run.box + 1) * (2 * run.box + 1) / 3)
+    return false;
+  if (!run.two_d && run.n > (run.box + 1) * (run.box + 1) * (run.box + 1) / 3)
+    return false;
+  run.trajectories = run.two_d ? random_walk_2d(seed, run.n, run.frames, run.box * 2, std::max(run.step, 1))
+                               : random_walk(seed, run.n, run.frames, run.box, run.step);
+  for (Trajectory& c : run.trajectories.cells) {
+    const unsigned r = unsigned(rng() % 10);
+    if (r == 0 && c.positions.size() > 2) {
+      c.first_frame = 1 + rng() % (c.positions.size() - 1);
+      c.positions.erase(c.positions.begin(), c.positions.begin() + long(c.first_frame));
+    } else if (r == 1 && c.positions.size() > 2) {
+      c.positions.resize(1 + rng() % (c.positions.size() - 1));
+    }
+  }
+  const int rho_tenths = 5 + int(rng() % 40);
+  run.options.rho2.num = rho_tenths * rho_tenths;
+  run.options.rho2.den = 100;
+  run.options.audit = true;
+  run.options.audit_stride = 1 + rng() % 6;
+  return true;
+}
+
 } // namespace medusa::kinetic::testing

@@ -1,0 +1,59 @@
+// kinetic_stress: runs testing::dense_lattice_run for a range of seeds, with the audit and the
+// stream replay on, and reports every seed whose run fails in a way a correct engine never does
+// (an InternalError, an audit failure, a replay mismatch). Colliding or flat inputs end with a
+// GeometryError, which is the right answer for them and is only counted. Not a test: a tool for
+// hunting degenerate cases (the regression tests take the seeds it finds,
+// test_kinetic_dense_lattice.cpp).
+//
+// Usage: kinetic_stress [first-seed] [count] [seconds]     (defaults 1, 1000, 600)
+// Exit code 1 when some seed failed.
+#include "kinetic_test_support.h"
+#include "medusa/kinetic/error.h"
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+using namespace medusa::kinetic;
+
+int main(int argc, char** argv) {
+  const std::uint64_t first = argc > 1 ? std::stoull(argv[1]) : 1;
+  const std::uint64_t count = argc > 2 ? std::stoull(argv[2]) : 1000;
+  const int seconds = argc > 3 ? std::stoi(argv[3]) : 600;
+  const auto start = std::chrono::steady_clock::now();
+  int ok = 0, input_errors = 0, failures = 0, skipped = 0;
+  for (std::uint64_t seed = first; seed < first + count; ++seed) {
+    if (std::chrono::steady_clock::now() - start > std::chrono::seconds(seconds))
+      break;
+    testing::DenseLatticeRun run;
+    if (!testing::dense_lattice_run(seed, run)) {
+      ++skipped;
+      continue;
+    }
+    char what[128];
+    std::snprintf(what, sizeof what, "seed %llu (%s, %d cells, %d frames, box %d, step %d)",
+                  static_cast<unsigned long long>(seed), run.two_d ? "2D" : "3D", run.n, run.frames, run.box,
+                  run.step);
+    try {
+      KineticAlphaComplex engine(run.trajectories, run.options);
+      testing::ReplayObserver obs(engine);
+      engine.run(obs);
+      if (obs.mismatches != 0 || obs.inconsistencies != 0 || obs.not_closed != 0) {
+        ++failures;
+        std::printf("%s: the replayed stream differs from the engine's complex\n", what);
+      } else {
+        ++ok;
+      }
+    } catch (const medusa::GeometryError&) {
+      ++input_errors; // colliding cells or a flat configuration: reported to the user, as it should be
+    } catch (const std::exception& e) {
+      ++failures;
+      std::printf("%s: %s\n", what, e.what());
+    }
+    std::fflush(stdout);
+  }
+  std::printf("kinetic_stress: %d runs completed, %d inputs rejected (GeometryError), %d seeds skipped, %d "
+              "failed\n",
+              ok, input_errors, skipped, failures);
+  return failures == 0 ? 0 : 1;
+}
