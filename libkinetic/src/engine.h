@@ -77,6 +77,7 @@ struct Engine {
   // Certificates found invalid at the current time, waiting in the current batch.
   std::set<std::pair<Simplex, int>> pending_delaunay;
   std::vector<std::pair<int, std::uint32_t>> pending_radius; // (certificate, version)
+  std::vector<std::pair<int, std::uint32_t>> pending_touch;  // radius touches at now (certificate, version)
 
   // Event batches emitted so far, and since the last audit.
   std::size_t batch_index = 0;
@@ -356,12 +357,15 @@ struct Engine {
   bool flippable(const Simplex& facet);
   void resolve_delaunay(std::vector<Step>& steps);
   void resolve_radius(Step& settle, OldMembership& old_k);
+  void resolve_touches(OldMembership& old_k);
+  bool radius_vanishes_now(const Simplex& s);
 
   // ------------------------------------ the event loop and batches (engine_event_loop.cpp)
 
   EventTime event_time(bool at_frame) const;
   void emit_batch(Observer& observer, std::vector<Step>& steps, bool at_frame);
   void process_batch(std::vector<Step>& steps);
+  void fire(const QueueEntry& e);
   void run_slab(Observer& observer);
 
   // ------------------------------------ static rebuilds with CGAL (engine_static_rebuild.cpp)

@@ -194,6 +194,20 @@ void Engine::install(int id) {
     mark_invalid(id);
     return;
   }
+  if (c.kind == CertKind::radius) {
+    // A root of even multiplicity before the first failure is a touch (Engine::resolve_touches). In
+    // doubles such a root is never isolated nor excluded, so it always comes this way.
+    const AlgebraicReal one(1);
+    for (const auto& [x, multiplicity] : slot->second.roots)
+      if (multiplicity % 2 == 0 && x < one && compare(now, SlabTime(x)) < 0) {
+        if (roots.empty() || x < roots.front()) {
+          ++stats.exact_scheduled;
+          queue.push({SlabTime(x), static_cast<std::uint32_t>(id), c.version, true});
+          return;
+        }
+        break;
+      }
+  }
   if (!roots.empty()) {
     ++stats.exact_scheduled;
     queue.push({SlabTime(roots.front()), static_cast<std::uint32_t>(id), c.version});

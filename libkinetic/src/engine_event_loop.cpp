@@ -47,6 +47,7 @@ void Engine::process_batch(std::vector<Step>& steps) {
   old_k.clear();
   Step settle;
   settle.kind = StepKind::settle;
+  resolve_touches(old_k);
   while (!pending_radius.empty()) {
     resolve_radius(settle, old_k);
     resolve_delaunay(steps);
@@ -54,6 +55,14 @@ void Engine::process_batch(std::vector<Step>& steps) {
   // The closure: faces of cofaces matter only through the faces themselves, which old_k holds.
   settle_membership(old_k, settle);
   steps.push_back(std::move(settle));
+}
+
+// A popped entry at now: its certificate fails, or its simplex touches rho.
+void Engine::fire(const QueueEntry& e) {
+  if (e.touch)
+    pending_touch.emplace_back(static_cast<int>(e.cert), e.version);
+  else
+    mark_invalid(static_cast<int>(e.cert));
 }
 
 void Engine::run_slab(Observer& observer) {
@@ -69,13 +78,13 @@ void Engine::run_slab(Observer& observer) {
       now.sharpen(cert_poly<Interval>(c));
     }
     now.tighten();
-    mark_invalid(static_cast<int>(top.cert));
+    fire(top);
     while (!queue.empty() && compare(queue.top().u, now) == 0) {
       QueueEntry e = queue.top();
       queue.pop();
       const Certificate& ce = certs[e.cert];
       if (ce.alive && ce.version == e.version)
-        mark_invalid(static_cast<int>(e.cert));
+        fire(e);
     }
     std::vector<Step> steps;
     process_batch(steps);

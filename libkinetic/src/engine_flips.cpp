@@ -205,6 +205,39 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
   }
 }
 
+// Radius touches: a frontier simplex whose radius reaches rho at now without crossing it (a root of
+// even multiplicity of its certificate, or a root at a frame). Its shortness stays, but a face whose
+// own radius is rho at now may change membership there: the face is short, and a link vertex on its
+// smallest circumsphere, moving out of it or into it, makes it Gabriel or not, while the one coface
+// that would carry it (the frontier simplex, of radius rho at now only) is in K at no time around now.
+// So the faces of the touching simplex are settled again at now+ (the final re-evaluation of MATH.md
+// 5.2 step 4), and its certificate is installed again for its next root. MATH.md 3.9 drops roots of
+// even multiplicity as non-events; that misses this case (tests/kinetic/test_kinetic_dense_lattice.cpp).
+void Engine::resolve_touches(OldMembership& old_k) {
+  std::vector<std::pair<int, std::uint32_t>> touches;
+  touches.swap(pending_touch);
+  for (auto [id, version] : touches) {
+    const Certificate& c = certs[static_cast<std::size_t>(id)];
+    if (!c.alive || c.version != version)
+      continue;
+    const Simplex s = c.key; // install_radius replaces the certificate
+    ++stats.radius_touches;
+    for_each_face(s, [&](const Simplex& f) { old_k.emplace(f, in_k(f)); });
+    install_radius(s);
+  }
+}
+
+// Whether R(s) = rho exactly at now = 0 (a frame): the constant coefficient of its radius polynomial.
+bool Engine::radius_vanishes_now(const Simplex& s) {
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    IntervalPoly f;
+    if (radius_enclosure(s, f) && (f[0].inf() > 0 || f[0].sup() < 0))
+      return false;
+  }
+  return radius_poly<mpz_class>(s, P, Q)[0] == 0;
+}
+
 // Radius events: toggle shortness of the failed certificates, then one settle step.
 void Engine::resolve_radius(Step& settle, OldMembership& old_k) {
   // Swapped with a kept buffer: certificates failing meanwhile go to pending_radius, and neither

@@ -37,8 +37,13 @@ void Engine::reinstall_all() {
   for (const auto& kv : faces)
     if (kv.second.cert >= 0)
       rs.push_back(kv.first);
-  for (const Simplex& s : rs)
-    install_radius(s);
+  for (const Simplex& s : rs) {
+    Face& f = faces.at(s);
+    install_radius(s, f);
+    // R = rho at the frame: a touch there, whatever the sign just after (Engine::resolve_touches).
+    if (radius_vanishes_now(s))
+      pending_touch.emplace_back(f.cert, certs[static_cast<std::size_t>(f.cert)].version);
+  }
 }
 
 void Engine::frame(Observer& observer, std::size_t k) {

@@ -12,10 +12,14 @@
 namespace medusa::kinetic::detail {
 
 struct QueueEntry {
-  QueueEntry(SlabTime time, std::uint32_t c, std::uint32_t v) : u(std::move(time)), cert(c), version(v) {}
+  QueueEntry(SlabTime time, std::uint32_t c, std::uint32_t v, bool t = false)
+      : u(std::move(time)), cert(c), version(v), touch(t) {}
   SlabTime u;
   std::uint32_t cert = 0;
   std::uint32_t version = 0;
+  // A radius touch (Engine::resolve_touches): the certificate does not fail at u, but the faces of its
+  // simplex are settled again there.
+  bool touch = false;
 };
 
 // A binary heap of small keys over a pool of entries. A time (SlabTime) is large and holds shared

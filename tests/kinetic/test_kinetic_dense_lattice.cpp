@@ -1,18 +1,21 @@
 // Dense walks on a coarse integer lattice with births and deaths (testing::dense_lattice_run): many
 // certificates fail at once in degenerate configurations, which MATH.md 5.2 settles by flipping the
 // flippable failures in canonical order and repairing statically when none is flippable or the flips
-// cycle. Each seed below is one that a stress run of this generator found failing before that rule
-// was implemented in 3D (a flip applied without its flippability test, or "no progress" thrown
-// where a static repair was due); each must now run to the end with the audit green.
+// cycle; and distances of exactly 2 rho recur. Each seed below is one that the stress tool
+// (kinetic_stress.cpp) found failing: in 3D a flip applied without its flippability test, or "no
+// progress" thrown where a static repair was due; in either dimension a face left out of K at a
+// radius touch (Engine::resolve_touches). Each must now run to the end with the audit green.
 #include "kinetic_test_support.h"
+#include "medusa/kinetic/error.h"
 
 #include <cstdint>
+#include <string>
 
 using namespace medusa::kinetic;
 
 namespace {
 
-void run_to_the_end(std::uint64_t seed) {
+KineticStatistics run_to_the_end(std::uint64_t seed) {
   CAPTURE(seed);
   testing::DenseLatticeRun run;
   REQUIRE(testing::dense_lattice_run(seed, run));
@@ -26,6 +29,7 @@ void run_to_the_end(std::uint64_t seed) {
   REQUIRE(obs.mismatches == 0);
   REQUIRE(obs.inconsistencies == 0);
   REQUIRE(obs.not_closed == 0);
+  return s;
 }
 
 } // namespace
@@ -42,4 +46,41 @@ TEST_CASE("a hull flip that would create an edge the triangulation already has i
   // Before: "facet [0 9 14] would get a third top simplex [0 8 9 14]" (InternalError): on the flat
   // hull of the lattice the 2-3 flip of a failed hull facet recreated an existing edge.
   run_to_the_end(1019);
+}
+
+TEST_CASE("a face whose radius is rho enters K when a link vertex leaves its smallest circumsphere",
+          "[kinetic][degenerate][lattice]") {
+  // Seed 1126 (2D): cells 29 and 43 move rigidly 5 apart with rho = 2.5 (R = rho throughout slab 2);
+  // at u ~ 0.873 a third cell leaves the edge's smallest circle, so the edge becomes Gabriel and
+  // enters K. The triangle of the three has R = rho at that instant only (a root of even multiplicity
+  // of its radius certificate), which MATH.md 3.9 drops as a non-event. Before: "audit failed in slab
+  // 2 after u ~ 0.873247: ... 1 missing (e.g. [29 43])".
+  const KineticStatistics s = run_to_the_end(1126);
+  REQUIRE(s.radius_touches > 0);
+}
+
+TEST_CASE("faces whose radius is rho at a frame are settled again there (a radius touch at a frame)",
+          "[kinetic][degenerate][lattice]") {
+  // Seed 1157 (3D, rho = 3.5): at frame 4 a tetrahedron's radius reaches rho without crossing it (its
+  // slabs meet there) while a vertex leaves the smallest circumspheres of two of its triangles. Before:
+  // "audit failed in slab 4 after u ~ 0.000000: ... 3 missing (e.g. [14 17])". The run goes on until
+  // frame 5, where two cells of this random walk land on one lattice site: the input error that
+  // ends it, named as such.
+  testing::DenseLatticeRun run;
+  REQUIRE(testing::dense_lattice_run(1157, run));
+  KineticAlphaComplex engine(run.trajectories, run.options);
+  testing::ReplayObserver obs(engine);
+  std::string message;
+  try {
+    engine.run(obs);
+  } catch (const medusa::GeometryError& e) { // any other exception fails the test
+    message = e.what();
+  }
+  REQUIRE_THAT(message, Catch::Matchers::Contains("are at the same position at frame 5"));
+  const KineticStatistics& s = engine.statistics();
+  CAPTURE(s.audits, s.radius_touches);
+  REQUIRE(s.audits > 0);
+  REQUIRE(s.radius_touches > 0);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
 }

@@ -33,6 +33,9 @@ struct KineticOptions {
 struct KineticStatistics {
   std::size_t batches = 0, frame_batches = 0;
   std::size_t flips23 = 0, flips32 = 0, hull_flips = 0, radius_events = 0;
+  // Radius touches: R = rho at an instant without a change of shortness (a root of even
+  // multiplicity, or at a frame), where a face's Gabriel test may flip (MATH.md 3.9, corrected).
+  std::size_t radius_touches = 0;
   std::size_t flips22 = 0; // planar runs: finite 2-2 flips (hull flips are counted in hull_flips)
   std::size_t insertions = 0, deletions = 0, static_rebuilds = 0;
   std::size_t repairs_at_algebraic_times = 0; // static repairs inside a slab (MATH.md 5.4)
