@@ -16,6 +16,10 @@ namespace medusa::kinetic::detail {
 struct FlipChange {
   std::vector<Simplex> removed, added; // top simplices; removed.front() contains the facet
   bool three_two = false;              // 3D: a 3-2 flip rather than a 2-3 flip
+  // A 3-2 flip: the edge of the facet it removes and the facet's third vertex; the new tetrahedra
+  // are z p q edge[0] and z p q edge[1].
+  Simplex edge;
+  VertexId z = infinite_vertex;
 };
 
 // The flip of `facet` whose apices are p and q.
@@ -35,7 +39,9 @@ inline FlipChange flip_change(int dim, const Simplex& facet, VertexId p, VertexI
     Simplex t{e[0], e[1], p, q};
     if (tri.has_tet(t)) {
       c.three_two = true;
-      VertexId z = facet[i];
+      c.edge = e;
+      c.z = facet[i];
+      const VertexId z = c.z;
       c.removed = {Simplex{facet[0], facet[1], facet[2], p}, Simplex{facet[0], facet[1], facet[2], q}, t};
       c.added = {Simplex{z, p, q, e[0]}, Simplex{z, p, q, e[1]}};
       return c;

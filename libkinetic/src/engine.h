@@ -5,6 +5,7 @@
 #pragma once
 
 #include "certificate.h"
+#include "dimension_policy.h"
 #include "event_queue.h"
 #include "face.h"
 #include "flat_simplex_map.h"
@@ -352,9 +353,9 @@ struct Engine {
 
   // ------------------------------------ flips (MATH.md 4.5) and radius events (engine_flips.cpp)
 
-  void flip(const Simplex& facet, std::vector<Step>& steps);
+  void flip(const Simplex& facet, const FlipChange& change, std::vector<Step>& steps);
   void repair(std::vector<Step>& steps);
-  bool flippable(const Simplex& facet);
+  bool flippable(const Simplex& facet, FlipChange& change);
   void resolve_delaunay(std::vector<Step>& steps);
   void resolve_radius(Step& settle, OldMembership& old_k);
   void resolve_touches(OldMembership& old_k);

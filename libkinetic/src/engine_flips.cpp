@@ -14,14 +14,13 @@
 
 namespace medusa::kinetic::detail {
 
-void Engine::flip(const Simplex& facet, std::vector<Step>& steps) {
+void Engine::flip(const Simplex& facet, const FlipChange& change, std::vector<Step>& steps) {
   const detail::Triangulation::Apices* ap = tri.apices(facet);
   VertexId p = ap->v[0], q = ap->v[1];
   Step step;
   std::vector<VertexId> group(facet.begin(), facet.end());
   group.push_back(p);
   group.push_back(q);
-  FlipChange change = flip_change(dim, facet, p, q, tri);
   const std::vector<Simplex>&removed = change.removed, &added = change.added;
   const bool three_two = change.three_two;
   bool hull = std::find(group.begin(), group.end(), infinite_vertex) != group.end();
@@ -82,10 +81,11 @@ void Engine::repair(std::vector<Step>& steps) {
 // Whether the elementary flip of a failed facet yields a triangulation at now+ (MATH.md 5.2 step 2,
 // "if its configuration is flippable"). A failed certificate in generic motion always passes;
 // simultaneous degenerate failures (six or more cospherical points, an edge of degree four, a cycle
-// of flips) may not, and step 3 then asks for a static repair.
-bool Engine::flippable(const Simplex& facet) {
+// of flips) may not, and step 3 then asks for a static repair. `change` receives the flip.
+bool Engine::flippable(const Simplex& facet, FlipChange& change) {
   const detail::Triangulation::Apices* ap = tri.apices(facet);
   const VertexId p = ap->v[0], q = ap->v[1];
+  change = flip_change(dim, facet, p, q, tri);
   if (dim == 2) {
     // 2-2: the new edge pq must not exist yet (a vertex of degree 3 cannot lose an edge by a flip),
     // and a finite quadrilateral xpyq must be strictly convex (x and y strictly on either side of pq).
@@ -121,44 +121,16 @@ bool Engine::flippable(const Simplex& facet) {
       const int s = side(x, y);
       return s != 0 && side(y, z) == s && side(z, x) == s;
     };
-    const FlipChange change = flip_change(dim, facet, p, q, tri);
-    if (!change.three_two)
-      return crosses(p, q, facet[0], facet[1], facet[2]);
-    // flip_change gives the 3-2 flip's new tetrahedra as z p q e0 and z p q e1.
-    const Simplex& t0 = change.added[0];
-    const Simplex& t1 = change.added[1];
-    VertexId e0 = -2, e1 = -2, z = -2;
-    for (VertexId v : t0)
-      if (!t1.contains(v))
-        e0 = v;
-    for (VertexId v : t1)
-      if (!t0.contains(v))
-        e1 = v;
-    for (VertexId v : facet)
-      if (v != e0 && v != e1)
-        z = v;
-    return crosses(e0, e1, z, p, q);
+    return change.three_two ? crosses(change.edge[0], change.edge[1], change.z, p, q)
+                            : crosses(p, q, facet[0], facet[1], facet[2]);
   }
   // A hull flip. Around the infinite vertex the orientations above do not decide, so first the
   // combinatorics: the flip must not create a simplex that is there already (a 2-3 flip's edge pq,
   // a 3-2 flip's triangle z p q), which simultaneous failures on a flat hull (a lattice) can set up;
   // then its new finite top simplices must not stay flat.
-  const FlipChange change = flip_change(dim, facet, p, q, tri);
-  if (dim == 3) {
-    if (!change.three_two && tri.contains_face(Simplex{p, q}))
-      return false;
-    if (change.three_two) {
-      const Simplex& t0 = change.added[0];
-      const Simplex& t1 = change.added[1];
-      std::array<VertexId, 3> shared{};
-      std::size_t k = 0;
-      for (VertexId v : t0)
-        if (t1.contains(v) && k < shared.size())
-          shared[k++] = v;
-      if (k == 3 && tri.apices(Simplex{shared[0], shared[1], shared[2]}) != nullptr)
-        return false;
-    }
-  }
+  if (dim == 3 &&
+      (change.three_two ? tri.apices(Simplex{change.z, p, q}) != nullptr : tri.contains_face(Simplex{p, q})))
+    return false;
   for (const Simplex& t : change.added)
     if (is_finite(t) && orientation_sign_plus(t) == 0)
       return false;
@@ -170,6 +142,7 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
   // of flips"): past this many elementary flips in one batch, a static repair settles it.
   const std::size_t limit = 20 * traj.cells.size() + 1000;
   std::size_t flips_in_batch = 0, repairs_in_batch = 0;
+  FlipChange change;
   while (!pending_delaunay.empty()) {
     // The first flippable failure in canonical order; a static repair when none is, or when the
     // flips do not converge (MATH.md 5.2 steps 2 and 3).
@@ -181,9 +154,9 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
           it = pending_delaunay.erase(it);
           continue;
         }
-        if (flippable(facet)) {
+        if (flippable(facet, change)) {
           pending_delaunay.erase(it);
-          flip(facet, steps);
+          flip(facet, change, steps);
           ++flips_in_batch;
           flipped = true;
           break;
