@@ -12,6 +12,7 @@
 // (193 cells, 20 frames) and planar random walks of 1,000 and 10,000 cells. --dim 2 or 3 runs one
 // dimension only. --step sets how far the random walks move per frame: the kinetic cost grows with
 // the events per frame, the static rebuild's does not.
+#include "delaunay_skeleton.h"
 #include "medusa/io/run_reader.h"
 #include "medusa/kinetic/certificate_enclosure.h"
 #include "medusa/kinetic/interval_filter.h"
@@ -300,6 +301,44 @@ Trajectories random_walk_2d(std::uint64_t seed, int n, int frames, double step_s
   return t;
 }
 
+// The Delaunay skeleton (delaunay_skeleton.h) on the same frames: what any engine doing libkinetic's
+// job with its certificate arithmetic costs at least, against the same static rebuilds.
+// radius_seconds: the arithmetic of the kinetic run's radius certificates, which the skeleton leaves
+// out (FormulaCosts, one filter each).
+void skeleton_case(const Trajectories& t, const std::vector<double>& static_at, double radius_seconds) {
+  std::string why;
+  if (!medusa::bench::skeleton_applies(t, why)) {
+    std::printf("Delaunay skeleton: not run (%s)\n", why.c_str());
+    return;
+  }
+  const medusa::bench::SkeletonRun r = medusa::bench::run_delaunay_skeleton(t);
+  if (!r.completed) {
+    std::printf("Delaunay skeleton: %s\n", r.verdict.c_str());
+    return;
+  }
+  double total = 0, static_total = 0;
+  for (double s : r.slab_seconds)
+    total += s;
+  // Slab k of the skeleton starts with frame k's certificate rebuild (frame 0's included, which the
+  // kinetic run counts in its initialisation); the static side rebuilds at frames 1 .. F - 1.
+  for (std::size_t k = 1; k < t.frames(); ++k)
+    static_total += static_at[k];
+  std::printf("Delaunay skeleton (no alpha complex, general position only, certificates in CGAL cells; a "
+              "lower bound, bench/delaunay_skeleton.h): %.2f ms per slab (frame rebuilds %.2f of it), "
+              "%.2f of the static rebuilds over the run's %zu slabs; %zu %s flips and %zu 3-2 flips; %zu "
+              "certificates (%zu recomputed in interval arithmetic), %zu failure times isolated, %zu of "
+              "them retired before they fired; final triangulation %s\n",
+              1e3 * total / double(r.slab_seconds.size()), total > 0 ? r.rebuild_seconds / total : 0.0,
+              total / static_total, r.slab_seconds.size(), r.flips23, t.dimension == 2 ? "2-2" : "2-3",
+              r.flips32, r.certificates, r.tight, r.isolated, r.stale,
+              r.verified ? "equal to CGAL's static one" : r.verdict.c_str());
+  if (r.verified)
+    std::printf("lower bound for the kinetic alpha complex: the skeleton plus the arithmetic of the run's "
+                "radius certificates (%.3f s, one filter each): %.2f of the static rebuilds\n",
+                radius_seconds, (total + radius_seconds) / static_total);
+  std::fflush(stdout);
+}
+
 void run_case(const std::string& name, const Trajectories& t, const std::string& radius) {
   KineticOptions options;
   options.rho2 = squared_radius_from_decimal(radius, t.scale);
@@ -319,6 +358,7 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
   // Slab k-1 of the kinetic run ends at frame k; the static baseline rebuilds at frame k.
   std::printf("%-6s %14s %14s %8s\n", "frame", "kinetic ms", "static ms", "ratio");
   double static_total = 0, kinetic_slabs = 0, static_inner = 0, kinetic_inner = 0;
+  std::vector<double> static_at(t.frames(), 0.0); // static_at[k]: the rebuild at frame k
   const double static_first = [&] {
     std::size_t in_k = 0;
     return static_rebuild_seconds(t, 0, rho2, in_k);
@@ -328,6 +368,7 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
     double st = static_rebuild_seconds(t, k, rho2, in_k);
     double kt = k - 1 < timer.seconds.size() ? timer.seconds[k - 1] : 0.0;
     static_total += st;
+    static_at[k] = st;
     kinetic_slabs += kt;
     if (k + 1 < t.frames()) {
       static_inner += st;
@@ -371,10 +412,12 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
       "given their exact polynomial rounded to intervals, %zu compared as algebraic reals\n",
       s.exact_delaunay, s.exact_radius, s.exact_scheduled, s.invalid_at_creation, s.root_cache_hits,
       s.times_sharpened, s.times_compared_algebraically);
+  double radius_filtered = 0; // the radius certificates' arithmetic, one filter each
   if (t.frames() > 1) {
     const std::size_t k = (t.frames() - 2) / 2;
     const FormulaCosts c = formula_costs(t, k, options.rho2);
     const double floor = c.times(s, c.build), filtered = c.times(s, c.filter);
+    radius_filtered = filtered - double(s.built_in_sphere) * c.filter[0];
     const double static_all = static_first + static_total, kinetic_all = timer.initialisation + kinetic_slabs;
     std::printf("certificate arithmetic floor (polynomials enclosed from doubles, timed per formula at frame "
                 "%zu): %zu %s at %.0f ns, %zu hull orientations at 0, radius %zu edges at %.0f ns, %zu "
@@ -393,6 +436,7 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
   }
   std::printf("peak memory (RSS so far) %.1f MiB\n", peak_rss_mib());
   std::fflush(stdout);
+  skeleton_case(t, static_at, radius_filtered);
 }
 
 } // namespace
