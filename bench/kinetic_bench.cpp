@@ -2,8 +2,9 @@
 // otherwise take (CGAL's static Delaunay_triangulation_3 + Fixed_alpha_shape_3 rebuilt at each
 // frame; Delaunay_triangulation_2 + Alpha_shape_2 for planar runs), on the same frames, in one
 // process. Prints per-frame times, their ratio, events per second, the certificate filter hit rate,
-// the certificate arithmetic floor (what the run's certificates cost before any event processing)
-// and peak memory.
+// the certificate arithmetic floor (what the run's certificates cost before any event processing),
+// peak memory, and a lower bound for any engine of libkinetic's design: the Delaunay skeleton
+// (delaunay_skeleton.h) on the same frames, plus the arithmetic of the run's radius certificates.
 //
 // Usage: kinetic_bench [--csv cells.csv.gz|run-folder --radius R] [--random N --frames F --step S]
 //                     [--dim 2|3]
