@@ -255,7 +255,7 @@ public:
   }
 
   SkeletonRun run() {
-    SkeletonRun r;
+    SkeletonRun& r = run_;
     try {
       slabs(r);
     } catch (const Degenerate& d) {
@@ -263,12 +263,6 @@ public:
       return r;
     }
     r.completed = true;
-    r.flips23 = flips23_;
-    r.flips32 = flips32_;
-    r.stale = stale_;
-    r.certificates = certificates_;
-    r.isolated = isolated_;
-    r.tight = tight_;
     r.verified = Space::cells(dt_) == Space::cells(triangulate(t_.frames() - 1));
     if (!r.verified)
       r.verdict = "its final triangulation differs from CGAL's static one";
@@ -353,11 +347,11 @@ private:
     if (dt_.is_infinite(c) || dt_.is_infinite(d))
       return; // a facet of the far simplex's hull: it never fails
     CGAL::Protect_FPU_rounding<true> guard;
-    ++certificates_;
+    ++run_.certificates;
     IntervalPoly f = known ? *known : certificate(c, i, false);
     kinetic::FirstSignChange next = kinetic::first_sign_change(f, start, 12);
     if (next.status == kinetic::FirstSignChange::Status::undecided && !known) {
-      ++tight_;
+      ++run_.tight;
       f = certificate(c, i, true);
       next = kinetic::first_sign_change(f, start, 12);
     }
@@ -369,7 +363,7 @@ private:
       // Narrowed to 2^-24 when scheduled, as the engine does: most pairs of queued times then
       // separate without refinement. (Narrowing lazily, when an entry reaches the top, saves nothing:
       // a time reaches the top by the left end of its isolating piece, long before it would fire.)
-      ++isolated_;
+      ++run_.isolated;
       double lo = next.lo, hi = next.hi;
       kinetic::narrow_root(f, lo, hi, next.sign, 0x1p-24);
       push({lo, hi, c, c->stamp, d->stamp, i});
@@ -403,7 +397,7 @@ private:
     while (!heap_.empty()) {
       const Entry e = pop();
       if (!current(e)) {
-        ++stale_;
+        ++run_.stale;
         continue;
       }
       // The new facets between rewritten cells have the failed facet's five points: their certificate
@@ -421,7 +415,7 @@ private:
       const int count = Space::flip(
           dt_, e.cell, e.facet, [&](Vertex v) { return Space::at(pt(v), u); },
           [&](Vertex v) { return exact_at(pt(v), u); }, made, two_three);
-      ++(two_three ? flips23_ : flips32_);
+      ++(two_three ? run_.flips23 : run_.flips32);
       for (int m = 0; m < count; ++m)
         made[static_cast<std::size_t>(m)]->stamp = ++next_stamp_;
       for (int m = 0; m < count; ++m)
@@ -444,7 +438,7 @@ private:
   int valid_sign_ = 1;
   std::vector<Entry> heap_;
   std::uint32_t next_stamp_ = 0;
-  std::size_t flips23_ = 0, flips32_ = 0, stale_ = 0, certificates_ = 0, isolated_ = 0, tight_ = 0;
+  SkeletonRun run_; // counted as the run goes
 };
 
 } // namespace
