@@ -4,6 +4,8 @@
 #include "medusa/kinetic/error.h"
 #include "static_delaunay.h"
 
+#include <array>
+#include <sstream>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -57,6 +59,49 @@ void Engine::rebuild_static(OldMembership& old_k) {
     if (!tri.has_tet(t))
       added.push_back(t);
   change_tets(removed, added, old_k);
+  reorient_kept(tets);
+}
+
+// A top simplex that is flat at now and inside out just after can stay in Del(now+) with the same
+// vertices: four cells alone in a slab passing through one plane, or every cell of the run passing
+// through one plane (mirrored, Del keeps its combinatorics). No flip changes it, and its recorded
+// orientation turns stale, so every certificate that reads it would fail at now+ again and again
+// (stress seed 4195, tests/kinetic/test_kinetic_dense_lattice.cpp). The orientation is set anew and
+// those certificates are built again: the facets of the top simplex and, for each of its facets on
+// the hull, the infinite facets over that facet's own facets (MATH.md 3.2 case B).
+void Engine::reorient_kept(const std::vector<Simplex>& tets) {
+  for (const Simplex& t : tets) {
+    if (!is_finite(t))
+      continue;
+    const int recorded = tri.orientation(t);
+    const int s = orientation_sign_plus(t);
+    if (s == recorded)
+      continue;
+    if (s == 0) {
+      std::ostringstream os;
+      os << "cells " << t
+         << (dim == 2 ? " stay collinear but form a Delaunay triangle"
+                      : " stay coplanar but form a Delaunay tetrahedron");
+      throw GeometryError(os.str());
+    }
+    ++stats.reoriented;
+    tri.set_orientation(t, s);
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const Simplex f = t.facet(i);
+      install_facet(f);
+      if (tri.two_sided(f).orientation_slot(infinite_vertex) < 0)
+        continue;
+      for (std::size_t j = 0; j < f.size(); ++j) {
+        const Simplex e = f.facet(j);
+        std::array<VertexId, 4> v{};
+        std::size_t n = 0;
+        v[n++] = infinite_vertex;
+        for (VertexId x : e)
+          v[n++] = x;
+        install_facet(Simplex::from_range(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(n)));
+      }
+    }
+  }
 }
 
 // A rational q in (now, next event) (or (now, 1) without one): Del at q is Del(now+) except where a

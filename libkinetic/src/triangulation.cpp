@@ -40,6 +40,13 @@ void Triangulation::add_tet(const Simplex& t, int orientation) {
   ++tet_count_;
 }
 
+void Triangulation::set_orientation(const Simplex& t, int orientation) {
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    Apices& a = facets_.at(t.facet(i));
+    a.orientation[static_cast<std::size_t>(a.orientation_slot(t[i]))] = static_cast<signed char>(orientation);
+  }
+}
+
 void Triangulation::remove_tet(const Simplex& t, std::vector<int>& dropped_certs) {
   memo_ = nullptr;
   for (std::size_t i = 0; i < t.size(); ++i) {

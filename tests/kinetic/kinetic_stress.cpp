@@ -6,12 +6,14 @@
 // test_kinetic_dense_lattice.cpp).
 //
 // Usage: kinetic_stress [first-seed] [count] [seconds]     (defaults 1, 1000, 600)
+// MEDUSA_STRESS_VERBOSE=1 also prints why each rejected input was rejected.
 // Exit code 1 when some seed failed.
 #include "kinetic_test_support.h"
 #include "medusa/kinetic/error.h"
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 using namespace medusa::kinetic;
@@ -20,6 +22,7 @@ int main(int argc, char** argv) {
   const std::uint64_t first = argc > 1 ? std::stoull(argv[1]) : 1;
   const std::uint64_t count = argc > 2 ? std::stoull(argv[2]) : 1000;
   const int seconds = argc > 3 ? std::stoi(argv[3]) : 600;
+  const bool verbose = std::getenv("MEDUSA_STRESS_VERBOSE") != nullptr;
   const auto start = std::chrono::steady_clock::now();
   int ok = 0, input_errors = 0, failures = 0, skipped = 0;
   for (std::uint64_t seed = first; seed < first + count; ++seed) {
@@ -44,7 +47,9 @@ int main(int argc, char** argv) {
       } else {
         ++ok;
       }
-    } catch (const medusa::GeometryError&) {
+    } catch (const medusa::GeometryError& e) {
+      if (verbose)
+        std::printf("%s: rejected: %s\n", what, e.what());
       ++input_errors; // colliding cells or a flat configuration: reported to the user, as it should be
     } catch (const std::exception& e) {
       ++failures;

@@ -7,6 +7,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -354,6 +355,57 @@ TEST_CASE("a cell leaving the hull through a facet makes a hull flip when the te
   REQUIRE(log.batches[0].time.time == Approx(200.0 / 9).epsilon(1e-12));
   REQUIRE(log.count(StepKind::hull_flip) >= 1);
   REQUIRE(engine.statistics().audits > 0);
+}
+
+namespace {
+
+// Four cells alone in a slab: a, b fixed, c and d moving. Whenever the four are not coplanar their
+// Delaunay triangulation is the one tetrahedron and its hull, so when they pass through one plane the
+// tetrahedron turns inside out and stays: every hull certificate fails at once, none is flippable,
+// and the static repair finds the same tetrahedra. Before: "no progress resolving degenerate
+// Delaunay events" (stress seed 4195: the repair kept the stale orientation, so the same
+// certificates failed after each repair).
+Trajectories four_cells_through_a_plane(GridPoint c1, GridPoint d0, GridPoint d1) {
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100, 200};
+  t.cells.push_back({1, 1, 0, {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}});
+  t.cells.push_back({2, 1, 0, {{4, 0, 0}, {4, 0, 0}, {4, 0, 0}}});
+  t.cells.push_back({3, 1, 0, {{0, 4, 0}, c1, c1}});
+  t.cells.push_back({4, 1, 0, {d0, d1, d1}});
+  return t;
+}
+
+void require_turned_inside_out(const Trajectories& t, double time) {
+  KineticAlphaComplex engine(t, with_radius(1));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  const KineticStatistics& s = engine.statistics();
+  CAPTURE(s.hull_flips, s.static_rebuilds, s.audits);
+  REQUIRE(s.flips() == 0);
+  REQUIRE(s.reoriented == 1);
+  REQUIRE(s.audits_compared_with_cgal > 0);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(std::count_if(obs.times.begin(), obs.times.end(),
+                        [&](double x) { return x == Approx(time).epsilon(1e-12); }) == 1);
+}
+
+} // namespace
+
+TEST_CASE("four cells passing through one plane at a rational time keep their tetrahedron",
+          "[kinetic][engine][degenerate]") {
+  // d = (1,1,-2) + u (0,0,4) crosses the plane z = 0 of a, b, c at u = 1/2, t = 50.
+  require_turned_inside_out(four_cells_through_a_plane({0, 4, 0}, {1, 1, -2}, {1, 1, 2}), 50);
+}
+
+TEST_CASE("four cells passing through one plane at an algebraic time keep their tetrahedron",
+          "[kinetic][engine][degenerate]") {
+  // c = (0, 4, 2u), d = (1, 1 + u, -1 + 3u): orient(a, b, c, d) = 4 (4 (3u - 1) - 2u (1 + u))
+  // = -8 (u^2 - 5u + 2), which vanishes at u = (5 - sqrt 17)/2 ~ 0.438, t ~ 43.8 (and at no other u
+  // in [0, 1]).
+  require_turned_inside_out(four_cells_through_a_plane({0, 4, 2}, {1, 1, -1}, {1, 2, 2}),
+                            100 * (5 - std::sqrt(17.0)) / 2);
 }
 
 TEST_CASE("two mirror-image flips at exactly the same time form one batch of two ranks",

@@ -8,6 +8,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -193,6 +194,28 @@ TEST_CASE("planar: a cell leaving the hull through an edge makes a hull flip whe
   REQUIRE(log.batches[0].time.time == 50.0);
   REQUIRE(log.count(StepKind::hull_flip) == 1);
   REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
+}
+
+TEST_CASE("planar: three cells passing through one line keep their triangle",
+          "[kinetic][engine][2d][degenerate]") {
+  // Three cells alone: c = (1, -2 + 4u) crosses the line y = 0 of a and b at u = 1/2, t = 50. The
+  // triangle turns inside out and stays Delaunay; every hull certificate fails there and none is
+  // flippable, so the static repair keeps the triangle with its orientation set anew (the planar
+  // twin of stress seed 4195, test_kinetic_engine.cpp).
+  Trajectories t = planar({0, 100, 200});
+  still(t, 1, 0, 0);
+  still(t, 2, 4, 0);
+  moving(t, 3, {{1, -2, 0}, {1, 2, 0}, {1, 2, 0}});
+  KineticAlphaComplex engine(t, with_radius(1));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  const KineticStatistics& s = engine.statistics();
+  REQUIRE(s.flips() == 0);
+  REQUIRE(s.reoriented == 1);
+  REQUIRE(s.audits_compared_with_cgal > 0);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(std::count(obs.times.begin(), obs.times.end(), 50.0) == 1);
 }
 
 TEST_CASE("planar: a triangle's radius event enters and leaves K at the predicted times",

@@ -39,7 +39,9 @@ struct KineticStatistics {
   std::size_t flips22 = 0; // planar runs: finite 2-2 flips (hull flips are counted in hull_flips)
   std::size_t insertions = 0, deletions = 0, static_rebuilds = 0;
   std::size_t repairs_at_algebraic_times = 0; // static repairs inside a slab (MATH.md 5.4)
-  std::size_t certificates_built = 0;         // certificates created (Delaunay and radius)
+  // Top simplices a static rebuild kept that had turned inside out through a flat instant.
+  std::size_t reoriented = 0;
+  std::size_t certificates_built = 0; // certificates created (Delaunay and radius)
   // The same certificates by formula (MATH.md 3.2-3.4); the four add up to certificates_built.
   std::size_t built_in_sphere = 0; // in-sphere (in-circle in 2D) of a facet with two finite apices
   std::size_t built_hull = 0;      // orientation of a facet at the hull (the infinite vertex involved)
