@@ -2,9 +2,10 @@
 // certificates fail at once in degenerate configurations, which MATH.md 5.2 settles by flipping the
 // flippable failures in canonical order and repairing statically when none is flippable or the flips
 // cycle; and distances of exactly 2 rho recur. Each seed below is one that the stress tool
-// (kinetic_stress.cpp) found failing: in 3D a flip applied without its flippability test, or "no
-// progress" thrown where a static repair was due; in either dimension a face left out of K at a
-// radius touch (Engine::resolve_touches). Each must now run to the end with the audit green.
+// (kinetic_stress.cpp) found failing: in 3D a flip applied without its flippability test, a flip
+// creating an edge that exists already, or "no progress" thrown where a static repair was due; in
+// either dimension a face left out of K at a radius touch (Engine::resolve_touches). Each must now
+// run to the end with the audit green.
 #include "kinetic_test_support.h"
 #include "medusa/kinetic/error.h"
 
@@ -81,6 +82,32 @@ TEST_CASE("faces whose radius is rho at a frame are settled again there (a radiu
   CAPTURE(s.audits, s.radius_touches);
   REQUIRE(s.audits > 0);
   REQUIRE(s.radius_touches > 0);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+}
+
+TEST_CASE("a 2-3 flip whose new edge is in the triangulation already is not applied",
+          "[kinetic][degenerate][lattice]") {
+  // Seed 4018 (3D, 28 cells, rho = 2.4): at frame 1 the new velocities leave the triangulation with
+  // top simplices flat at the frame, so it is not embedded just after it, and a finite 2-3 flip
+  // passing the local crossing tests would create an edge that exists already. Before: "facet [10 17
+  // 19] would get a third top simplex [10 17 19 27]" (InternalError). The frame's batch is now
+  // resolved, and the run ends on the collision check of slab 1, before that batch is reported: cells
+  // 10 and 23 of this random walk meet at t = 150, the input error that ends it, named as such.
+  testing::DenseLatticeRun run;
+  REQUIRE(testing::dense_lattice_run(4018, run));
+  KineticAlphaComplex engine(run.trajectories, run.options);
+  testing::ReplayObserver obs(engine);
+  std::string message;
+  try {
+    engine.run(obs);
+  } catch (const medusa::GeometryError& e) { // any other exception fails the test
+    message = e.what();
+  }
+  REQUIRE_THAT(message, Catch::Matchers::Contains("cells 10 and 23 collide at time 150"));
+  const KineticStatistics& s = engine.statistics();
+  CAPTURE(s.audits, s.flips23, s.flips32, s.static_rebuilds);
+  REQUIRE(s.audits > 0);
   REQUIRE(obs.mismatches == 0);
   REQUIRE(obs.inconsistencies == 0);
 }
