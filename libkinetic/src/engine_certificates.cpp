@@ -45,6 +45,19 @@ int Engine::orientation_of(const VertexId* seq, std::size_t n, const Triangulati
   return sign * permutation_sign(seq, n);
 }
 
+bool Engine::flat_at_now(const Simplex& t) {
+  {
+    CGAL::Protect_FPU_rounding<true> guard;
+    const auto at = points_at_now();
+    const Interval o = dim == 2
+                           ? certificate::orientation_2<Interval>(at(t[0]), at(t[1]), at(t[2]))[0]
+                           : certificate::orientation<Interval>(at(t[0]), at(t[1]), at(t[2]), at(t[3]))[0];
+    if (o.inf() > 0 || o.sup() < 0)
+      return false;
+  }
+  return sign_at_now([&](auto tag) { return orientation_poly<decltype(tag)>(t); }) == 0;
+}
+
 int Engine::orientation_sign_plus(const Simplex& t) {
   if (t.size() == top_size() && is_finite(t)) {
     // The value at now first: a new top simplex of a flip is far from flat at now, and a sign there

@@ -86,6 +86,16 @@ bool Engine::flippable(const Simplex& facet, FlipChange& change) {
   const detail::Triangulation::Apices* ap = tri.apices(facet);
   const VertexId p = ap->v[0], q = ap->v[1];
   change = flip_change(dim, facet, p, q, tri);
+  // A finite flip replaces top simplices that cover a region at now+ by others covering it. A top
+  // simplex flat at now may be inside out just after it: the triangulation around it is then not
+  // embedded at now+, the local tests below can pass a flip that leaves it so, and later certificates,
+  // read against the orientations recorded, miss the inversion (stress seed 5142: four cells on one
+  // line at u = 1/2). Only a static repair decides such a neighbourhood. A hull flip removes a flat
+  // top simplex by definition (its certificate is that orientation, MATH.md 3.2 case A).
+  if (is_finite(facet) && p != infinite_vertex && q != infinite_vertex)
+    for (const Simplex& t : change.removed)
+      if (flat_at_now(t))
+        return false;
   if (dim == 2) {
     // 2-2: the new edge pq must not exist yet (a vertex of degree 3 cannot lose an edge by a flip),
     // and a finite quadrilateral xpyq must be strictly convex (x and y strictly on either side of pq).

@@ -111,3 +111,11 @@ TEST_CASE("a 2-3 flip whose new edge is in the triangulation already is not appl
   REQUIRE(obs.mismatches == 0);
   REQUIRE(obs.inconsistencies == 0);
 }
+
+TEST_CASE("a planar run whose cells cross one line at once never flips a flat triangle",
+          "[kinetic][degenerate][lattice]") {
+  // Seed 5142 (2D, 39 cells): at u = 1/2 of slab 0 four cells are on one line, the twin of the
+  // hand-built case in test_kinetic_engine_2d.cpp. Before: "audit failed in slab 0 after
+  // u ~ 0.512980: facet [-1 38] is not locally Delaunay".
+  run_to_the_end(5142);
+}

@@ -218,6 +218,40 @@ TEST_CASE("planar: three cells passing through one line keep their triangle",
   REQUIRE(std::count(obs.times.begin(), obs.times.end(), 50.0) == 1);
 }
 
+TEST_CASE("planar: four cells crossing one line at once enter the hull without flipping flat triangles",
+          "[kinetic][engine][2d][degenerate]") {
+  // From stress seed 5142: a = (0,1) + u (2,-2), b = (2,5) + u (-2,1), c = (1,21) + u (0,-1) and
+  // d = (0,24) + u (2,1) are all on the line x = 1 at u = 1/2, t = 50, with two still cells on the
+  // right. Before, the left hull edge is ad (a and d have x < 1 < x_b, x_c = 1); after, a and d have
+  // x > 1 and x_b < 1, so the left hull is a b c d: b and c enter the hull, two hull flips. The
+  // in-circle certificate of an edge between two triangles of the four vanishes there too, with both
+  // triangles flat; its 2-2 flip passes the local test but leaves the triangulation inside out at
+  // the hull just after. Before: "audit failed in slab 0 after u ~ 0.500000: facet [-1 3] is not
+  // locally Delaunay".
+  Trajectories t = planar({0, 100});
+  moving(t, 1, {{0, 1, 0}, {2, -1, 0}});
+  moving(t, 2, {{2, 5, 0}, {0, 6, 0}});
+  moving(t, 3, {{1, 21, 0}, {1, 20, 0}});
+  moving(t, 4, {{0, 24, 0}, {2, 25, 0}});
+  still(t, 5, 10, 0);
+  still(t, 6, 10, 25);
+  KineticOptions o = with_radius(1);
+  o.audit_stride = 1;
+  KineticAlphaComplex engine(t, o);
+  ReplayObserver replay(engine);
+  BatchLog log;
+  Both both(replay, log);
+  engine.run(both);
+  REQUIRE(!log.batches.empty());
+  const BatchLog::Entry& first = log.batches[0];
+  REQUIRE(first.time.time == 50.0);
+  REQUIRE(std::count(first.kinds.begin(), first.kinds.end(), StepKind::hull_flip) == 2);
+  REQUIRE(std::count(first.kinds.begin(), first.kinds.end(), StepKind::flip22) == 0);
+  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
+  REQUIRE(replay.mismatches == 0);
+  REQUIRE(replay.inconsistencies == 0);
+}
+
 TEST_CASE("planar: a triangle's radius event enters and leaves K at the predicted times",
           "[kinetic][engine][2d]") {
   // a = (0,0), b = (10,0), c = (5, 20 - 18u). The circumcentre is (5, k), k = (y^2 - 25)/(2y), R^2 =
