@@ -4,6 +4,7 @@
 #include "medusa/kinetic/error.h"
 #include "static_delaunay.h"
 
+#include <algorithm>
 #include <array>
 #include <sstream>
 #include <string>
@@ -50,6 +51,10 @@ void Engine::rebuild_static(OldMembership& old_k) {
     throw GeometryError("all cells lie in one plane at frame " + std::to_string(slab) +
                         " (a 2D run given as 3D data?): the 3D method needs cells spanning space");
   }
+  // CGAL lists the simplices in an order that follows its insertion order, which its spatial sort
+  // draws from CGAL's default random generator (process-wide state). Sorted, the order of the
+  // changes below, and of the certificates they build, does not depend on it.
+  std::sort(tets.begin(), tets.end());
   std::unordered_set<Simplex, SimplexHash> target(tets.begin(), tets.end());
   std::vector<Simplex> removed, added;
   for (const Simplex& t : tri.tets())

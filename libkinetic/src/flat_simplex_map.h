@@ -9,7 +9,6 @@
 #include "medusa/kinetic/simplex.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -152,17 +151,18 @@ public:
 private:
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
   std::size_t mask() const { return slots_.size() - 1; }
-  // Multiply-shift on the hash mixed with a seed of this table's own: copying entries from one
-  // table into another visits them in the first table's slot order, and with a shared home function
-  // they would arrive clustered in the second (linear probing then degrades to quadratic time).
+  // Multiply-shift on the hash mixed with a seed of the table's capacity: copying entries from one
+  // table into a smaller one visits them in the first table's slot order, and with a shared home
+  // function they would arrive clustered in the second (linear probing then degrades to quadratic
+  // time). Tables of equal capacity share the seed, which is harmless (the copy lands as laid out in
+  // the source), and nothing depends on the process's history: the engine iterates these tables, so
+  // a seed drawn from a process-wide counter made a run's certificates depend on what ran before.
   std::size_t home(const Simplex& s) const {
     const std::uint64_t h = static_cast<std::uint64_t>(SimplexHash()(s)) ^ seed_;
     return static_cast<std::size_t>((h * 0x9E3779B97F4A7C15ULL) >> shift_);
   }
-  // Distinct for every table of the process, and deterministic for a given sequence of tables.
-  static std::uint64_t next_seed() {
-    static std::atomic<std::uint64_t> tables{0};
-    std::uint64_t x = (tables.fetch_add(1) + 1) * 0xD6E8FEB86659FD93ULL;
+  static std::uint64_t seed_for(int shift) {
+    std::uint64_t x = static_cast<std::uint64_t>(shift + 1) * 0xD6E8FEB86659FD93ULL;
     x ^= x >> 32;
     x *= 0xD6E8FEB86659FD93ULL;
     return x ^ (x >> 32);
@@ -187,6 +187,7 @@ private:
     shift_ = 64;
     for (std::size_t n = slots_.size(); n > 1; n >>= 1)
       --shift_;
+    seed_ = seed_for(shift_);
     size_ = 0;
     for (Slot& e : old)
       if (e.used())
@@ -196,7 +197,7 @@ private:
   std::vector<Slot> slots_;
   std::size_t size_ = 0;
   int shift_ = 64; // 64 - log2(number of slots)
-  std::uint64_t seed_ = next_seed();
+  std::uint64_t seed_ = seed_for(64);
 };
 
 } // namespace medusa::kinetic::detail
