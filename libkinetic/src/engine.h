@@ -375,7 +375,7 @@ struct Engine {
   detail::StaticInput static_input(const std::vector<VertexId>& ids) const;
   std::vector<VertexId> alive_ids() const;
   void rebuild_static(OldMembership& old_k);
-  void reorient_kept(const std::vector<Simplex>& tets);
+  void reorient_kept(const std::vector<Simplex>& kept); // top simplices the rebuild kept
   Rational rational_before_next_event() const;
 
   // ------------------------------------ collisions (engine_collisions.cpp)

@@ -45,6 +45,8 @@ int Engine::orientation_of(const VertexId* seq, std::size_t n, const Triangulati
   return sign * permutation_sign(seq, n);
 }
 
+// The value at now's enclosure first: the top simplices of a flip are far from flat at now but in
+// degenerate batches.
 bool Engine::flat_at_now(const Simplex& t) {
   {
     CGAL::Protect_FPU_rounding<true> guard;
@@ -52,10 +54,13 @@ bool Engine::flat_at_now(const Simplex& t) {
     const Interval o = dim == 2
                            ? certificate::orientation_2<Interval>(at(t[0]), at(t[1]), at(t[2]))[0]
                            : certificate::orientation<Interval>(at(t[0]), at(t[1]), at(t[2]), at(t[3]))[0];
-    if (o.inf() > 0 || o.sup() < 0)
+    if (o.inf() > 0 || o.sup() < 0) {
+      ++stats.sign_evaluations;
       return false;
+    }
   }
-  return sign_at_now([&](auto tag) { return orientation_poly<decltype(tag)>(t); }) == 0;
+  ++stats.sign_evaluations_exact;
+  return orientation_at_now(t) == 0;
 }
 
 int Engine::orientation_sign_plus(const Simplex& t) {

@@ -90,8 +90,9 @@ bool Engine::flippable(const Simplex& facet, FlipChange& change) {
   // simplex flat at now may be inside out just after it: the triangulation around it is then not
   // embedded at now+, the local tests below can pass a flip that leaves it so, and later certificates,
   // read against the orientations recorded, miss the inversion (stress seed 5142: four cells on one
-  // line at u = 1/2). Only a static repair decides such a neighbourhood. A hull flip removes a flat
-  // top simplex by definition (its certificate is that orientation, MATH.md 3.2 case A).
+  // line at u = 1/2). Only a static repair decides such a neighbourhood. Hull flips are exempt: their
+  // certificates are orientations (MATH.md 3.2), so the top simplex a hull flip removes (case A) or
+  // adds (case B) is flat at now by definition.
   if (is_finite(facet) && p != infinite_vertex && q != infinite_vertex)
     for (const Simplex& t : change.removed)
       if (flat_at_now(t))

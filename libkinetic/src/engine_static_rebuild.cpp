@@ -56,26 +56,25 @@ void Engine::rebuild_static(OldMembership& old_k) {
   // changes below, and of the certificates they build, does not depend on it.
   std::sort(tets.begin(), tets.end());
   std::unordered_set<Simplex, SimplexHash> target(tets.begin(), tets.end());
-  std::vector<Simplex> removed, added;
+  std::vector<Simplex> removed, added, kept;
   for (const Simplex& t : tri.tets())
     if (!target.count(t))
       removed.push_back(t);
   for (const Simplex& t : tets)
-    if (!tri.has_tet(t))
-      added.push_back(t);
+    (tri.has_tet(t) ? kept : added).push_back(t);
   change_tets(removed, added, old_k);
-  reorient_kept(tets);
+  reorient_kept(kept);
 }
 
 // A top simplex that is flat at now and inside out just after can stay in Del(now+) with the same
 // vertices: four cells alone in a slab passing through one plane, or every cell of the run passing
 // through one plane (mirrored, Del keeps its combinatorics). No flip changes it, and its recorded
 // orientation turns stale, so every certificate that reads it would fail at now+ again and again
-// (stress seed 4195, tests/kinetic/test_kinetic_dense_lattice.cpp). The orientation is set anew and
+// (stress seed 4195, tests/kinetic/test_kinetic_engine.cpp). The orientation is set anew and
 // those certificates are built again: the facets of the top simplex and, for each of its facets on
 // the hull, the infinite facets over that facet's own facets (MATH.md 3.2 case B).
-void Engine::reorient_kept(const std::vector<Simplex>& tets) {
-  for (const Simplex& t : tets) {
+void Engine::reorient_kept(const std::vector<Simplex>& kept) {
+  for (const Simplex& t : kept) {
     if (!is_finite(t))
       continue;
     const int recorded = tri.orientation(t);

@@ -34,9 +34,9 @@ public:
   // Removes t; a facet left with no top simplex goes, and its certificate id (Apices::cert), if it
   // had one, is appended to dropped_certs for the caller to retire.
   void remove_tet(const Simplex& t, std::vector<int>& dropped_certs);
-  // The recorded orientation of the present top simplex t (0 for an infinite one), and its
-  // replacement: a top simplex that flattens and turns inside out while staying in Del keeps its
-  // vertices but not its sign (Engine::rebuild_static).
+  // The recorded orientation of the top simplex t (0 for an infinite one), and its replacement: a top
+  // simplex that flattens and turns inside out while staying in Del keeps its vertices but not its
+  // sign (Engine::reorient_kept). Both require t to be present.
   int orientation(const Simplex& t) const { return apices(t.facet(0))->orientation_with(t[0]); }
   void set_orientation(const Simplex& t, int orientation);
   // Starts loading the records that removing t will touch (FlatSimplexMap::prefetch).
