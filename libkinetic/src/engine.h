@@ -272,7 +272,9 @@ struct Engine {
   int orientation_of(const VertexId* seq, std::size_t n, const Triangulation::Apices& ap,
                      VertexId apex) const;
   int orientation_sign_plus(const Simplex& t);
-  bool flat_at_now(const Simplex& t); // a finite top simplex whose orientation vanishes at now
+  bool flat_at_now(const Simplex& t);               // a finite top simplex whose orientation vanishes at now
+  int orientation_enclosure_sign(const Simplex& t); // 0: the enclosure at now does not decide
+  GeometryError flat_top_simplex_error(const Simplex& t) const; // t stays flat just after now
   int sign_after_own_root(const IntervalPoly& f, const CacheKey& key) const;
   int new_cert(CertKind kind, const Simplex& key);
   void kill_cert(int id);

@@ -45,37 +45,42 @@ int Engine::orientation_of(const VertexId* seq, std::size_t n, const Triangulati
   return sign * permutation_sign(seq, n);
 }
 
-// The value at now's enclosure first: the top simplices of a flip are far from flat at now but in
-// degenerate batches.
-bool Engine::flat_at_now(const Simplex& t) {
-  {
-    CGAL::Protect_FPU_rounding<true> guard;
-    const auto at = points_at_now();
-    const Interval o = dim == 2
-                           ? certificate::orientation_2<Interval>(at(t[0]), at(t[1]), at(t[2]))[0]
-                           : certificate::orientation<Interval>(at(t[0]), at(t[1]), at(t[2]), at(t[3]))[0];
-    if (o.inf() > 0 || o.sup() < 0) {
-      ++stats.sign_evaluations;
-      return false;
-    }
+// The orientation of a finite top simplex on the points at now's enclosure: a sign when it excludes
+// zero, which it does unless t is (nearly) flat at now.
+int Engine::orientation_enclosure_sign(const Simplex& t) {
+  CGAL::Protect_FPU_rounding<true> guard;
+  const auto at = points_at_now();
+  const Interval o = dim == 2 ? certificate::orientation_2<Interval>(at(t[0]), at(t[1]), at(t[2]))[0]
+                              : certificate::orientation<Interval>(at(t[0]), at(t[1]), at(t[2]), at(t[3]))[0];
+  if (o.inf() > 0 || o.sup() < 0) {
+    ++stats.sign_evaluations;
+    return o.inf() > 0 ? 1 : -1;
   }
+  return 0;
+}
+
+// The enclosure first: the top simplices of a flip are far from flat at now but in degenerate batches.
+bool Engine::flat_at_now(const Simplex& t) {
+  if (orientation_enclosure_sign(t) != 0)
+    return false;
   ++stats.sign_evaluations_exact;
   return orientation_at_now(t) == 0;
+}
+
+GeometryError Engine::flat_top_simplex_error(const Simplex& t) const {
+  std::ostringstream os;
+  os << "cells " << t
+     << (dim == 2 ? " stay collinear but form a Delaunay triangle"
+                  : " stay coplanar but form a Delaunay tetrahedron");
+  return GeometryError(os.str());
 }
 
 int Engine::orientation_sign_plus(const Simplex& t) {
   if (t.size() == top_size() && is_finite(t)) {
     // The value at now first: a new top simplex of a flip is far from flat at now, and a sign there
     // is the sign just after now.
-    CGAL::Protect_FPU_rounding<true> guard;
-    const auto at = points_at_now();
-    const Interval o = dim == 2
-                           ? certificate::orientation_2<Interval>(at(t[0]), at(t[1]), at(t[2]))[0]
-                           : certificate::orientation<Interval>(at(t[0]), at(t[1]), at(t[2]), at(t[3]))[0];
-    if (o.inf() > 0 || o.sup() < 0) {
-      ++stats.sign_evaluations;
-      return o.inf() > 0 ? 1 : -1;
-    }
+    if (const int s = orientation_enclosure_sign(t); s != 0)
+      return s;
   }
   if (now.isolated() != nullptr && t.size() == top_size() && is_finite(t)) {
     // A hull flip at a root of this very orientation (the failed certificate of four finite points,

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <array>
-#include <sstream>
 #include <vector>
 
 namespace medusa::kinetic::detail {
@@ -58,13 +57,8 @@ void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::ve
     int s = 0;
     if (is_finite(t)) {
       s = added_orientations != nullptr ? added_orientations[i] : orientation_sign_plus(t);
-      if (s == 0) {
-        std::ostringstream os;
-        os << "cells " << t
-           << (dim == 2 ? " stay collinear but form a Delaunay triangle"
-                        : " stay coplanar but form a Delaunay tetrahedron");
-        throw GeometryError(os.str());
-      }
+      if (s == 0)
+        throw flat_top_simplex_error(t);
     }
     tri.add_tet(t, s);
   }

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <array>
-#include <sstream>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -81,13 +80,8 @@ void Engine::reorient_kept(const std::vector<Simplex>& kept) {
     const int s = orientation_sign_plus(t);
     if (s == recorded)
       continue;
-    if (s == 0) {
-      std::ostringstream os;
-      os << "cells " << t
-         << (dim == 2 ? " stay collinear but form a Delaunay triangle"
-                      : " stay coplanar but form a Delaunay tetrahedron");
-      throw GeometryError(os.str());
-    }
+    if (s == 0)
+      throw flat_top_simplex_error(t);
     ++stats.reoriented;
     tri.set_orientation(t, s);
     for (std::size_t i = 0; i < t.size(); ++i) {

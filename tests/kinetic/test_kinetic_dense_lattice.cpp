@@ -36,6 +36,29 @@ KineticStatistics run_to_the_end(std::uint64_t seed) {
   return s;
 }
 
+// Runs the seed until the input error that ends it (any other exception fails the test), with the
+// replayed stream checked on the way.
+KineticStatistics run_to_the_input_error(std::uint64_t seed, const std::string& expected) {
+  CAPTURE(seed);
+  testing::DenseLatticeRun run;
+  REQUIRE(testing::dense_lattice_run(seed, run));
+  KineticAlphaComplex engine(run.trajectories, run.options);
+  testing::ReplayObserver obs(engine);
+  std::string message;
+  try {
+    engine.run(obs);
+  } catch (const medusa::GeometryError& e) {
+    message = e.what();
+  }
+  REQUIRE_THAT(message, Catch::Matchers::Contains(expected));
+  const KineticStatistics& s = engine.statistics();
+  CAPTURE(s.audits, s.flips23, s.flips32, s.static_rebuilds, s.radius_touches);
+  REQUIRE(s.audits > 0);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  return s;
+}
+
 } // namespace
 
 TEST_CASE("simultaneous degenerate failures that cycle through flips are settled by a static repair",
@@ -70,23 +93,8 @@ TEST_CASE("faces whose radius is rho at a frame are settled again there (a radiu
   // "audit failed in slab 4 after u ~ 0.000000: ... 3 missing (e.g. [14 17])". The run goes on until
   // frame 5, where two cells of this random walk land on one lattice site: the input error that
   // ends it, named as such.
-  testing::DenseLatticeRun run;
-  REQUIRE(testing::dense_lattice_run(1157, run));
-  KineticAlphaComplex engine(run.trajectories, run.options);
-  testing::ReplayObserver obs(engine);
-  std::string message;
-  try {
-    engine.run(obs);
-  } catch (const medusa::GeometryError& e) { // any other exception fails the test
-    message = e.what();
-  }
-  REQUIRE_THAT(message, Catch::Matchers::Contains("are at the same position at frame 5"));
-  const KineticStatistics& s = engine.statistics();
-  CAPTURE(s.audits, s.radius_touches);
-  REQUIRE(s.audits > 0);
+  const KineticStatistics s = run_to_the_input_error(1157, "are at the same position at frame 5");
   REQUIRE(s.radius_touches > 0);
-  REQUIRE(obs.mismatches == 0);
-  REQUIRE(obs.inconsistencies == 0);
 }
 
 TEST_CASE("a 2-3 flip whose new edge is in the triangulation already is not applied",
@@ -97,22 +105,7 @@ TEST_CASE("a 2-3 flip whose new edge is in the triangulation already is not appl
   // 19] would get a third top simplex [10 17 19 27]" (InternalError). The frame's batch is now
   // resolved, and the run ends on the collision check of slab 1, before that batch is reported: cells
   // 10 and 23 of this random walk meet at t = 150, the input error that ends it, named as such.
-  testing::DenseLatticeRun run;
-  REQUIRE(testing::dense_lattice_run(4018, run));
-  KineticAlphaComplex engine(run.trajectories, run.options);
-  testing::ReplayObserver obs(engine);
-  std::string message;
-  try {
-    engine.run(obs);
-  } catch (const medusa::GeometryError& e) { // any other exception fails the test
-    message = e.what();
-  }
-  REQUIRE_THAT(message, Catch::Matchers::Contains("cells 10 and 23 collide at time 150"));
-  const KineticStatistics& s = engine.statistics();
-  CAPTURE(s.audits, s.flips23, s.flips32, s.static_rebuilds);
-  REQUIRE(s.audits > 0);
-  REQUIRE(obs.mismatches == 0);
-  REQUIRE(obs.inconsistencies == 0);
+  run_to_the_input_error(4018, "cells 10 and 23 collide at time 150");
 }
 
 TEST_CASE("a planar run whose cells cross one line at once never flips a flat triangle",
