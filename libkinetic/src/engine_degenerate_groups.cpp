@@ -91,13 +91,6 @@ std::vector<DegenerateGroup> to_groups(const std::set<std::vector<VertexId>>& ve
   return groups;
 }
 
-Simplex with(const Simplex& s, VertexId v) {
-  std::vector<VertexId> w(s.begin(), s.end());
-  w.push_back(v);
-  std::sort(w.begin(), w.end());
-  return Simplex::from_range(w.begin(), w.end());
-}
-
 } // namespace
 
 int Engine::orientation_at_now(const Simplex& t) {
@@ -208,7 +201,7 @@ std::vector<DegenerateGroup> Engine::degenerate_groups(const std::vector<Simplex
       if (fresh)
         it->second = cospherical_at_now(t, y);
       if (it->second)
-        uf.unite(ti, visit(with(f, y)));
+        uf.unite(ti, visit(f.with(y)));
     }
   }
   std::map<std::size_t, std::vector<Simplex>> cells;
@@ -250,7 +243,7 @@ std::vector<DegenerateGroup> Engine::degenerate_groups(const std::vector<Simplex
     for (const Simplex& t : cell)
       for (std::size_t i = 0; i < 4; ++i) {
         Simplex f = t.facet(i);
-        if (!in_cell.count(with(f, tri.other_apex(f, t[i]))))
+        if (!in_cell.count(f.with(tri.other_apex(f, t[i]))))
           boundary.push_back(f);
       }
     std::sort(boundary.begin(), boundary.end());

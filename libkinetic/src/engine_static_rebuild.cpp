@@ -5,7 +5,6 @@
 #include "static_delaunay.h"
 
 #include <algorithm>
-#include <array>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -89,15 +88,8 @@ void Engine::reorient_kept(const std::vector<Simplex>& kept) {
       install_facet(f);
       if (tri.two_sided(f).orientation_slot(infinite_vertex) < 0)
         continue;
-      for (std::size_t j = 0; j < f.size(); ++j) {
-        const Simplex e = f.facet(j);
-        std::array<VertexId, 4> v{};
-        std::size_t n = 0;
-        v[n++] = infinite_vertex;
-        for (VertexId x : e)
-          v[n++] = x;
-        install_facet(Simplex::from_range(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(n)));
-      }
+      for (std::size_t j = 0; j < f.size(); ++j)
+        install_facet(f.facet(j).with(infinite_vertex));
     }
   }
 }

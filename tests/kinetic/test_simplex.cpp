@@ -23,6 +23,17 @@ TEST_CASE("the facets of a tetrahedron are its four triangles", "[kinetic][simpl
   REQUIRE(t.facet(3) == Simplex{0, 1, 2});
 }
 
+TEST_CASE("a simplex with one more vertex keeps its vertices sorted, the infinite vertex first",
+          "[kinetic][simplex]") {
+  REQUIRE(Simplex{2, 5}.with(-1) == Simplex{-1, 2, 5});
+  REQUIRE(Simplex{2, 5}.with(-1)[0] == -1);
+  REQUIRE(Simplex{2, 5}.with(3)[1] == 3);
+  REQUIRE(Simplex{2, 5}.with(9) == Simplex{2, 5, 9});
+  REQUIRE(Simplex{1, 4, 8}.with(0) == Simplex{0, 1, 4, 8});
+  REQUIRE(Simplex{1, 4, 8}.with(0).dim() == 3);
+  REQUIRE(Simplex{}.with(7) == Simplex{7});
+}
+
 TEST_CASE("simplices order by dimension first, then lexicographically", "[kinetic][simplex]") {
   REQUIRE(Simplex{9} < Simplex{0, 1});
   REQUIRE(Simplex{0, 5} < Simplex{1, 2});

@@ -57,6 +57,18 @@ public:
     return s;
   }
 
+  // The simplex with one more vertex x, not among its vertices (a coface: {inf} + e, or s + x).
+  Simplex with(VertexId x) const {
+    Simplex s;
+    std::size_t i = 0;
+    for (; i < size_ && v_[i] < x; ++i)
+      s.v_[s.size_++] = v_[i];
+    s.v_[s.size_++] = x;
+    for (; i < size_; ++i)
+      s.v_[s.size_++] = v_[i];
+    return s;
+  }
+
   // Unused slots hold -1, so the four entries decide. Compared as two 64-bit words without a branch
   // between them: hash tables and the triangulation's incident lists compare keys often, and entries
   // that differ in a late vertex made the chain of four tests mispredict.
