@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -88,13 +89,91 @@ template <int D, class Dt> std::vector<Simplex> top_simplices(const Dt& dt) {
   return result;
 }
 
+// Whether dt, CGAL's Delaunay triangulation of the points at some time after u, is Del(u+) (MATH.md
+// 5.5, method A): every finite top simplex positively oriented just after u, every facet between two
+// finite ones locally Delaunay just after u, and the hull convex at each of its ridges just after u
+// as it is in dt. These local conditions make it the Delaunay triangulation of the points at u + eps
+// for small eps > 0; certificates that vanish identically (cospherical or coplanar for good) never
+// decide. A delta that crosses an event after u fails one of them.
+template <int D, class Dt>
+bool just_after_holds(const Dt& dt, const StaticInput& input, const CGAL::Gmpq& u) {
+  if (dt.dimension() < D)
+    return true;
+  std::vector<const MovingPoint*> motion; // by vertex id
+  for (std::size_t i = 0; i < input.ids.size(); ++i) {
+    const auto id = static_cast<std::size_t>(input.ids[i]);
+    if (motion.size() <= id)
+      motion.resize(id + 1, nullptr);
+    motion[id] = &input.motion[i];
+  }
+  auto m = [&](auto v) { return motion[static_cast<std::size_t>(v->info())]; };
+  // In-sphere is negative inside a positively oriented tetrahedron's sphere, in-circle positive
+  // inside a positively oriented triangle's circle (certificate_polynomials.h).
+  constexpr int inside = D == 3 ? -1 : 1;
+  const auto orientation = [&dt](const auto&... q) {
+    if constexpr (D == 2)
+      return static_cast<int>(dt.geom_traits().orientation_2_object()(q...));
+    else
+      return static_cast<int>(dt.geom_traits().orientation_3_object()(q...));
+  };
+  std::vector<const MovingPoint*> p(D + 1), hull(D + 1);
+  std::array<typename Dt::Point, D + 1> at_delta;
+  auto check = [&](auto c) {
+    const bool infinite = dt.is_infinite(c);
+    if (!infinite) {
+      for (int i = 0; i <= D; ++i)
+        p[static_cast<std::size_t>(i)] = m(c->vertex(i));
+      if (orientation_just_after(p, u) <= 0)
+        return false;
+    }
+    for (int i = 0; i <= D; ++i) {
+      const auto n = c->neighbor(i);
+      if (&*n < &*c)
+        continue; // each facet once
+      const auto q = n->vertex(n->index(c));
+      if (!infinite && !dt.is_infinite(n)) {
+        if (in_sphere_just_after(p, *m(q), u) == inside)
+          return false;
+      } else if (infinite && dt.is_infinite(n)) {
+        // A ridge of the hull: q, a vertex of the neighbouring hull facet, stays on the inner side
+        // of c's hull facet (the orientation with the infinite vertex replaced by q keeps its sign).
+        const int j = c->index(dt.infinite_vertex());
+        for (int k = 0; k <= D; ++k) {
+          const auto v = k == j ? q : c->vertex(k);
+          hull[static_cast<std::size_t>(k)] = m(v);
+          at_delta[static_cast<std::size_t>(k)] = v->point();
+        }
+        const int plus = orientation_just_after(hull, u);
+        const int then = std::apply(orientation, at_delta);
+        if (plus != 0 && plus != then)
+          return false;
+      }
+    }
+    return true;
+  };
+  if constexpr (D == 2) {
+    for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f)
+      if (!check(f))
+        return false;
+  } else {
+    for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c)
+      if (!check(c))
+        return false;
+  }
+  return true;
+}
+
 // The top simplices of the Delaunay triangulation Dt (vertices labelled with their ids) of pts, and
-// the affine dimension of pts in `dimension`.
+// the affine dimension of pts in `dimension`. Given `after`, `holds` tells whether it is Del(after+)
+// of the input's motion (just_after_holds).
 template <int D, class Dt>
 std::vector<Simplex> triangulate(const std::vector<std::pair<typename Dt::Point, VertexId>>& pts,
-                                 int& dimension) {
+                                 int& dimension, const StaticInput& input, const CGAL::Gmpq* after,
+                                 bool* holds) {
   Dt dt(pts.begin(), pts.end());
   dimension = dt.dimension();
+  if (after)
+    *holds = just_after_holds<D>(dt, input, *after);
   return top_simplices<D>(dt);
 }
 

@@ -2,6 +2,8 @@
 // time) and the dispatch to the planar or 3D CGAL structures (static_delaunay_2.cpp, _3.cpp).
 #include "static_delaunay.h"
 
+#include "medusa/kinetic/error.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,21 +11,38 @@ namespace medusa::kinetic::detail {
 
 std::vector<Simplex> delaunay_just_after(int dim, const StaticInput& input, const CGAL::Gmpq& u,
                                          int& dimension) {
-  // delta = 2^-k with the largest k <= 24 such that every coordinate 2^k a + b is an exact double;
-  // invalid certificates left by a too large delta are repaired by flips at 0+ by the caller.
+  // MATH.md 5.5, method A's practical variant: delta = 2^-k, k growing until the triangulation at
+  // u + delta is Del(u+). No certificate that is not identically zero has a root in (u, u + 2^-k]
+  // once 2^-k is below the root bound of 5.5, so the loop ends; the cap only guards that bound.
+  // At a frame (u = 0) the points 2^k a + b are exact doubles while k is small enough, and Epick
+  // decides on them exactly; past that, and at interior rational times, exact rational points.
   double amax = 1, bmax = 1;
   for (const MovingPoint& m : input.motion)
     for (int i = 0; i < 3; ++i) {
       amax = std::max(amax, std::fabs(double(m.a[i])));
       bmax = std::max(bmax, std::fabs(double(m.b[i])));
     }
+  const auto exact_in_doubles = [&](int k) { return std::ldexp(amax, k) + bmax < std::ldexp(1.0, 52); };
   int k = 24;
-  while (k > 0 && std::ldexp(amax, k) + bmax >= std::ldexp(1.0, 52))
+  while (k > 0 && !exact_in_doubles(k))
     --k;
+  bool holds = false;
   if (u == 0 && k >= 8)
-    return dim == 2 ? delaunay_of_scaled<2>(input, k, dimension) : delaunay_of_scaled<3>(input, k, dimension);
-  // Exact rational points at u + 2^-40 (used at interior rational times and for huge coordinates).
-  return delaunay_at(dim, input, u + CGAL::Gmpq(1, CGAL::Gmpz(1) << 40), dimension);
+    for (; exact_in_doubles(k); ++k) {
+      std::vector<Simplex> tops = dim == 2 ? delaunay_of_scaled<2>(input, k, dimension, u, holds)
+                                           : delaunay_of_scaled<3>(input, k, dimension, u, holds);
+      if (holds)
+        return tops;
+    }
+  for (k = std::max(k, 40);; k += 8) {
+    if (k > 4096)
+      throw InternalError("no delta found for the Delaunay triangulation just after a rational time");
+    const CGAL::Gmpq at = u + CGAL::Gmpq(1, CGAL::Gmpz(1) << k);
+    std::vector<Simplex> tops = dim == 2 ? delaunay_of_exact<2>(input, at, dimension, &u, &holds)
+                                         : delaunay_of_exact<3>(input, at, dimension, &u, &holds);
+    if (holds)
+      return tops;
+  }
 }
 
 std::vector<Simplex> delaunay_at(int dim, const StaticInput& input, const CGAL::Gmpq& u, int& dimension) {

@@ -18,13 +18,16 @@ using Delaunay2 = CGAL::Delaunay_triangulation_2<
 
 } // namespace
 
-template <> std::vector<Simplex> delaunay_of_scaled<2>(const StaticInput& input, int k, int& dimension) {
-  return triangulate<2, Delaunay2<Epick>>(scaled_points<2>(input, k), dimension);
+template <>
+std::vector<Simplex> delaunay_of_scaled<2>(const StaticInput& input, int k, int& dimension,
+                                           const CGAL::Gmpq& after, bool& holds) {
+  return triangulate<2, Delaunay2<Epick>>(scaled_points<2>(input, k), dimension, input, &after, &holds);
 }
 
 template <>
-std::vector<Simplex> delaunay_of_exact<2>(const StaticInput& input, const CGAL::Gmpq& u, int& dimension) {
-  return triangulate<2, Delaunay2<Epeck>>(exact_points<2>(input, u), dimension);
+std::vector<Simplex> delaunay_of_exact<2>(const StaticInput& input, const CGAL::Gmpq& u, int& dimension,
+                                          const CGAL::Gmpq* after, bool* holds) {
+  return triangulate<2, Delaunay2<Epeck>>(exact_points<2>(input, u), dimension, input, after, holds);
 }
 
 template <>

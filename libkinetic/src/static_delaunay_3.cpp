@@ -19,13 +19,16 @@ using Delaunay3 = CGAL::Delaunay_triangulation_3<
 
 } // namespace
 
-template <> std::vector<Simplex> delaunay_of_scaled<3>(const StaticInput& input, int k, int& dimension) {
-  return triangulate<3, Delaunay3<Epick>>(scaled_points<3>(input, k), dimension);
+template <>
+std::vector<Simplex> delaunay_of_scaled<3>(const StaticInput& input, int k, int& dimension,
+                                           const CGAL::Gmpq& after, bool& holds) {
+  return triangulate<3, Delaunay3<Epick>>(scaled_points<3>(input, k), dimension, input, &after, &holds);
 }
 
 template <>
-std::vector<Simplex> delaunay_of_exact<3>(const StaticInput& input, const CGAL::Gmpq& u, int& dimension) {
-  return triangulate<3, Delaunay3<Epeck>>(exact_points<3>(input, u), dimension);
+std::vector<Simplex> delaunay_of_exact<3>(const StaticInput& input, const CGAL::Gmpq& u, int& dimension,
+                                          const CGAL::Gmpq* after, bool* holds) {
+  return triangulate<3, Delaunay3<Epeck>>(exact_points<3>(input, u), dimension, input, after, holds);
 }
 
 template <>

@@ -10,6 +10,9 @@
 #include <array>
 #include <random>
 #include <set>
+#include <sstream>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace medusa::kinetic::testing {
@@ -55,6 +58,109 @@ private:
   const KineticAlphaComplex& engine_;
   std::set<Simplex> k_;
 };
+
+// Records the stream as text, one line per batch (slab, frame flag, and every step with its ranks,
+// simplices, flip and degenerate groups), with each batch's u apart: two runs that must make the same
+// decisions give equal lines, and u equal up to the width of their isolating intervals.
+class StreamRecorder : public Observer {
+public:
+  void initial(const EventTime&, const std::vector<Simplex>& complex) override {
+    std::ostringstream os;
+    os << "initial";
+    put(os, complex);
+    lines.push_back(os.str());
+    us.push_back(0.0);
+  }
+  void batch(const EventTime& time, const std::vector<Step>& steps) override {
+    std::ostringstream os;
+    os << "batch " << time.batch << " slab " << time.slab << (time.at_frame ? " frame" : "");
+    for (const Step& s : steps) {
+      os << " | " << s.rank << ' ' << to_string(s.kind) << " v" << s.vertex << " +";
+      put(os, s.entered);
+      os << " -";
+      put(os, s.left);
+      if (s.flip) {
+        os << " flip" << (s.flip->in_alpha ? "*" : "");
+        for (VertexId v : s.flip->vertices)
+          os << ' ' << v;
+      }
+      for (const DegenerateGroup& g : s.groups) {
+        os << " group";
+        for (VertexId v : g.vertices)
+          os << ' ' << v;
+      }
+      os << " del-";
+      put(os, s.delaunay_removed);
+      os << " del+";
+      put(os, s.delaunay_created);
+    }
+    lines.push_back(os.str());
+    us.push_back(time.u);
+  }
+  void frame(std::size_t k, const EventTime& time) override {
+    lines.push_back("frame " + std::to_string(k) + " batch " + std::to_string(time.batch));
+    us.push_back(time.u);
+  }
+  void finish(const EventTime& time) override {
+    lines.push_back("finish batch " + std::to_string(time.batch));
+    us.push_back(time.u);
+  }
+
+  std::vector<std::string> lines;
+  std::vector<double> us;
+
+private:
+  static void put(std::ostream& os, const std::vector<Simplex>& simplices) {
+    for (const Simplex& x : simplices)
+      os << x;
+  }
+};
+
+// Keeps every batch of the stream whole, with its time.
+class BatchRecorder : public Observer {
+public:
+  void batch(const EventTime& time, const std::vector<Step>& steps) override {
+    batches.emplace_back(time, steps);
+  }
+  std::vector<std::pair<EventTime, std::vector<Step>>> batches;
+};
+
+// Two observers fed the same stream.
+class Tee : public Observer {
+public:
+  Tee(Observer& a, Observer& b) : a_(a), b_(b) {}
+  void initial(const EventTime& t0, const std::vector<Simplex>& k) override {
+    a_.initial(t0, k);
+    b_.initial(t0, k);
+  }
+  void batch(const EventTime& time, const std::vector<Step>& steps) override {
+    a_.batch(time, steps);
+    b_.batch(time, steps);
+  }
+  void frame(std::size_t k, const EventTime& time) override {
+    a_.frame(k, time);
+    b_.frame(k, time);
+  }
+  void finish(const EventTime& time) override {
+    a_.finish(time);
+    b_.finish(time);
+  }
+
+private:
+  Observer &a_, &b_;
+};
+
+// The image of a run under x -> k x + offset (k > 0), with rho^2 scaled by k^2: a similarity, so the
+// Delaunay triangulation, the alpha complex and every event's slab parameter u* are the same
+// (MATH.md 1: the certificates are homogeneous in the coordinate differences).
+inline void apply_similarity(Trajectories& t, KineticOptions& options, std::int64_t k,
+                             const GridPoint& offset) {
+  for (Trajectory& c : t.cells)
+    for (GridPoint& p : c.positions)
+      for (int a = 0; a < 3; ++a)
+        p[a] = k * p[a] + offset[a];
+  options.rho2.num *= mpz_class(k) * k;
+}
 
 // n cells doing independent random walks on the integer grid, over `frames` frames.
 inline Trajectories random_walk(std::uint64_t seed, int n, int frames, int box, int step) {

@@ -258,6 +258,57 @@ TEST_CASE("cells crossing each coordinate at different times do not collide", "[
   REQUIRE(engine.statistics().audits > 0);
 }
 
+TEST_CASE("an event closer to a frame than the static build's first delta happens at its own time",
+          "[kinetic][engine][degenerate]") {
+  // a, b, c, d on the sphere |x| = 5; e waits at (0, -5, 3) through slab 0, then runs up x = 0, z = 3
+  // at 2^26 per slab and crosses that sphere at y = -4 and y = 4: u = 2^-26 and 9 * 2^-26 of slab 1.
+  // Cell f, born far away at frame 1, makes the engine rebuild Del statically there. CGAL's first
+  // triangulation is built at delta = 2^-24 after the frame (MATH.md 5.5, method A), where e is
+  // inside the sphere: not Del(t1+), so it is built again with a smaller delta. The frame batch is
+  // then the insertion alone (no flip of a, b, c, d, e and back, no instant 4-simplex), and the
+  // five points flip at u = 2^-26 and back at 9 * 2^-26, exactly.
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100, 200};
+  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p, p}}); };
+  still(1, {-5, 0, 0});
+  still(2, {5, 0, 0});
+  still(3, {0, 5, 0});
+  still(4, {0, 0, 5});
+  const std::int64_t v = std::int64_t(1) << 26;
+  t.cells.push_back({5, 2, 0, {{0, -5, 3}, {0, -5, 3}, {0, -5 + v, 3}}});
+  t.cells.push_back({6, 2, 1, {{-50, 60, 6}, {-50, 60, 6}}});
+  KineticAlphaComplex engine(t, with_radius(100));
+  ReplayObserver obs(engine);
+  testing::BatchRecorder log;
+  testing::Tee both(obs, log);
+  engine.run(both);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
+  REQUIRE(log.batches.size() >= 3);
+  const auto& [frame, at_frame] = log.batches[0];
+  REQUIRE(frame.at_frame);
+  REQUIRE(frame.slab == 1);
+  REQUIRE(at_frame.size() == 1);
+  REQUIRE(at_frame.front().kind == StepKind::insertion);
+  REQUIRE(at_frame.front().vertex == 5);
+  const auto& [time, steps] = log.batches[1];
+  REQUIRE(time.slab == 1);
+  REQUIRE(time.u == std::ldexp(1.0, -26));
+  REQUIRE(steps.size() == 1);
+  REQUIRE(steps.front().flip);
+  REQUIRE(steps.front().flip->vertices == std::vector<VertexId>{0, 1, 2, 3, 4});
+  // e leaves the sphere at y = 4: the same five points flip back to a, b, c, d's tetrahedron.
+  const auto back = std::find_if(log.batches.begin(), log.batches.end(),
+                                 [](const auto& b) { return b.first.u == 9 * std::ldexp(1.0, -26); });
+  REQUIRE(back != log.batches.end());
+  REQUIRE(back->second.front().flip);
+  REQUIRE(back->second.front().flip->vertices == std::vector<VertexId>{0, 1, 2, 3, 4});
+  REQUIRE(std::count(back->second.front().delaunay_created.begin(),
+                     back->second.front().delaunay_created.end(), Simplex{0, 1, 2, 3}) == 1);
+}
+
 TEST_CASE("cells inserted and deleted in the middle of a run keep the audit green", "[kinetic][engine]") {
   Trajectories t = testing::random_walk(21, 40, 8, 50, 5);
   // Cell 41 appears at frame 3; cell 1 disappears after frame 4.

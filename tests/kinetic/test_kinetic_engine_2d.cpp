@@ -175,6 +175,55 @@ TEST_CASE("planar: with rho below the circle's radius the 2-2 flip adds no 3-sim
   REQUIRE(obs.mismatches == 0);
 }
 
+TEST_CASE("planar: an event closer to a frame than the static build's first delta happens at its own time",
+          "[kinetic][engine][2d][degenerate]") {
+  // a, b, c on the circle |x| = 5; d waits at (3, -5) through slab 0, then runs up x = 3 at 2^26 per
+  // slab and crosses that circle at y = -4 and y = 4: u = 2^-26 and 9 * 2^-26 of slab 1. Cell e, born
+  // far away at frame 1, makes the engine rebuild Del statically there; at the static build's first
+  // delta, 2^-24, d is inside the circle (MATH.md 5.5, method A): not Del(t1+), so it is built again
+  // with a smaller delta. The frame batch is the insertion alone (no flip of ab into cd and back with
+  // an instant 3-simplex), ab flips into cd at u = 2^-26 exactly and back at 9 * 2^-26.
+  Trajectories t = planar({0, 100, 200});
+  still(t, 1, -5, 0);
+  still(t, 2, 5, 0);
+  still(t, 3, 0, 5);
+  const std::int64_t v = std::int64_t(1) << 26;
+  moving(t, 4, {{3, -5, 0}, {3, -5, 0}, {3, -5 + v, 0}});
+  t.cells.push_back({5, 2, 1, {{-50, 40, 0}, {-50, 40, 0}}});
+  KineticAlphaComplex engine(t, with_radius(100));
+  ReplayObserver obs(engine);
+  BatchLog log;
+  Both both(obs, log);
+  engine.run(both);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
+  REQUIRE(log.batches.size() >= 3);
+  const BatchLog::Entry& frame = log.batches[0];
+  REQUIRE(frame.time.at_frame);
+  REQUIRE(frame.time.slab == 1);
+  REQUIRE(frame.kinds == std::vector<StepKind>{StepKind::insertion});
+  REQUIRE(frame.left.empty());
+  const BatchLog::Entry& first = log.batches[1];
+  REQUIRE(first.time.slab == 1);
+  REQUIRE(first.time.u == std::ldexp(1.0, -26));
+  REQUIRE(first.kinds == std::vector<StepKind>{StepKind::flip22});
+  REQUIRE(first.flips.front().vertices == std::vector<VertexId>{0, 1, 2, 3});
+  REQUIRE(std::count(first.left.begin(), first.left.end(), Simplex{0, 1}) == 1);
+  REQUIRE(std::count(first.entered.begin(), first.entered.end(), Simplex{2, 3}) == 1);
+  const auto back = std::find_if(log.batches.begin(), log.batches.end(), [](const BatchLog::Entry& e) {
+    return e.time.u == 9 * std::ldexp(1.0, -26);
+  });
+  REQUIRE(back != log.batches.end());
+  REQUIRE(back->kinds == std::vector<StepKind>{StepKind::flip22});
+  REQUIRE(back->flips.front().vertices == std::vector<VertexId>{0, 1, 2, 3});
+  std::size_t of_abcd = 0;
+  for (const BatchLog::Entry& e : log.batches)
+    for (const FlipGroup& g : e.flips)
+      of_abcd += g.vertices == std::vector<VertexId>{0, 1, 2, 3};
+  REQUIRE(of_abcd == 2);
+}
+
 TEST_CASE("planar: a cell leaving the hull through an edge makes a hull flip when its triangle flattens",
           "[kinetic][engine][2d]") {
   // d = (2,2) + u (6,6) crosses the hull edge bc (x + y = 10) at u = 1/2, t = 50: the orientation of
