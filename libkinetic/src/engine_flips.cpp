@@ -51,9 +51,14 @@ void Engine::flip(const Simplex& facet, const FlipChange& change, std::vector<St
                                return radius_poly<decltype(tag)>(old, pick(P, Pi, tag), pick(Q, Qi, tag));
                              }) <= 0;
     step.flip = g;
-    step.delaunay_removed = removed;
-    step.delaunay_created = added;
   }
+  // A hull flip removes (case A) or creates (case B) the finite top simplex that is flat at now.
+  for (const Simplex& t : removed)
+    if (is_finite(t))
+      step.delaunay_removed.push_back(t);
+  for (const Simplex& t : added)
+    if (is_finite(t))
+      step.delaunay_created.push_back(t);
   apply_tet_change(removed, added, orientations.data());
   settle_touched(step);
   finish_tet_change();

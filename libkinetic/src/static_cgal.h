@@ -13,7 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <tuple>
+#include <functional>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -89,16 +89,20 @@ template <int D, class Dt> std::vector<Simplex> top_simplices(const Dt& dt) {
   return result;
 }
 
-// Whether dt, CGAL's Delaunay triangulation of the points at some time after u, is Del(u+) (MATH.md
-// 5.5, method A): every finite top simplex positively oriented just after u, every facet between two
-// finite ones locally Delaunay just after u, and the hull convex at each of its ridges just after u
-// as it is in dt. These local conditions make it the Delaunay triangulation of the points at u + eps
-// for small eps > 0; certificates that vanish identically (cospherical or coplanar for good) never
-// decide. A delta that crosses an event after u fails one of them.
+// Whether dt, CGAL's Delaunay triangulation of the points at u + delta, is Del(u+) (MATH.md 5.5,
+// method A): it has every point as a vertex, and no certificate it rests on has a root in
+// (u, u + delta]: the orientation of each finite top simplex, the in-sphere (in-circle) test across
+// each facet between two finite ones, and at each ridge of the hull the orientation of a hull facet
+// with the neighbouring hull facet's far vertex. dt is a Delaunay triangulation at u + delta, and
+// the kinetic structure these certificates make stays one while none of them changes sign, so it is
+// the Delaunay triangulation throughout (u, u + delta], hence Del(u+). A triangulation that is flat
+// at u + delta holds only when the points are flat for good (MATH.md 5.7); the caller reports them.
 template <int D, class Dt>
-bool just_after_holds(const Dt& dt, const StaticInput& input, const CGAL::Gmpq& u) {
+bool just_after_holds(const Dt& dt, const StaticInput& input, const CGAL::Gmpq& u, const CGAL::Gmpq& delta) {
   if (dt.dimension() < D)
-    return true;
+    return flat_for_good(D, input);
+  if (dt.number_of_vertices() != input.ids.size())
+    return false;                         // two cells meet at u + delta: CGAL keeps one of them
   std::vector<const MovingPoint*> motion; // by vertex id
   for (std::size_t i = 0; i < input.ids.size(); ++i) {
     const auto id = static_cast<std::size_t>(input.ids[i]);
@@ -107,45 +111,30 @@ bool just_after_holds(const Dt& dt, const StaticInput& input, const CGAL::Gmpq& 
     motion[id] = &input.motion[i];
   }
   auto m = [&](auto v) { return motion[static_cast<std::size_t>(v->info())]; };
-  // In-sphere is negative inside a positively oriented tetrahedron's sphere, in-circle positive
-  // inside a positively oriented triangle's circle (certificate_polynomials.h).
-  constexpr int inside = D == 3 ? -1 : 1;
-  const auto orientation = [&dt](const auto&... q) {
-    if constexpr (D == 2)
-      return static_cast<int>(dt.geom_traits().orientation_2_object()(q...));
-    else
-      return static_cast<int>(dt.geom_traits().orientation_3_object()(q...));
-  };
   std::vector<const MovingPoint*> p(D + 1), hull(D + 1);
-  std::array<typename Dt::Point, D + 1> at_delta;
   auto check = [&](auto c) {
     const bool infinite = dt.is_infinite(c);
     if (!infinite) {
       for (int i = 0; i <= D; ++i)
         p[static_cast<std::size_t>(i)] = m(c->vertex(i));
-      if (orientation_just_after(p, u) <= 0)
+      if (!orientation_keeps_sign(p, u, delta))
         return false;
     }
     for (int i = 0; i <= D; ++i) {
       const auto n = c->neighbor(i);
-      if (&*n < &*c)
+      if (std::less<const void*>()(&*n, &*c))
         continue; // each facet once
       const auto q = n->vertex(n->index(c));
       if (!infinite && !dt.is_infinite(n)) {
-        if (in_sphere_just_after(p, *m(q), u) == inside)
+        if (!in_sphere_keeps_sign(p, *m(q), u, delta))
           return false;
       } else if (infinite && dt.is_infinite(n)) {
-        // A ridge of the hull: q, a vertex of the neighbouring hull facet, stays on the inner side
-        // of c's hull facet (the orientation with the infinite vertex replaced by q keeps its sign).
+        // A ridge of the hull: c's hull facet with the infinite vertex replaced by q, the far vertex
+        // of the neighbouring hull facet (finite, since the facet holds the infinite vertex).
         const int j = c->index(dt.infinite_vertex());
-        for (int k = 0; k <= D; ++k) {
-          const auto v = k == j ? q : c->vertex(k);
-          hull[static_cast<std::size_t>(k)] = m(v);
-          at_delta[static_cast<std::size_t>(k)] = v->point();
-        }
-        const int plus = orientation_just_after(hull, u);
-        const int then = std::apply(orientation, at_delta);
-        if (plus != 0 && plus != then)
+        for (int k = 0; k <= D; ++k)
+          hull[static_cast<std::size_t>(k)] = m(k == j ? q : c->vertex(k));
+        if (!orientation_keeps_sign(hull, u, delta))
           return false;
       }
     }
@@ -164,16 +153,16 @@ bool just_after_holds(const Dt& dt, const StaticInput& input, const CGAL::Gmpq& 
 }
 
 // The top simplices of the Delaunay triangulation Dt (vertices labelled with their ids) of pts, and
-// the affine dimension of pts in `dimension`. Given `after`, `holds` tells whether it is Del(after+)
-// of the input's motion (just_after_holds).
+// the affine dimension of pts in `dimension`. Given `after`, pts being the points at after + delta,
+// `holds` tells whether it is Del(after+) of the input's motion (just_after_holds).
 template <int D, class Dt>
 std::vector<Simplex> triangulate(const std::vector<std::pair<typename Dt::Point, VertexId>>& pts,
                                  int& dimension, const StaticInput& input, const CGAL::Gmpq* after,
-                                 bool* holds) {
+                                 const CGAL::Gmpq& delta, bool* holds) {
   Dt dt(pts.begin(), pts.end());
   dimension = dt.dimension();
   if (after)
-    *holds = just_after_holds<D>(dt, input, *after);
+    *holds = just_after_holds<D>(dt, input, *after, delta);
   return top_simplices<D>(dt);
 }
 

@@ -11,11 +11,12 @@ namespace medusa::kinetic::detail {
 
 std::vector<Simplex> delaunay_just_after(int dim, const StaticInput& input, const CGAL::Gmpq& u,
                                          int& dimension) {
-  // MATH.md 5.5, method A's practical variant: delta = 2^-k, k growing until the triangulation at
-  // u + delta is Del(u+). No certificate that is not identically zero has a root in (u, u + 2^-k]
-  // once 2^-k is below the root bound of 5.5, so the loop ends; the cap only guards that bound.
-  // At a frame (u = 0) the points 2^k a + b are exact doubles while k is small enough, and Epick
-  // decides on them exactly; past that, and at interior rational times, exact rational points.
+  // MATH.md 5.5, method A's practical variant: delta = 2^-k, k growing until no certificate of the
+  // triangulation at u + delta has a root in (u, u + delta]. Certificates have finitely many roots,
+  // so the loop ends (the cap only guards that; the bound of 5.5 is for u = 0, and at a rational u
+  // it grows with u's denominator). At a frame (u = 0) the points 2^k a + b are exact doubles while
+  // k is small enough, and Epick decides on them exactly; past that, and at interior rational times,
+  // exact rational points.
   double amax = 1, bmax = 1;
   for (const MovingPoint& m : input.motion)
     for (int i = 0; i < 3; ++i) {
@@ -29,8 +30,8 @@ std::vector<Simplex> delaunay_just_after(int dim, const StaticInput& input, cons
   bool holds = false;
   if (u == 0 && k >= 8)
     for (; exact_in_doubles(k); ++k) {
-      std::vector<Simplex> tops = dim == 2 ? delaunay_of_scaled<2>(input, k, dimension, u, holds)
-                                           : delaunay_of_scaled<3>(input, k, dimension, u, holds);
+      std::vector<Simplex> tops = dim == 2 ? delaunay_of_scaled<2>(input, k, dimension, holds)
+                                           : delaunay_of_scaled<3>(input, k, dimension, holds);
       if (holds)
         return tops;
     }

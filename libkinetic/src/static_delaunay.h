@@ -21,17 +21,21 @@ struct StaticInput {
 
 // Top simplices (tetrahedra, triangles in 2D; infinite vertex = -1) of Del(u+), the Delaunay
 // triangulation of the points a + (u + eps) b for every small eps > 0 (MATH.md 5.5, method A): CGAL's
-// triangulation of the points at u + delta for a dyadic delta, accepted when every certificate of
-// MATH.md 3.1 it rests on has its sign at u + delta on (u, u + eps) too (just_after_holds), and built
-// again with a smaller delta otherwise. Returns the affine dimension of the point set in `dimension`
-// (the result is empty when it is below dim).
+// triangulation of the points at u + delta for a dyadic delta, accepted when no certificate it rests
+// on has a root in (u, u + delta] (just_after_holds, static_cgal.h), and built again with a smaller
+// delta otherwise. Returns the affine dimension of the point set in `dimension` (the result is empty
+// when it is below dim).
 std::vector<Simplex> delaunay_just_after(int dim, const StaticInput& input, const CGAL::Gmpq& u,
                                          int& dimension);
 
-// sign^+_u of the orientation of the points p (three: planar, four: 3D), and of the in-circle or
-// in-sphere of p and y (certificate_polynomials.h conventions); 0 iff identically zero.
-int orientation_just_after(const std::vector<const MovingPoint*>& p, const CGAL::Gmpq& u);
-int in_sphere_just_after(const std::vector<const MovingPoint*>& p, const MovingPoint& y, const CGAL::Gmpq& u);
+// Whether the orientation of the points p (three: planar, four: 3D), or the in-circle / in-sphere test
+// of p and y (certificate_polynomials.h), has no root in (u, u + delta]; identically zero has none.
+bool orientation_keeps_sign(const std::vector<const MovingPoint*>& p, const CGAL::Gmpq& u,
+                            const CGAL::Gmpq& delta);
+bool in_sphere_keeps_sign(const std::vector<const MovingPoint*>& p, const MovingPoint& y, const CGAL::Gmpq& u,
+                          const CGAL::Gmpq& delta);
+// Whether the points span fewer than dim dimensions at every time of the slab (MATH.md 5.7).
+bool flat_for_good(int dim, const StaticInput& input);
 
 // Top simplices of the Delaunay triangulation of the points a + u b exactly at the rational u
 // (CGAL's symbolic perturbation decides among cospherical sets).
@@ -46,21 +50,18 @@ std::vector<Simplex> static_alpha_complex(int dim, const StaticInput& input, con
 
 // The same per dimension D = dim, specialised in static_delaunay_2.cpp and static_delaunay_3.cpp (the
 // functions above choose the points and dispatch): Delaunay top simplices of the points 2^k a + b
-// (exact in doubles), of the points a + u b exactly, and the alpha complex at u. Given `after` (a
-// rational below the points' time), `holds` tells whether the triangulation is Del(after+).
+// (exact in doubles; `holds`: Del(0+), delta = 2^-k), of the points a + u b exactly (given `after`,
+// `holds`: Del(after+), delta = u - after), and the alpha complex at u.
 template <int D>
-std::vector<Simplex> delaunay_of_scaled(const StaticInput& input, int k, int& dimension,
-                                        const CGAL::Gmpq& after, bool& holds);
+std::vector<Simplex> delaunay_of_scaled(const StaticInput& input, int k, int& dimension, bool& holds);
 template <int D>
 std::vector<Simplex> delaunay_of_exact(const StaticInput& input, const CGAL::Gmpq& u, int& dimension,
                                        const CGAL::Gmpq* after = nullptr, bool* holds = nullptr);
 template <int D>
 std::vector<Simplex> alpha_complex_of_exact(const StaticInput& input, const CGAL::Gmpq& u,
                                             const CGAL::Gmpq& rho2, std::vector<Simplex>& tops);
-template <>
-std::vector<Simplex> delaunay_of_scaled<2>(const StaticInput&, int, int&, const CGAL::Gmpq&, bool&);
-template <>
-std::vector<Simplex> delaunay_of_scaled<3>(const StaticInput&, int, int&, const CGAL::Gmpq&, bool&);
+template <> std::vector<Simplex> delaunay_of_scaled<2>(const StaticInput&, int, int&, bool&);
+template <> std::vector<Simplex> delaunay_of_scaled<3>(const StaticInput&, int, int&, bool&);
 template <>
 std::vector<Simplex> delaunay_of_exact<2>(const StaticInput&, const CGAL::Gmpq&, int&, const CGAL::Gmpq*,
                                           bool*);

@@ -20,15 +20,17 @@ using Delaunay3 = CGAL::Delaunay_triangulation_3<
 } // namespace
 
 template <>
-std::vector<Simplex> delaunay_of_scaled<3>(const StaticInput& input, int k, int& dimension,
-                                           const CGAL::Gmpq& after, bool& holds) {
-  return triangulate<3, Delaunay3<Epick>>(scaled_points<3>(input, k), dimension, input, &after, &holds);
+std::vector<Simplex> delaunay_of_scaled<3>(const StaticInput& input, int k, int& dimension, bool& holds) {
+  const CGAL::Gmpq zero(0);
+  return triangulate<3, Delaunay3<Epick>>(scaled_points<3>(input, k), dimension, input, &zero,
+                                          CGAL::Gmpq(1, CGAL::Gmpz(1) << k), &holds);
 }
 
 template <>
 std::vector<Simplex> delaunay_of_exact<3>(const StaticInput& input, const CGAL::Gmpq& u, int& dimension,
                                           const CGAL::Gmpq* after, bool* holds) {
-  return triangulate<3, Delaunay3<Epeck>>(exact_points<3>(input, u), dimension, input, after, holds);
+  return triangulate<3, Delaunay3<Epeck>>(exact_points<3>(input, u), dimension, input, after,
+                                          after ? u - *after : CGAL::Gmpq(0), holds);
 }
 
 template <>

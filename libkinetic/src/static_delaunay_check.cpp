@@ -1,54 +1,115 @@
-// The signs just after a rational time u that decide whether a static triangulation built at
-// u + delta is Del(u+) (MATH.md 5.5, method A): each a certificate polynomial of MATH.md 3.1, its
-// value on u's enclosure when that excludes zero (then it is the sign on (u, u + eps) too), else
-// sign^+_u of the exact polynomial.
+// The tests that decide whether a static triangulation built at u + delta is Del(u+) (MATH.md 5.5,
+// method A): no certificate of MATH.md 3.1 that it rests on has a root in (u, u + delta], and the
+// points are not flat at u + delta alone.
 #include "static_delaunay.h"
 
 #include "medusa/kinetic/algebraic_time.h"
 #include "medusa/kinetic/certificate_polynomials.h"
 
 #include <CGAL/FPU.h>
+#include <CGAL/Gmpz.h>
+
+#include <utility>
 
 namespace medusa::kinetic::detail {
 
 namespace {
 
-template <class Build> int sign_just_after(Build&& build, const Rational& u) {
+Interval enclosure(const mpz_class& x) { return Interval(CGAL::to_interval(CGAL::Gmpz(x.get_mpz_t()))); }
+
+// Whether the polynomial that build(NT tag) gives has no root in (u, u + delta] (identically zero
+// counts as none). Cheapest first: the Bernstein filter on [u, u + delta], which proves f has no
+// root there; at u = 0 with f(0) = 0 (lattice starts), the same on f / s^m from its exact
+// coefficients; last, f's real roots, compared exactly with u and u + delta.
+template <class Build> bool keeps_sign(Build&& build, const Rational& u, const Rational& delta) {
+  const std::pair<double, double> ue = CGAL::to_interval(u), de = CGAL::to_interval(delta);
   {
-    CGAL::Protect_FPU_rounding<true> guard;
-    const std::pair<double, double> e = CGAL::to_interval(u);
-    const Interval at(e.first, e.second);
-    const int s = certified_sign(build(
-        [at](const MovingPoint* p) {
-          return certificate::PointAtTime{p, at};
-        },
-        Interval())[0]);
-    if (s != 0)
-      return s;
+    CGAL::Protect_FPU_rounding<true> guard; // rounds upwards: hi encloses u + delta
+    const double hi = ue.second + de.second;
+    if (ue.first < hi && bernstein_sign(build(Interval()), ue.first, hi) != 0)
+      return true;
   }
-  return sign_plus(to_exact_poly(build([](const MovingPoint* p) { return *p; }, mpz_class())), SlabTime(u));
+  const Poly<mpz_class> exact = build(mpz_class());
+  const int degree = exact.degree_bound();
+  int m = 0;
+  while (m <= degree && exact[m] == 0)
+    ++m;
+  if (m > degree)
+    return true;
+  if (u == 0 && m > 0 && de.first > 0) {
+    CGAL::Protect_FPU_rounding<true> guard;
+    IntervalPoly g = IntervalPoly::zero_of_degree(degree - m);
+    for (int i = m; i <= degree; ++i)
+      g[i - m] = enclosure(exact[i]);
+    if (bernstein_sign(g, 0.0, de.second) != 0)
+      return true;
+  }
+  const SlabTime from(u), to(u + delta);
+  for (const auto& root : real_roots(to_exact_poly(exact)).roots) {
+    const SlabTime r(root.first);
+    if (from < r && !(to < r))
+      return false;
+  }
+  return true;
 }
 
 } // namespace
 
-int orientation_just_after(const std::vector<const MovingPoint*>& p, const Rational& u) {
-  return sign_just_after(
-      [&](auto at, auto nt) {
+bool orientation_keeps_sign(const std::vector<const MovingPoint*>& p, const CGAL::Gmpq& u,
+                            const CGAL::Gmpq& delta) {
+  return keeps_sign(
+      [&](auto nt) {
         using NT = decltype(nt);
-        return p.size() == 3 ? certificate::orientation_2<NT>(at(p[0]), at(p[1]), at(p[2]))
-                             : certificate::orientation<NT>(at(p[0]), at(p[1]), at(p[2]), at(p[3]));
+        return p.size() == 3 ? certificate::orientation_2<NT>(*p[0], *p[1], *p[2])
+                             : certificate::orientation<NT>(*p[0], *p[1], *p[2], *p[3]);
       },
-      u);
+      u, delta);
 }
 
-int in_sphere_just_after(const std::vector<const MovingPoint*>& p, const MovingPoint& y, const Rational& u) {
-  return sign_just_after(
-      [&](auto at, auto nt) {
+bool in_sphere_keeps_sign(const std::vector<const MovingPoint*>& p, const MovingPoint& y, const CGAL::Gmpq& u,
+                          const CGAL::Gmpq& delta) {
+  return keeps_sign(
+      [&](auto nt) {
         using NT = decltype(nt);
-        return p.size() == 3 ? certificate::in_circle<NT>(at(p[0]), at(p[1]), at(p[2]), at(&y))
-                             : certificate::in_sphere<NT>(at(p[0]), at(p[1]), at(p[2]), at(p[3]), at(&y));
+        return p.size() == 3 ? certificate::in_circle<NT>(*p[0], *p[1], *p[2], y)
+                             : certificate::in_sphere<NT>(*p[0], *p[1], *p[2], *p[3], y);
       },
-      u);
+      u, delta);
+}
+
+// MATH.md 5.7: the points span fewer than dim dimensions at every time of the slab iff, for a pair
+// (3D: a triple) that spans a line (a plane) at some time, every orientation with another point
+// vanishes identically; when every pair (triple) is degenerate for good the set is flat anyway.
+bool flat_for_good(int dim, const StaticInput& input) {
+  const std::vector<MovingPoint>& m = input.motion;
+  const auto zero = [](const Poly<mpz_class>& f) {
+    for (int i = 0; i <= f.degree_bound(); ++i)
+      if (f[i] != 0)
+        return false;
+    return true;
+  };
+  if (m.size() < static_cast<std::size_t>(dim) + 1)
+    return true;
+  std::size_t third = 1; // 3D: a point not on the line of m[0] and m[1] for good
+  if (dim == 3) {
+    for (third = 2; third < m.size(); ++third) {
+      const auto n = certificate::cross(certificate::difference<mpz_class>(m[0], m[1]),
+                                        certificate::difference<mpz_class>(m[0], m[third]));
+      if (!zero(n[0]) || !zero(n[1]) || !zero(n[2]))
+        break;
+    }
+    if (third == m.size())
+      return true; // all on one line for good
+  }
+  for (std::size_t x = 2; x < m.size(); ++x) {
+    if (x == third)
+      continue;
+    const Poly<mpz_class> o = dim == 2 ? certificate::orientation_2<mpz_class>(m[0], m[1], m[x])
+                                       : certificate::orientation<mpz_class>(m[0], m[1], m[third], m[x]);
+    if (!zero(o))
+      return false;
+  }
+  return true;
 }
 
 } // namespace medusa::kinetic::detail

@@ -400,12 +400,20 @@ TEST_CASE("a cell leaving the hull through a facet makes a hull flip when the te
   t.cells.push_back({5, 1, 0, {{2, 2, 2}, {8, 8, 8}}});
   KineticAlphaComplex engine(t, with_radius(1));
   BatchLog log;
-  engine.run(log);
+  testing::BatchRecorder steps;
+  testing::Tee both(log, steps);
+  engine.run(both);
   REQUIRE(engine.statistics().radius_events == 0);
   REQUIRE(log.batches.size() >= 1);
   REQUIRE(log.batches[0].time.time == Approx(200.0 / 9).epsilon(1e-12));
   REQUIRE(log.count(StepKind::hull_flip) >= 1);
   REQUIRE(engine.statistics().audits > 0);
+  // e starts inside abcd, so ebcd is a finite tetrahedron; it flattens and leaves Del (case A), and
+  // the stream says so (Step::delaunay_removed), with no finite tetrahedron created.
+  const Step& flip = steps.batches.front().second.front();
+  REQUIRE(flip.kind == StepKind::hull_flip);
+  REQUIRE(flip.delaunay_removed == std::vector<Simplex>{Simplex{1, 2, 3, 4}});
+  REQUIRE(flip.delaunay_created.empty());
 }
 
 namespace {

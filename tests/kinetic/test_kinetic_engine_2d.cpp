@@ -224,6 +224,58 @@ TEST_CASE("planar: an event closer to a frame than the static build's first delt
   REQUIRE(of_abcd == 2);
 }
 
+TEST_CASE("planar: a structure that passes every local test just after t0 but wraps twice is not taken for "
+          "Del(t0+)",
+          "[kinetic][engine][2d][degenerate]") {
+  // c at the centre of a regular pentagon P (radius 1000, vertex j at 72 j degrees); vertex j moves
+  // so that at u = 2^-24 it sits at 72 i degrees, i its place in the cycle (0, 2, 4, 1, 3) (two
+  // targets nudged so that no two paths meet). CGAL's triangulation at 2^-24 is the fan around c in
+  // that cycle: at u = 0 every one of its triangles is positively oriented, every interior edge
+  // locally Delaunay and every hull corner convex, yet it is a pentagram covering the middle twice.
+  // Some certificate of it has a root in (0, 2^-24] (the structure changes there), so it is not
+  // taken (MATH.md 5.5, method A, static_cgal.h just_after_holds): K(t0+) is the fan in the
+  // pentagon's own order, with the pentagon's edges and no star edge.
+  Trajectories t = planar({0, 100});
+  const auto on_circle = [](int i) {
+    const double a = 72.0 * i * 3.14159265358979323846 / 180.0;
+    return GridPoint{std::llround(1000 * std::cos(a)), std::llround(1000 * std::sin(a)), 0};
+  };
+  still(t, 1, 0, 0);
+  const int cycle[5] = {0, 2, 4, 1, 3};
+  for (int j = 0; j < 5; ++j) {
+    const int i = static_cast<int>(std::find(cycle, cycle + 5, j) - cycle);
+    const GridPoint p = on_circle(j);
+    GridPoint q = on_circle(i);
+    if (j == 3)
+      q[0] += 5;
+    if (j == 4)
+      q = {q[0] + 3, q[1] + 7, 0};
+    GridPoint end{};
+    for (int a = 0; a < 2; ++a)
+      end[static_cast<std::size_t>(a)] =
+          p[static_cast<std::size_t>(a)] +
+          (q[static_cast<std::size_t>(a)] - p[static_cast<std::size_t>(a)]) * (1 << 24);
+    moving(t, j + 2, {p, end});
+  }
+  KineticAlphaComplex engine(t, with_radius(4000000));
+  struct Initial : Observer {
+    std::vector<Simplex> k;
+    void initial(const EventTime&, const std::vector<Simplex>& complex) override { k = complex; }
+  } initial;
+  ReplayObserver obs(engine);
+  testing::Tee both(obs, initial);
+  engine.run(both);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
+  for (VertexId j = 1; j <= 5; ++j) {
+    CAPTURE(j);
+    const VertexId next = j % 5 + 1, across = (j + 1) % 5 + 1;
+    REQUIRE(std::count(initial.k.begin(), initial.k.end(), Simplex{0, j, next}) == 1);
+    REQUIRE(std::count(initial.k.begin(), initial.k.end(), Simplex{j, next}) == 1);
+    REQUIRE(std::count(initial.k.begin(), initial.k.end(), Simplex{j, across}) == 0);
+  }
+}
+
 TEST_CASE("planar: a cell leaving the hull through an edge makes a hull flip when its triangle flattens",
           "[kinetic][engine][2d]") {
   // d = (2,2) + u (6,6) crosses the hull edge bc (x + y = 10) at u = 1/2, t = 50: the orientation of
@@ -236,13 +288,20 @@ TEST_CASE("planar: a cell leaving the hull through an edge makes a hull flip whe
   moving(t, 4, {{2, 2, 0}, {8, 8, 0}});
   KineticAlphaComplex engine(t, with_radius(1));
   BatchLog log;
-  engine.run(log);
+  testing::BatchRecorder steps;
+  testing::Tee both(log, steps);
+  engine.run(both);
   REQUIRE(engine.statistics().radius_events == 0);
   REQUIRE(engine.statistics().flips22 == 0);
   REQUIRE(log.batches.size() == 1);
   REQUIRE(log.batches[0].time.time == 50.0);
   REQUIRE(log.count(StepKind::hull_flip) == 1);
   REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
+  // d starts inside abc, so bcd is a finite triangle; it flattens and leaves Del (case A), and the
+  // stream says so (Step::delaunay_removed), with no finite triangle created.
+  const Step& flip = steps.batches.front().second.front();
+  REQUIRE(flip.delaunay_removed == std::vector<Simplex>{Simplex{1, 2, 3}});
+  REQUIRE(flip.delaunay_created.empty());
 }
 
 TEST_CASE("planar: three cells passing through one line keep their triangle",
