@@ -414,6 +414,7 @@ struct Engine {
 
   [[noreturn]] void audit_failure(const std::string& what) const;
   void audit();
+  void audit_embedded(const Rational& q, const std::vector<Simplex>& cgal_tops);
 };
 
 // Adds the changes of c's shortness and membership (+1 gained, -1 lost, 0 unchanged) to the coface

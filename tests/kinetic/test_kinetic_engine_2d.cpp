@@ -234,7 +234,9 @@ TEST_CASE("planar: a structure that passes every local test just after t0 but wr
   // locally Delaunay and every hull corner convex, yet it is a pentagram covering the middle twice.
   // Some certificate of it has a root in (0, 2^-24] (the structure changes there), so it is not
   // taken (MATH.md 5.5, method A, static_cgal.h just_after_holds): K(t0+) is the fan in the
-  // pentagon's own order, with the pentagon's edges and no star edge.
+  // pentagon's own order, with the pentagon's edges and no star edge. (The audit would catch the
+  // pentagram too: where Del differs from CGAL's triangulation it now checks that it covers the hull
+  // once, Engine::audit_embedded.)
   Trajectories t = planar({0, 100});
   const auto on_circle = [](int i) {
     const double a = 72.0 * i * 3.14159265358979323846 / 180.0;
