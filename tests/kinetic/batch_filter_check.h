@@ -62,30 +62,4 @@ private:
   std::set<Simplex> k_;
 };
 
-// Feeds two observers.
-class TeeObserver : public Observer {
-public:
-  TeeObserver(Observer& a, Observer& b) : a_(a), b_(b) {}
-  void initial(const EventTime& t, const std::vector<Simplex>& k) override {
-    a_.initial(t, k);
-    b_.initial(t, k);
-  }
-  void batch(const EventTime& t, const std::vector<Step>& s) override {
-    a_.batch(t, s);
-    b_.batch(t, s);
-  }
-  void frame(std::size_t k, const EventTime& t) override {
-    a_.frame(k, t);
-    b_.frame(k, t);
-  }
-  void finish(const EventTime& t) override {
-    a_.finish(t);
-    b_.finish(t);
-  }
-
-private:
-  Observer& a_;
-  Observer& b_;
-};
-
 } // namespace medusa::kinetic::testing

@@ -125,10 +125,10 @@ public:
   std::vector<std::pair<EventTime, std::vector<Step>>> batches;
 };
 
-// Two observers fed the same stream.
-class Tee : public Observer {
+// Feeds two observers the same stream.
+class TeeObserver : public Observer {
 public:
-  Tee(Observer& a, Observer& b) : a_(a), b_(b) {}
+  TeeObserver(Observer& a, Observer& b) : a_(a), b_(b) {}
   void initial(const EventTime& t0, const std::vector<Simplex>& k) override {
     a_.initial(t0, k);
     b_.initial(t0, k);

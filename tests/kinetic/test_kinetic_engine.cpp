@@ -281,7 +281,7 @@ TEST_CASE("an event closer to a frame than the static build's first delta happen
   KineticAlphaComplex engine(t, with_radius(100));
   ReplayObserver obs(engine);
   testing::BatchRecorder log;
-  testing::Tee both(obs, log);
+  testing::TeeObserver both(obs, log);
   engine.run(both);
   REQUIRE(obs.mismatches == 0);
   REQUIRE(obs.inconsistencies == 0);
@@ -401,7 +401,7 @@ TEST_CASE("a cell leaving the hull through a facet makes a hull flip when the te
   KineticAlphaComplex engine(t, with_radius(1));
   BatchLog log;
   testing::BatchRecorder steps;
-  testing::Tee both(log, steps);
+  testing::TeeObserver both(log, steps);
   engine.run(both);
   REQUIRE(engine.statistics().radius_events == 0);
   REQUIRE(log.batches.size() >= 1);

@@ -265,7 +265,7 @@ TEST_CASE("planar: a structure that passes every local test just after t0 but wr
     void initial(const EventTime&, const std::vector<Simplex>& complex) override { k = complex; }
   } initial;
   ReplayObserver obs(engine);
-  testing::Tee both(obs, initial);
+  testing::TeeObserver both(obs, initial);
   engine.run(both);
   REQUIRE(obs.mismatches == 0);
   REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
@@ -291,7 +291,7 @@ TEST_CASE("planar: a cell leaving the hull through an edge makes a hull flip whe
   KineticAlphaComplex engine(t, with_radius(1));
   BatchLog log;
   testing::BatchRecorder steps;
-  testing::Tee both(log, steps);
+  testing::TeeObserver both(log, steps);
   engine.run(both);
   REQUIRE(engine.statistics().radius_events == 0);
   REQUIRE(engine.statistics().flips22 == 0);
