@@ -196,6 +196,13 @@ struct Engine {
     return orientation_of(seq.data(), 3, hull, z) > 0 ? o : -o;
   }
 
+  // Whether a facet's Delaunay certificate is case A of MATH.md 3.2: the facet is finite and on the
+  // hull, so its certificate is the orientation of the finite top simplex below it.
+  bool is_hull_orientation_of_finite_cell(const Simplex& facet) const {
+    const detail::Triangulation::Apices* ap = tri.apices(facet);
+    return is_finite(facet) && (ap->v[0] == infinite_vertex || ap->v[1] == infinite_vertex);
+  }
+
   // The orientation polynomial of a finite top simplex (a tetrahedron, a triangle in 2D).
   template <class NT> Poly<NT> orientation_poly(const Simplex& t) const {
     return t.size() == 3 ? certificate::orientation_2<NT>(pt(t[0]), pt(t[1]), pt(t[2]))

@@ -202,32 +202,25 @@ void Engine::audit_embedded(const Rational& q, const std::vector<Simplex>& cgal_
   };
   Rational ours(0), theirs(0);
   std::set<Simplex> our_hull, their_hull;
-  bool any_flat = false;
   for (const Simplex& t : tri.tets()) {
     if (!is_finite(t)) {
       our_hull.insert(t.facet(0));
       continue;
     }
+    // Zero too is a failure: Del(q) has no flat top simplex, not even one flat for the whole slab
+    // (Engine::install fails the hull certificate of such a simplex at the frame where it appears).
     const Rational v = volume(t);
-    // A top simplex flat through the whole slab (cells on one line or plane for good, kept at a
-    // frame where the hull certificate vanishes identically, MATH.md 5.3) covers nothing; the
-    // volumes below still have to agree.
-    bool flat_for_good = true;
-    const Poly<mpz_class> o = orientation_poly<mpz_class>(t);
-    for (int i = 0; i <= o.degree_bound(); ++i)
-      flat_for_good = flat_for_good && o[i] == 0;
-    if (CGAL::sign(v) != tri.orientation(t) && !flat_for_good) {
+    if (CGAL::sign(v) != tri.orientation(t)) {
       std::ostringstream os;
       os << "top simplex " << t << " is inside out or flat at the audit time";
       audit_failure(os.str());
     }
-    any_flat = any_flat || flat_for_good;
     ours += CGAL::abs(v);
   }
   for (const Simplex& t : cgal_tops)
     if (!is_finite(t))
       their_hull.insert(t.facet(0));
-  if (our_hull == their_hull && !any_flat)
+  if (our_hull == their_hull)
     return;
   for (const Simplex& t : cgal_tops)
     if (is_finite(t))

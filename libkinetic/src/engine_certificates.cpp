@@ -198,8 +198,13 @@ void Engine::install(int id) {
   if (CGAL::is_zero(f)) {
     // Identically zero: valid, never scheduled (MATH.md 3.9); but a radius polynomial f == 0 means
     // R = rho throughout, which is short, so a face still flagged long fails now (e.g. two cells
-    // moving rigidly at distance exactly 2 rho from a frame on).
-    if (c.kind == CertKind::radius && !faces.at(c.key).is_short) {
+    // moving rigidly at distance exactly 2 rho from a frame on). And the orientation of the finite top
+    // simplex under a hull facet (case A of MATH.md 3.2) == 0 means that simplex is flat for the whole
+    // slab: its apex reached the hull facet's plane (line) at this frame and stays there. A flat cell
+    // is no cell of Del(now+) (CGAL's perturbation moves in-spheres, never orientations), so it fails
+    // now and the hull flip or a repair removes it; Del(now+) then has the apex on the hull.
+    if ((c.kind == CertKind::radius && !faces.at(c.key).is_short) ||
+        (c.kind == CertKind::delaunay && is_hull_orientation_of_finite_cell(c.key))) {
       ++stats.invalid_at_creation;
       mark_invalid(id);
     }

@@ -520,6 +520,44 @@ TEST_CASE("a certificate vanishing exactly at a frame time is decided by the nex
   REQUIRE(log.batches[0].kinds.front() == StepKind::flip23);
 }
 
+TEST_CASE("a cell that reaches a hull facet at a frame and stays on it leaves its flat tetrahedron there",
+          "[kinetic][engine][degenerate]") {
+  // d = (3,3,3) - u (0,0,3) reaches the hull facet abc (z = 0, inside it since x + y = 6 < 10) at
+  // frame 1 (t = 100) and stays there in slab 1, so the orientation of abcd is identically zero in
+  // slab 1 and tetrahedron abcd would be flat all through it. Del(100+) has d on the hull and no abcd:
+  // the frame batch is that one hull flip, abcd + abc-infinity into abd, acd, bcd with infinity, and
+  // then no event. Before: the certificate counted as valid (identically zero, MATH.md 3.9), abcd
+  // stayed flat through slab 1, and the audit found Del different from CGAL's triangulation there.
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100, 200};
+  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p, p}}); };
+  still(1, {0, 0, 0});
+  still(2, {10, 0, 0});
+  still(3, {0, 10, 0});
+  still(4, {3, 3, 10});
+  t.cells.push_back({5, 1, 0, {{3, 3, 3}, {3, 3, 0}, {3, 3, 0}}});
+  KineticAlphaComplex engine(t, with_radius(1));
+  ReplayObserver replay(engine);
+  BatchLog log;
+  testing::BatchRecorder steps;
+  testing::TeeObserver both(log, steps);
+  testing::TeeObserver all(replay, both);
+  engine.run(all);
+  REQUIRE(log.batches.size() == 1);
+  REQUIRE(log.batches[0].time.at_frame);
+  REQUIRE(log.batches[0].time.time == 100.0);
+  REQUIRE(engine.statistics().hull_flips == 1);
+  REQUIRE(engine.statistics().flips23 + engine.statistics().flips32 == 0);
+  const Step& flip = steps.batches.front().second.front();
+  REQUIRE(flip.kind == StepKind::hull_flip);
+  REQUIRE(flip.delaunay_removed == std::vector<Simplex>{Simplex{0, 1, 2, 4}});
+  REQUIRE(flip.delaunay_created.empty());
+  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
+  REQUIRE(replay.mismatches == 0);
+  REQUIRE(replay.inconsistencies == 0);
+}
+
 TEST_CASE("a cell present only at the first frame is deleted at t0", "[kinetic][engine]") {
   // Found by the kinetic-medusa integration tests: such a cell used to stay in K for the whole run.
   Trajectories t = testing::random_walk(21, 20, 3, static_cast<int>(2000 * std::cbrt(20.0)), 600);
