@@ -203,6 +203,14 @@ struct Engine {
     return is_finite(facet) && (ap->v[0] == infinite_vertex || ap->v[1] == infinite_vertex);
   }
 
+  // Whether a facet's Delaunay certificate is case B of MATH.md 3.2: an infinite facet at a hull
+  // ridge (3D: hull edge; 2D: hull vertex), whose certificate is the convexity of the hull there.
+  bool is_hull_ridge(const Simplex& facet) const { return !is_finite(facet); }
+
+  // At a hull ridge whose certificate vanishes identically: whether its two hull facets are folded
+  // onto each other at now+ (engine_certificates.cpp).
+  bool hull_ridge_folded(const Simplex& facet);
+
   // The orientation polynomial of a finite top simplex (a tetrahedron, a triangle in 2D).
   template <class NT> Poly<NT> orientation_poly(const Simplex& t) const {
     return t.size() == 3 ? certificate::orientation_2<NT>(pt(t[0]), pt(t[1]), pt(t[2]))
@@ -279,6 +287,7 @@ struct Engine {
   int orientation_of(const VertexId* seq, std::size_t n, const Triangulation::Apices& ap,
                      VertexId apex) const;
   int orientation_sign_plus(const Simplex& t);
+  bool top_simplex_turns_at_frame();                // engine_frames.cpp
   bool flat_at_now(const Simplex& t);               // a finite top simplex whose orientation vanishes at now
   int orientation_enclosure_sign(const Simplex& t); // 0: the enclosure at now does not decide
   GeometryError flat_top_simplex_error(const Simplex& t) const; // t stays flat just after now
@@ -422,6 +431,7 @@ struct Engine {
   [[noreturn]] void audit_failure(const std::string& what) const;
   void audit();
   void audit_embedded(const Rational& q, const std::vector<Simplex>& cgal_tops);
+  void audit_supporting(const Rational& q, const Simplex& hull_facet);
 };
 
 // Adds the changes of c's shortness and membership (+1 gained, -1 lost, 0 unchanged) to the coface

@@ -2,8 +2,11 @@
 #include "engine.h"
 
 #include "dimension_policy.h"
+#include "medusa/kinetic/certificate_polynomials.h"
 #include "medusa/kinetic/error.h"
 #include "static_delaunay.h"
+
+#include <CGAL/FPU.h>
 
 #include <algorithm>
 #include <iterator>
@@ -190,8 +193,11 @@ void Engine::audit() {
 // Every local test passes on a fan that wraps twice around a centre, so local Delaunay at q does
 // not make a triangulation. With every finite top simplex positively oriented at q as recorded, the
 // structure maps onto the plane or space with a local degree that is its number of layers; with
-// CGAL's hull facets as its boundary, that number is one over the whole hull: it is embedded. Hull
-// facets that differ (coplanar hull points triangulated differently) leave the volumes to agree.
+// CGAL's hull facets as its boundary, that number is one over the whole hull: it is embedded. Where
+// the hull facets differ (coplanar hull points triangulated differently), every hull facet of ours
+// must support the points at q (none strictly outside its plane, or line). The boundary then lies
+// on the boundary of the convex hull, so the number of layers is the same over every interior
+// point, and equal volumes make it one.
 void Engine::audit_embedded(const Rational& q, const std::vector<Simplex>& cgal_tops) {
   const auto volume = [&](const Simplex& t) {
     const Poly<mpz_class> o = orientation_poly<mpz_class>(t);
@@ -222,11 +228,46 @@ void Engine::audit_embedded(const Rational& q, const std::vector<Simplex>& cgal_
       their_hull.insert(t.facet(0));
   if (our_hull == their_hull)
     return;
+  for (const Simplex& f : our_hull)
+    audit_supporting(q, f);
   for (const Simplex& t : cgal_tops)
     if (is_finite(t))
       theirs += CGAL::abs(volume(t));
   if (ours != theirs)
     audit_failure("the triangulation covers the hull more or less than once (volumes differ from CGAL's)");
+}
+
+// No cell lies strictly on the far side of the hull facet f's plane (line) at q from the apex of the
+// finite top simplex under f. Interval arithmetic at q first; exactly only where it cannot tell.
+void Engine::audit_supporting(const Rational& q, const Simplex& f) {
+  const detail::Triangulation::Apices& ap = tri.two_sided(f);
+  const VertexId z = ap.v[0] == infinite_vertex ? ap.v[1] : ap.v[0];
+  const auto side = [&](VertexId p) {
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      const Interval u = CGAL::to_interval(q);
+      const auto at = [&](VertexId v) { return certificate::PointAtTime{&pt(v), u}; };
+      const Interval o = dim == 2
+                             ? certificate::orientation_2<Interval>(at(f[0]), at(f[1]), at(p))[0]
+                             : certificate::orientation<Interval>(at(f[0]), at(f[1]), at(f[2]), at(p))[0];
+      if (o.inf() > 0 || o.sup() < 0)
+        return o.inf() > 0 ? 1 : -1;
+    }
+    const Poly<mpz_class> o = dim == 2
+                                  ? certificate::orientation_2<mpz_class>(pt(f[0]), pt(f[1]), pt(p))
+                                  : certificate::orientation<mpz_class>(pt(f[0]), pt(f[1]), pt(f[2]), pt(p));
+    Rational v(0);
+    for (int i = o.degree_bound(); i >= 0; --i)
+      v = v * q + Rational(CGAL::Gmpz(o[i].get_mpz_t()));
+    return static_cast<int>(CGAL::sign(v));
+  };
+  const int inside = side(z);
+  for (std::size_t i = 0; i < alive.size(); ++i)
+    if (alive[i] && side(static_cast<VertexId>(i)) == -inside) {
+      std::ostringstream os;
+      os << "vertex " << i << " lies outside the hull facet " << f << " at the audit time";
+      audit_failure(os.str());
+    }
 }
 
 } // namespace medusa::kinetic::detail

@@ -146,6 +146,31 @@ void Engine::count_built(const Certificate& c, bool enclosed) {
     ++stats.built_radius.at(c.key.size() - 2);
 }
 
+// Hull facets abc and abd (3D; hull edges ab and ac in 2D) in one plane (line) for the whole slab
+// are side by side when c and d lie on opposite sides of the line ab (b and c on opposite sides of
+// a): then the sign of dot((b - a) x (c - a), (b - a) x (d - a)) (of dot(b - a, c - a)) is negative.
+// Folded onto each other, it is positive, and no point set has such a hull: seed 6304 of
+// kinetic_stress, where a hull flip at an instant when five hull cells are coplanar left 11 outside
+// the plane of two folded facets. Zero for the whole slab means a hull facet is flat, which its
+// case-A certificate reports (Engine::install).
+bool Engine::hull_ridge_folded(const Simplex& facet) {
+  const detail::Triangulation::Apices* ap = tri.apices(facet);
+  const VertexId a = facet[1], p = ap->v[0], q = ap->v[1];
+  if (dim == 2)
+    return sign_plus_now([&](auto tag) {
+             using NT = decltype(tag);
+             return certificate::dot<NT>(certificate::difference<NT>(pt(a), pt(p)),
+                                         certificate::difference<NT>(pt(a), pt(q)));
+           }) > 0;
+  const VertexId b = facet[2];
+  return sign_plus_now([&](auto tag) {
+           using NT = decltype(tag);
+           const auto ab = certificate::difference<NT>(pt(a), pt(b));
+           return certificate::dot<NT>(certificate::cross<NT>(ab, certificate::difference<NT>(pt(a), pt(p))),
+                                       certificate::cross<NT>(ab, certificate::difference<NT>(pt(a), pt(q))));
+         }) > 0;
+}
+
 // Evaluates a fresh certificate at `now`: schedules its next failure in (now, 1), or queues it in
 // the current batch when it is already invalid just after now (MATH.md 3.7, 3.9).
 void Engine::install(int id) {
@@ -203,8 +228,12 @@ void Engine::install(int id) {
     // slab: its apex reached the hull facet's plane (line) at this frame and stays there. A flat cell
     // is no cell of Del(now+) (CGAL's perturbation moves in-spheres, never orientations), so it fails
     // now and the hull flip or a repair removes it; Del(now+) then has the apex on the hull.
+    // Nor is every identically-zero hull ridge valid: its two hull facets lie in one plane (line)
+    // for the whole slab, which is a convex hull only when they lie side by side, not when they
+    // are folded onto each other (Engine::hull_ridge_folded).
     if ((c.kind == CertKind::radius && !faces.at(c.key).is_short) ||
-        (c.kind == CertKind::delaunay && is_hull_orientation_of_finite_cell(c.key))) {
+        (c.kind == CertKind::delaunay && is_hull_orientation_of_finite_cell(c.key)) ||
+        (c.kind == CertKind::delaunay && is_hull_ridge(c.key) && hull_ridge_folded(c.key))) {
       ++stats.invalid_at_creation;
       mark_invalid(id);
     }

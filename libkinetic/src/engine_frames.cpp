@@ -55,6 +55,8 @@ void Engine::frame(Observer& observer, std::size_t k) {
     set_slab_motion(k);
     now = SlabTime();
     reinstall_all();
+    if (top_simplex_turns_at_frame())
+      repair(steps);
     resolve_delaunay(steps);
   }
   // Insertions, then deletions, one rank each in increasing cell id (MATH.md 5.6).
@@ -79,6 +81,21 @@ void Engine::frame(Observer& observer, std::size_t k) {
     observer.frame(k, event_time(true));
   if (options.audit)
     audit();
+}
+
+// Whether some finite top simplex flat at this frame is inside out (or still flat) just after it.
+// Within a slab a top simplex never flattens while it is Delaunay: a point enters its growing
+// circumsphere first, or, at the hull, its case-A certificate fails. At a frame the velocities change,
+// and cells that reach one plane (line) exactly there, typically on the hull, can carry their top
+// simplex through it. Every certificate that reads its recorded orientation then means nothing, and
+// elementary flips chosen on them can leave it inside out (stress seed 6265: the hull flip at one
+// ridge took away the hull facet whose certificate reported it). So Del(now+) is rebuilt (MATH.md
+// 5.4), which also sets the orientations of the top simplices it keeps (Engine::reorient_kept).
+bool Engine::top_simplex_turns_at_frame() {
+  for (const Simplex& t : tri.tets())
+    if (is_finite(t) && orientation_enclosure_sign(t) == 0 && orientation_sign_plus(t) != tri.orientation(t))
+      return true;
+  return false;
 }
 
 // One insertion or deletion of vertex v at the current frame, as its own rank (MATH.md 5.6), with

@@ -4,8 +4,9 @@
 // cycle; and distances of exactly 2 rho recur. Each seed below is one that the stress tool
 // (kinetic_stress.cpp) found failing: in 3D a flip applied without its flippability test, a flip
 // creating an edge that exists already, or "no progress" thrown where a static repair was due; in
-// either dimension a face left out of K at a radius touch (Engine::resolve_touches). Each must now
-// run to the end with the audit green.
+// either dimension a face left out of K at a radius touch (Engine::resolve_touches); hull facets
+// folded onto each other, or a top simplex turned inside out at a frame. Each must now run to the
+// end with the audit green.
 #include "kinetic_test_support.h"
 #include "medusa/kinetic/error.h"
 
@@ -115,6 +116,28 @@ TEST_CASE("a planar run whose cells cross one line at once never flips a flat tr
   // hand-built case in test_kinetic_engine_2d.cpp. Before: "audit failed in slab 0 after
   // u ~ 0.512980: facet [-1 38] is not locally Delaunay".
   run_to_the_end(5142);
+}
+
+TEST_CASE("two hull facets that stay in one plane are a valid hull only side by side, not folded",
+          "[kinetic][degenerate][lattice]") {
+  // Seed 6304 (3D, 30 cells, box 4): cells 6, 8, 16 and 17 stay in one plane through slab 0, and
+  // cell 11 crosses it at u = 1/sqrt(2), where all five are on the hull. The hull flip at that
+  // instant left hull facets [6 8 16] and [8 16 17] folded onto each other across their common edge,
+  // and the certificate there vanishes identically, which counted as valid. Before: "audit failed in
+  // slab 0 after u ~ 0.707107: vertex 11 lies outside the hull facet [6 8 16]" (the volumes differed
+  // from CGAL's too). The run ends where two cells of this walk land on one lattice site.
+  run_to_the_input_error(6304, "cells 11 and 17 are at the same position at frame 1");
+}
+
+TEST_CASE("a top simplex that flattens at a frame and turns inside out there is repaired at the frame",
+          "[kinetic][degenerate][lattice]") {
+  // Seed 6265 (3D, 25 cells): cells 2, 6, 11 and 21 reach the hull plane z = 11 together at frame 3,
+  // and their tetrahedron turns inside out in slab 3 (orientation 4u (u^2 - 3u + 3) there, recorded
+  // negative). Its hull facet's certificate failed, but the first flippable failure, a hull ridge next
+  // to it, took that facet away, and every certificate left reading the stale orientation passed.
+  // Before: "audit failed in slab 3 after u ~ 0.000000: top simplex [2 6 11 21] is inside out or flat
+  // at the audit time".
+  run_to_the_end(6265);
 }
 
 TEST_CASE("a run builds the same certificates whatever ran before it in the process",

@@ -525,9 +525,11 @@ TEST_CASE("a cell that reaches a hull facet at a frame and stays on it leaves it
   // d = (3,3,3) - u (0,0,3) reaches the hull facet abc (z = 0, inside it since x + y = 6 < 10) at
   // frame 1 (t = 100) and stays there in slab 1, so the orientation of abcd is identically zero in
   // slab 1 and tetrahedron abcd would be flat all through it. Del(100+) has d on the hull and no abcd:
-  // the frame batch is that one hull flip, abcd + abc-infinity into abd, acd, bcd with infinity, and
-  // then no event. Before: the certificate counted as valid (identically zero, MATH.md 3.9), abcd
-  // stayed flat through slab 1, and the audit found Del different from CGAL's triangulation there.
+  // the frame batch is one static repair (a top simplex flat at the frame and not positively oriented
+  // just after it, Engine::top_simplex_turns_at_frame) that removes abcd and creates no finite
+  // tetrahedron, and then nothing happens. Before: the certificate counted as valid (identically
+  // zero, MATH.md 3.9), abcd stayed flat through slab 1, and the audit found Del different from
+  // CGAL's triangulation there.
   Trajectories t;
   t.scale = 1;
   t.frame_times = {0, 100, 200};
@@ -547,12 +549,12 @@ TEST_CASE("a cell that reaches a hull facet at a frame and stays on it leaves it
   REQUIRE(log.batches.size() == 1);
   REQUIRE(log.batches[0].time.at_frame);
   REQUIRE(log.batches[0].time.time == 100.0);
-  REQUIRE(engine.statistics().hull_flips == 1);
-  REQUIRE(engine.statistics().flips23 + engine.statistics().flips32 == 0);
-  const Step& flip = steps.batches.front().second.front();
-  REQUIRE(flip.kind == StepKind::hull_flip);
-  REQUIRE(flip.delaunay_removed == std::vector<Simplex>{Simplex{0, 1, 2, 4}});
-  REQUIRE(flip.delaunay_created.empty());
+  REQUIRE(engine.statistics().flips() == 0);
+  REQUIRE(steps.batches.front().second.size() == 1);
+  const Step& repair = steps.batches.front().second.front();
+  REQUIRE(repair.kind == StepKind::repair);
+  REQUIRE(repair.delaunay_removed == std::vector<Simplex>{Simplex{0, 1, 2, 4}});
+  REQUIRE(repair.delaunay_created.empty());
   REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
   REQUIRE(replay.mismatches == 0);
   REQUIRE(replay.inconsistencies == 0);

@@ -310,7 +310,7 @@ TEST_CASE("planar: a cell that reaches a hull edge at a frame and stays on it le
           "[kinetic][engine][2d][degenerate]") {
   // The planar twin of the 3D case: d = (5,3) - u (0,3) reaches the hull edge ab (y = 0) at frame 1
   // (t = 100) and stays there, so triangle abd would be flat all through slab 1. The frame batch is
-  // the one hull flip that removes it (d joins the hull), and then nothing happens. Before: seed 31
+  // one static repair that removes it (d joins the hull), and then nothing happens. Before: seed 31
   // of "cells moving along shared lines" kept such a triangle through a whole slab.
   Trajectories t = planar({0, 100, 200});
   still(t, 1, 0, 0);
@@ -327,12 +327,12 @@ TEST_CASE("planar: a cell that reaches a hull edge at a frame and stays on it le
   REQUIRE(log.batches.size() == 1);
   REQUIRE(log.batches[0].time.at_frame);
   REQUIRE(log.batches[0].time.time == 100.0);
-  REQUIRE(engine.statistics().hull_flips == 1);
-  REQUIRE(engine.statistics().flips22 == 0);
-  const Step& flip = steps.batches.front().second.front();
-  REQUIRE(flip.kind == StepKind::hull_flip);
-  REQUIRE(flip.delaunay_removed == std::vector<Simplex>{Simplex{0, 1, 3}});
-  REQUIRE(flip.delaunay_created.empty());
+  REQUIRE(engine.statistics().flips() == 0);
+  REQUIRE(steps.batches.front().second.size() == 1);
+  const Step& repair = steps.batches.front().second.front();
+  REQUIRE(repair.kind == StepKind::repair);
+  REQUIRE(repair.delaunay_removed == std::vector<Simplex>{Simplex{0, 1, 3}});
+  REQUIRE(repair.delaunay_created.empty());
   REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
   REQUIRE(replay.mismatches == 0);
   REQUIRE(replay.inconsistencies == 0);
