@@ -214,7 +214,7 @@ void Engine::audit_embedded(const Rational& q, const std::vector<Simplex>& cgal_
       continue;
     }
     // Zero too is a failure: Del(q) has no flat top simplex, not even one flat for the whole slab
-    // (Engine::install fails the hull certificate of such a simplex at the frame where it appears).
+    // (the frame where one appears repairs it, Engine::top_simplex_turns_at_frame).
     const Rational v = volume(t);
     if (CGAL::sign(v) != tri.orientation(t)) {
       std::ostringstream os;
