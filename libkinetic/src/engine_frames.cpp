@@ -55,8 +55,10 @@ void Engine::frame(Observer& observer, std::size_t k) {
     set_slab_motion(k);
     now = SlabTime();
     reinstall_all();
-    if (top_simplex_turns_at_frame())
+    if (top_simplex_turns_at_frame()) {
+      ++stats.frames_repaired_for_flat_simplices;
       repair(steps);
+    }
     resolve_delaunay(steps);
   }
   // Insertions, then deletions, one rank each in increasing cell id (MATH.md 5.6).

@@ -550,6 +550,7 @@ TEST_CASE("a cell that reaches a hull facet at a frame and stays on it leaves it
   REQUIRE(log.batches[0].time.at_frame);
   REQUIRE(log.batches[0].time.time == 100.0);
   REQUIRE(engine.statistics().flips() == 0);
+  REQUIRE(engine.statistics().frames_repaired_for_flat_simplices == 1);
   REQUIRE(steps.batches.front().second.size() == 1);
   const Step& repair = steps.batches.front().second.front();
   REQUIRE(repair.kind == StepKind::repair);

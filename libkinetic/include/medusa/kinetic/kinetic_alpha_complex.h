@@ -39,6 +39,9 @@ struct KineticStatistics {
   std::size_t flips22 = 0; // planar runs: finite 2-2 flips (hull flips are counted in hull_flips)
   std::size_t insertions = 0, deletions = 0, static_rebuilds = 0;
   std::size_t repairs_at_algebraic_times = 0; // static repairs inside a slab (MATH.md 5.4)
+  // Frames repaired because a top simplex flat there was not positively oriented just after it
+  // (turned inside out, or flat for the whole new slab).
+  std::size_t frames_repaired_for_flat_simplices = 0;
   // Top simplices a static rebuild kept that had turned inside out through a flat instant.
   std::size_t reoriented = 0;
   std::size_t certificates_built = 0; // certificates created (Delaunay and radius)
