@@ -395,6 +395,7 @@ struct Engine {
   void rebuild_static(OldMembership& old_k);
   void reorient_kept(const std::vector<Simplex>& kept); // top simplices the rebuild kept
   Rational rational_before_next_event() const;
+  std::vector<Simplex> delaunay_after_algebraic_now(const std::vector<VertexId>& ids, int& dimension);
 
   // ------------------------------------ collisions (engine_collisions.cpp)
 

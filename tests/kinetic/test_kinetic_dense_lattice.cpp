@@ -5,8 +5,8 @@
 // (kinetic_stress.cpp) found failing: in 3D a flip applied without its flippability test, a flip
 // creating an edge that exists already, or "no progress" thrown where a static repair was due; in
 // either dimension a face left out of K at a radius touch (Engine::resolve_touches); hull facets
-// folded onto each other, or a top simplex turned inside out at a frame. Each must now run to the
-// end with the audit green.
+// folded onto each other, a top simplex turned inside out at a frame, or a repair at an algebraic
+// time built past a flat instant. Each must now run to the end with the audit green.
 #include "kinetic_test_support.h"
 #include "medusa/kinetic/error.h"
 
@@ -139,6 +139,18 @@ TEST_CASE("a top simplex that flattens at a frame and turns inside out there is 
   // at the audit time".
   const KineticStatistics s = run_to_the_end(6265);
   REQUIRE(s.frames_repaired_for_flat_simplices > 0);
+}
+
+TEST_CASE("a repair at an algebraic time keeps every top simplex oriented as just after that time",
+          "[kinetic][degenerate][lattice]") {
+  // Seed 20232 (2D, 46 cells): at u = 2/3 of slab 0 cells 19, 21, 25 and 36 are on one line, a
+  // batch that ends in a static repair at an isolated (not exactly known) time. The repair took Del
+  // at u = 3/4, the rational before the next queued event; but cell 25 crosses the line of 19 and
+  // 32 at u ~ 0.71, so triangle [19 25 32] of Del(3/4) lay outside the hull edge [19 32] just after
+  // 2/3, with every local certificate valid. Before: "audit failed in slab 0 after u ~ 0.666667:
+  // vertex 1 lies outside the hull facet [19 32]" (the volumes differed from CGAL's too).
+  const KineticStatistics s = run_to_the_end(20232);
+  REQUIRE(s.repairs_at_algebraic_times > 0);
 }
 
 TEST_CASE("a run builds the same certificates whatever ran before it in the process",
