@@ -1,11 +1,13 @@
 // Static rebuilds of Del with CGAL at now+ (insertions, deletions, repairs; MATH.md 5.4, 5.5).
 #include "engine.h"
 
+#include "medusa/kinetic/certificate_polynomials.h"
 #include "medusa/kinetic/error.h"
 #include "static_delaunay.h"
 
 #include <algorithm>
 #include <string>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -63,33 +65,56 @@ void Engine::rebuild_static(OldMembership& old_k) {
   reorient_kept(kept);
 }
 
-// Del at a rational q after an algebraic now, with q close enough that every finite top simplex has
-// the orientation just after now that it has at q. q starts before the next queued event, but that
-// bounds the events of the old triangulation only: a top simplex of the new one can pass through
-// flat in (now, q]. Its certificates, built at now+, then hold locally while it lies folded over its
-// neighbours, at the hull too (stress seed 20232: 25 crossed the line of 19 and 32 at u ~ 0.71
-// after a repair at u = 2/3 took Del at 3/4, leaving triangle [19 25 32] outside the hull edge [19
-// 32]). In-sphere failures in (now, q] need no such care: they fail at now+ and are flipped.
+// Del at a rational q after an algebraic now, with q close enough that the result is Del(now+): every
+// certificate it rests on (orientations of finite top simplices, in-spheres across finite facets,
+// hull ridges) has at q the sign it has just after now. q starts before the next queued event, but
+// that bounds the events of the old triangulation only. A top simplex of the new one passing through
+// flat in (now, q] would lie folded over its neighbours just after now with every local certificate
+// valid, at the hull too (stress seed 20232: 25 crossed the line of 19 and 32 at u ~ 0.71 after a
+// repair at u = 2/3 took Del at 3/4, leaving triangle [19 25 32] outside the hull edge [19 32]).
+// An in-sphere failing in (now, q] would be flipped at now+, but the flips would depend on q, which
+// depends on how the queue's times were rounded (a similarity of the input changed them, seed 11060).
 std::vector<Simplex> Engine::delaunay_after_algebraic_now(const std::vector<VertexId>& ids, int& dimension) {
   Rational q = rational_before_next_event();
+  const auto same_sign = [&](const auto& build) {
+    const Poly<mpz_class> f = build(mpz_class());
+    Rational v(0);
+    for (int i = f.degree_bound(); i >= 0; --i)
+      v = v * q + Rational(CGAL::Gmpz(f[i].get_mpz_t()));
+    return static_cast<int>(CGAL::sign(v)) == sign_plus_now(build);
+  };
   for (int attempt = 0; attempt < 200; ++attempt) {
     std::vector<Simplex> tets = detail::delaunay_at(dim, static_input(ids), q, dimension);
     if (dimension < dim)
       return tets; // flat input, reported by the caller
-    const auto same_orientation = [&](const Simplex& t) {
-      const Poly<mpz_class> o = orientation_poly<mpz_class>(t);
-      Rational v(0);
-      for (int i = o.degree_bound(); i >= 0; --i)
-        v = v * q + Rational(CGAL::Gmpz(o[i].get_mpz_t()));
-      return static_cast<int>(CGAL::sign(v)) == orientation_sign_plus(t);
-    };
-    if (std::all_of(tets.begin(), tets.end(),
-                    [&](const Simplex& t) { return !is_finite(t) || same_orientation(t); }))
+    std::unordered_map<Simplex, std::vector<VertexId>, SimplexHash> apices;
+    bool holds = true;
+    for (const Simplex& t : tets) {
+      for (std::size_t i = 0; i < t.size(); ++i)
+        apices[t.facet(i)].push_back(t[i]);
+      if (holds && is_finite(t))
+        holds = same_sign([&](auto tag) { return orientation_poly<decltype(tag)>(t); });
+    }
+    for (auto it = apices.begin(); holds && it != apices.end(); ++it) {
+      const Simplex& f = it->first;
+      const VertexId p = it->second.at(0), y = it->second.at(1);
+      if (is_finite(f) && (p == infinite_vertex || y == infinite_vertex))
+        continue; // case A: the orientation of the top simplex below, checked above
+      holds = same_sign([&](auto tag) {
+        using NT = decltype(tag);
+        if (!is_finite(f)) // case B: the hull is convex at the ridge
+          return dim == 2 ? certificate::orientation_2<NT>(pt(f[1]), pt(p), pt(y))
+                          : certificate::orientation<NT>(pt(f[1]), pt(f[2]), pt(p), pt(y));
+        return dim == 2 ? certificate::in_circle<NT>(pt(f[0]), pt(f[1]), pt(p), pt(y))
+                        : certificate::in_sphere<NT>(pt(f[0]), pt(f[1]), pt(f[2]), pt(p), pt(y));
+      });
+    }
+    if (holds)
       return tets;
     q = rational_between(now, SlabTime(q));
   }
   throw InternalError("no rational time just after u ~ " + std::to_string(now.approx()) + " in slab " +
-                      std::to_string(slab) + " keeps the orientations of the repaired triangulation");
+                      std::to_string(slab) + " gives a triangulation valid just after it");
 }
 
 // A top simplex that is flat at now and inside out just after can stay in Del(now+) with the same
