@@ -32,6 +32,13 @@ int sign_plus_rational(ExactPoly f, const Rational& u) {
 
 } // namespace
 
+Rational value_at(const Poly<mpz_class>& f, const Rational& q) {
+  Rational v(0);
+  for (int i = f.degree_bound(); i >= 0; --i)
+    v = v * q + Rational(to_gmpz(f[i]));
+  return v;
+}
+
 ExactPoly to_exact_poly(const Poly<mpz_class>& f) {
   std::vector<CGAL::Gmpz> coefficients;
   for (int i = 0; i <= f.degree_bound(); ++i)

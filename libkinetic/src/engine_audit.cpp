@@ -199,13 +199,7 @@ void Engine::audit() {
 // on the boundary of the convex hull, so the number of layers is the same over every interior
 // point, and equal volumes make it one.
 void Engine::audit_embedded(const Rational& q, const std::vector<Simplex>& cgal_tops) {
-  const auto volume = [&](const Simplex& t) {
-    const Poly<mpz_class> o = orientation_poly<mpz_class>(t);
-    Rational v(0);
-    for (int i = o.degree_bound(); i >= 0; --i)
-      v = v * q + Rational(CGAL::Gmpz(o[i].get_mpz_t()));
-    return v;
-  };
+  const auto volume = [&](const Simplex& t) { return value_at(orientation_poly<mpz_class>(t), q); };
   Rational ours(0), theirs(0);
   std::set<Simplex> our_hull, their_hull;
   for (const Simplex& t : tri.tets()) {
@@ -256,10 +250,7 @@ void Engine::audit_supporting(const Rational& q, const Simplex& f) {
     const Poly<mpz_class> o = dim == 2
                                   ? certificate::orientation_2<mpz_class>(pt(f[0]), pt(f[1]), pt(p))
                                   : certificate::orientation<mpz_class>(pt(f[0]), pt(f[1]), pt(f[2]), pt(p));
-    Rational v(0);
-    for (int i = o.degree_bound(); i >= 0; --i)
-      v = v * q + Rational(CGAL::Gmpz(o[i].get_mpz_t()));
-    return static_cast<int>(CGAL::sign(v));
+    return static_cast<int>(CGAL::sign(value_at(o, q)));
   };
   const int inside = side(z);
   for (std::size_t i = 0; i < alive.size(); ++i)

@@ -77,11 +77,7 @@ void Engine::rebuild_static(OldMembership& old_k) {
 std::vector<Simplex> Engine::delaunay_after_algebraic_now(const std::vector<VertexId>& ids, int& dimension) {
   Rational q = rational_before_next_event();
   const auto same_sign = [&](const auto& build) {
-    const Poly<mpz_class> f = build(mpz_class());
-    Rational v(0);
-    for (int i = f.degree_bound(); i >= 0; --i)
-      v = v * q + Rational(CGAL::Gmpz(f[i].get_mpz_t()));
-    return static_cast<int>(CGAL::sign(v)) == sign_plus_now(build);
+    return static_cast<int>(CGAL::sign(value_at(build(mpz_class()), q))) == sign_plus_now(build);
   };
   for (int attempt = 0; attempt < 200; ++attempt) {
     std::vector<Simplex> tets = detail::delaunay_at(dim, static_input(ids), q, dimension);

@@ -27,6 +27,9 @@ using Rational = CGAL::Gmpq;
 
 ExactPoly to_exact_poly(const Poly<mpz_class>& f);
 
+// f(q), exactly (Horner in rationals): the audit's and the repairs' checks at a rational time.
+Rational value_at(const Poly<mpz_class>& f, const Rational& q);
+
 // A root of a certificate polynomial isolated in doubles (root_isolation.h): exactly one root of the
 // polynomial lies in the open interval (lo, hi), and it is simple. The exact polynomial is computed
 // only when two times cannot be told apart in doubles (MATH.md 3.7: isolating intervals first,
