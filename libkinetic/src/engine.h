@@ -196,19 +196,9 @@ struct Engine {
     return orientation_of(seq.data(), 3, hull, z) > 0 ? o : -o;
   }
 
-  // Whether a facet's Delaunay certificate is case A of MATH.md 3.2: the facet is finite and on the
-  // hull, so its certificate is the orientation of the finite top simplex below it.
-  bool is_hull_orientation_of_finite_cell(const Simplex& facet) const {
-    const detail::Triangulation::Apices* ap = tri.apices(facet);
-    return is_finite(facet) && (ap->v[0] == infinite_vertex || ap->v[1] == infinite_vertex);
-  }
-
-  // Whether a facet's Delaunay certificate is case B of MATH.md 3.2: an infinite facet at a hull
-  // ridge (3D: hull edge; 2D: hull vertex), whose certificate is the convexity of the hull there.
-  bool is_hull_ridge(const Simplex& facet) const { return !is_finite(facet); }
-
-  // At a hull ridge whose certificate vanishes identically: whether its two hull facets are folded
-  // onto each other at now+ (engine_certificates.cpp).
+  // At a hull ridge (an infinite facet, case B of MATH.md 3.2) whose certificate vanishes
+  // identically: whether its two hull facets are folded onto each other at now+
+  // (engine_certificates.cpp).
   bool hull_ridge_folded(const Simplex& facet);
 
   // The orientation polynomial of a finite top simplex (a tetrahedron, a triangle in 2D).

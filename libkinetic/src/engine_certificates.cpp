@@ -151,8 +151,8 @@ void Engine::count_built(const Certificate& c, bool enclosed) {
 // a): then the sign of dot((b - a) x (c - a), (b - a) x (d - a)) (of dot(b - a, c - a)) is negative.
 // Folded onto each other, it is positive, and no point set has such a hull: seed 6304 of
 // kinetic_stress, where a hull flip at an instant when five hull cells are coplanar left 11 outside
-// the plane of two folded facets. Zero for the whole slab means a hull facet is flat, which its
-// case-A certificate reports (Engine::install).
+// the plane of two folded facets. Zero for the whole slab means a hull facet is flat, and so is the
+// top simplex below it, which the frame repairs (Engine::top_simplex_turns_at_frame).
 bool Engine::hull_ridge_folded(const Simplex& facet) {
   const detail::Triangulation::Apices* ap = tri.apices(facet);
   const VertexId a = facet[1], p = ap->v[0], q = ap->v[1];
@@ -223,17 +223,15 @@ void Engine::install(int id) {
   if (CGAL::is_zero(f)) {
     // Identically zero: valid, never scheduled (MATH.md 3.9); but a radius polynomial f == 0 means
     // R = rho throughout, which is short, so a face still flagged long fails now (e.g. two cells
-    // moving rigidly at distance exactly 2 rho from a frame on). And the orientation of the finite top
-    // simplex under a hull facet (case A of MATH.md 3.2) == 0 means that simplex is flat for the whole
-    // slab: its apex reached the hull facet's plane (line) at this frame and stays there. A flat cell
-    // is no cell of Del(now+) (CGAL's perturbation moves in-spheres, never orientations), so it fails
-    // now and the hull flip or a repair removes it; Del(now+) then has the apex on the hull.
-    // Nor is every identically-zero hull ridge valid: its two hull facets lie in one plane (line)
-    // for the whole slab, which is a convex hull only when they lie side by side, not when they
-    // are folded onto each other (Engine::hull_ridge_folded).
+    // moving rigidly at distance exactly 2 rho from a frame on). Nor is every identically-zero hull
+    // ridge (case B of MATH.md 3.2: an infinite facet) valid: its two hull facets lie in one plane
+    // (line) for the whole slab, which is a convex hull only when they lie side by side, not when
+    // they are folded onto each other (Engine::hull_ridge_folded). The third exception, a case-A
+    // certificate (the orientation of the finite top simplex under a hull facet) that vanishes for
+    // the whole slab, needs no test here: such a flat simplex can only appear at a frame, and the
+    // frame repairs it before resolving any certificate (Engine::top_simplex_turns_at_frame).
     if ((c.kind == CertKind::radius && !faces.at(c.key).is_short) ||
-        (c.kind == CertKind::delaunay && is_hull_orientation_of_finite_cell(c.key)) ||
-        (c.kind == CertKind::delaunay && is_hull_ridge(c.key) && hull_ridge_folded(c.key))) {
+        (c.kind == CertKind::delaunay && !is_finite(c.key) && hull_ridge_folded(c.key))) {
       ++stats.invalid_at_creation;
       mark_invalid(id);
     }
