@@ -1,5 +1,6 @@
 #include "medusa/kinetic/algebraic_time.h"
 
+#include "medusa/kinetic/error.h"
 #include "medusa/kinetic/root_isolation.h"
 
 #include <CGAL/Interval_nt.h>
@@ -259,6 +260,21 @@ std::vector<AlgebraicReal> sign_changes_after(const ExactPoly& f, const SlabTime
 
 Rational rational_between(const SlabTime& a, const SlabTime& b) {
   return kernel().bound_between_1_object()(a.algebraic(), b.algebraic());
+}
+
+// With lo <= a <= hi < b and hi - lo <= (b - hi) / 8, r = hi + (b - hi) / 8 lies in (a, b) and
+// r - a <= (hi - lo) + (b - hi) / 8 <= (b - hi) / 4 <= (b - a) / 4. Refining a's isolating interval
+// makes hi tend to a < b, so the condition is met after finitely many refinements.
+Rational rational_closer_after(const SlabTime& a, const Rational& b) {
+  if (!(a < SlabTime(b)))
+    throw InternalError("rational_closer_after needs a < b");
+  if (a.is_rational())
+    return a.rational() + (b - a.rational()) / 4;
+  for (int precision = 16;; precision += 16) {
+    const auto [lo, hi] = kernel().approximate_absolute_1_object()(a.algebraic(), precision);
+    if (hi < b && (hi - lo) * 8 <= b - hi)
+      return hi + (b - hi) / 8;
+  }
 }
 
 } // namespace medusa::kinetic

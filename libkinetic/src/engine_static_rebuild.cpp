@@ -74,12 +74,15 @@ void Engine::rebuild_static(OldMembership& old_k) {
 // repair at u = 2/3 took Del at 3/4, leaving triangle [19 25 32] outside the hull edge [19 32]).
 // An in-sphere failing in (now, q] would be flipped at now+, but the flips would depend on q, which
 // depends on how the queue's times were rounded (a similarity of the input changed them, seed 11060).
+// Each retry at least quarters q - now (rational_closer_after), so the loop ends once q - now is
+// below the distance from now to the first root after it of the result's certificates; the cap,
+// 2^-2048 of the first gap, only guards that, as in delaunay_just_after.
 std::vector<Simplex> Engine::delaunay_after_algebraic_now(const std::vector<VertexId>& ids, int& dimension) {
   Rational q = rational_before_next_event();
   const auto same_sign = [&](const auto& build) {
     return static_cast<int>(CGAL::sign(value_at(build(mpz_class()), q))) == sign_plus_now(build);
   };
-  for (int attempt = 0; attempt < 200; ++attempt) {
+  for (int attempt = 0; attempt < 1024; ++attempt) {
     std::vector<Simplex> tets = detail::delaunay_at(dim, static_input(ids), q, dimension);
     if (dimension < dim)
       return tets; // flat input, reported by the caller
@@ -107,7 +110,7 @@ std::vector<Simplex> Engine::delaunay_after_algebraic_now(const std::vector<Vert
     }
     if (holds)
       return tets;
-    q = rational_between(now, SlabTime(q));
+    q = rational_closer_after(now, q);
   }
   throw InternalError("no rational time just after u ~ " + std::to_string(now.approx()) + " in slab " +
                       std::to_string(slab) + " gives a triangulation valid just after it");

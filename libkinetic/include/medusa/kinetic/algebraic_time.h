@@ -147,6 +147,12 @@ std::vector<AlgebraicReal> sign_changes_after(const ExactPoly& f, const SlabTime
 // A rational strictly between a < b.
 Rational rational_between(const SlabTime& a, const SlabTime& b);
 
+// A rational r with a < r < b and r - a <= (b - a) / 4 (requires a < b): repeated, it closes in on a
+// at a proven rate. rational_between promises only some rational in between (CGAL's bound_between_1
+// returns a short dyadic between the two refined isolating intervals), so a loop that retries with it
+// has no bound on its number of steps.
+Rational rational_closer_after(const SlabTime& a, const Rational& b);
+
 } // namespace medusa::kinetic
 
 namespace medusa::kinetic {
