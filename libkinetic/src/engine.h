@@ -200,6 +200,25 @@ struct Engine {
   // identically: whether its two hull facets are folded onto each other at now+
   // (engine_certificates.cpp).
   bool hull_ridge_folded(const Simplex& facet);
+  // At a hull ridge whose certificate vanishes at now: whether its facets are folded onto each other
+  // at now around a top simplex that is not flat then, so that the triangulation is not embedded
+  // just after now (engine_certificates.cpp).
+  bool hull_ridge_folded_at_now(const Simplex& facet);
+
+  // Hull facets a b p and a b q at the ridge a b (hull edges a p and a q at the ridge vertex a in 2D)
+  // of the infinite facet [-1 a b] with apices p and q: dot((b - a) x (p - a), (b - a) x (q - a))
+  // (dot(p - a, q - a)). When the four points (three) are coplanar (collinear), it is positive iff
+  // the facets are folded onto each other, negative iff they lie side by side.
+  template <class NT> Poly<NT> fold_poly(const Simplex& facet) const {
+    const detail::Triangulation::Apices* ap = tri.apices(facet);
+    const VertexId a = facet[1], p = ap->v[0], q = ap->v[1];
+    if (dim == 2)
+      return certificate::dot<NT>(certificate::difference<NT>(pt(a), pt(p)),
+                                  certificate::difference<NT>(pt(a), pt(q)));
+    const auto ab = certificate::difference<NT>(pt(a), pt(facet[2]));
+    return certificate::dot<NT>(certificate::cross<NT>(ab, certificate::difference<NT>(pt(a), pt(p))),
+                                certificate::cross<NT>(ab, certificate::difference<NT>(pt(a), pt(q))));
+  }
 
   // The orientation polynomial of a finite top simplex (a tetrahedron, a triangle in 2D).
   template <class NT> Poly<NT> orientation_poly(const Simplex& t) const {

@@ -131,6 +131,20 @@ TEST_CASE("two hull facets that stay in one plane are a valid hull only side by 
   run_to_the_input_error(6304, "cells 11 and 17 are at the same position at frame 1");
 }
 
+TEST_CASE("a hull cell passing through the plane of its hull neighbours leaves no facets folded",
+          "[kinetic][degenerate][lattice]") {
+  // Seed 31284 (3D, 40 cells): at u = 2/3 of slab 0 cell 10, the apex of four hull facets over the
+  // quadrilateral 5 15 28 24, passes through the plane of those four cells, which are coplanar at that
+  // instant only. The hull flip at ridge [5 10] made facets [5 15 24] and [10 15 24]; the latter
+  // lies folded onto [10 15 28] and [10 24 28] at 2/3, and the certificates of those ridges,
+  // orientation(10, 15, 24, 28) = -(u - 2)(3u - 2)^2, touch zero there and hold just after. Every
+  // certificate held, and 28 lay outside the hull facet [5 15 24]. Before: "audit failed in slab 0
+  // after u ~ 0.666667: vertex 28 lies outside the hull facet [5 15 24]" (with the audit after every
+  // batch).
+  const KineticStatistics s = run_to_the_end(31284);
+  REQUIRE(s.hull_ridges_folded_at_now > 0);
+}
+
 TEST_CASE("a top simplex that flattens at a frame and turns inside out there is repaired at the frame",
           "[kinetic][degenerate][lattice]") {
   // Seed 6265 (3D, 25 cells): cells 2, 6, 11 and 21 reach the hull plane z = 11 together at frame 3,

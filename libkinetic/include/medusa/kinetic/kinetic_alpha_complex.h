@@ -42,6 +42,7 @@ struct KineticStatistics {
   // Frames repaired because a top simplex flat there was not positively oriented just after it
   // (turned inside out, or flat for the whole new slab).
   std::size_t frames_repaired_for_flat_simplices = 0;
+  std::size_t hull_ridges_folded_at_now = 0; // failed at creation: facets folded at a vanishing certificate
   // Top simplices a static rebuild kept that had turned inside out through a flat instant.
   std::size_t reoriented = 0;
   std::size_t certificates_built = 0; // certificates created (Delaunay and radius)
