@@ -159,13 +159,14 @@ bool Engine::hull_ridge_folded(const Simplex& facet) {
 
 // A hull ridge whose certificate vanishes at now has its two facets in one plane (line) at now. Side
 // by side, the sign just after now says, as always, whether the hull is convex there. Folded onto
-// each other, the hull is a knife edge at now (interior angle 0) or wraps fully round the ridge
-// (angle 2 pi), and the sign just after cannot tell the two apart. An embedded triangulation has the
-// knife edge only, and then every top simplex around the ridge has angle 0 there: all of them are
-// flat at now. So a fold at now with a top simplex around the ridge that is not flat means the
-// triangulation is not embedded just after now, though every certificate may hold: stress seed
-// 31284, where a hull flip at the instant when a hull cell passed through the plane of its four hull
-// neighbours (a touch for two of the new ridges' certificates) left two pairs of facets folded.
+// each other, the angle between the facets is 0 modulo 2 pi at now, and a valid sign just after now
+// reads a knife edge. But the top simplices around the ridge, positively oriented, fill the angle
+// from one facet to the other: in an embedded triangulation their angles sum to the knife's, so
+// every one of them has angle 0 at the ridge at now, i.e. is flat at now. A top simplex around the
+// ridge that is not flat at now makes the sum 2 pi or more: the simplices wrap round the ridge and
+// the triangulation is not embedded just after now, though every certificate may hold. Stress seed
+// 31284: a hull flip at the instant a hull cell passed through the plane of its four hull neighbours
+// left two pairs of facets folded, at ridges whose certificates touch zero there.
 bool Engine::hull_ridge_folded_at_now(const Simplex& facet) {
   if (sign_at_now([&](auto tag) { return delaunay_poly<decltype(tag)>(facet); }) != 0)
     return false;
