@@ -205,19 +205,28 @@ struct Engine {
   // just after now (engine_certificates.cpp).
   bool hull_ridge_folded_at_now(const Simplex& facet);
 
-  // Hull facets a b p and a b q at the ridge a b (hull edges a p and a q at the ridge vertex a in 2D)
-  // of the infinite facet [-1 a b] with apices p and q: dot((b - a) x (p - a), (b - a) x (q - a))
-  // (dot(p - a, q - a)). When the four points (three) are coplanar (collinear), it is positive iff
-  // the facets are folded onto each other, negative iff they lie side by side.
+  // Facets a b p and a b q at the ridge a b (edges a p and a q at the ridge vertex a in 2D):
+  // dot((b - a) x (p - a), (b - a) x (q - a)) (dot(p - a, q - a)). When the four points (three) are
+  // coplanar (collinear), it is positive iff the facets are folded onto each other, negative iff they
+  // lie side by side. `at` gives the points: moving (pt) for the polynomial, at now's enclosure
+  // (points_at_now) for its value at now.
+  template <class NT, class At>
+  Poly<NT> fold_poly(const Simplex& ridge, VertexId p, VertexId q, const At& at) const {
+    const VertexId a = ridge[0];
+    if (dim == 2)
+      return certificate::dot<NT>(certificate::difference<NT>(at(a), at(p)),
+                                  certificate::difference<NT>(at(a), at(q)));
+    const auto ab = certificate::difference<NT>(at(a), at(ridge[1]));
+    return certificate::dot<NT>(certificate::cross<NT>(ab, certificate::difference<NT>(at(a), at(p))),
+                                certificate::cross<NT>(ab, certificate::difference<NT>(at(a), at(q))));
+  }
+  template <class NT> Poly<NT> fold_poly(const Simplex& ridge, VertexId p, VertexId q) const {
+    return fold_poly<NT>(ridge, p, q, [this](VertexId v) -> const MovingPoint& { return pt(v); });
+  }
+  // The hull facets at the ridge of the infinite facet [-1 a b] ([-1 a]).
   template <class NT> Poly<NT> fold_poly(const Simplex& facet) const {
     const detail::Triangulation::Apices* ap = tri.apices(facet);
-    const VertexId a = facet[1], p = ap->v[0], q = ap->v[1];
-    if (dim == 2)
-      return certificate::dot<NT>(certificate::difference<NT>(pt(a), pt(p)),
-                                  certificate::difference<NT>(pt(a), pt(q)));
-    const auto ab = certificate::difference<NT>(pt(a), pt(facet[2]));
-    return certificate::dot<NT>(certificate::cross<NT>(ab, certificate::difference<NT>(pt(a), pt(p))),
-                                certificate::cross<NT>(ab, certificate::difference<NT>(pt(a), pt(q))));
+    return fold_poly<NT>(facet.facet(0), ap->v[0], ap->v[1]);
   }
 
   // The orientation polynomial of a finite top simplex (a tetrahedron, a triangle in 2D).

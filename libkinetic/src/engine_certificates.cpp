@@ -162,20 +162,44 @@ bool Engine::hull_ridge_folded(const Simplex& facet) {
 // each other, the angle between the facets is 0 modulo 2 pi at now, and a valid sign just after now
 // reads a knife edge. But the top simplices around the ridge, positively oriented, fill the angle
 // from one facet to the other: in an embedded triangulation their angles sum to the knife's, so
-// every one of them has angle 0 at the ridge at now, i.e. is flat at now. A top simplex around the
-// ridge that is not flat at now makes the sum 2 pi or more: the simplices wrap round the ridge and
-// the triangulation is not embedded just after now, though every certificate may hold. Stress seed
-// 31284: a hull flip at the instant a hull cell passed through the plane of its four hull neighbours
-// left two pairs of facets folded, at ridges whose certificates touch zero there.
+// every one of them has angle 0 at the ridge at now: it is flat at now, with its two vertices off the
+// ridge on one side of it (folded, as the hull facets are). One that is not flat at now, or flat
+// with its two vertices on either side of the ridge (angle pi), makes the sum 2 pi or more: the
+// simplices wrap round the ridge and the triangulation is not embedded just after now, though every
+// certificate may hold. Stress seed 31284: a hull flip at the instant a hull cell passed through the
+// plane of its four hull neighbours left two pairs of facets folded, at ridges whose certificates
+// touch zero there. (Where a vertex lies on the ridge's line at now the angle is undefined, and
+// nothing is concluded.)
 bool Engine::hull_ridge_folded_at_now(const Simplex& facet) {
+  const Simplex ridge = facet.facet(0);
+  {
+    // At now's enclosure first: most hull ridges are far from flat at now, and the new ridges of a
+    // hull flip, whose certificates vanish at now with the flip's own, have their facets side by
+    // side. Only the rest is decided exactly.
+    CGAL::Protect_FPU_rounding<true> guard;
+    const auto at = points_at_now();
+    const detail::Triangulation::Apices* ap = tri.apices(facet);
+    const VertexId a = ridge[0], p = ap->v[0], q = ap->v[1];
+    const Interval o = dim == 2 ? certificate::orientation_2<Interval>(at(a), at(p), at(q))[0]
+                                : certificate::orientation<Interval>(at(a), at(ridge[1]), at(p), at(q))[0];
+    if (o.inf() > 0 || o.sup() < 0 || fold_poly<Interval>(ridge, p, q, at)[0].sup() < 0)
+      return false;
+  }
   if (sign_at_now([&](auto tag) { return delaunay_poly<decltype(tag)>(facet); }) != 0)
     return false;
   if (sign_at_now([&](auto tag) { return fold_poly<decltype(tag)>(facet); }) <= 0)
     return false;
   bool knife = true;
-  tri.for_each_tet_containing(facet.facet(0), [&](const Simplex& t) {
-    if (knife && is_finite(t) && !flat_at_now(t))
-      knife = false;
+  tri.for_each_tet_containing(ridge, [&](const Simplex& t) {
+    if (!knife || !is_finite(t))
+      return;
+    std::array<VertexId, 2> off{};
+    std::size_t n = 0;
+    for (VertexId v : t)
+      if (!ridge.contains(v))
+        off[n++] = v;
+    knife = flat_at_now(t) &&
+            sign_at_now([&](auto tag) { return fold_poly<decltype(tag)>(ridge, off[0], off[1]); }) >= 0;
   });
   return !knife;
 }

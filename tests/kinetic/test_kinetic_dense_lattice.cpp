@@ -139,8 +139,7 @@ TEST_CASE("a hull cell passing through the plane of its hull neighbours leaves n
   // lies folded onto [10 15 28] and [10 24 28] at 2/3, and the certificates of those ridges,
   // orientation(10, 15, 24, 28) = -(u - 2)(3u - 2)^2, touch zero there and hold just after. Every
   // certificate held, and 28 lay outside the hull facet [5 15 24]. Before: "audit failed in slab 0
-  // after u ~ 0.666667: vertex 28 lies outside the hull facet [5 15 24]" (with the audit after every
-  // batch).
+  // after u ~ 0.677720: vertex 28 lies outside the hull facet [5 15 24]".
   const KineticStatistics s = run_to_the_end(31284);
   REQUIRE(s.hull_ridges_folded_at_now > 0);
 }
