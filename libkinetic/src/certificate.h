@@ -15,6 +15,10 @@ struct Certificate {
   Simplex key; // the facet (delaunay) or the finite face (radius)
   std::uint32_t version = 0;
   bool alive = false;
+  // A hull ridge (case B of MATH.md 3.2) whose orientation vanishes for the whole slab: its facets
+  // stay in one plane (line), and the certificate is then that they lie side by side there, the
+  // negated Engine::fold_poly, which fails when a facet degenerates and the two fold onto each other.
+  bool fold = false;
 };
 
 } // namespace medusa::kinetic::detail

@@ -196,10 +196,6 @@ struct Engine {
     return orientation_of(seq.data(), 3, hull, z) > 0 ? o : -o;
   }
 
-  // At a hull ridge (an infinite facet, case B of MATH.md 3.2) whose certificate vanishes
-  // identically: whether its two hull facets are folded onto each other at now+
-  // (engine_certificates.cpp).
-  bool hull_ridge_folded(const Simplex& facet);
   // At a hull ridge whose certificate vanishes at now: whether its facets are folded onto each other
   // at now around a top simplex that is not flat then, so that the triangulation is not embedded
   // just after now (engine_certificates.cpp).
@@ -250,7 +246,7 @@ struct Engine {
   // wider. False for the orientation certificates at the hull.
   bool cert_enclosure(const Certificate& c, IntervalPoly& f) const {
     if (c.kind == CertKind::delaunay)
-      return delaunay_enclosure(c.key, f);
+      return !c.fold && delaunay_enclosure(c.key, f);
     if (!radius_enclosure(c.key, f))
       return false;
     if (faces.at(c.key).is_short)
@@ -481,7 +477,7 @@ bool Engine::in_frontier(const Simplex& s, const Face& f, FacetShort&& facet_sho
 
 template <class NT> Poly<NT> Engine::cert_poly(const Certificate& c) const {
   if (c.kind == CertKind::delaunay)
-    return delaunay_poly<NT>(c.key);
+    return c.fold ? -fold_poly<NT>(c.key) : delaunay_poly<NT>(c.key);
   Poly<NT> f = radius_poly<NT>(c.key, pick(P, Pi, NT()), pick(Q, Qi, NT()));
   // Positive while valid: -f while short, +f while long (MATH.md 3.1).
   return faces.at(c.key).is_short ? -f : f;

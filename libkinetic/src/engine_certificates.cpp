@@ -122,6 +122,7 @@ int Engine::new_cert(CertKind kind, const Simplex& key) {
   c.kind = kind;
   c.key = key;
   c.alive = true;
+  c.fold = false;
   ++c.version;
   return id;
 }
@@ -144,17 +145,6 @@ void Engine::count_built(const Certificate& c, bool enclosed) {
     ++(enclosed ? stats.built_in_sphere : stats.built_hull);
   else
     ++stats.built_radius.at(c.key.size() - 2);
-}
-
-// Hull facets abc and abd (3D; hull edges ab and ac in 2D) in one plane (line) for the whole slab
-// are side by side when c and d lie on opposite sides of the line ab (b and c on opposite sides of
-// a): then the sign of dot((b - a) x (c - a), (b - a) x (d - a)) (of dot(b - a, c - a)) is negative.
-// Folded onto each other, it is positive, and no point set has such a hull: seed 6304 of
-// kinetic_stress, where a hull flip at an instant when five hull cells are coplanar left 11 outside
-// the plane of two folded facets. Zero for the whole slab means a hull facet is flat, and so is the
-// top simplex below it, which the frame repairs (Engine::top_simplex_turns_at_frame).
-bool Engine::hull_ridge_folded(const Simplex& facet) {
-  return sign_plus_now([&](auto tag) { return fold_poly<decltype(tag)>(facet); }) > 0;
 }
 
 // A hull ridge whose certificate vanishes at now has its two facets in one plane (line) at now. Side
@@ -258,13 +248,22 @@ void Engine::install(int id) {
     // R = rho throughout, which is short, so a face still flagged long fails now (e.g. two cells
     // moving rigidly at distance exactly 2 rho from a frame on). Nor is every identically-zero hull
     // ridge (case B of MATH.md 3.2: an infinite facet) valid: its two hull facets lie in one plane
-    // (line) for the whole slab, which is a convex hull only when they lie side by side, not when
-    // they are folded onto each other (Engine::hull_ridge_folded). The third exception, a case-A
-    // certificate (the orientation of the finite top simplex under a hull facet) that vanishes for
-    // the whole slab, needs no test here: such a flat simplex can only appear at a frame, and the
-    // frame repairs it before resolving any certificate (Engine::top_simplex_turns_at_frame).
-    if ((c.kind == CertKind::radius && !faces.at(c.key).is_short) ||
-        (c.kind == CertKind::delaunay && !is_finite(c.key) && hull_ridge_folded(c.key))) {
+    // (line) for the whole slab, which is a convex hull only while they lie side by side, not once
+    // they fold onto each other (stress seed 6304: a hull flip at an instant when five hull cells
+    // were coplanar left two facets folded; hull-box seed 146: a cell crossed the ridge line of
+    // coplanar facets inside the slab). So the certificate becomes the fold test (Certificate::fold),
+    // installed in its place: failing now when folded just after now, scheduled when they fold
+    // later. The third exception, a case-A certificate (the orientation of the finite top simplex
+    // under a hull facet) that vanishes for the whole slab, needs no test here: such a flat simplex
+    // can only appear at a frame, and the frame repairs it before resolving any certificate
+    // (Engine::top_simplex_turns_at_frame). A fold test that vanishes identically too means a
+    // hull facet is flat for the whole slab, and so is the top simplex below it: the same case.
+    if (c.kind == CertKind::delaunay && !is_finite(c.key) && !c.fold) {
+      c.fold = true;
+      install(id);
+      return;
+    }
+    if (c.kind == CertKind::radius && !faces.at(c.key).is_short) {
       ++stats.invalid_at_creation;
       mark_invalid(id);
     }
@@ -437,6 +436,15 @@ CacheKey Engine::cache_key(const Certificate& c) const {
     pts[n++] = v;
   if (c.kind == CertKind::radius) {
     k.v[0] = 2;
+  } else if (c.fold) {
+    // The ridge's points, then the two apices (Engine::fold_poly).
+    const detail::Triangulation::Apices* ap = tri.apices(c.key);
+    k.v[0] = 3;
+    n = 0;
+    for (VertexId v : c.key.facet(0))
+      pts[n++] = v;
+    pts[n++] = std::min(ap->v[0], ap->v[1]);
+    pts[n++] = std::max(ap->v[0], ap->v[1]);
   } else {
     const detail::Triangulation::Apices* ap = tri.apices(c.key);
     pts[n++] = ap->v[0];

@@ -61,8 +61,11 @@ void Engine::process_batch(std::vector<Step>& steps) {
 void Engine::fire(const QueueEntry& e) {
   if (e.touch)
     pending_touch.emplace_back(static_cast<int>(e.cert), e.version);
-  else
+  else {
+    if (certs[e.cert].fold)
+      ++stats.hull_ridges_folding;
     mark_invalid(static_cast<int>(e.cert));
+  }
 }
 
 void Engine::run_slab(Observer& observer) {

@@ -16,7 +16,15 @@ Poly<mpz_class> KeyPolynomial::coefficients(const std::array<MovingPoint, 5>& p)
     f = certificate::orientation_2<mpz_class>(p[0], p[1], p[2]);
   else if (kind == 1)
     f = certificate::orientation<mpz_class>(p[0], p[1], p[2], p[3]);
-  else if (count == 2)
+  else if (kind == 3 && count == 3) // fold test at a planar hull vertex p0 with hull neighbours p1, p2
+    f = certificate::dot<mpz_class>(certificate::difference<mpz_class>(p[0], p[1]),
+                                    certificate::difference<mpz_class>(p[0], p[2]));
+  else if (kind == 3) { // fold test at the hull ridge p0 p1 with apices p2, p3
+    const auto ab = certificate::difference<mpz_class>(p[0], p[1]);
+    f = certificate::dot<mpz_class>(
+        certificate::cross<mpz_class>(ab, certificate::difference<mpz_class>(p[0], p[2])),
+        certificate::cross<mpz_class>(ab, certificate::difference<mpz_class>(p[0], p[3])));
+  } else if (count == 2)
     f = certificate::edge_radius<mpz_class>(p[0], p[1], rho2->num, rho2->den);
   else if (count == 3)
     f = certificate::triangle_radius<mpz_class>(p[0], p[1], p[2], rho2->num, rho2->den);

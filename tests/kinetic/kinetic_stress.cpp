@@ -5,7 +5,8 @@
 // hunting degenerate cases (the regression tests take the seeds it finds,
 // test_kinetic_dense_lattice.cpp).
 //
-// Usage: kinetic_stress [first-seed] [count] [seconds]     (defaults 1, 1000, 600)
+// Usage: kinetic_stress [first-seed] [count] [seconds] [input]     (defaults 1, 1000, 600, lattice)
+// input: lattice (testing::dense_lattice_run), box3 or box2 (testing::hull_box_run in 3D or 2D).
 // MEDUSA_STRESS_VERBOSE=1 also prints why each rejected input was rejected.
 // Exit code 1 when some seed failed.
 #include "kinetic_test_support.h"
@@ -22,6 +23,11 @@ int main(int argc, char** argv) {
   const std::uint64_t first = argc > 1 ? std::stoull(argv[1]) : 1;
   const std::uint64_t count = argc > 2 ? std::stoull(argv[2]) : 1000;
   const int seconds = argc > 3 ? std::stoi(argv[3]) : 600;
+  const std::string input = argc > 4 ? argv[4] : "lattice";
+  if (input != "lattice" && input != "box3" && input != "box2") {
+    std::fprintf(stderr, "kinetic_stress: unknown input '%s' (lattice, box3 or box2)\n", input.c_str());
+    return 2;
+  }
   const bool verbose = std::getenv("MEDUSA_STRESS_VERBOSE") != nullptr;
   const auto start = std::chrono::steady_clock::now();
   int ok = 0, input_errors = 0, failures = 0, skipped = 0;
@@ -29,7 +35,9 @@ int main(int argc, char** argv) {
     if (std::chrono::steady_clock::now() - start > std::chrono::seconds(seconds))
       break;
     testing::DenseLatticeRun run;
-    if (!testing::dense_lattice_run(seed, run)) {
+    const bool made = input == "lattice" ? testing::dense_lattice_run(seed, run)
+                                         : testing::hull_box_run(seed, input == "box3" ? 3 : 2, run);
+    if (!made) {
       ++skipped;
       continue;
     }

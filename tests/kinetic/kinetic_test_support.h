@@ -345,4 +345,77 @@ inline bool dense_lattice_run(std::uint64_t seed, DenseLatticeRun& run) {
   return true;
 }
 
+// Walks clamped to a small lattice box, with about half the cells starting on its faces: the stress
+// input for the hull's degeneracies (coplanar and collinear hull cells, cells moving onto and off a
+// face, hull facets degenerating inside a slab). From the seed alone, in dimension dim: box side 2-5,
+// up to 35 cells (25 in 2D; at most half the sites), 3-6 frames, steps of -1, 0 or 1 per coordinate
+// (a quarter of the steps stay), rho between 0.5 and 3.4, the audit after every batch. Returns false
+// when the seed gives too few cells or a cell finds no step free of collisions.
+inline bool hull_box_run(std::uint64_t seed, int dim, DenseLatticeRun& run) {
+  std::mt19937_64 rng(seed * 104729 + 7);
+  run.two_d = dim == 2;
+  run.box = 2 + int(rng() % 4);
+  run.n = 6 + int(rng() % (dim == 3 ? 30 : 20));
+  run.frames = 3 + int(rng() % 4);
+  run.step = 1;
+  const int sites = dim == 3 ? (run.box + 1) * (run.box + 1) * (run.box + 1) : (run.box + 1) * (run.box + 1);
+  run.n = std::min(run.n, sites / 2);
+  if (run.n < dim + 2)
+    return false;
+  Trajectories& t = run.trajectories;
+  t = Trajectories();
+  t.dimension = dim;
+  t.scale = 1;
+  for (int k = 0; k < run.frames; ++k)
+    t.frame_times.push_back(100 * k);
+  const std::int64_t box = run.box;
+  const auto clamp = [&](std::int64_t x) { return std::max<std::int64_t>(0, std::min(box, x)); };
+  std::set<GridPoint> used;
+  for (int i = 0; i < run.n; ++i) {
+    Trajectory c;
+    c.cell_id = i + 1;
+    c.type = 1 + i % 2;
+    GridPoint p;
+    do {
+      p = {std::int64_t(rng() % (box + 1)), std::int64_t(rng() % (box + 1)),
+           dim == 3 ? std::int64_t(rng() % (box + 1)) : 0};
+      if (rng() % 2)
+        p[rng() % unsigned(dim)] = rng() % 2 ? box : 0; // on a face
+    } while (!used.insert(p).second);
+    c.positions.push_back(p);
+    t.cells.push_back(c);
+  }
+  for (int k = 1; k < run.frames; ++k)
+    for (int i = 0; i < run.n; ++i) {
+      const GridPoint from = t.cells[i].positions.back();
+      for (int tries = 0;; ++tries) {
+        if (tries > 200)
+          return false;
+        GridPoint to = from;
+        for (int d = 0; d < dim; ++d)
+          to[d] = clamp(from[d] + int(rng() % 3) - 1);
+        if (rng() % 4 == 0)
+          to = from;
+        bool clash = false;
+        for (int j = 0; j < run.n && !clash; ++j) {
+          if (j == i)
+            continue;
+          const auto& q = t.cells[j].positions;
+          clash = meet(from, to, q[k - 1], j < i ? q[k] : q[k - 1]);
+        }
+        if (!clash) {
+          t.cells[i].positions.push_back(to);
+          break;
+        }
+      }
+    }
+  const int rho_tenths = 5 + int(rng() % 30);
+  run.options = KineticOptions();
+  run.options.rho2.num = rho_tenths * rho_tenths;
+  run.options.rho2.den = 100;
+  run.options.audit = true;
+  run.options.audit_stride = 1;
+  return true;
+}
+
 } // namespace medusa::kinetic::testing

@@ -23,10 +23,11 @@ using namespace medusa::kinetic;
 
 namespace {
 
-KineticStatistics run_to_the_end(std::uint64_t seed) {
-  CAPTURE(seed);
+KineticStatistics run_to_the_end(std::uint64_t seed, int box_dim = 0) {
+  CAPTURE(seed, box_dim);
   testing::DenseLatticeRun run;
-  REQUIRE(testing::dense_lattice_run(seed, run));
+  // box_dim 0: the dense lattice walk; 2 or 3: the hull-box walk of that dimension.
+  REQUIRE((box_dim == 0 ? testing::dense_lattice_run(seed, run) : testing::hull_box_run(seed, box_dim, run)));
   CAPTURE(run.two_d, run.n, run.frames, run.box, run.step);
   KineticAlphaComplex engine(run.trajectories, run.options);
   testing::ReplayObserver obs(engine);
@@ -142,6 +143,19 @@ TEST_CASE("a hull cell passing through the plane of its hull neighbours leaves n
   // after u ~ 0.677720: vertex 28 lies outside the hull facet [5 15 24]".
   const KineticStatistics s = run_to_the_end(31284);
   REQUIRE(s.hull_ridges_folded_at_now > 0);
+}
+
+TEST_CASE("coplanar hull facets that fold onto each other inside a slab are flipped or repaired then",
+          "[kinetic][degenerate][lattice]") {
+  // Hull-box seed 146 (3D, 13 cells, box 2): cells 5, 6, 8 and 10 stay in the plane x - y + z = 0,
+  // a hull face, through slab 0, so the certificates of the hull ridges [8 10] and [6 10] vanish
+  // identically. Cell 10 crosses the segment from 6 to 8 at u = 1/2, where hull facet [6 8 10]
+  // degenerates and folds onto its two neighbours, and cell 3 crosses the plane then (the
+  // orientation of [3 6 8 10], -(2u - 1)^2, only touches zero). No certificate failed at 1/2, and
+  // before: "audit failed in slab 0 after u ~ 0.519010: vertex 5 lies outside the hull facet [3 6 8]".
+  // Now those ridges carry the fold test as their certificate, which fails at 1/2.
+  const KineticStatistics s = run_to_the_end(146, 3);
+  REQUIRE(s.hull_ridges_folding > 0);
 }
 
 TEST_CASE("a top simplex that flattens at a frame and turns inside out there is repaired at the frame",

@@ -43,6 +43,8 @@ struct KineticStatistics {
   // (turned inside out, or flat for the whole new slab).
   std::size_t frames_repaired_for_flat_simplices = 0;
   std::size_t hull_ridges_folded_at_now = 0; // failed at creation: facets folded at a vanishing certificate
+  std::size_t hull_ridges_folding =
+      0; // coplanar hull ridges whose facets fold inside a slab (fold tests fired)
   // Top simplices a static rebuild kept that had turned inside out through a flat instant.
   std::size_t reoriented = 0;
   std::size_t certificates_built = 0; // certificates created (Delaunay and radius)
