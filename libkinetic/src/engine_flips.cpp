@@ -206,6 +206,14 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
 // So the faces of the touching simplex are settled again at now+ (the final re-evaluation of MATH.md
 // 5.2 step 4), and its certificate is installed again for its next root. MATH.md 3.9 drops roots of
 // even multiplicity as non-events; that misses this case (tests/kinetic/test_kinetic_dense_lattice.cpp).
+// The face that changes need not be a face of the touching simplex: a short face t with R(t) = rho
+// whose link vertex x crosses its smallest circumsphere S makes t + x inscribed in S at now, so R(t +
+// x) touches rho; t + x may carry no certificate (long with a long facet, MATH.md 4.4), but then
+// that facet is inscribed in S too and touches rho, and so on down to a frontier simplex, whose
+// certificate reports the touch. Every such t is a face of a top simplex containing the simplex that
+// touches, so the faces of all of those are settled again (hull-box seed 8: x = 8 entered the
+// sphere of the right triangle [10 12 14], R = rho throughout, while the frontier triangle [8 10 14]
+// touched rho).
 void Engine::resolve_touches(OldMembership& old_k) {
   std::vector<std::pair<int, std::uint32_t>> touches;
   touches.swap(pending_touch);
@@ -215,7 +223,8 @@ void Engine::resolve_touches(OldMembership& old_k) {
       continue;
     const Simplex s = c.key; // install_radius replaces the certificate
     ++stats.radius_touches;
-    for_each_face(s, [&](const Simplex& f) { old_k.emplace(f, in_k(f)); });
+    tri.for_each_tet_containing(
+        s, [&](const Simplex& t) { for_each_face(t, [&](const Simplex& f) { old_k.emplace(f, in_k(f)); }); });
     install_radius(s);
   }
 }

@@ -158,6 +158,22 @@ TEST_CASE("coplanar hull facets that fold onto each other inside a slab are flip
   REQUIRE(s.hull_ridges_folding > 0);
 }
 
+TEST_CASE("a face of radius rho leaves K when a vertex enters its sphere while another simplex touches rho",
+          "[kinetic][degenerate][lattice]") {
+  // Hull-box seed 8 (3D, 23 cells, rho = 1.5): cells 10, 12 and 14 stand still through slab 0, a
+  // right triangle whose smallest circumsphere S (centre (1, 2.5, 1), radius 1.5 = rho) it keeps, so
+  // it is short with R = rho throughout and in K while Gabriel. Cell 8 enters S at u = 1/2, where the
+  // tetrahedron [8 10 12 14] and its facet [8 10 14] are inscribed in S: both are long and touch rho
+  // there. Only the triangle is frontier and carries a certificate, and its faces did not include
+  // [10 12 14], which stayed in K (with [10 14]). Before: "audit failed in slab 0 after u ~ 0.500000:
+  // alpha complex differs from CGAL's: 2 extra (e.g. [10 14])". Seed 129 (35 cells): the same at
+  // u ~ 0.78 with a face entering K ("1 missing (e.g. [8 10 25])").
+  for (std::uint64_t seed : {8, 129}) {
+    const KineticStatistics s = run_to_the_end(seed, 3);
+    REQUIRE(s.radius_touches > 0);
+  }
+}
+
 TEST_CASE("a top simplex that flattens at a frame and turns inside out there is repaired at the frame",
           "[kinetic][degenerate][lattice]") {
   // Seed 6265 (3D, 25 cells): cells 2, 6, 11 and 21 reach the hull plane z = 11 together at frame 3,
