@@ -79,6 +79,10 @@ struct Engine {
   std::set<std::pair<Simplex, int>> pending_delaunay;
   std::vector<std::pair<int, std::uint32_t>> pending_radius; // (certificate, version)
   std::vector<std::pair<int, std::uint32_t>> pending_touch;  // radius touches at now (certificate, version)
+  // Set when a hull ridge is found folded at now around a simplex that is not flat
+  // (hull_ridge_folded_at_now): the triangulation is not embedded just after now, where elementary
+  // flips chosen on local certificates can make it worse, so resolve_delaunay repairs first.
+  bool repair_pending = false;
 
   // Event batches emitted so far, and since the last audit.
   std::size_t batch_index = 0;

@@ -492,6 +492,7 @@ void Engine::install_facet(const Simplex& facet) {
     ++stats.invalid_at_creation;
     ++stats.hull_ridges_folded_at_now;
     mark_invalid(ap->cert);
+    repair_pending = true;
   }
 }
 

@@ -163,11 +163,11 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
   const std::size_t limit = 20 * traj.cells.size() + 1000;
   std::size_t flips_in_batch = 0, repairs_in_batch = 0;
   FlipChange change;
-  while (!pending_delaunay.empty()) {
-    // The first flippable failure in canonical order; a static repair when none is, or when the
-    // flips do not converge (MATH.md 5.2 steps 2 and 3).
+  while (!pending_delaunay.empty() || repair_pending) {
+    // The first flippable failure in canonical order; a static repair when none is, when the flips
+    // do not converge (MATH.md 5.2 steps 2 and 3), or when a hull ridge was found folded at now.
     bool flipped = false;
-    if (flips_in_batch < limit)
+    if (flips_in_batch < limit && !repair_pending)
       for (auto it = pending_delaunay.begin(); it != pending_delaunay.end();) {
         auto [facet, id] = *it;
         if (!certs[static_cast<std::size_t>(id)].alive || certs[static_cast<std::size_t>(id)].key != facet) {
@@ -183,7 +183,7 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
         }
         ++it;
       }
-    if (flipped || pending_delaunay.empty())
+    if (flipped || (pending_delaunay.empty() && !repair_pending))
       continue;
     // A repair gives Del(now+) (MATH.md 5.4), so failures left after it can only be those its
     // rational stand-in for now+ (rational_before_next_event) settled differently; a few more rounds
@@ -193,6 +193,7 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
       os << "no progress resolving degenerate Delaunay events in slab " << slab << " at u ~ " << now.approx();
       throw InternalError(os.str());
     }
+    repair_pending = false;
     repair(steps);
     flips_in_batch = 0;
   }
