@@ -19,6 +19,10 @@ struct Certificate {
   // stay in one plane (line), and the certificate is then that they lie side by side there, the
   // negated Engine::fold_poly, which fails when a facet degenerates and the two fold onto each other.
   bool fold = false;
+  // A finite facet whose in-sphere (in-circle) certificate vanishes for the whole slab: its five
+  // (four) points stay cospherical, so no in-sphere test orders them, and the certificate is then
+  // that its two top simplices keep their recorded orientations (Engine::cell_orientations_poly).
+  bool orientations = false;
 };
 
 } // namespace medusa::kinetic::detail

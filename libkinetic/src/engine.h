@@ -235,6 +235,22 @@ struct Engine {
                          : certificate::orientation<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(t[3]));
   }
 
+  // For a finite facet with two finite apices: the product of its two top simplices' orientations,
+  // each signed by its recorded orientation, positive while both keep it (Certificate::orientations).
+  template <class NT> Poly<NT> cell_orientations_poly(const Simplex& facet) const {
+    const detail::Triangulation::Apices* ap = tri.apices(facet);
+    Poly<NT> f(NT(1));
+    for (int k = 0; k < 2; ++k) {
+      std::array<VertexId, 4> w{};
+      w[0] = ap->v[static_cast<std::size_t>(k)];
+      std::copy(facet.begin(), facet.end(), w.begin() + 1);
+      const Simplex t = Simplex::from_range(w.begin(), w.begin() + 1 + facet.size());
+      const Poly<NT> o = orientation_poly<NT>(t);
+      f = f * (ap->orientation[static_cast<std::size_t>(k)] > 0 ? o : -o);
+    }
+    return f;
+  }
+
   // The radius polynomial f of a finite simplex: f <= 0 iff short (MATH.md 3.3).
   template <class NT> Poly<NT> radius_poly(const Simplex& s, const NT& p, const NT& q) const {
     switch (s.size()) {
@@ -250,7 +266,7 @@ struct Engine {
   // wider. False for the orientation certificates at the hull.
   bool cert_enclosure(const Certificate& c, IntervalPoly& f) const {
     if (c.kind == CertKind::delaunay)
-      return !c.fold && delaunay_enclosure(c.key, f);
+      return !c.fold && !c.orientations && delaunay_enclosure(c.key, f);
     if (!radius_enclosure(c.key, f))
       return false;
     if (faces.at(c.key).is_short)
@@ -481,7 +497,9 @@ bool Engine::in_frontier(const Simplex& s, const Face& f, FacetShort&& facet_sho
 
 template <class NT> Poly<NT> Engine::cert_poly(const Certificate& c) const {
   if (c.kind == CertKind::delaunay)
-    return c.fold ? -fold_poly<NT>(c.key) : delaunay_poly<NT>(c.key);
+    return c.fold           ? -fold_poly<NT>(c.key)
+           : c.orientations ? cell_orientations_poly<NT>(c.key)
+                            : delaunay_poly<NT>(c.key);
   Poly<NT> f = radius_poly<NT>(c.key, pick(P, Pi, NT()), pick(Q, Qi, NT()));
   // Positive while valid: -f while short, +f while long (MATH.md 3.1).
   return faces.at(c.key).is_short ? -f : f;

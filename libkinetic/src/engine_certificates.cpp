@@ -123,6 +123,7 @@ int Engine::new_cert(CertKind kind, const Simplex& key) {
   c.key = key;
   c.alive = true;
   c.fold = false;
+  c.orientations = false;
   ++c.version;
   return id;
 }
@@ -262,6 +263,19 @@ void Engine::install(int id) {
       c.fold = true;
       install(id);
       return;
+    }
+    // Likewise a finite facet whose five (four) points stay cospherical (cocircular): every
+    // triangulation of them is Delaunay, and what can still go wrong is a top simplex flattening and
+    // turning inside out with no in-sphere event (hull-box seed 910: [3 6 10 17], orientation
+    // u (4u - 3), cospherical with its neighbours 4 and 16 through slab 1, inside out after u = 3/4).
+    // So the certificate becomes the orientations of its two top simplices (Certificate::orientations).
+    if (c.kind == CertKind::delaunay && is_finite(c.key) && !c.fold && !c.orientations) {
+      const detail::Triangulation::Apices* ap = tri.apices(c.key);
+      if (ap->v[0] != infinite_vertex && ap->v[1] != infinite_vertex) {
+        c.orientations = true;
+        install(id);
+        return;
+      }
     }
     if (c.kind == CertKind::radius && !faces.at(c.key).is_short) {
       ++stats.invalid_at_creation;
@@ -436,6 +450,12 @@ CacheKey Engine::cache_key(const Certificate& c) const {
     pts[n++] = v;
   if (c.kind == CertKind::radius) {
     k.v[0] = 2;
+  } else if (c.orientations) {
+    // The facet's points, then its two apices (Engine::cell_orientations_poly).
+    const detail::Triangulation::Apices* ap = tri.apices(c.key);
+    k.v[0] = 4;
+    pts[n++] = std::min(ap->v[0], ap->v[1]);
+    pts[n++] = std::max(ap->v[0], ap->v[1]);
   } else if (c.fold) {
     // The ridge's points, then the two apices (Engine::fold_poly).
     const detail::Triangulation::Apices* ap = tri.apices(c.key);

@@ -64,6 +64,8 @@ void Engine::fire(const QueueEntry& e) {
   else {
     if (certs[e.cert].fold)
       ++stats.hull_ridges_folding;
+    if (certs[e.cert].orientations)
+      ++stats.cospherical_cells_flattening;
     mark_invalid(static_cast<int>(e.cert));
   }
 }

@@ -16,6 +16,12 @@ Poly<mpz_class> KeyPolynomial::coefficients(const std::array<MovingPoint, 5>& p)
     f = certificate::orientation_2<mpz_class>(p[0], p[1], p[2]);
   else if (kind == 1)
     f = certificate::orientation<mpz_class>(p[0], p[1], p[2], p[3]);
+  else if (kind == 4 && count == 4) // orientations of the triangles p0 p1 p2 and p0 p1 p3
+    f = certificate::orientation_2<mpz_class>(p[0], p[1], p[2]) *
+        certificate::orientation_2<mpz_class>(p[0], p[1], p[3]);
+  else if (kind == 4) // orientations of the tetrahedra p0 p1 p2 p3 and p0 p1 p2 p4
+    f = certificate::orientation<mpz_class>(p[0], p[1], p[2], p[3]) *
+        certificate::orientation<mpz_class>(p[0], p[1], p[2], p[4]);
   else if (kind == 3 && count == 3) // fold test at a planar hull vertex p0 with hull neighbours p1, p2
     f = certificate::dot<mpz_class>(certificate::difference<mpz_class>(p[0], p[1]),
                                     certificate::difference<mpz_class>(p[0], p[2]));

@@ -15,7 +15,8 @@
 namespace medusa::kinetic::detail {
 
 // The kind of polynomial (0 in-sphere or in-circle, 1 orientation, 2 radius, 3 fold test of a hull
-// ridge: the ridge's points, then its apices), then its points, -2
+// ridge: the ridge's points, then its apices; 4 orientations of a facet's two top simplices: the
+// facet's points, then its apices), then its points, -2
 // padded (the number of points tells the 2D polynomials from the 3D ones).
 struct CacheKey {
   std::array<VertexId, 6> v;
@@ -37,7 +38,7 @@ using RootCache = std::unordered_map<CacheKey, RealRoots, CacheKeyHash>;
 // polynomial of a simplex, or the fold test of a hull ridge (Engine::fold_poly). It copies the points'
 // motion, so it stays valid after the triangulation has moved on within the slab.
 struct KeyPolynomial {
-  int kind = 0; // 0 in-sphere, 1 orientation, 2 radius, 3 fold test (as CacheKey::v[0])
+  int kind = 0; // 0 in-sphere, 1 orientation, 2 radius, 3 fold test, 4 orientations (as CacheKey::v[0])
   int count = 0;
   std::array<MovingPoint, 5> pts{};
   std::shared_ptr<const SquaredRadius> rho2;

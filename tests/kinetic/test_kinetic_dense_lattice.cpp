@@ -192,6 +192,18 @@ TEST_CASE("a batch that finds a hull ridge folded at its time is repaired before
   }
 }
 
+TEST_CASE("a top simplex of a cospherical group that flattens inside a slab is repaired then",
+          "[kinetic][degenerate][lattice]") {
+  // Hull-box seed 910 (3D, 19 cells): cells 3, 6, 10, 17, 4 and 16 stay on one (moving) sphere
+  // through slab 1, so the in-sphere certificates between them vanish identically, and tetrahedron
+  // [3 6 10 17], orientation u (4u - 3), flattens at u = 3/4 while cocircular: its circumsphere stays
+  // bounded and no point enters it. Before: "audit failed in slab 1 after u ~ 0.750294: top simplex
+  // [3 6 10 17] is inside out or flat at the audit time". Now those facets carry the orientations of
+  // their two top simplices as their certificate, which fails at 3/4.
+  const KineticStatistics s = run_to_the_end(910, 3);
+  REQUIRE(s.cospherical_cells_flattening > 0);
+}
+
 TEST_CASE("a top simplex that flattens at a frame and turns inside out there is repaired at the frame",
           "[kinetic][degenerate][lattice]") {
   // Seed 6265 (3D, 25 cells): cells 2, 6, 11 and 21 reach the hull plane z = 11 together at frame 3,

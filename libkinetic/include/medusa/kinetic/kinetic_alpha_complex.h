@@ -45,6 +45,7 @@ struct KineticStatistics {
   std::size_t hull_ridges_folded_at_now = 0; // failed at creation: facets folded at a vanishing certificate
   std::size_t hull_ridges_folding =
       0; // coplanar hull ridges whose facets fold inside a slab (fold tests fired)
+  std::size_t cospherical_cells_flattening = 0; // orientation tests of identically cospherical facets fired
   // Top simplices a static rebuild kept that had turned inside out through a flat instant.
   std::size_t reoriented = 0;
   std::size_t certificates_built = 0; // certificates created (Delaunay and radius)
