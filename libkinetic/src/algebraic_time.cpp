@@ -31,6 +31,18 @@ int sign_plus_rational(ExactPoly f, const Rational& u) {
   return 0;
 }
 
+// The sign of the first derivative of f (f itself is derivative 0) that does not vanish at u, and its
+// order; 0 when f is identically zero.
+int first_nonzero_derivative_sign(ExactPoly f, const SlabTime& u, int& order) {
+  for (order = 0; !CGAL::is_zero(f); ++order, f.diff()) {
+    const CGAL::Sign s =
+        u.is_rational() ? f.sign_at(u.rational()) : kernel().sign_at_1_object()(f, u.algebraic());
+    if (s != CGAL::ZERO)
+      return s == CGAL::POSITIVE ? 1 : -1;
+  }
+  return 0;
+}
+
 } // namespace
 
 Rational value_at(const Poly<mpz_class>& f, const Rational& q) {
@@ -234,15 +246,15 @@ int sign_plus(const ExactPoly& f, const SlabTime& u) {
     return 0;
   if (u.is_rational())
     return sign_plus_rational(f, u.rational());
-  // Algebraic u: the sign of the first derivative that does not vanish at u.
-  ExactPoly g = f;
-  while (!CGAL::is_zero(g)) {
-    CGAL::Sign s = kernel().sign_at_1_object()(g, u.algebraic());
-    if (s != CGAL::ZERO)
-      return s == CGAL::POSITIVE ? 1 : -1;
-    g.diff();
-  }
-  return 0;
+  int order;
+  return first_nonzero_derivative_sign(f, u, order);
+}
+
+// Taylor at u: f(u - e) has the sign of (-1)^k f^(k)(u) for the first k with f^(k)(u) != 0.
+int sign_minus(const ExactPoly& f, const SlabTime& u) {
+  int order;
+  const int s = first_nonzero_derivative_sign(f, u, order);
+  return order % 2 == 0 ? s : -s;
 }
 
 std::vector<AlgebraicReal> sign_changes_after(const ExactPoly& f, const SlabTime& u) {

@@ -10,19 +10,26 @@ namespace medusa::kinetic::detail {
 
 enum class CertKind : std::uint8_t { delaunay, radius };
 
+// What a Delaunay certificate that vanishes for the whole slab is replaced by (MATH.md 3.9 takes
+// such a certificate as valid, which is not always so; Engine::install).
+enum class Substitute : std::uint8_t {
+  none,
+  // A hull ridge (case B of MATH.md 3.2) whose orientation vanishes: its facets stay in one plane
+  // (line), and the certificate is then that they lie side by side there, the negated
+  // Engine::fold_poly, which fails when a facet degenerates and the two fold onto each other.
+  hull_fold,
+  // A finite facet whose in-sphere (in-circle) certificate vanishes: its five (four) points stay
+  // cospherical, so no in-sphere test orders them, and the certificate is then that its two top
+  // simplices keep their recorded orientations (Engine::cell_orientations_poly).
+  cell_orientations
+};
+
 struct Certificate {
   CertKind kind = CertKind::delaunay;
   Simplex key; // the facet (delaunay) or the finite face (radius)
   std::uint32_t version = 0;
   bool alive = false;
-  // A hull ridge (case B of MATH.md 3.2) whose orientation vanishes for the whole slab: its facets
-  // stay in one plane (line), and the certificate is then that they lie side by side there, the
-  // negated Engine::fold_poly, which fails when a facet degenerates and the two fold onto each other.
-  bool fold = false;
-  // A finite facet whose in-sphere (in-circle) certificate vanishes for the whole slab: its five
-  // (four) points stay cospherical, so no in-sphere test orders them, and the certificate is then
-  // that its two top simplices keep their recorded orientations (Engine::cell_orientations_poly).
-  bool orientations = false;
+  Substitute substitute = Substitute::none;
 };
 
 } // namespace medusa::kinetic::detail

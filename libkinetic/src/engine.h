@@ -236,7 +236,7 @@ struct Engine {
   }
 
   // For a finite facet with two finite apices: the product of its two top simplices' orientations,
-  // each signed by its recorded orientation, positive while both keep it (Certificate::orientations).
+  // each signed by its recorded orientation, positive while both keep it (Substitute::cell_orientations).
   template <class NT> Poly<NT> cell_orientations_poly(const Simplex& facet) const {
     const detail::Triangulation::Apices* ap = tri.apices(facet);
     Poly<NT> f(NT(1));
@@ -266,7 +266,7 @@ struct Engine {
   // wider. False for the orientation certificates at the hull.
   bool cert_enclosure(const Certificate& c, IntervalPoly& f) const {
     if (c.kind == CertKind::delaunay)
-      return !c.fold && !c.orientations && delaunay_enclosure(c.key, f);
+      return c.substitute == Substitute::none && delaunay_enclosure(c.key, f);
     if (!radius_enclosure(c.key, f))
       return false;
     if (faces.at(c.key).is_short)
@@ -303,6 +303,22 @@ struct Engine {
     return sign_plus(to_exact_poly(build(mpz_class())), now);
   }
 
+  // sign^- at `now`: the sign just before now, in this slab's motion.
+  template <class Build> int sign_minus_now(Build&& build) {
+    ++stats.sign_evaluations;
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      IntervalPoly f = build(Interval());
+      double lo, hi;
+      now.enclosure(lo, hi);
+      int s = interval_sign(f, lo, hi);
+      if (s != 0)
+        return s;
+    }
+    ++stats.sign_evaluations_exact;
+    return sign_minus(to_exact_poly(build(mpz_class())), now);
+  }
+
   template <class Build> int sign_at_now(Build&& build) {
     {
       CGAL::Protect_FPU_rounding<true> guard;
@@ -321,6 +337,8 @@ struct Engine {
   int orientation_of(const VertexId* seq, std::size_t n, const Triangulation::Apices& ap,
                      VertexId apex) const;
   int orientation_sign_plus(const Simplex& t);
+  bool flat_without_turning_at_now(const Simplex& t); // engine_certificates.cpp
+  int sign_after_own_orientation_root(const Simplex& t) const;
   bool top_simplex_turns_at_frame();                // engine_frames.cpp
   bool flat_at_now(const Simplex& t);               // a finite top simplex whose orientation vanishes at now
   int orientation_enclosure_sign(const Simplex& t); // 0: the enclosure at now does not decide
@@ -329,6 +347,7 @@ struct Engine {
   int new_cert(CertKind kind, const Simplex& key);
   void kill_cert(int id);
   void install(int id);
+  void settle_certificate(int id);
   void count_built(const Certificate& c, bool enclosed);
   // wide: f is the enclosure from plain doubles (certificate_enclosure.h), replaced by the interval
   // one before its root is reported (Engine::run_slab).
@@ -496,10 +515,14 @@ bool Engine::in_frontier(const Simplex& s, const Face& f, FacetShort&& facet_sho
 }
 
 template <class NT> Poly<NT> Engine::cert_poly(const Certificate& c) const {
-  if (c.kind == CertKind::delaunay)
-    return c.fold           ? -fold_poly<NT>(c.key)
-           : c.orientations ? cell_orientations_poly<NT>(c.key)
-                            : delaunay_poly<NT>(c.key);
+  if (c.kind == CertKind::delaunay) {
+    switch (c.substitute) {
+    case Substitute::hull_fold: return -fold_poly<NT>(c.key);
+    case Substitute::cell_orientations: return cell_orientations_poly<NT>(c.key);
+    case Substitute::none: break;
+    }
+    return delaunay_poly<NT>(c.key);
+  }
   Poly<NT> f = radius_poly<NT>(c.key, pick(P, Pi, NT()), pick(Q, Qi, NT()));
   // Positive while valid: -f while short, +f while long (MATH.md 3.1).
   return faces.at(c.key).is_short ? -f : f;

@@ -82,20 +82,50 @@ int Engine::orientation_sign_plus(const Simplex& t) {
     if (const int s = orientation_enclosure_sign(t); s != 0)
       return s;
   }
-  if (now.isolated() != nullptr && t.size() == top_size() && is_finite(t)) {
-    // A hull flip at a root of this very orientation (the failed certificate of four finite points,
-    // three in 2D, MATH.md 3.2 case B) creates the top simplex that is flat at now.
-    CacheKey key;
-    key.v.fill(-2);
-    key.v[0] = 1;
-    std::copy(t.begin(), t.end(), key.v.begin() + 1);
-    CGAL::Protect_FPU_rounding<true> guard;
-    if (const int s = sign_after_own_root(orientation_poly<Interval>(t), key); s != 0) {
+  if (t.size() == top_size() && is_finite(t))
+    if (const int s = sign_after_own_orientation_root(t); s != 0) {
       ++stats.sign_evaluations;
       return s;
     }
-  }
   return sign_plus_now([&](auto tag) { return orientation_poly<decltype(tag)>(t); });
+}
+
+// A hull flip at a root of this very orientation (the failed certificate of four finite points,
+// three in 2D, MATH.md 3.2 case B) creates the top simplex that is flat at now; the root is then an
+// event, a sign change, and the sign just after it is known without exact arithmetic. 0 otherwise.
+int Engine::sign_after_own_orientation_root(const Simplex& t) const {
+  if (now.isolated() == nullptr)
+    return 0;
+  CacheKey key;
+  key.v.fill(-2);
+  key.v[0] = 1;
+  std::copy(t.begin(), t.end(), key.v.begin() + 1);
+  CGAL::Protect_FPU_rounding<true> guard;
+  return sign_after_own_root(orientation_poly<Interval>(t), key);
+}
+
+// A finite top simplex flat at now inside a slab whose orientation only touches zero there: it has
+// one sign just before and just after now. A hull flip (MATH.md 3.2 case B) adds the top simplex
+// abcd at the root of its ridge's certificate O(a, b, c, d); a ridge that turns reflex at now makes
+// that root a sign change. One that only touches zero was reflex just before now too: an earlier flip
+// of the batch made it so, and pasting the sliver abcd onto it can leave the top simplices wrapped
+// once more round an edge of abcd than they should be, with every certificate holding (their signs
+// do not see angles modulo 2 pi). Stress seed 11018: three cells met on one line and a fourth passed
+// through a hull face at u = 1/2, and the tetrahedra round a hull edge summed to 2.07 pi just after.
+// At a frame the sign just before now belongs to the previous slab's motion, and this test says
+// nothing (Engine::top_simplex_turns_at_frame decides there).
+bool Engine::flat_without_turning_at_now(const Simplex& t) {
+  if (now.is_rational() && now.rational() == 0)
+    return false;
+  if (orientation_enclosure_sign(t) != 0 || sign_after_own_orientation_root(t) != 0)
+    return false;
+  const auto orientation = [&](auto tag) { return orientation_poly<decltype(tag)>(t); };
+  if (sign_at_now(orientation) != 0)
+    return false;
+  if (sign_minus_now(orientation) != sign_plus_now(orientation))
+    return false;
+  ++stats.hull_flips_refused_touching;
+  return true;
 }
 
 // For f whose polynomial (key) is, up to a factor c, the one whose isolated simple root is now: the
@@ -122,8 +152,7 @@ int Engine::new_cert(CertKind kind, const Simplex& key) {
   c.kind = kind;
   c.key = key;
   c.alive = true;
-  c.fold = false;
-  c.orientations = false;
+  c.substitute = Substitute::none;
   ++c.version;
   return id;
 }
@@ -199,6 +228,11 @@ bool Engine::hull_ridge_folded_at_now(const Simplex& facet) {
 // the current batch when it is already invalid just after now (MATH.md 3.7, 3.9).
 void Engine::install(int id) {
   ++stats.certificates_built;
+  settle_certificate(id);
+}
+
+// install's work; a certificate replaced by its substitute is settled again, still one certificate.
+void Engine::settle_certificate(int id) {
   Certificate& c = certs[static_cast<std::size_t>(id)];
   {
     CGAL::Protect_FPU_rounding<true> guard;
@@ -252,28 +286,33 @@ void Engine::install(int id) {
     // (line) for the whole slab, which is a convex hull only while they lie side by side, not once
     // they fold onto each other (stress seed 6304: a hull flip at an instant when five hull cells
     // were coplanar left two facets folded; hull-box seed 146: a cell crossed the ridge line of
-    // coplanar facets inside the slab). So the certificate becomes the fold test (Certificate::fold),
+    // coplanar facets inside the slab). So the certificate becomes the fold test (Substitute::hull_fold),
     // installed in its place: failing now when folded just after now, scheduled when they fold
     // later. The third exception, a case-A certificate (the orientation of the finite top simplex
     // under a hull facet) that vanishes for the whole slab, needs no test here: such a flat simplex
     // can only appear at a frame, and the frame repairs it before resolving any certificate
     // (Engine::top_simplex_turns_at_frame). A fold test that vanishes identically too means a
     // hull facet is flat for the whole slab, and so is the top simplex below it: the same case.
-    if (c.kind == CertKind::delaunay && !is_finite(c.key) && !c.fold) {
-      c.fold = true;
-      install(id);
+    if (c.kind == CertKind::delaunay && !is_finite(c.key) && c.substitute == Substitute::none) {
+      c.substitute = Substitute::hull_fold;
+      settle_certificate(id);
       return;
     }
     // Likewise a finite facet whose five (four) points stay cospherical (cocircular): every
     // triangulation of them is Delaunay, and what can still go wrong is a top simplex flattening and
     // turning inside out with no in-sphere event (hull-box seed 910: [3 6 10 17], orientation
     // u (4u - 3), cospherical with its neighbours 4 and 16 through slab 1, inside out after u = 3/4).
-    // So the certificate becomes the orientations of its two top simplices (Certificate::orientations).
-    if (c.kind == CertKind::delaunay && is_finite(c.key) && !c.fold && !c.orientations) {
+    // So the certificate becomes the orientations of its two top simplices (Substitute::cell_orientations).
+    // In the plane neither substitute ever fails, but they cost nothing there and keep one rule: two
+    // collinear hull edges fold only through a collision of their cells, and four cocircular points
+    // are collinear only all together, when both triangles flatten and the product only touches
+    // zero; the line is then a hull line, whose hull certificate fails instead ("planar: an
+    // isosceles trapezoid ...", test_kinetic_engine_2d.cpp).
+    if (c.kind == CertKind::delaunay && is_finite(c.key) && c.substitute == Substitute::none) {
       const detail::Triangulation::Apices* ap = tri.apices(c.key);
       if (ap->v[0] != infinite_vertex && ap->v[1] != infinite_vertex) {
-        c.orientations = true;
-        install(id);
+        c.substitute = Substitute::cell_orientations;
+        settle_certificate(id);
         return;
       }
     }
@@ -450,13 +489,13 @@ CacheKey Engine::cache_key(const Certificate& c) const {
     pts[n++] = v;
   if (c.kind == CertKind::radius) {
     k.v[0] = 2;
-  } else if (c.orientations) {
+  } else if (c.substitute == Substitute::cell_orientations) {
     // The facet's points, then its two apices (Engine::cell_orientations_poly).
     const detail::Triangulation::Apices* ap = tri.apices(c.key);
     k.v[0] = 4;
     pts[n++] = std::min(ap->v[0], ap->v[1]);
     pts[n++] = std::max(ap->v[0], ap->v[1]);
-  } else if (c.fold) {
+  } else if (c.substitute == Substitute::hull_fold) {
     // The ridge's points, then the two apices (Engine::fold_poly).
     const detail::Triangulation::Apices* ap = tri.apices(c.key);
     k.v[0] = 3;

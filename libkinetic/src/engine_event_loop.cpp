@@ -62,10 +62,11 @@ void Engine::fire(const QueueEntry& e) {
   if (e.touch)
     pending_touch.emplace_back(static_cast<int>(e.cert), e.version);
   else {
-    if (certs[e.cert].fold)
-      ++stats.hull_ridges_folding;
-    if (certs[e.cert].orientations)
-      ++stats.cospherical_cells_flattening;
+    switch (certs[e.cert].substitute) {
+    case Substitute::hull_fold: ++stats.hull_ridges_folding; break;
+    case Substitute::cell_orientations: ++stats.cospherical_cells_flattening; break;
+    case Substitute::none: break;
+    }
     mark_invalid(static_cast<int>(e.cert));
   }
 }

@@ -150,9 +150,10 @@ bool Engine::flippable(const Simplex& facet, FlipChange& change) {
                             : crosses(p, q, facet[0], facet[1], facet[2]);
   }
   // A hull flip: around the infinite vertex the orientations above do not decide; the combinatorics
-  // (checked first) do, and its new finite top simplices must not stay flat.
+  // (checked first) do, and its new finite top simplices must not stay flat, nor be flat at now
+  // without turning there (Engine::flat_without_turning_at_now).
   for (const Simplex& t : change.added)
-    if (is_finite(t) && orientation_sign_plus(t) == 0)
+    if (is_finite(t) && (orientation_sign_plus(t) == 0 || flat_without_turning_at_now(t)))
       return false;
   return true;
 }

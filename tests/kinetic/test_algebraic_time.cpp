@@ -1,5 +1,6 @@
 // Exact times inside a slab (algebraic_time.h): choosing rationals just after an algebraic time, as
-// the static repair at an event time does (Engine::delaunay_after_algebraic_now).
+// the static repair at an event time does (Engine::delaunay_after_algebraic_now), and the signs of a
+// polynomial just before and just after a time (Engine::flat_without_turning_at_now).
 #include "medusa/kinetic/algebraic_time.h"
 #include "medusa/kinetic/error.h"
 
@@ -61,4 +62,37 @@ TEST_CASE("a rational after a time is refused when the bound is not after it", "
   const SlabTime a = just_above_two_thirds();
   REQUIRE_THROWS_AS(rational_closer_after(a, Rational(2, 3)), medusa::InternalError);
   REQUIRE_THROWS_AS(rational_closer_after(SlabTime(Rational(1, 2)), Rational(1, 2)), medusa::InternalError);
+}
+
+TEST_CASE("the sign just before a time tells a root where a polynomial turns from one where it touches zero",
+          "[kinetic][algebraic]") {
+  // (2u - 1)^k at u = 1/2: zero there, positive after, (-1)^k before.
+  Poly<mpz_class> line = Poly<mpz_class>::zero_of_degree(1);
+  line[0] = -1;
+  line[1] = 2;
+  const SlabTime half(Rational(1, 2));
+  Poly<mpz_class> f = line;
+  for (int k = 1; k <= 4; ++k, f = f * line) {
+    CAPTURE(k);
+    REQUIRE(sign_plus(to_exact_poly(f), half) == 1);
+    REQUIRE(sign_minus(to_exact_poly(f), half) == (k % 2 == 0 ? 1 : -1));
+  }
+  // Away from a root both sides have the sign at the time; the zero polynomial has none.
+  REQUIRE(sign_minus(to_exact_poly(line), SlabTime(Rational(1, 3))) == -1);
+  REQUIRE(sign_minus(to_exact_poly(Poly<mpz_class>::zero_of_degree(1)), half) == 0);
+}
+
+TEST_CASE("the sign just before an irrational root follows the parity of its multiplicity",
+          "[kinetic][algebraic]") {
+  // g = 9e12 u^2 - (4e12 + 1) has the simple root a just above 2/3 and g' = 18e12 u > 0 there: g < 0
+  // just before a; g^2 touches zero at a and is positive on both sides.
+  const SlabTime a = just_above_two_thirds();
+  Poly<mpz_class> g = Poly<mpz_class>::zero_of_degree(2);
+  g[0] = -mpz_class("4000000000001");
+  g[2] = mpz_class("9000000000000");
+  REQUIRE(sign_minus(to_exact_poly(g), a) == -1);
+  REQUIRE(sign_plus(to_exact_poly(g), a) == 1);
+  REQUIRE(sign_minus(to_exact_poly(g * g), a) == 1);
+  REQUIRE(sign_minus(to_exact_poly(-(g * g * g)), a) == 1);
+  REQUIRE(sign_plus(to_exact_poly(-(g * g * g)), a) == -1);
 }

@@ -204,6 +204,19 @@ TEST_CASE("a top simplex of a cospherical group that flattens inside a slab is r
   REQUIRE(s.cospherical_cells_flattening > 0);
 }
 
+TEST_CASE("a hull flip whose new top simplex only touches flatness at its time is not made",
+          "[kinetic][degenerate][lattice]") {
+  // Hull-box seed 11018 (3D, 13 cells; vertex ids as in the audit's message): at u = 1/2 of slab 2,
+  // vertex 10 lies where segments [1 7] and [8 12] cross, and vertices 1 and 7 pass through the hull
+  // face x + y = 3 of vertices 3, 8, 10 and 12. After two hull flips the third pasted tetrahedron
+  // [1 8 10 12], orientation -(2u - 1)^2, onto a ridge that was reflex on both sides of 1/2; the
+  // tetrahedra round hull edge [10 12] then summed to 2.07 pi with every certificate holding.
+  // Before: "audit failed in slab 2 after u ~ 0.500000: vertex 7 lies outside the hull facet
+  // [1 8 12]".
+  const KineticStatistics s = run_to_the_end(11018, 3);
+  REQUIRE(s.hull_flips_refused_touching > 0);
+}
+
 TEST_CASE("a top simplex that flattens at a frame and turns inside out there is repaired at the frame",
           "[kinetic][degenerate][lattice]") {
   // Seed 6265 (3D, 25 cells): cells 2, 6, 11 and 21 reach the hull plane z = 11 together at frame 3,

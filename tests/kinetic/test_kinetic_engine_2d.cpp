@@ -395,6 +395,38 @@ TEST_CASE("planar: four cells crossing one line at once enter the hull without f
   REQUIRE(replay.inconsistencies == 0);
 }
 
+TEST_CASE("planar: an isosceles trapezoid flattening onto the hull line is resolved by its hull flips",
+          "[kinetic][engine][2d][degenerate]") {
+  // a = (0,0), b = (2,0), c = (3, 2 - 4u) and its mirror image in x = 1, d = (-1, 2 - 4u): an
+  // isosceles trapezoid, so the four stay cocircular and the in-circle certificate of its diagonal
+  // bd vanishes identically; it is replaced by the product of the orientations of abd and bcd
+  // (Substitute::cell_orientations), 4 (1 - 2u) * 4 (2 - 4u) up to sign. At u = 1/2, t = 50, all
+  // four lie on y = 0 above f = (1,-20): the circle is that line, and both triangles flatten at
+  // once, so the product only touches zero and never fires. In the plane it never can: four
+  // cocircular points are collinear only all together, and then the line is a hull line, where the
+  // hull certificate of the top edge cd (the orientation of bcd) changes sign. Here it does, and two
+  // hull flips put b and then a on the hull.
+  Trajectories t = planar({0, 100});
+  still(t, 1, 0, 0);
+  still(t, 2, 2, 0);
+  moving(t, 3, {{3, 2, 0}, {3, -2, 0}});
+  moving(t, 4, {{-1, 2, 0}, {-1, -2, 0}});
+  still(t, 5, 1, -20);
+  KineticAlphaComplex engine(t, with_radius(1));
+  ReplayObserver replay(engine);
+  BatchLog log;
+  Both both(replay, log);
+  engine.run(both);
+  const auto at_50 = std::find_if(log.batches.begin(), log.batches.end(),
+                                  [](const BatchLog::Entry& e) { return e.time.time == 50.0; });
+  REQUIRE(at_50 != log.batches.end());
+  REQUIRE(std::count(at_50->kinds.begin(), at_50->kinds.end(), StepKind::hull_flip) == 2);
+  REQUIRE(engine.statistics().cospherical_cells_flattening == 0);
+  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
+  REQUIRE(replay.mismatches == 0);
+  REQUIRE(replay.inconsistencies == 0);
+}
+
 TEST_CASE("planar: a triangle's radius event enters and leaves K at the predicted times",
           "[kinetic][engine][2d]") {
   // a = (0,0), b = (10,0), c = (5, 20 - 18u). The circumcentre is (5, k), k = (y^2 - 25)/(2y), R^2 =

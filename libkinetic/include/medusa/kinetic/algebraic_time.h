@@ -140,6 +140,10 @@ TimeComparisonCounts time_comparison_counts();
 // sign^+_u(f): the sign of f on (u, u + eps) (MATH.md 3.7); 0 iff f is identically zero.
 int sign_plus(const ExactPoly& f, const SlabTime& u);
 
+// sign^-_u(f): the sign of f on (u - eps, u); 0 iff f is identically zero. With sign_plus it tells a
+// root at u where f changes sign (odd multiplicity) from one where it only touches zero.
+int sign_minus(const ExactPoly& f, const SlabTime& u);
+
 // The roots of f (not identically zero) in the open interval (u, 1) where f changes sign (odd
 // multiplicity), in increasing order. Roots of even multiplicity are not events (MATH.md 3.9).
 std::vector<AlgebraicReal> sign_changes_after(const ExactPoly& f, const SlabTime& u);
