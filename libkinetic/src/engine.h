@@ -287,48 +287,31 @@ struct Engine {
     return true;
   }
 
-  // sign^+ at `now` of a polynomial given by a builder (called with an NT tag), filter first.
-  template <class Build> int sign_plus_now(Build&& build) {
-    ++stats.sign_evaluations;
-    {
-      CGAL::Protect_FPU_rounding<true> guard;
-      IntervalPoly f = build(Interval());
-      double lo, hi;
-      now.enclosure(lo, hi);
-      int s = interval_sign(f, lo, hi);
-      if (s != 0)
-        return s;
-    }
-    ++stats.sign_evaluations_exact;
-    return sign_plus(to_exact_poly(build(mpz_class())), now);
+  // The sign of a polynomial given by a builder (called with an NT tag) on now's enclosure, or 0 when
+  // the enclosure does not decide it; a sign there is the sign at, just after and just before now.
+  template <class Build> int sign_on_enclosure_of_now(Build&& build) const {
+    CGAL::Protect_FPU_rounding<true> guard;
+    const IntervalPoly f = build(Interval());
+    double lo, hi;
+    now.enclosure(lo, hi);
+    return interval_sign(f, lo, hi);
   }
 
-  // sign^- at `now`: the sign just before now, in this slab's motion.
-  template <class Build> int sign_minus_now(Build&& build) {
+  // sign^+ (just after now) and sign^- (just before now, in this slab's motion), filter first.
+  template <class Build> int sign_plus_now(Build&& build) { return sign_beside_now(build, true); }
+  template <class Build> int sign_minus_now(Build&& build) { return sign_beside_now(build, false); }
+  template <class Build> int sign_beside_now(Build&& build, bool after) {
     ++stats.sign_evaluations;
-    {
-      CGAL::Protect_FPU_rounding<true> guard;
-      IntervalPoly f = build(Interval());
-      double lo, hi;
-      now.enclosure(lo, hi);
-      int s = interval_sign(f, lo, hi);
-      if (s != 0)
-        return s;
-    }
+    if (const int s = sign_on_enclosure_of_now(build); s != 0)
+      return s;
     ++stats.sign_evaluations_exact;
-    return sign_minus(to_exact_poly(build(mpz_class())), now);
+    const ExactPoly f = to_exact_poly(build(mpz_class()));
+    return after ? sign_plus(f, now) : sign_minus(f, now);
   }
 
   template <class Build> int sign_at_now(Build&& build) {
-    {
-      CGAL::Protect_FPU_rounding<true> guard;
-      IntervalPoly f = build(Interval());
-      double lo, hi;
-      now.enclosure(lo, hi);
-      int s = interval_sign(f, lo, hi);
-      if (s != 0)
-        return s;
-    }
+    if (const int s = sign_on_enclosure_of_now(build); s != 0)
+      return s;
     return sign_at(to_exact_poly(build(mpz_class())), now);
   }
 
