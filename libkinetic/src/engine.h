@@ -80,8 +80,10 @@ struct Engine {
   std::vector<std::pair<int, std::uint32_t>> pending_radius; // (certificate, version)
   std::vector<std::pair<int, std::uint32_t>> pending_touch;  // radius touches at now (certificate, version)
   // Set when a hull ridge is found folded at now around a simplex that is not flat
-  // (hull_ridge_folded_at_now): the triangulation is not embedded just after now, where elementary
-  // flips chosen on local certificates can make it worse, so resolve_delaunay repairs first.
+  // (hull_ridge_folded_at_now), or a hull flip would add a top simplex flat at now without turning
+  // there (flat_without_turning_at_now, flippable): the triangulation is not embedded just after
+  // now, where elementary flips chosen on local certificates can make it worse, so resolve_delaunay
+  // repairs first.
   bool repair_pending = false;
 
   // Event batches emitted so far, and since the last audit.
@@ -330,7 +332,7 @@ struct Engine {
   int new_cert(CertKind kind, const Simplex& key);
   void kill_cert(int id);
   void install(int id);
-  void settle_certificate(int id);
+  void settle_certificate(int id, bool counted = true);
   void count_built(const Certificate& c, bool enclosed);
   // wide: f is the enclosure from plain doubles (certificate_enclosure.h), replaced by the interval
   // one before its root is reported (Engine::run_slab).

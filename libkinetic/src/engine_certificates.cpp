@@ -112,8 +112,10 @@ int Engine::sign_after_own_orientation_root(const Simplex& t) const {
 // once more round an edge of abcd than they should be, with every certificate holding (their signs
 // do not see angles modulo 2 pi). Stress seed 11018: three cells met on one line and a fourth passed
 // through a hull face at u = 1/2, and the tetrahedra round a hull edge summed to 2.07 pi just after.
-// At a frame the sign just before now belongs to the previous slab's motion, and this test says
-// nothing (Engine::top_simplex_turns_at_frame decides there).
+// At a frame the sign just before now belongs to the previous slab's motion, which this test does
+// not read, so it says nothing there. The frame check (Engine::top_simplex_turns_at_frame) repairs
+// when a top simplex flat at the frame turns, as those of seed 11018 do when its slab is cut at
+// u = 1/2; a hull flip of a frame batch that adds a flat simplex is not checked.
 bool Engine::flat_without_turning_at_now(const Simplex& t) {
   if (now.is_rational() && now.rational() == 0)
     return false;
@@ -231,9 +233,12 @@ void Engine::install(int id) {
   settle_certificate(id);
 }
 
-// install's work; a certificate replaced by its substitute is settled again, still one certificate.
-void Engine::settle_certificate(int id) {
+// install's work. A certificate replaced by its substitute is settled again, and is still one
+// certificate, counted (by formula and by how it was settled) as the one it replaced: `counted` is
+// false for the second pass.
+void Engine::settle_certificate(int id, bool counted) {
   Certificate& c = certs[static_cast<std::size_t>(id)];
+  const auto tally = [counted](std::size_t& counter) { counter += counted ? 1 : 0; };
   {
     CGAL::Protect_FPU_rounding<true> guard;
     double lo, hi;
@@ -243,38 +248,39 @@ void Engine::settle_certificate(int id) {
     // enclosure from doubles settles both at a fraction of the cost of interval arithmetic (it is
     // an enclosure like any other, only wider). What it cannot settle is recomputed tightly.
     const bool enclosed = cert_enclosure(c, f);
-    count_built(c, enclosed);
+    if (counted)
+      count_built(c, enclosed);
     if (enclosed) {
       if (bernstein_sign_subdivided(f, lo, 4) > 0) {
-        ++stats.filter_settled;
-        ++stats.double_filter_settled;
+        tally(stats.filter_settled);
+        tally(stats.double_filter_settled);
         return;
       }
       if (install_in_doubles(id, f, true)) {
-        ++stats.interval_settled;
-        ++stats.double_isolation_settled;
+        tally(stats.interval_settled);
+        tally(stats.double_isolation_settled);
         return;
       }
     }
     f = cert_poly<Interval>(c);
     if (bernstein_sign_subdivided(f, lo, 4) > 0) {
-      ++stats.filter_settled;
+      tally(stats.filter_settled);
       return;
     }
     if (install_in_doubles(id, f)) {
-      ++stats.interval_settled;
+      tally(stats.interval_settled);
       return;
     }
     if (install_vanishing_at_start(id, f)) {
-      ++stats.start_zero_settled;
+      tally(stats.start_zero_settled);
       return;
     }
   }
-  ++stats.exact_settled;
-  ++(c.kind == CertKind::delaunay ? stats.exact_delaunay : stats.exact_radius);
+  tally(stats.exact_settled);
+  tally(c.kind == CertKind::delaunay ? stats.exact_delaunay : stats.exact_radius);
   Poly<mpz_class> exact = cert_poly<mpz_class>(c);
   if (install_from_exact_coefficients(id, exact)) {
-    ++stats.exact_filter_settled;
+    tally(stats.exact_filter_settled);
     return;
   }
   ExactPoly f = to_exact_poly(exact);
@@ -295,7 +301,7 @@ void Engine::settle_certificate(int id) {
     // hull facet is flat for the whole slab, and so is the top simplex below it: the same case.
     if (c.kind == CertKind::delaunay && !is_finite(c.key) && c.substitute == Substitute::none) {
       c.substitute = Substitute::hull_fold;
-      settle_certificate(id);
+      settle_certificate(id, false);
       return;
     }
     // Likewise a finite facet whose five (four) points stay cospherical (cocircular): every
@@ -312,7 +318,7 @@ void Engine::settle_certificate(int id) {
       const detail::Triangulation::Apices* ap = tri.apices(c.key);
       if (ap->v[0] != infinite_vertex && ap->v[1] != infinite_vertex) {
         c.substitute = Substitute::cell_orientations;
-        settle_certificate(id);
+        settle_certificate(id, false);
         return;
       }
     }

@@ -150,11 +150,20 @@ bool Engine::flippable(const Simplex& facet, FlipChange& change) {
                             : crosses(p, q, facet[0], facet[1], facet[2]);
   }
   // A hull flip: around the infinite vertex the orientations above do not decide; the combinatorics
-  // (checked first) do, and its new finite top simplices must not stay flat, nor be flat at now
-  // without turning there (Engine::flat_without_turning_at_now).
-  for (const Simplex& t : change.added)
-    if (is_finite(t) && (orientation_sign_plus(t) == 0 || flat_without_turning_at_now(t)))
+  // (checked first) do, and its new finite top simplices must not stay flat. One flat at now without
+  // turning there (Engine::flat_without_turning_at_now) shows that the batch's flips have left the
+  // triangulation not embedded just after now, where the certificates of later flips may all hold
+  // and leave it so: the batch repairs at once (Engine::repair_pending).
+  for (const Simplex& t : change.added) {
+    if (!is_finite(t))
+      continue;
+    if (orientation_sign_plus(t) == 0)
       return false;
+    if (flat_without_turning_at_now(t)) {
+      repair_pending = true;
+      return false;
+    }
+  }
   return true;
 }
 
@@ -182,6 +191,8 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
           flipped = true;
           break;
         }
+        if (repair_pending)
+          break;
         ++it;
       }
     if (flipped || (pending_delaunay.empty() && !repair_pending))

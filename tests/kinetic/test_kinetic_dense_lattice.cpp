@@ -38,6 +38,14 @@ KineticStatistics run_to_the_end(std::uint64_t seed, int box_dim = 0) {
   REQUIRE(obs.mismatches == 0);
   REQUIRE(obs.inconsistencies == 0);
   REQUIRE(obs.not_closed == 0);
+  // Each certificate is counted once by formula and once by how it was settled, a substituted one
+  // (Substitute) as the certificate it replaced.
+  CAPTURE(s.certificates_built, s.built_in_sphere, s.built_hull, s.filter_settled, s.interval_settled,
+          s.start_zero_settled, s.exact_settled);
+  REQUIRE(s.built_in_sphere + s.built_hull + s.built_radius[0] + s.built_radius[1] + s.built_radius[2] ==
+          s.certificates_built);
+  REQUIRE(s.filter_settled + s.interval_settled + s.start_zero_settled + s.exact_settled ==
+          s.certificates_built);
   return s;
 }
 

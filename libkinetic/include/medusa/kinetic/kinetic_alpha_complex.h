@@ -47,7 +47,7 @@ struct KineticStatistics {
       0; // coplanar hull ridges whose facets fold inside a slab (fold tests fired)
   std::size_t cospherical_cells_flattening = 0; // orientation tests of identically cospherical facets fired
   // Hull flips refused because their new top simplex is flat at now without turning there
-  // (Engine::flat_without_turning_at_now); the batch then ends in other flips or a static repair.
+  // (Engine::flat_without_turning_at_now); the batch then ends in a static repair.
   std::size_t hull_flips_refused_touching = 0;
   // Top simplices a static rebuild kept that had turned inside out through a flat instant.
   std::size_t reoriented = 0;
