@@ -154,6 +154,21 @@ bool Engine::flippable(const Simplex& facet, FlipChange& change) {
   // turning there (Engine::flat_without_turning_at_now) shows that the batch's flips have left the
   // triangulation not embedded just after now, where the certificates of later flips may all hold
   // and leave it so: the batch repairs at once (Engine::repair_pending).
+  // Nor may it take away a hull facet whose top simplex below is flat at now: that simplex may be
+  // inside out just after now, its own hull certificate (pending in this batch) is what tells, and
+  // once the facet is interior every certificate reads the stale orientation (hull-box seed 14053:
+  // three hull cells on one line at u = 1/2; the frame analogue is stress seed 6265).
+  for (const Simplex& t : change.removed) {
+    if (is_finite(t))
+      continue;
+    const Simplex hull_facet = t.facet(0);
+    const Simplex below = hull_facet.with(tri.other_apex(hull_facet, infinite_vertex));
+    if (!is_finite(below) ||
+        std::find(change.removed.begin(), change.removed.end(), below) != change.removed.end())
+      continue; // a case-A flip removes the flat simplex itself
+    if (flat_at_now(below))
+      return false;
+  }
   for (const Simplex& t : change.added) {
     if (!is_finite(t))
       continue;
