@@ -432,6 +432,7 @@ struct Engine {
   std::vector<VertexId> alive_ids() const;
   void rebuild_static(OldMembership& old_k);
   void reorient_kept(const std::vector<Simplex>& kept); // top simplices the rebuild kept
+  void reinstall_hull_ridges_over(const std::vector<Simplex>& added, const std::vector<Simplex>& removed);
   Rational rational_before_next_event() const;
   std::vector<Simplex> delaunay_after_algebraic_now(const std::vector<VertexId>& ids, int& dimension);
 

@@ -62,7 +62,48 @@ void Engine::rebuild_static(OldMembership& old_k) {
   for (const Simplex& t : tets)
     (tri.has_tet(t) ? kept : added).push_back(t);
   change_tets(removed, added, old_k);
+  reinstall_hull_ridges_over(added, removed);
   reorient_kept(kept);
+}
+
+// A hull ridge's certificate (MATH.md 3.2 case B) is oriented by the recorded orientation of the top
+// simplex below one of its hull facets, which is not a face of the ridge's own top simplices. A
+// static change can replace that simplex and leave the ridge's top simplices as they were, so
+// apply_tet_change does not rebuild the certificate. After a flip that is harmless: the old and the
+// new simplex below lie on the inner side of the hull facet just after now, so the orientation is
+// the same. A static change may replace one whose recorded orientation had turned stale (flat at
+// now, inside out just after, which is why the frame or the batch repairs), and the certificate
+// built on it keeps the wrong sign (hull-box seed 15582: at frame 2, [4 10 13 18] under hull facet
+// [4 10 18] inside out, replaced by [4 8 10 18]; the certificate of ridge [-1 4 18] still read the
+// old orientation and failed after every repair). So the certificates of the hull ridges over
+// every hull facet of an added top simplex are built again, unless the change built them already
+// (infinite facets of changed top simplices).
+void Engine::reinstall_hull_ridges_over(const std::vector<Simplex>& added,
+                                        const std::vector<Simplex>& removed) {
+  std::unordered_set<Simplex, SimplexHash> built;
+  for (const auto* list : {&added, &removed})
+    for (const Simplex& t : *list)
+      if (!is_finite(t))
+        for (std::size_t i = 0; i < t.size(); ++i)
+          built.insert(t.facet(i));
+  std::vector<Simplex> ridges;
+  for (const Simplex& t : added) {
+    if (!is_finite(t))
+      continue;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const Simplex f = t.facet(i);
+      if (tri.two_sided(f).orientation_slot(infinite_vertex) < 0)
+        continue;
+      for (std::size_t j = 0; j < f.size(); ++j) {
+        const Simplex ridge = f.facet(j).with(infinite_vertex);
+        if (built.insert(ridge).second)
+          ridges.push_back(ridge);
+      }
+    }
+  }
+  std::sort(ridges.begin(), ridges.end()); // certificates built in a canonical order
+  for (const Simplex& r : ridges)
+    install_facet(r);
 }
 
 // Del at a rational q after an algebraic now, with q close enough that the result is Del(now+): every

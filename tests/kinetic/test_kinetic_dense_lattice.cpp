@@ -265,6 +265,18 @@ TEST_CASE("a hull flip never takes away a hull facet whose top simplex below is 
   run_to_the_end(14053, 3);
 }
 
+TEST_CASE("a static repair rebuilds the certificates of the hull ridges over the top simplices it adds",
+          "[kinetic][degenerate][lattice]") {
+  // Hull-box seed 15582 (3D, 19 cells; vertex ids as in the error message): at frame 2, cells 4, 10,
+  // 16 and 18 lie on the hull line x = 4, y = 0, and [4 10 13 18], the tetrahedron below hull facet
+  // [4 10 18], is inside out just after the frame, so the frame repairs. The repair put [4 8 10 18]
+  // below that facet but left the ridge [-1 4 18] its certificate, built on the old tetrahedron's
+  // stale orientation: -u^2 where the ridge is convex (+u^2). Before: "no progress resolving
+  // degenerate Delaunay events in slab 2 at u ~ 0" after four repairs.
+  const KineticStatistics s = run_to_the_end(15582, 3);
+  REQUIRE(s.frames_repaired_for_flat_simplices > 0);
+}
+
 TEST_CASE("a run builds the same certificates whatever ran before it in the process",
           "[kinetic][degenerate][lattice]") {
   // Seed 5175 (3D, 13 static rebuilds) built 3,953 or 3,954 certificates depending on the runs
