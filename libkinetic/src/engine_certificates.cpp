@@ -119,11 +119,10 @@ int Engine::sign_after_own_orientation_root(const Simplex& t) const {
 bool Engine::flat_without_turning_at_now(const Simplex& t) {
   if (now.is_rational() && now.rational() == 0)
     return false;
-  if (orientation_enclosure_sign(t) != 0 || sign_after_own_orientation_root(t) != 0)
+  // At the simplex's own isolated root now is a sign change (no exact arithmetic needed to say so).
+  if (sign_after_own_orientation_root(t) != 0 || !flat_at_now(t))
     return false;
   const auto orientation = [&](auto tag) { return orientation_poly<decltype(tag)>(t); };
-  if (sign_at_now(orientation) != 0)
-    return false;
   if (sign_minus_now(orientation) != sign_plus_now(orientation))
     return false;
   ++stats.hull_flips_refused_touching;
