@@ -433,6 +433,14 @@ struct Engine {
   void rebuild_static(OldMembership& old_k);
   void reorient_kept(const std::vector<Simplex>& kept); // top simplices the rebuild kept
   void reinstall_hull_ridges_over(const std::vector<Simplex>& added, const std::vector<Simplex>& removed);
+  // Calls f on the infinite facets over the ridges of f_hull when it is a hull facet: the hull
+  // ridges whose certificates are oriented by the top simplex below f_hull (MATH.md 3.2 case B).
+  template <class F> void for_each_hull_ridge_over(const Simplex& f_hull, F&& f) const {
+    if (tri.two_sided(f_hull).orientation_slot(infinite_vertex) < 0)
+      return;
+    for (std::size_t j = 0; j < f_hull.size(); ++j)
+      f(f_hull.facet(j).with(infinite_vertex));
+  }
   Rational rational_before_next_event() const;
   std::vector<Simplex> delaunay_after_algebraic_now(const std::vector<VertexId>& ids, int& dimension);
 

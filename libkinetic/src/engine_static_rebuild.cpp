@@ -90,16 +90,11 @@ void Engine::reinstall_hull_ridges_over(const std::vector<Simplex>& added,
   for (const Simplex& t : added) {
     if (!is_finite(t))
       continue;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      const Simplex f = t.facet(i);
-      if (tri.two_sided(f).orientation_slot(infinite_vertex) < 0)
-        continue;
-      for (std::size_t j = 0; j < f.size(); ++j) {
-        const Simplex ridge = f.facet(j).with(infinite_vertex);
+    for (std::size_t i = 0; i < t.size(); ++i)
+      for_each_hull_ridge_over(t.facet(i), [&](const Simplex& ridge) {
         if (built.insert(ridge).second)
           ridges.push_back(ridge);
-      }
-    }
+      });
   }
   std::sort(ridges.begin(), ridges.end()); // certificates built in a canonical order
   for (const Simplex& r : ridges)
@@ -179,10 +174,7 @@ void Engine::reorient_kept(const std::vector<Simplex>& kept) {
     for (std::size_t i = 0; i < t.size(); ++i) {
       const Simplex f = t.facet(i);
       install_facet(f);
-      if (tri.two_sided(f).orientation_slot(infinite_vertex) < 0)
-        continue;
-      for (std::size_t j = 0; j < f.size(); ++j)
-        install_facet(f.facet(j).with(infinite_vertex));
+      for_each_hull_ridge_over(f, [&](const Simplex& ridge) { install_facet(ridge); });
     }
   }
 }
