@@ -6,7 +6,8 @@
 // test_kinetic_dense_lattice.cpp).
 //
 // Usage: kinetic_stress [first-seed] [count] [seconds] [input]     (defaults 1, 1000, 600, lattice)
-// input: lattice (testing::dense_lattice_run), box3 or box2 (testing::hull_box_run in 3D or 2D).
+// input: lattice (testing::dense_lattice_run), box3 or box2 (testing::hull_box_run in 3D or 2D),
+// box3life or box2life (the same with births and deaths).
 // MEDUSA_STRESS_VERBOSE=1 also prints why each rejected input was rejected.
 // Exit code 1 when some seed failed.
 #include "kinetic_test_support.h"
@@ -24,8 +25,10 @@ int main(int argc, char** argv) {
   const std::uint64_t count = argc > 2 ? std::stoull(argv[2]) : 1000;
   const int seconds = argc > 3 ? std::stoi(argv[3]) : 600;
   const std::string input = argc > 4 ? argv[4] : "lattice";
-  if (input != "lattice" && input != "box3" && input != "box2") {
-    std::fprintf(stderr, "kinetic_stress: unknown input '%s' (lattice, box3 or box2)\n", input.c_str());
+  if (input != "lattice" && input != "box3" && input != "box2" && input != "box3life" &&
+      input != "box2life") {
+    std::fprintf(stderr, "kinetic_stress: unknown input '%s' (lattice, box3, box2, box3life or box2life)\n",
+                 input.c_str());
     return 2;
   }
   const bool verbose = std::getenv("MEDUSA_STRESS_VERBOSE") != nullptr;
@@ -35,8 +38,9 @@ int main(int argc, char** argv) {
     if (std::chrono::steady_clock::now() - start > std::chrono::seconds(seconds))
       break;
     testing::DenseLatticeRun run;
-    const bool made = input == "lattice" ? testing::dense_lattice_run(seed, run)
-                                         : testing::hull_box_run(seed, input == "box3" ? 3 : 2, run);
+    const bool made = input == "lattice"
+                          ? testing::dense_lattice_run(seed, run)
+                          : testing::hull_box_run(seed, input[3] == '3' ? 3 : 2, run, input.size() > 4);
     if (!made) {
       ++skipped;
       continue;

@@ -302,6 +302,20 @@ inline FormulaCounts built_by_formula(const Trajectories& t, long rho2) {
   return counts;
 }
 
+// Makes about a tenth of the cells start late (a birth: an insertion at a frame) and another tenth
+// end early (a death: a deletion at a frame), from rng alone.
+inline void add_births_and_deaths(Trajectories& t, std::mt19937_64& rng) {
+  for (Trajectory& c : t.cells) {
+    const unsigned r = unsigned(rng() % 10);
+    if (r == 0 && c.positions.size() > 2) {
+      c.first_frame = 1 + rng() % (c.positions.size() - 1);
+      c.positions.erase(c.positions.begin(), c.positions.begin() + long(c.first_frame));
+    } else if (r == 1 && c.positions.size() > 2) {
+      c.positions.resize(1 + rng() % (c.positions.size() - 1));
+    }
+  }
+}
+
 // A dense walk on a coarse integer lattice, with births and deaths: the stress input behind the
 // "dense lattice" regression tests. From the seed alone: 3D (two seeds in three) or planar, up to
 // 42 cells (3D) or 67 (2D) in a box a few lattice steps wide (at most a third of its sites taken),
@@ -328,15 +342,7 @@ inline bool dense_lattice_run(std::uint64_t seed, DenseLatticeRun& run) {
     return false;
   run.trajectories = run.two_d ? random_walk_2d(seed, run.n, run.frames, run.box * 2, std::max(run.step, 1))
                                : random_walk(seed, run.n, run.frames, run.box, run.step);
-  for (Trajectory& c : run.trajectories.cells) {
-    const unsigned r = unsigned(rng() % 10);
-    if (r == 0 && c.positions.size() > 2) {
-      c.first_frame = 1 + rng() % (c.positions.size() - 1);
-      c.positions.erase(c.positions.begin(), c.positions.begin() + long(c.first_frame));
-    } else if (r == 1 && c.positions.size() > 2) {
-      c.positions.resize(1 + rng() % (c.positions.size() - 1));
-    }
-  }
+  add_births_and_deaths(run.trajectories, rng);
   const int rho_tenths = 5 + int(rng() % 40);
   run.options.rho2.num = rho_tenths * rho_tenths;
   run.options.rho2.den = 100;
@@ -350,8 +356,10 @@ inline bool dense_lattice_run(std::uint64_t seed, DenseLatticeRun& run) {
 // face, hull facets degenerating inside a slab). From the seed alone, in dimension dim: box side 2-5,
 // up to 35 cells (25 in 2D; at most half the sites), 3-6 frames, steps of -1, 0 or 1 per coordinate
 // (a quarter of the steps stay), rho between 0.5 and 3.4, the audit after every batch. Returns false
-// when the seed gives too few cells or a cell finds no step free of collisions.
-inline bool hull_box_run(std::uint64_t seed, int dim, DenseLatticeRun& run) {
+// when the seed gives too few cells or a cell finds no step free of collisions. With births_and_deaths,
+// some cells then start late or end early (add_births_and_deaths): insertions and deletions on and
+// next to the degenerate hull.
+inline bool hull_box_run(std::uint64_t seed, int dim, DenseLatticeRun& run, bool births_and_deaths = false) {
   std::mt19937_64 rng(seed * 104729 + 7);
   run.two_d = dim == 2;
   run.box = 2 + int(rng() % 4);
@@ -415,6 +423,10 @@ inline bool hull_box_run(std::uint64_t seed, int dim, DenseLatticeRun& run) {
   run.options.rho2.den = 100;
   run.options.audit = true;
   run.options.audit_stride = 1;
+  if (births_and_deaths) {
+    std::mt19937_64 life(seed * 15485863 + 11);
+    add_births_and_deaths(t, life);
+  }
   return true;
 }
 
