@@ -554,6 +554,8 @@ TEST_CASE("planar: cells moving along shared lines repair degenerate groups and 
   engine.run(obs);
   const KineticStatistics& s = engine.statistics();
   CAPTURE(s.flips22, s.hull_flips, s.static_rebuilds, s.audits, s.audits_compared_with_cgal);
+  REQUIRE(s.static_rebuilds > 0);
+  REQUIRE(obs.step_counts[static_cast<int>(StepKind::repair)] > 0);
   REQUIRE(s.audits_compared_with_cgal > 0);
   REQUIRE(obs.mismatches == 0);
   REQUIRE(obs.inconsistencies == 0);

@@ -53,8 +53,6 @@ void check_store_against_engine(const KineticRun& run, const std::string& store_
     CHECK(!engine.empty());
     // Independent of both: the vertices of K are the cells alive then (MATH.md 5.6): K(t_k+) holds the
     // cells present at t_k that do not end there, K(t_end-) those present through the last slab.
-    if (k == 0)
-      continue;
     SimplexSet alive;
     for (std::size_t v = 0; v < m.input.cells.size(); ++v) {
       const kinetic::Trajectory& c = m.input.cells[v];

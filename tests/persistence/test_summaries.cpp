@@ -42,10 +42,12 @@ TEST_CASE("Reverse diagrams become points (-t_birth, -t_death) and normalise to 
   CHECK(r0.finite.empty());
   CHECK(r0.essential == std::vector<double>{-10});
   const PointDiagram rn = normalise_time(r, Direction::reverse, 0, 10);
+  REQUIRE(rn.finite.size() == 1);
   CHECK(rn.finite[0].birth == Approx(0.2));
   CHECK(rn.finite[0].death == Approx(0.4));
   const PointDiagram f =
       normalise_time(to_points(diagram_of(cells, Direction::forward), 1), Direction::forward, 0, 10);
+  REQUIRE(f.finite.size() == 1);
   CHECK(f.finite[0].birth == Approx(0.2));
   CHECK(f.finite[0].death == Approx(0.4));
   CHECK_THROWS_AS(normalise_time(r, Direction::forward, 1, 1), InputError);

@@ -98,6 +98,7 @@ TEST_CASE("Raw bytes follow a text line exactly", "[io][gzip]") {
   GzipReader in(dir.file("b.gz"));
   std::string line;
   REQUIRE(in.next_line(line));
+  CHECK(line == "HEAD 3");
   char bytes[3];
   in.read_bytes(bytes, 3);
   CHECK(bytes[0] == '\0');

@@ -214,6 +214,7 @@ TEST_CASE("A real VTK folder reads with snapping and reports the moves", "[io][r
   CHECK(r.snap.moved > 0);
   CHECK(2 * r.snap.max_displacement_num <= r.snap.max_displacement_den);
   // MCS 0 cells are 5x5x5 cubes: 125 voxels, centres exactly on the grid (corner + 2).
+  REQUIRE(r.volumes.size() == 251);
   for (const auto& v : r.volumes)
     CHECK(v[0] == 125);
 }

@@ -7,6 +7,9 @@ import os
 import subprocess
 import sys
 
+if not __debug__:
+    sys.exit("these checks are assert statements: run without -O and without PYTHONOPTIMIZE")
+
 
 def run(args, cwd):
     print("$", " ".join(args))

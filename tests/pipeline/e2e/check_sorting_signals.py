@@ -17,6 +17,9 @@ import statistics
 import subprocess
 import sys
 
+if not __debug__:
+    sys.exit("these checks are assert statements: run without -O and without PYTHONOPTIMIZE")
+
 SORTING = ["sorting_3d", "sorting_3d_seed2"]
 CONTROL = "nosorting_3d"
 
