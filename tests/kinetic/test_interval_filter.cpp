@@ -154,7 +154,9 @@ TEST_CASE("point values from doubles enclose every polynomial of the enclosure, 
     REQUIRE(exact_value_of_ends(f, x, true) <= mpq_class(full.sup()));
     decided += v->inf() > 0 || v->sup() < 0;
   }
-  // The cheap stage must actually settle signs, not only be safe.
+  // The cheap stage must actually settle signs, not only be safe. It settles about 39% of these
+  // polynomials (1,146-1,183 of 3,000 in six runs); as a binomial count its standard deviation is
+  // about 27, so 900 lies 9 deviations below the mean: a failure means the filter lost power.
   REQUIRE(decided > 900);
 }
 
@@ -244,6 +246,8 @@ TEST_CASE("Bernstein coefficients from doubles enclose those of every polynomial
       REQUIRE(high[static_cast<std::size_t>(j)] <= mpq_class(beta[static_cast<std::size_t>(j)].sup()));
     }
   }
+  // 1,895-1,912 in six runs, a binomial count with a standard deviation below 30: 1,500 lies more than
+  // 13 deviations below, so a failure means the bound from doubles lost power, not bad luck.
   REQUIRE(certified > 1500);
 }
 
