@@ -7,16 +7,19 @@
 //
 // Usage: kinetic_stress [first-seed] [count] [seconds] [input]     (defaults 1, 1000, 600, lattice)
 // input: lattice (testing::dense_lattice_run), box3 or box2 (testing::hull_box_run in 3D or 2D),
-// box3life or box2life (the same with births and deaths).
+// box3life or box2life (the same with births and deaths), box3mid or box2mid (the same motion with
+// frames at the middle of about half of the slabs).
 // MEDUSA_STRESS_VERBOSE=1 also prints why each rejected input was rejected.
 // Exit code 1 when some seed failed.
 #include "kinetic_test_support.h"
 #include "medusa/kinetic/error.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 using namespace medusa::kinetic;
 
@@ -25,9 +28,12 @@ int main(int argc, char** argv) {
   const std::uint64_t count = argc > 2 ? std::stoull(argv[2]) : 1000;
   const int seconds = argc > 3 ? std::stoi(argv[3]) : 600;
   const std::string input = argc > 4 ? argv[4] : "lattice";
-  if (input != "lattice" && input != "box3" && input != "box2" && input != "box3life" &&
-      input != "box2life") {
-    std::fprintf(stderr, "kinetic_stress: unknown input '%s' (lattice, box3, box2, box3life or box2life)\n",
+  const std::vector<std::string> inputs = {"lattice",  "box3",    "box2",   "box3life",
+                                           "box2life", "box3mid", "box2mid"};
+  if (std::find(inputs.begin(), inputs.end(), input) == inputs.end()) {
+    std::fprintf(stderr,
+                 "kinetic_stress: unknown input '%s' (lattice, box3, box2, box3life, box2life, box3mid or "
+                 "box2mid)\n",
                  input.c_str());
     return 2;
   }
@@ -40,7 +46,8 @@ int main(int argc, char** argv) {
     testing::DenseLatticeRun run;
     const bool made = input == "lattice"
                           ? testing::dense_lattice_run(seed, run)
-                          : testing::hull_box_run(seed, input[3] == '3' ? 3 : 2, run, input.size() > 4);
+                          : testing::hull_box_run(seed, input[3] == '3' ? 3 : 2, run,
+                                                  input.substr(4) == "life", input.substr(4) == "mid");
     if (!made) {
       ++skipped;
       continue;

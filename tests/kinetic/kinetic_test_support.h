@@ -316,6 +316,37 @@ inline void add_births_and_deaths(Trajectories& t, std::mt19937_64& rng) {
   }
 }
 
+// Cuts about half of the slabs at their middle with a new frame, the motion unchanged: coordinates
+// and rho^2 are scaled by 2 and 4 so that the middles are grid points. Degenerate instants at u = 1/2
+// of a slab (cells meeting a line or a hull face there) then fall on a frame, where the engine
+// rebuilds every certificate (MATH.md 2.3) and resolves them as a frame batch. From rng alone.
+inline void add_midpoint_frames(Trajectories& t, KineticOptions& options, std::mt19937_64& rng) {
+  std::vector<bool> cut(t.frame_times.size() - 1);
+  std::vector<std::int64_t> times;
+  std::vector<std::size_t> new_index;
+  for (std::size_t k = 0; k < t.frame_times.size(); ++k) {
+    new_index.push_back(times.size());
+    times.push_back(2 * t.frame_times[k]);
+    if (k + 1 < t.frame_times.size() && (cut[k] = rng() % 2 == 0))
+      times.push_back(t.frame_times[k] + t.frame_times[k + 1]);
+  }
+  for (Trajectory& c : t.cells) {
+    std::vector<GridPoint> p;
+    for (std::size_t f = 0; f < c.positions.size(); ++f) {
+      const GridPoint& x = c.positions[f];
+      p.push_back({2 * x[0], 2 * x[1], 2 * x[2]});
+      if (f + 1 < c.positions.size() && cut[c.first_frame + f]) {
+        const GridPoint& y = c.positions[f + 1];
+        p.push_back({x[0] + y[0], x[1] + y[1], x[2] + y[2]});
+      }
+    }
+    c.positions = std::move(p);
+    c.first_frame = new_index[c.first_frame];
+  }
+  t.frame_times = std::move(times);
+  options.rho2.num *= 4;
+}
+
 // A dense walk on a coarse integer lattice, with births and deaths: the stress input behind the
 // "dense lattice" regression tests. From the seed alone: 3D (two seeds in three) or planar, up to
 // 42 cells (3D) or 67 (2D) in a box a few lattice steps wide (at most a third of its sites taken),
@@ -358,8 +389,10 @@ inline bool dense_lattice_run(std::uint64_t seed, DenseLatticeRun& run) {
 // (a quarter of the steps stay), rho between 0.5 and 3.4, the audit after every batch. Returns false
 // when the seed gives too few cells or a cell finds no step free of collisions. With births_and_deaths,
 // some cells then start late or end early (add_births_and_deaths): insertions and deletions on and
-// next to the degenerate hull.
-inline bool hull_box_run(std::uint64_t seed, int dim, DenseLatticeRun& run, bool births_and_deaths = false) {
+// next to the degenerate hull. With midpoint_frames, about half of the slabs are cut at their middle
+// by a frame (add_midpoint_frames).
+inline bool hull_box_run(std::uint64_t seed, int dim, DenseLatticeRun& run, bool births_and_deaths = false,
+                         bool midpoint_frames = false) {
   std::mt19937_64 rng(seed * 104729 + 7);
   run.two_d = dim == 2;
   run.box = 2 + int(rng() % 4);
@@ -426,6 +459,11 @@ inline bool hull_box_run(std::uint64_t seed, int dim, DenseLatticeRun& run, bool
   if (births_and_deaths) {
     std::mt19937_64 life(seed * 15485863 + 11);
     add_births_and_deaths(t, life);
+  }
+  if (midpoint_frames) {
+    std::mt19937_64 cuts(seed * 32452843 + 5);
+    add_midpoint_frames(t, run.options, cuts);
+    run.frames = static_cast<int>(t.frame_times.size());
   }
   return true;
 }
