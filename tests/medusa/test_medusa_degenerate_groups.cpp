@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
+#include <set>
 #include <vector>
 
 using namespace medusa;
@@ -141,17 +143,27 @@ TEST_CASE("the medusa of a box sheared through a cube holds the cube's instant c
   complex::validate_medusa(m, "sheared cube");
   check_boundary_of_boundary(m);
   bool seven_simplex = false;
-  std::size_t repair_cells = 0;
+  std::set<std::vector<kinetic::VertexId>> repaired;
+  std::optional<complex::VirtualTime> at;
   for (const complex::Cell& c : m.cells)
     if (c.kind == complex::CellKind::repair) {
-      ++repair_cells;
       REQUIRE(c.birth == c.death);
+      REQUIRE((!at || *at == c.birth)); // one repair, at one rank
+      at = c.birth;
+      REQUIRE(repaired.insert(c.vertices).second);
       seven_simplex = seven_simplex || c.vertices == std::vector<kinetic::VertexId>{0, 1, 2, 3, 4, 5, 6, 7};
     }
   REQUIRE(seven_simplex);
-  // All 2^8 - 1 subsets of the cube are cells at the repair's rank, either alive in K or instant.
-  REQUIRE(repair_cells > 0);
-  REQUIRE(repair_cells < 255);
+  // All 2^8 - 1 subsets of the cube are cells at the repair's rank, each once: alive in K (in the old
+  // or the new triangulation, whose closed lifetimes both hold that rank) or instant.
+  std::set<std::vector<kinetic::VertexId>> alive;
+  for (const complex::Cell& c : m.cells)
+    if (c.kind == complex::CellKind::regular && c.birth <= *at && *at <= c.death) {
+      REQUIRE(repaired.count(c.vertices) == 0);
+      alive.insert(c.vertices);
+    }
+  CAPTURE(repaired.size(), alive.size());
+  REQUIRE(repaired.size() + alive.size() == 255);
   const std::vector<std::size_t> b = betti(m);
   CAPTURE(b);
   REQUIRE(b.at(0) == 1);
