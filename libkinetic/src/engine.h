@@ -79,6 +79,7 @@ struct Engine {
   std::set<std::pair<Simplex, int>> pending_delaunay;
   std::vector<std::pair<int, std::uint32_t>> pending_radius; // (certificate, version)
   std::vector<std::pair<int, std::uint32_t>> pending_touch;  // radius touches at now (certificate, version)
+  std::vector<std::pair<int, std::uint32_t>> pending_hull_touch; // hull orientations touching zero at now
   // Set when a hull ridge is found folded at now around a simplex that is not flat
   // (hull_ridge_folded_at_now), or a hull flip would add a top simplex flat at now without turning
   // there (flat_without_turning_at_now, flippable): the triangulation is not embedded just after
@@ -324,9 +325,10 @@ struct Engine {
   int orientation_sign_plus(const Simplex& t);
   bool flat_without_turning_at_now(const Simplex& t); // engine_certificates.cpp
   int sign_after_own_orientation_root(const Simplex& t) const;
-  bool top_simplex_turns_at_frame();                // engine_frames.cpp
-  bool flat_at_now(const Simplex& t);               // a finite top simplex whose orientation vanishes at now
-  int orientation_enclosure_sign(const Simplex& t); // 0: the enclosure at now does not decide
+  bool top_simplex_turns_at_frame();  // engine_frames.cpp
+  bool flat_at_now(const Simplex& t); // a finite top simplex whose orientation vanishes at now
+  bool is_hull_orientation(const Certificate& c) const;         // engine_certificates.cpp
+  int orientation_enclosure_sign(const Simplex& t);             // 0: the enclosure at now does not decide
   GeometryError flat_top_simplex_error(const Simplex& t) const; // t stays flat just after now
   int sign_after_own_root(const IntervalPoly& f, const CacheKey& key) const;
   int new_cert(CertKind kind, const Simplex& key);
@@ -416,6 +418,7 @@ struct Engine {
   void resolve_delaunay(std::vector<Step>& steps);
   void resolve_radius(Step& settle, OldMembership& old_k);
   void resolve_touches(OldMembership& old_k);
+  void resolve_hull_touches();
   bool radius_vanishes_now(const Simplex& s);
 
   // ------------------------------------ the event loop and batches (engine_event_loop.cpp)

@@ -140,6 +140,17 @@ int Engine::sign_after_own_root(const IntervalPoly& f, const CacheKey& key) cons
   return -proportionality_sign(f, current->enclosure, current->shift) * current->sign_lo;
 }
 
+// A hull certificate (MATH.md 3.2): a ridge's (case B, the key holds the infinite vertex) or a hull
+// facet's (case A, the infinite vertex is an apex), each the orientation of four (three) cells.
+bool Engine::is_hull_orientation(const Certificate& c) const {
+  if (c.kind != CertKind::delaunay || c.substitute != Substitute::none)
+    return false;
+  if (!is_finite(c.key))
+    return true;
+  const detail::Triangulation::Apices* ap = tri.apices(c.key);
+  return ap != nullptr && (ap->v[0] == infinite_vertex || ap->v[1] == infinite_vertex);
+}
+
 int Engine::new_cert(CertKind kind, const Simplex& key) {
   int id;
   if (!free_certs.empty()) {
@@ -339,9 +350,10 @@ void Engine::settle_certificate(int id, bool counted) {
     mark_invalid(id);
     return;
   }
-  if (c.kind == CertKind::radius) {
-    // A root of even multiplicity before the first failure is a touch (Engine::resolve_touches). In
-    // doubles such a root is never isolated nor excluded, so it always comes this way.
+  if (c.kind == CertKind::radius || is_hull_orientation(c)) {
+    // A root of even multiplicity before the first failure is a touch (Engine::resolve_touches,
+    // Engine::resolve_hull_touches). In doubles such a root is never isolated nor excluded, so it
+    // always comes this way.
     const AlgebraicReal one(1);
     for (const auto& [x, multiplicity] : slot->second.roots)
       if (multiplicity % 2 == 0 && x < one && compare(now, SlabTime(x)) < 0) {

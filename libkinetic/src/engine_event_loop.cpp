@@ -42,6 +42,7 @@ void Engine::emit_batch(Observer& observer, std::vector<Step>& steps, bool at_fr
 // Processes the batch at `now`: Delaunay failures first (canonical order), then radius events,
 // then the final re-evaluation (MATH.md 5.2).
 void Engine::process_batch(std::vector<Step>& steps) {
+  resolve_hull_touches();
   resolve_delaunay(steps);
   OldMembership& old_k = batch_scratch;
   old_k.clear();
@@ -59,8 +60,10 @@ void Engine::process_batch(std::vector<Step>& steps) {
 
 // A popped entry at now: its certificate fails, or its simplex touches rho.
 void Engine::fire(const QueueEntry& e) {
-  if (e.touch)
+  if (e.touch && certs[e.cert].kind == CertKind::radius)
     pending_touch.emplace_back(static_cast<int>(e.cert), e.version);
+  else if (e.touch)
+    pending_hull_touch.emplace_back(static_cast<int>(e.cert), e.version);
   else {
     switch (certs[e.cert].substitute) {
     case Substitute::hull_fold: ++stats.hull_ridges_folding; break;

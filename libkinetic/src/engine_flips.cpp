@@ -257,6 +257,38 @@ void Engine::resolve_touches(OldMembership& old_k) {
   }
 }
 
+// Hull touches: a hull certificate (an orientation, MATH.md 3.2) whose root at now has even
+// multiplicity. MATH.md 3.9 drops such roots as non-events, which is right for the certificate's own
+// sign but not always for the hull: when three hull cells become collinear at now, every top simplex
+// on them is flat at now, and one that only touches flatness can hide a hull facet turning over and
+// folding onto its neighbour at once, two sign changes that cancel in each certificate (hull-box seed
+// 18304: cell 14 crossed the hull edge [4 11] of its own hull facet [4 11 14] at u = 1/2, where cells
+// 4, 5, 11 and 14 were also coplanar; every certificate touched zero and held, and 12 lay outside the
+// hull just after). So at a hull touch with a finite top simplex on the certificate's cells flat at
+// now, the batch repairs (Engine::repair_pending), which builds Del(now+) whatever happened; the
+// certificate is installed again for its next root either way.
+void Engine::resolve_hull_touches() {
+  std::vector<std::pair<int, std::uint32_t>> touches;
+  touches.swap(pending_hull_touch);
+  for (auto [id, version] : touches) {
+    const Certificate& c = certs[static_cast<std::size_t>(id)];
+    if (!c.alive || c.version != version)
+      continue;
+    Simplex cells;
+    for (VertexId v : c.key)
+      if (v != infinite_vertex)
+        cells = cells.with(v);
+    bool flat = false;
+    tri.for_each_tet_containing(cells,
+                                [&](const Simplex& t) { flat = flat || (is_finite(t) && flat_at_now(t)); });
+    install(id);
+    if (flat && !repair_pending) {
+      ++stats.hull_touches_repaired;
+      repair_pending = true;
+    }
+  }
+}
+
 // Whether R(s) = rho exactly at now = 0 (a frame): the constant coefficient of its radius polynomial.
 bool Engine::radius_vanishes_now(const Simplex& s) {
   {

@@ -335,6 +335,22 @@ TEST_CASE("a static repair rebuilds the certificates of the hull ridges over the
   REQUIRE(s.frames_repaired_for_flat_simplices > 0);
 }
 
+TEST_CASE("a hull cell crossing a hull edge of its own hull facet makes the batch repair",
+          "[kinetic][degenerate][lattice]") {
+  // Hull-box seed 18304 (3D, 19 cells; vertex ids as in the error message). In slab 1, cells 4, 11
+  // and 14 stay at height z = 4 - u and 5 and 12 rise as z = 3 + u; at u = 1/2 cell 14 is the middle
+  // of cells 4 and 11, and all five are coplanar on top of the hull. Just before, 14 is the apex of
+  // the hull facets [4 11 14], [4 5 14], [5 11 14]; just after, it lies under [4 11 12], across the
+  // hull edge [4 11]. The tetrahedron [4 11 12 14] below facet [4 11 14] has orientation
+  // c (2u - 1)^2: it flattens and keeps its sign while the facet turns over and folds onto [4 11 12],
+  // and the ridges round 14 read the orientation of 4, 5, 11, 14, also c' (2u - 1)^2. Every
+  // certificate touched zero and held. Before: "audit failed in slab 1 after u ~ 0.500000: vertex 12
+  // lies outside the hull facet [4 5 14]".
+  const KineticStatistics s = run_to_the_end(18304, 3);
+  REQUIRE(s.hull_touches_repaired > 0);
+  REQUIRE(s.repairs_at_algebraic_times > 0);
+}
+
 TEST_CASE("a run builds the same certificates whatever ran before it in the process",
           "[kinetic][degenerate][lattice]") {
   // Seed 5175 (3D, 13 static rebuilds) built 3,953 or 3,954 certificates depending on the runs

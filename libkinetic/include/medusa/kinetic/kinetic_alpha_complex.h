@@ -43,6 +43,9 @@ struct KineticStatistics {
   // (turned inside out, or flat for the whole new slab).
   std::size_t frames_repaired_for_flat_simplices = 0;
   std::size_t hull_ridges_folded_at_now = 0; // failed at creation: facets folded at a vanishing certificate
+  // Hull certificates touching zero (a root of even multiplicity) where a top simplex on their cells
+  // is flat: the batch repairs there (Engine::resolve_hull_touches; MATH.md 3.9, corrected).
+  std::size_t hull_touches_repaired = 0;
   std::size_t hull_ridges_folding =
       0; // coplanar hull ridges whose facets fold inside a slab (fold tests fired)
   std::size_t cospherical_cells_flattening = 0; // orientation tests of identically cospherical facets fired
