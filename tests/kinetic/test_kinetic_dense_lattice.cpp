@@ -26,11 +26,13 @@ using namespace medusa::kinetic;
 
 namespace {
 
-KineticStatistics run_to_the_end(std::uint64_t seed, int box_dim = 0) {
-  CAPTURE(seed, box_dim);
+KineticStatistics run_to_the_end(std::uint64_t seed, int box_dim = 0, bool midpoint_frames = false) {
+  CAPTURE(seed, box_dim, midpoint_frames);
   testing::DenseLatticeRun run;
-  // box_dim 0: the dense lattice walk; 2 or 3: the hull-box walk of that dimension.
-  REQUIRE((box_dim == 0 ? testing::dense_lattice_run(seed, run) : testing::hull_box_run(seed, box_dim, run)));
+  // box_dim 0: the dense lattice walk; 2 or 3: the hull-box walk of that dimension, with frames cut
+  // into the middle of about half of its slabs if asked (testing::add_midpoint_frames).
+  REQUIRE((box_dim == 0 ? testing::dense_lattice_run(seed, run)
+                        : testing::hull_box_run(seed, box_dim, run, false, midpoint_frames)));
   CAPTURE(run.two_d, run.n, run.frames, run.box, run.step);
   KineticAlphaComplex engine(run.trajectories, run.options);
   testing::ReplayObserver obs(engine);
@@ -349,6 +351,16 @@ TEST_CASE("a hull cell crossing a hull edge of its own hull facet makes the batc
   const KineticStatistics s = run_to_the_end(18304, 3);
   REQUIRE(s.hull_touches_repaired > 0);
   REQUIRE(s.repairs_at_algebraic_times > 0);
+}
+
+TEST_CASE("a hull simplex flat at a frame makes the frame repair even when it keeps its orientation",
+          "[kinetic][degenerate][lattice]") {
+  // The same motion as hull-box seed 18304 above, with a frame cut into the middle of slab 1: the
+  // instant u = 1/2 where cell 14 crosses the hull edge [4 11] is now a frame, and [4 11 12 14], flat
+  // there and positive on both sides, hides the fold. Before: "audit failed in slab 2 after u ~ 0:
+  // vertex 12 lies outside the hull facet [4 5 14]".
+  const KineticStatistics s = run_to_the_end(18304, 3, true);
+  REQUIRE(s.frames_repaired_for_flat_simplices > 0);
 }
 
 TEST_CASE("a run builds the same certificates whatever ran before it in the process",

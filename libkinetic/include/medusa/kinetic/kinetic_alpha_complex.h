@@ -40,7 +40,7 @@ struct KineticStatistics {
   std::size_t insertions = 0, deletions = 0, static_rebuilds = 0;
   std::size_t repairs_at_algebraic_times = 0; // static repairs inside a slab (MATH.md 5.4)
   // Frames repaired because a top simplex flat there was not positively oriented just after it
-  // (turned inside out, or flat for the whole new slab).
+  // (turned inside out, or flat for the whole new slab), or lies on the hull.
   std::size_t frames_repaired_for_flat_simplices = 0;
   std::size_t hull_ridges_folded_at_now = 0; // failed at creation: facets folded at a vanishing certificate
   // Hull certificates touching zero (a root of even multiplicity) where a top simplex on their cells
