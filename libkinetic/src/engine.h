@@ -328,7 +328,8 @@ struct Engine {
   bool top_simplex_turns_at_frame();  // engine_frames.cpp
   bool flat_at_now(const Simplex& t); // a finite top simplex whose orientation vanishes at now
   bool is_hull_orientation(const Certificate& c) const;         // engine_certificates.cpp
-  bool on_hull(const Simplex& t) const;                         // engine_frames.cpp
+  bool degenerate_hull_facet_at(const Simplex& s);              // engine_flips.cpp
+  bool collinear_at_now(const Simplex& f);                      // three cells, on one line at now
   int orientation_enclosure_sign(const Simplex& t);             // 0: the enclosure at now does not decide
   GeometryError flat_top_simplex_error(const Simplex& t) const; // t stays flat just after now
   int sign_after_own_root(const IntervalPoly& f, const CacheKey& key) const;

@@ -264,9 +264,11 @@ void Engine::resolve_touches(OldMembership& old_k) {
 // folding onto its neighbour at once, two sign changes that cancel in each certificate (hull-box seed
 // 18304: cell 14 crossed the hull edge [4 11] of its own hull facet [4 11 14] at u = 1/2, where cells
 // 4, 5, 11 and 14 were also coplanar; every certificate touched zero and held, and 12 lay outside the
-// hull just after). So at a hull touch with a finite top simplex on the certificate's cells flat at
-// now, the batch repairs (Engine::repair_pending), which builds Del(now+) whatever happened; the
-// certificate is installed again for its next root either way.
+// hull just after). A hull facet can only turn over where it degenerates, its three cells collinear
+// (in the plane a hull edge would need two cells to collide), so at a hull touch with such a hull
+// facet at one of the certificate's cells the batch repairs (Engine::repair_pending), which builds
+// Del(now+) whatever happened. Any other touch (a cell touching the plane of a sound hull facet and
+// going back) is no event. The certificate is installed again for its next root either way.
 void Engine::resolve_hull_touches() {
   std::vector<std::pair<int, std::uint32_t>> touches;
   touches.swap(pending_hull_touch);
@@ -274,19 +276,40 @@ void Engine::resolve_hull_touches() {
     const Certificate& c = certs[static_cast<std::size_t>(id)];
     if (!c.alive || c.version != version)
       continue;
-    Simplex cells;
-    for (VertexId v : c.key)
-      if (v != infinite_vertex)
-        cells = cells.with(v);
-    bool flat = false;
-    tri.for_each_tet_containing(cells,
-                                [&](const Simplex& t) { flat = flat || (is_finite(t) && flat_at_now(t)); });
+    const Simplex key = c.key;
     install(id);
-    if (flat && !repair_pending) {
+    if (!repair_pending && degenerate_hull_facet_at(key)) {
       ++stats.hull_touches_repaired;
       repair_pending = true;
     }
   }
+}
+
+// Whether a hull facet at one of the cells of s (the infinite vertex aside) has its three cells
+// collinear at now. Never in the plane, where a hull facet is an edge.
+bool Engine::degenerate_hull_facet_at(const Simplex& s) {
+  if (dim != 3)
+    return false;
+  for (VertexId v : s) {
+    if (v == infinite_vertex)
+      continue;
+    bool degenerate = false;
+    tri.for_each_tet_containing(Simplex{infinite_vertex, v}, [&](const Simplex& t) {
+      degenerate = degenerate || collinear_at_now(t.facet(0));
+    });
+    if (degenerate)
+      return true;
+  }
+  return false;
+}
+
+bool Engine::collinear_at_now(const Simplex& f) {
+  return sign_at_now([&](auto tag) {
+           using NT = decltype(tag);
+           const certificate::Vec<NT> n = certificate::cross(certificate::difference<NT>(pt(f[0]), pt(f[1])),
+                                                             certificate::difference<NT>(pt(f[0]), pt(f[2])));
+           return certificate::dot(n, n);
+         }) == 0;
 }
 
 // Whether R(s) = rho exactly at now = 0 (a frame): the constant coefficient of its radius polynomial.

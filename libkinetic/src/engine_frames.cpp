@@ -93,25 +93,15 @@ void Engine::frame(Observer& observer, std::size_t k) {
 // elementary flips chosen on them can leave it inside out (stress seed 6265: the hull flip at one
 // ridge took away the hull facet whose certificate reported it). So Del(now+) is rebuilt (MATH.md
 // 5.4), which also sets the orientations of the top simplices it keeps (Engine::reorient_kept).
-// One flat at the frame on the hull is rebuilt too, even if it keeps its orientation: its hull facet
-// may turn over and fold onto a neighbour at the same instant, two sign changes that cancel in every
-// certificate (the frame analogue of Engine::resolve_hull_touches: hull-box seed 18304 with a frame
-// cut into the middle of slab 1).
+// One flat at the frame next to a degenerate hull facet (three cells collinear) is rebuilt too, even
+// if it keeps its orientation: the facet may turn over and fold onto a neighbour at that instant, two
+// sign changes that cancel in every certificate (the frame analogue of Engine::resolve_hull_touches:
+// hull-box seed 18304 with a frame cut into the middle of slab 1).
 bool Engine::top_simplex_turns_at_frame() {
   for (const Simplex& t : tri.tets())
     if (is_finite(t) && orientation_enclosure_sign(t) == 0 &&
-        (orientation_sign_plus(t) != tri.orientation(t) || (on_hull(t) && flat_at_now(t))))
+        (orientation_sign_plus(t) != tri.orientation(t) || (flat_at_now(t) && degenerate_hull_facet_at(t))))
       return true;
-  return false;
-}
-
-// Whether a finite top simplex has a hull facet (its other top simplex holds the infinite vertex).
-bool Engine::on_hull(const Simplex& t) const {
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    const detail::Triangulation::Apices* a = tri.apices(t.facet(i));
-    if (a != nullptr && (a->v[0] == infinite_vertex || a->v[1] == infinite_vertex))
-      return true;
-  }
   return false;
 }
 

@@ -40,11 +40,11 @@ struct KineticStatistics {
   std::size_t insertions = 0, deletions = 0, static_rebuilds = 0;
   std::size_t repairs_at_algebraic_times = 0; // static repairs inside a slab (MATH.md 5.4)
   // Frames repaired because a top simplex flat there was not positively oriented just after it
-  // (turned inside out, or flat for the whole new slab), or lies on the hull.
+  // (turned inside out, or flat for the whole new slab), or was next to a degenerate hull facet.
   std::size_t frames_repaired_for_flat_simplices = 0;
   std::size_t hull_ridges_folded_at_now = 0; // failed at creation: facets folded at a vanishing certificate
-  // Hull certificates touching zero (a root of even multiplicity) where a top simplex on their cells
-  // is flat: the batch repairs there (Engine::resolve_hull_touches; MATH.md 3.9, corrected).
+  // Hull certificates touching zero (a root of even multiplicity) next to a hull facet whose cells are
+  // collinear then: the batch repairs there (Engine::resolve_hull_touches; MATH.md 3.9, corrected).
   std::size_t hull_touches_repaired = 0;
   std::size_t hull_ridges_folding =
       0; // coplanar hull ridges whose facets fold inside a slab (fold tests fired)
