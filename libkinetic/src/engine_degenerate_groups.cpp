@@ -149,13 +149,7 @@ bool Engine::face_group_within_rho(const std::vector<VertexId>& p, const std::ve
 bool Engine::concyclic_at_now(const Simplex& t) {
   for (std::size_t i = 0; i < 4; ++i) {
     Simplex tri3 = t.facet(i);
-    int n2 = sign_at_now([&](auto tag) {
-      using NT = decltype(tag);
-      certificate::Vec<NT> n = certificate::cross(certificate::difference<NT>(pt(tri3[0]), pt(tri3[1])),
-                                                  certificate::difference<NT>(pt(tri3[0]), pt(tri3[2])));
-      return certificate::dot(n, n);
-    });
-    if (n2 == 0)
+    if (collinear_at_now(tri3))
       continue;
     return sign_at_now([&](auto tag) {
              using NT = decltype(tag);
