@@ -8,8 +8,10 @@
 #include "medusa/io/vtk_reader.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <random>
 
 using namespace medusa;
@@ -18,6 +20,23 @@ using Catch::Matchers::Contains;
 namespace fs = std::filesystem;
 
 namespace {
+
+// Along a periodic axis of length L, CC3D's centre is the minimum-image mean: the plain mean after
+// some m of the cell's n voxels are moved by one period, (X + m L) / n, taken modulo L (README of
+// periodic_3d). So the CSV value x, the exact mean rounded to the grid, satisfies
+// |n x - (X + m L)| <= n / 2 modulo n L for some m in [0, n]. Returns that m (0 for a cell that does not
+// straddle the seam), or nothing when no wrap of the voxels gives x. Candidates lie L apart and the
+// tolerance is n / 2 grid units, so a wrong x passes only by a coincidence of order n / L (~1e-6).
+std::optional<std::int64_t> periodic_shift(const VtkSnapshot& v, const VtkCell& c, int axis, std::int64_t x) {
+  const auto a = static_cast<std::size_t>(axis);
+  const std::int64_t period = v.dimensions[a] * v.spacing[a], n = c.voxels;
+  const std::int64_t mod = n * period;
+  const std::int64_t r = (((n * x - c.scaled_sum[a]) % mod) + mod) % mod; // in [0, n L)
+  const std::int64_t m = (r + period / 2) / period;                       // nearest multiple of L
+  if (std::abs(r - m * period) * 2 > n)
+    return std::nullopt;
+  return m;
+}
 
 // From each run's README.txt ("Cells:" and "Saved MCS:").
 struct RunFacts {
@@ -137,7 +156,7 @@ TEST_CASE("The mitosis run's cells appear and disappear with the README's count 
 }
 
 TEST_CASE("VTK voxel centroids equal CC3D's CSV centres to 6 decimals on every real snapshot", "[io][real]") {
-  std::size_t files = 0, cells = 0;
+  std::size_t files = 0, cells = 0, straddling = 0;
   for (const RunFacts& f : runs()) {
     CAPTURE(f.name);
     std::map<std::pair<std::int64_t, std::int64_t>, CellSample> csv;
@@ -159,10 +178,18 @@ TEST_CASE("VTK voxel centroids equal CC3D's CSV centres to 6 decimals on every r
         // CC3D prints xCM/volume with %.6f: the exact mean rounded to the grid (ties to even).
         SnapReport report;
         const kinetic::GridPoint rounded = snap_centroid(c.scaled_sum, c.voxels, report);
-        if (f.periodic) // x and y wrap (minimum image, README); z is NoFlux, a plain mean
+        if (f.periodic) { // x and y wrap (minimum image, README); z is NoFlux, a plain mean
           CHECK(rounded[2] == it->second.position[2]);
-        else
+          for (int axis = 0; axis < 2; ++axis) {
+            CAPTURE(axis);
+            const std::optional<std::int64_t> m = periodic_shift(v, c, axis, it->second.position[axis]);
+            REQUIRE(m.has_value());
+            if (*m % c.voxels != 0)
+              ++straddling;
+          }
+        } else {
           CHECK(rounded == it->second.position);
+        }
         ++cells;
       }
       ++files;
@@ -170,6 +197,8 @@ TEST_CASE("VTK voxel centroids equal CC3D's CSV centres to 6 decimals on every r
   }
   CHECK(files == 47); // 21 + 20 + 3 x 2 snapshots in tests/data/cc3d
   CHECK(cells > 0);
+  // The periodic run's cells drift across the seams by MCS 100, so the wrap is exercised.
+  CHECK(straddling > 0);
 }
 
 TEST_CASE("The real periodic run is refused by default and read as open when allowed", "[io][real]") {
