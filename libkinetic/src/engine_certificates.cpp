@@ -319,6 +319,12 @@ void Engine::settle_certificate(int id, bool counted) {
     // turning inside out with no in-sphere event (hull-box seed 910: [3 6 10 17], orientation
     // u (4u - 3), cospherical with its neighbours 4 and 16 through slab 1, inside out after u = 3/4).
     // So the certificate becomes the orientations of its two top simplices (Substitute::cell_orientations).
+    // Their product misses an instant when both turn at once, which happens: the cells reach one
+    // circle (or one plane) together. Every top simplex on four of them then turns, the ones on their
+    // convex hull too, and the certificate of each hull facet of the group, against an apex x off their
+    // sphere, is such an orientation times the power of x with respect to the limit sphere: it fails
+    // there, and the batch repairs ("five cospherical cells reaching one circle ...",
+    // test_kinetic_engine.cpp; at the hull of the run, the case-A certificate is the orientation itself).
     // In the plane neither substitute ever fails, but they cost nothing there and keep one rule: two
     // collinear hull edges fold only through a collision of their cells, and four cocircular points
     // are collinear only all together, when both triangles flatten and the product only touches

@@ -669,3 +669,38 @@ TEST_CASE("certificates built at the start are counted by formula as CGAL's tria
   CHECK(built_by_formula(t, tiny) == FormulaCounts{finite_pairs, hull, dt.number_of_finite_edges(), 0, 0});
   CHECK(built_by_formula(t, huge) == FormulaCounts{finite_pairs, hull, 0, 0, dt.number_of_finite_cells()});
 }
+
+TEST_CASE("five cospherical cells reaching one circle turn two tetrahedra at once and the batch repairs",
+          "[kinetic][engine][degenerate]") {
+  // a, p, q, r, b stay on one sphere for the whole slab (their in-sphere polynomial is identically
+  // zero) and reach one circle at u = 1/2, t = 50: orient(a, p, q, r) = c (2u - 7)(2u - 3)(2u - 1) and
+  // orient(b, p, q, r) = -c' (2u - 7)(2u - 3)(2u - 1) (found and checked with sympy). Both
+  // tetrahedra on a facet of the five turn inside out at that instant, so the product of their
+  // orientations (Substitute::cell_orientations) only touches zero. What sees it is the five's
+  // convex hull: the certificate of each of its facets, against an apex x outside their sphere, is
+  // the inner tetrahedron's orientation times the power of x with respect to the limit sphere, and
+  // changes sign there (engine_certificates.cpp). Four far static cells enclose the five, outside
+  // their sphere for the whole slab.
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100};
+  auto cell = [&](std::int64_t id, GridPoint from, GridPoint to) {
+    t.cells.push_back({id, 1, 0, {from, to}});
+  };
+  cell(1, {377, -11687, -1885}, {-377, -9425, 1885}); // a
+  cell(2, {3857, 11368, 0}, {4263, 8120, 0});         // p
+  cell(3, {-13195, 0, 0}, {-7917, 0, 0});             // q
+  cell(4, {-9541, -203, 2639}, {-9947, 8323, -2639}); // r
+  cell(5, {-637, 12285, 455}, {637, 8827, -455});     // b
+  const std::int64_t f = 1000000;
+  cell(6, {f, f, f}, {f, f, f});
+  cell(7, {f, -f, -f}, {f, -f, -f});
+  cell(8, {-f, f, -f}, {-f, f, -f});
+  cell(9, {-f, -f, f}, {-f, -f, f});
+  KineticAlphaComplex engine(t, with_radius(100));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  REQUIRE(obs.step_counts[static_cast<int>(StepKind::repair)] == 1);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+}
