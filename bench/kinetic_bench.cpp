@@ -7,12 +7,13 @@
 // (delaunay_skeleton.h) on the same frames, plus the arithmetic of the run's radius certificates.
 //
 // Usage: kinetic_bench [--csv cells.csv.gz|run-folder --radius R] [--random N --frames F --step S]
-//                     [--dim 2|3]
+//                     [--turnover F] [--dim 2|3]
 // With no argument: the bundled large_3d run (4,945 cells, 11 frames) and random walks of 1,000 and
 // 10,000 cells over 5 frames, then the planar cases: the real 2D run tests/data/cc3d/sorting_2d
 // (193 cells, 20 frames) and planar random walks of 1,000 and 10,000 cells. --dim 2 or 3 runs one
 // dimension only. --step sets how far the random walks move per frame: the kinetic cost grows with
-// the events per frame, the static rebuild's does not.
+// the events per frame, the static rebuild's does not. --turnover makes cells appear and vanish at
+// every frame, as in a run where cells divide and die.
 #include "delaunay_skeleton.h"
 #include "medusa/io/run_reader.h"
 #include "medusa/kinetic/certificate_enclosure.h"
@@ -276,6 +277,25 @@ Trajectories random_walk(std::uint64_t seed, int n, int frames, double step_sd) 
   return t;
 }
 
+// Cell turnover, as in a growing CompuCell3D tissue: each cell is, with probability `fraction`, born
+// at a random later frame (its earlier positions dropped), and with the same probability dies after
+// a random earlier frame, so that about fraction * n / (frames - 1) cells appear and as many vanish
+// per frame: insertions and deletions at every frame (MATH.md 5.6).
+void add_turnover(Trajectories& t, double fraction, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> coin(0, 1);
+  const std::size_t frames = t.frame_times.size();
+  for (Trajectory& c : t.cells) {
+    const double r = coin(rng);
+    if (r < fraction) {
+      c.first_frame = 1 + rng() % (frames - 1);
+      c.positions.erase(c.positions.begin(), c.positions.begin() + std::ptrdiff_t(c.first_frame));
+    } else if (r < 2 * fraction) {
+      c.positions.resize(1 + rng() % (frames - 1));
+    }
+  }
+}
+
 // The planar analogue: the same spacing and steps in the plane z = 0.
 Trajectories random_walk_2d(std::uint64_t seed, int n, int frames, double step_sd) {
   const std::int64_t unit = 1000000;
@@ -393,6 +413,10 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
               "%zu 2-3, %zu 3-2, %zu 2-2, %zu hull flips, %zu radius events\n",
               kinetic_total, timer.initialisation, events, events / kinetic_total, s.flips23, s.flips32,
               s.flips22, s.hull_flips, s.radius_events);
+  if (s.insertions + s.deletions > 0)
+    std::printf("cells appearing and vanishing: %zu insertions, %zu deletions; as local changes %zu and %zu "
+                "(the rest rebuild Del statically: ties just after their frame)\n",
+                s.insertions, s.deletions, s.local_insertions, s.local_deletions);
   double built = double(s.certificates_built);
   const double doubles = double(s.filter_settled + s.interval_settled);
   std::printf("certificates built %zu; settled in doubles %.2f%% (target >= 99%%): %zu by the Bernstein "
@@ -447,7 +471,7 @@ int main(int argc, char** argv) {
   std::string csv = MEDUSA_BENCH_DATA "/large_3d/cells.csv.gz", radius = "3";
   std::vector<int> randoms = {1000, 10000};
   int frames = 5, only_dim = 0;
-  double step = 0.7;
+  double step = 0.7, turnover = 0.0;
   bool csv_only = false, random_only = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--csv" && i + 1 < args.size()) {
@@ -462,6 +486,8 @@ int main(int argc, char** argv) {
       randoms.push_back(std::stoi(args[++i]));
     } else if (args[i] == "--step" && i + 1 < args.size()) {
       step = std::stod(args[++i]);
+    } else if (args[i] == "--turnover" && i + 1 < args.size()) {
+      turnover = std::stod(args[++i]);
     } else if (args[i] == "--frames" && i + 1 < args.size()) {
       frames = std::stoi(args[++i]);
     } else if (args[i] == "--dim" && i + 1 < args.size() && (args[i + 1] == "2" || args[i + 1] == "3")) {
@@ -469,9 +495,11 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: kinetic_bench [--csv cells.csv.gz|run-folder] [--radius R] [--random N]... "
-                   "[--frames F] [--step S] [--dim 2|3]\n"
+                   "[--frames F] [--step S] [--turnover F] [--dim 2|3]\n"
                    "  --step S: standard deviation of the random walks' step per frame and coordinate, in\n"
-                   "            lattice units (cells are 5 apart; default 0.7)\n");
+                   "            lattice units (cells are 5 apart; default 0.7)\n"
+                   "  --turnover F: each random-walk cell is born late with probability F and dies early\n"
+                   "            with probability F (insertions and deletions at every frame; default 0)\n");
       return 2;
     }
   }
@@ -484,15 +512,23 @@ int main(int argc, char** argv) {
       run_case(csv, run.trajectories, radius);
     }
     if (!csv_only && only_dim != 2)
-      for (int n : randoms)
-        run_case("random walk", random_walk(42, n, frames, step), "3");
+      for (int n : randoms) {
+        Trajectories t = random_walk(42, n, frames, step);
+        if (turnover > 0)
+          add_turnover(t, turnover, 43);
+        run_case(turnover > 0 ? "random walk with turnover" : "random walk", t, "3");
+      }
     if (default_cases && only_dim != 3) {
       const std::string planar = MEDUSA_TEST_DATA "/cc3d/sorting_2d";
       run_case(planar, medusa::io::read_run(planar, o).trajectories, radius);
     }
     if (!csv_only && only_dim != 3)
-      for (int n : randoms)
-        run_case("planar random walk", random_walk_2d(42, n, frames, step), "3");
+      for (int n : randoms) {
+        Trajectories t = random_walk_2d(42, n, frames, step);
+        if (turnover > 0)
+          add_turnover(t, turnover, 43);
+        run_case(turnover > 0 ? "planar random walk with turnover" : "planar random walk", t, "3");
+      }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kinetic_bench: %s\n", e.what());
     return 1;

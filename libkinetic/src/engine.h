@@ -463,6 +463,19 @@ struct Engine {
   void insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps);
   void record_tet_changes(Step& step, OldMembership& old_k);
 
+  // ------------------------------------ local insertions and deletions (engine_local_updates.cpp)
+
+  // The top simplices to remove and add (with the orientations sign^+ of the added ones, 0 for
+  // infinite ones) for inserting or deleting v at now; false, with nothing changed, where a predicate
+  // vanishes for the whole slab or a check fails, and the caller rebuilds statically.
+  bool insert_locally(VertexId v, std::vector<Simplex>& removed, std::vector<Simplex>& added,
+                      std::vector<int>& orientations);
+  bool delete_locally(VertexId v, std::vector<Simplex>& removed, std::vector<Simplex>& added,
+                      std::vector<int>& orientations);
+  bool record_local_change(Step& step, OldMembership& old_k, VertexId v, bool insert);
+  int in_conflict_just_after(const Simplex& t, VertexId v);
+  bool find_conflict(VertexId v, Simplex& seed);
+
   // ------------------------------------ the run (engine_run.cpp)
 
   void check_planar() const;

@@ -114,7 +114,8 @@ void Engine::insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps)
   OldMembership old_k;
   old_k.emplace(Simplex{v}, !insert);
   alive[static_cast<std::size_t>(v)] = insert ? 1 : 0;
-  record_tet_changes(step, old_k);
+  if (!record_local_change(step, old_k, v, insert))
+    record_tet_changes(step, old_k);
   settle_membership(old_k, step);
   step.rank = steps.size() + 1;
   steps.push_back(std::move(step));

@@ -259,6 +259,8 @@ void write_timings(const std::string& path, const RunArguments& args, const io::
                        {"radius_events", stats.radius_events},
                        {"insertions", stats.insertions},
                        {"deletions", stats.deletions},
+                       {"local_insertions", stats.local_insertions},
+                       {"local_deletions", stats.local_deletions},
                        {"batches", stats.batches},
                        {"certificates_built", stats.certificates_built},
                        {"static_rebuilds", stats.static_rebuilds}};

@@ -325,6 +325,8 @@ TEST_CASE("cells inserted and deleted in the middle of a run keep the audit gree
   engine.run(obs);
   REQUIRE(engine.statistics().insertions == 1);
   REQUIRE(engine.statistics().deletions == 1);
+  REQUIRE(engine.statistics().local_insertions == 1);
+  REQUIRE(engine.statistics().local_deletions == 1);
   REQUIRE(obs.step_counts[static_cast<int>(StepKind::insertion)] == 1);
   REQUIRE(obs.step_counts[static_cast<int>(StepKind::deletion)] == 1);
   REQUIRE(obs.mismatches == 0);

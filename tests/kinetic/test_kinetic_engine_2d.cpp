@@ -576,6 +576,8 @@ TEST_CASE("planar: cells inserted and deleted in the middle of a run keep the au
   engine.run(obs);
   REQUIRE(engine.statistics().insertions == 1);
   REQUIRE(engine.statistics().deletions == 1);
+  REQUIRE(engine.statistics().local_insertions == 1);
+  REQUIRE(engine.statistics().local_deletions == 1);
   REQUIRE(obs.step_counts[static_cast<int>(StepKind::insertion)] == 1);
   REQUIRE(obs.step_counts[static_cast<int>(StepKind::deletion)] == 1);
   REQUIRE(obs.mismatches == 0);
@@ -660,4 +662,47 @@ TEST_CASE("planar: certificates built at the start are counted by formula as CGA
   const std::size_t hull = all_edges - finite_pairs;
   CHECK(built_by_formula(t, tiny) == FormulaCounts{finite_pairs, hull, finite_edges, 0, 0});
   CHECK(built_by_formula(t, huge) == FormulaCounts{finite_pairs, hull, 0, dt.number_of_faces(), 0});
+}
+
+TEST_CASE("planar: a cell whose only neighbours are three cells around it leaves by a local change",
+          "[kinetic][engine][2d]") {
+  // d inside triangle abc is joined to a, b and c only: its link is the triangle abc itself, which
+  // fills its star once it has left (engine_local_updates.cpp). e is born at frame 1 outside the
+  // hull, beyond the edge ab and far from the circles of d's triangles (the one on ab has centre
+  // (20, -10.95) and radius 22.8), so its only conflict is the hull edge ab: the insertion adds the
+  // triangle abe and leaves d's link alone.
+  Trajectories t = planar({0, 100, 200});
+  still(t, 1, 0, 0);
+  still(t, 2, 40, 0);
+  still(t, 3, 0, 40);
+  t.cells.push_back({4, 2, 0, {{10, 10, 0}, {11, 10, 0}}});
+  t.cells.push_back({5, 2, 1, {{20, -200, 0}, {21, -200, 0}}});
+  KineticAlphaComplex engine(t, with_radius(100));
+  // The replay check, and the Delaunay changes of the insertion and the deletion.
+  struct Changes : ReplayObserver {
+    using ReplayObserver::ReplayObserver;
+    std::vector<Step> steps;
+    void batch(const EventTime& time, const std::vector<Step>& batch) override {
+      for (const Step& s : batch)
+        if (s.kind == StepKind::insertion || s.kind == StepKind::deletion)
+          steps.push_back(s);
+      ReplayObserver::batch(time, batch);
+    }
+  } obs(engine);
+  engine.run(obs);
+  REQUIRE(obs.steps.size() == 2);
+  const Step& in = obs.steps[0];
+  const Step& out = obs.steps[1];
+  REQUIRE(in.kind == StepKind::insertion);
+  CHECK(in.delaunay_removed.empty()); // only the infinite triangle on ab
+  CHECK(in.delaunay_created == std::vector<Simplex>{Simplex{0, 1, 4}});
+  REQUIRE(out.kind == StepKind::deletion);
+  CHECK(out.delaunay_removed == std::vector<Simplex>{Simplex{0, 1, 3}, Simplex{0, 2, 3}, Simplex{1, 2, 3}});
+  CHECK(out.delaunay_created == std::vector<Simplex>{Simplex{0, 1, 2}});
+  REQUIRE(engine.statistics().deletions == 1);
+  REQUIRE(engine.statistics().local_deletions == 1);
+  REQUIRE(engine.statistics().insertions == 1);
+  REQUIRE(engine.statistics().local_insertions == 1);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
 }

@@ -74,9 +74,14 @@ TEST_CASE("a real run where cells divide and die inserts and deletes them with t
   ReplayObserver obs(engine);
   engine.run(obs);
   const KineticStatistics& s = engine.statistics();
-  CAPTURE(s.insertions, s.deletions, s.audits, s.audits_compared_with_cgal);
+  CAPTURE(s.insertions, s.deletions, s.local_insertions, s.local_deletions, s.audits,
+          s.audits_compared_with_cgal);
   REQUIRE(s.insertions > 0);
   REQUIRE(s.deletions > 0);
+  // Each as a local change (engine_local_updates.cpp): the real run's cells are in general position
+  // at these frames.
+  REQUIRE(s.local_insertions == s.insertions);
+  REQUIRE(s.local_deletions == s.deletions);
   REQUIRE(s.audits_compared_with_cgal >= 5);
   REQUIRE(obs.mismatches == 0);
   REQUIRE(obs.inconsistencies == 0);

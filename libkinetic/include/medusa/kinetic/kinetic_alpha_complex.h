@@ -38,6 +38,9 @@ struct KineticStatistics {
   std::size_t radius_touches = 0;
   std::size_t flips22 = 0; // planar runs: finite 2-2 flips (hull flips are counted in hull_flips)
   std::size_t insertions = 0, deletions = 0, static_rebuilds = 0;
+  // Insertions and deletions made as local changes (Bowyer-Watson; the star of a leaving cell filled
+  // with the Delaunay triangulation of its link); the others rebuilt Del statically.
+  std::size_t local_insertions = 0, local_deletions = 0;
   std::size_t repairs_at_algebraic_times = 0; // static repairs inside a slab (MATH.md 5.4)
   // Frames repaired because a top simplex flat there was not positively oriented just after it
   // (turned inside out, or flat for the whole new slab), or was next to a degenerate hull facet.

@@ -1,0 +1,284 @@
+// Insertions and deletions at frames as local changes of Del(now+) (MATH.md 5.6): a new cell replaces
+// the top simplices whose circumsphere it lies in (Bowyer-Watson), a leaving cell's star is filled
+// with the Delaunay triangulation of its link. A static rebuild of the whole triangulation costs a
+// CGAL triangulation of every cell per change; a growing CompuCell3D tissue divides a few percent of
+// its cells per frame, so at thousands of cells that was a hundred rebuilds per frame.
+//
+// Both decide with the predicates just after now (sign^+, MATH.md 3.7), where Del(now+) is unique
+// unless some of them vanish for the whole slab: a cell cospherical with a top simplex (coplanar with
+// a hull facet) throughout. Then, or when a check of the result fails, they return false and change
+// nothing, and the caller rebuilds statically as before, which settles such ties as the initial
+// triangulation does (MATH.md 5.5).
+#include "engine.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+namespace {
+
+// Squared distance between two cells at a frame, in doubles: it only picks where to start looking,
+// so rounding can cost a scan but never decides anything.
+double squared_distance(const MovingPoint& p, const MovingPoint& q) {
+  double d = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double x = static_cast<double>(p.a[i]) - static_cast<double>(q.a[i]);
+    d += x * x;
+  }
+  return d;
+}
+
+} // namespace
+
+// Whether v lies strictly inside the circumsphere (circumcircle) of the top simplex t just after now,
+// or, for an infinite t, strictly beyond its hull facet: +1 yes, -1 no, 0 when the predicate vanishes
+// for the whole slab (undecided; the caller rebuilds statically).
+int Engine::in_conflict_just_after(const Simplex& t, VertexId v) {
+  if (is_finite(t)) {
+    const int o = tri.orientation(t);
+    if (dim == 2) {
+      // The certificate of a facet is -InC * orientation while the apex is outside (delaunay_poly_2).
+      const int s = sign_plus_now([&](auto tag) {
+        using NT = decltype(tag);
+        return certificate::in_circle<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(v));
+      });
+      return s == 0 ? 0 : (s * o > 0 ? 1 : -1);
+    }
+    const int s = sign_plus_now([&](auto tag) {
+      using NT = decltype(tag);
+      return certificate::in_sphere<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(t[3]), pt(v));
+    });
+    return s == 0 ? 0 : (s * o < 0 ? 1 : -1);
+  }
+  // t = [-1 hull facet]: v is beyond the facet iff it lies on the other side of it than the facet's
+  // finite top simplex.
+  const Simplex f = t.facet(0);
+  const Triangulation::Apices& ap = tri.two_sided(f);
+  const VertexId z = ap.v[0] == infinite_vertex ? ap.v[1] : ap.v[0];
+  std::array<VertexId, 4> seq{};
+  std::copy(f.begin(), f.end(), seq.begin());
+  seq[f.size()] = z;
+  const int inner = orientation_of(seq.data(), f.size() + 1, ap, z);
+  const int s = sign_plus_now([&](auto tag) {
+    using NT = decltype(tag);
+    return dim == 2 ? certificate::orientation_2<NT>(pt(f[0]), pt(f[1]), pt(v))
+                    : certificate::orientation<NT>(pt(f[0]), pt(f[1]), pt(f[2]), pt(v));
+  });
+  return s == 0 ? 0 : (s == inner ? -1 : 1);
+}
+
+// A top simplex whose circumsphere holds v just after now: one of those at v's nearest cell, which is
+// v's neighbour in Del(now+) when the nearest is unique at now; otherwise one found by a scan.
+// Returns false when none is found with decided predicates.
+bool Engine::find_conflict(VertexId v, Simplex& seed) {
+  VertexId nearest = infinite_vertex;
+  double best = 0;
+  for (std::size_t i = 0; i < alive.size(); ++i)
+    if (alive[i] && static_cast<VertexId>(i) != v) {
+      const double d = squared_distance(pt(static_cast<VertexId>(i)), pt(v));
+      if (nearest == infinite_vertex || d < best) {
+        best = d;
+        nearest = static_cast<VertexId>(i);
+      }
+    }
+  if (nearest != infinite_vertex)
+    for (const Simplex& t : tri.tets_of(nearest)) {
+      const int c = in_conflict_just_after(t, v);
+      if (c == 0)
+        return false;
+      if (c > 0) {
+        seed = t;
+        return true;
+      }
+    }
+  for (const Simplex& t : tri.tets()) {
+    const int c = in_conflict_just_after(t, v);
+    if (c == 0)
+      return false;
+    if (c > 0) {
+      seed = t;
+      return true;
+    }
+  }
+  return false;
+}
+
+// Bowyer-Watson just after now: the top simplices in conflict with v form a region star-shaped from
+// v, connected through their facets; it is replaced by the cone from v over its boundary facets.
+bool Engine::insert_locally(VertexId v, std::vector<Simplex>& removed, std::vector<Simplex>& added,
+                            std::vector<int>& orientations) {
+  Simplex seed;
+  if (!find_conflict(v, seed))
+    return false;
+  std::unordered_map<Simplex, bool, SimplexHash> in_conflict{{seed, true}};
+  std::vector<Simplex> todo{seed}, boundary;
+  removed.clear();
+  while (!todo.empty()) {
+    const Simplex t = todo.back();
+    todo.pop_back();
+    removed.push_back(t);
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const Simplex f = t.facet(i);
+      const Simplex other = f.with(tri.other_apex(f, t[i]));
+      auto [it, fresh] = in_conflict.try_emplace(other, false);
+      if (fresh) {
+        const int c = in_conflict_just_after(other, v);
+        if (c == 0)
+          return false;
+        it->second = c > 0;
+        if (it->second)
+          todo.push_back(other);
+      }
+      if (!it->second)
+        boundary.push_back(f);
+    }
+  }
+  added.clear();
+  orientations.clear();
+  for (const Simplex& f : boundary) {
+    const Simplex t = f.with(v);
+    int s = 0;
+    if (is_finite(t) && (s = orientation_sign_plus(t)) == 0)
+      return false; // flat for the whole slab: a tie the static rebuild settles
+    added.push_back(t);
+    orientations.push_back(s);
+  }
+  return true;
+}
+
+// The star of v is filled with the top simplices of Del(link of v)(now+) that lie inside it: a flood
+// from the one beside a link facet on v's side, never crossing a link facet. Every link facet is a
+// face of Del(V - v) (its outer top simplex keeps its empty circumsphere), hence of Del(link), unless
+// a tie just after now let CGAL's perturbation choose otherwise; then the flood would not close, and
+// the result is checked: the filled simplices must meet exactly the link facets, each once.
+bool Engine::delete_locally(VertexId v, std::vector<Simplex>& removed, std::vector<Simplex>& added,
+                            std::vector<int>& orientations) {
+  if (!now.is_rational())
+    return false;
+  removed = tri.tets_of(v);
+  std::unordered_map<Simplex, int, SimplexHash> walls; // link facet -> times the flood met it
+  std::vector<VertexId> link;
+  for (const Simplex& t : removed) {
+    const Simplex f = t.facet(static_cast<std::size_t>(std::find(t.begin(), t.end(), v) - t.begin()));
+    walls.emplace(f, 0);
+    for (VertexId w : f)
+      if (w != infinite_vertex)
+        link.push_back(w);
+  }
+  std::sort(link.begin(), link.end());
+  link.erase(std::unique(link.begin(), link.end()), link.end());
+  if (link.size() < top_size())
+    return false; // too few to span a top simplex: the static rebuild decides (and reports flat input)
+  int dimension = 0;
+  const std::vector<Simplex> local =
+      detail::delaunay_just_after(dim, static_input(link), now.rational(), dimension);
+  if (dimension < dim)
+    return false;
+  std::unordered_map<Simplex, std::vector<std::size_t>, SimplexHash> sides; // facet -> its top simplices
+  for (std::size_t i = 0; i < local.size(); ++i)
+    for (std::size_t j = 0; j < local[i].size(); ++j)
+      sides[local[i].facet(j)].push_back(i);
+  // The seed: at a finite link facet f, the top simplex of Del(link) on v's side of f (the other one
+  // when the only finite apex is on the far side).
+  std::size_t seed = local.size();
+  for (const auto& wall : walls) {
+    const Simplex& f = wall.first;
+    if (!is_finite(f))
+      continue;
+    const auto it = sides.find(f);
+    if (it == sides.end() || it->second.size() != 2)
+      return false;
+    const auto side = [&](VertexId x) {
+      return sign_plus_now([&](auto tag) {
+        using NT = decltype(tag);
+        return dim == 2 ? certificate::orientation_2<NT>(pt(f[0]), pt(f[1]), pt(x))
+                        : certificate::orientation<NT>(pt(f[0]), pt(f[1]), pt(f[2]), pt(x));
+      });
+    };
+    const auto apex = [&](std::size_t i) {
+      return *std::find_if(local[i].begin(), local[i].end(), [&](VertexId x) { return !f.contains(x); });
+    };
+    std::size_t near = it->second[0], far = it->second[1];
+    if (apex(near) == infinite_vertex)
+      std::swap(near, far);
+    const int own = side(v), other = side(apex(near));
+    if (own == 0 || other == 0)
+      return false;
+    seed = own == other ? near : far;
+    break;
+  }
+  if (seed == local.size())
+    return false;
+  std::vector<char> filled(local.size(), 0);
+  std::vector<std::size_t> todo{seed};
+  filled[seed] = 1;
+  while (!todo.empty()) {
+    const std::size_t i = todo.back();
+    todo.pop_back();
+    for (std::size_t j = 0; j < local[i].size(); ++j) {
+      const Simplex f = local[i].facet(j);
+      if (const auto w = walls.find(f); w != walls.end()) {
+        ++w->second;
+        continue;
+      }
+      for (std::size_t k : sides.at(f))
+        if (!filled[k]) {
+          filled[k] = 1;
+          todo.push_back(k);
+        }
+    }
+  }
+  for (const auto& wall : walls)
+    if (wall.second != 1)
+      return false; // a link facet missing from Del(link), or met from both sides: the flood leaked
+  added.clear();
+  orientations.clear();
+  for (std::size_t i = 0; i < local.size(); ++i) {
+    if (!filled[i])
+      continue;
+    int s = 0;
+    if (is_finite(local[i]) && (s = orientation_sign_plus(local[i])) == 0)
+      return false;
+    added.push_back(local[i]);
+    orientations.push_back(s);
+  }
+  return true;
+}
+
+// Inserts or deletes v as a local change if it can (see above), recording it in step as
+// record_tet_changes records a static rebuild.
+bool Engine::record_local_change(Step& step, OldMembership& old_k, VertexId v, bool insert) {
+  std::vector<Simplex> removed, added;
+  std::vector<int> orientations;
+  if (insert ? insert_locally(v, removed, added, orientations)
+             : delete_locally(v, removed, added, orientations)) {
+    // Canonical order, as after a static rebuild: the certificates are built in it.
+    std::vector<std::size_t> order(added.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+      order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return added[i] < added[j]; });
+    std::vector<Simplex> sorted_added;
+    std::vector<int> sorted_orientations;
+    for (std::size_t i : order) {
+      sorted_added.push_back(added[i]);
+      sorted_orientations.push_back(orientations[i]);
+    }
+    std::sort(removed.begin(), removed.end());
+    change_tets(removed, sorted_added, old_k, sorted_orientations.data());
+    reinstall_hull_ridges_over(sorted_added, removed);
+    ++(insert ? stats.local_insertions : stats.local_deletions);
+    for (const Simplex& t : removed)
+      if (is_finite(t))
+        step.delaunay_removed.push_back(t);
+    for (const Simplex& t : sorted_added)
+      if (is_finite(t))
+        step.delaunay_created.push_back(t);
+    return true;
+  }
+  return false;
+}
+
+} // namespace medusa::kinetic::detail
