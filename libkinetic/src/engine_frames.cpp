@@ -67,7 +67,9 @@ void Engine::frame(Observer& observer, std::size_t k) {
     const Trajectory& c = traj.cells[i];
     if (c.first_frame == k && k > 0)
       born.emplace_back(c.cell_id, static_cast<VertexId>(i));
-    if (c.last_frame() == k && k + 1 < traj.frames() && alive[i])
+    // A cell present at this frame alone is inserted and then deleted here: it must not stay behind,
+    // frozen where it was, for the rest of the run.
+    if (c.last_frame() == k && k + 1 < traj.frames() && (alive[i] || c.first_frame == k))
       dying.emplace_back(c.cell_id, static_cast<VertexId>(i));
   }
   std::sort(born.begin(), born.end());

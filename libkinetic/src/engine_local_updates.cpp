@@ -4,11 +4,13 @@
 // CGAL triangulation of every cell per change; a growing CompuCell3D tissue divides a few percent of
 // its cells per frame, so at thousands of cells that was a hundred rebuilds per frame.
 //
-// Both decide with the predicates just after now (sign^+, MATH.md 3.7), where Del(now+) is unique
-// unless some of them vanish for the whole slab: a cell cospherical with a top simplex (coplanar with
-// a hull facet) throughout. Then, or when a check of the result fails, they return false and change
+// Both decide with the predicates just after now (sign^+, MATH.md 3.7). Where one they evaluate
+// vanishes for the whole slab (the new cell cospherical with a top simplex around it, or coplanar with
+// a hull facet it sees, throughout), or a check of the result fails, they return false and change
 // nothing, and the caller rebuilds statically as before, which settles such ties as the initial
-// triangulation does (MATH.md 5.5).
+// triangulation does (MATH.md 5.5). Ties the predicates do not meet are kept as they are (MATH.md
+// 5.3): a local change can also create one, such as two new hull facets in one plane when the new
+// cell sees two hull edges of three collinear cells; the triangulation is Delaunay either way.
 #include "engine.h"
 
 #include <algorithm>
@@ -71,8 +73,9 @@ int Engine::in_conflict_just_after(const Simplex& t, VertexId v) {
 }
 
 // A top simplex whose circumsphere holds v just after now: one of those at v's nearest cell, which is
-// v's neighbour in Del(now+) when the nearest is unique at now; otherwise one found by a scan.
-// Returns false when none is found with decided predicates.
+// v's neighbour in Del(now+) (a Gabriel edge, even among equal distances); otherwise, after rounding
+// in doubles picked another, one found by a scan. Returns false when none is found with decided
+// predicates. Insertions happen at frames, where now is u = 0 and each cell sits at its `a`.
 bool Engine::find_conflict(VertexId v, Simplex& seed) {
   VertexId nearest = infinite_vertex;
   double best = 0;
@@ -84,25 +87,19 @@ bool Engine::find_conflict(VertexId v, Simplex& seed) {
         nearest = static_cast<VertexId>(i);
       }
     }
+  // A tie (0) is passed over here: if it touches the conflict region, the flood of insert_locally
+  // meets it again and gives up; elsewhere it does not matter.
   if (nearest != infinite_vertex)
-    for (const Simplex& t : tri.tets_of(nearest)) {
-      const int c = in_conflict_just_after(t, v);
-      if (c == 0)
-        return false;
-      if (c > 0) {
+    for (const Simplex& t : tri.tets_of(nearest))
+      if (in_conflict_just_after(t, v) > 0) {
         seed = t;
         return true;
       }
-    }
-  for (const Simplex& t : tri.tets()) {
-    const int c = in_conflict_just_after(t, v);
-    if (c == 0)
-      return false;
-    if (c > 0) {
+  for (const Simplex& t : tri.tets())
+    if (in_conflict_just_after(t, v) > 0) {
       seed = t;
       return true;
     }
-  }
   return false;
 }
 
@@ -170,13 +167,29 @@ bool Engine::delete_locally(VertexId v, std::vector<Simplex>& removed, std::vect
   }
   std::sort(link.begin(), link.end());
   link.erase(std::unique(link.begin(), link.end()), link.end());
+  if (link.size() + 1 == top_size()) {
+    // A hull cell with dim neighbours: its star is every top simplex on it, the infinite vertex and
+    // the neighbours, and the only way to close the hole with those is the one infinite top simplex
+    // over the neighbours, now a hull facet. Unless too few cells remain for any triangulation.
+    const auto remaining = static_cast<std::size_t>(std::count(alive.begin(), alive.end(), 1));
+    if (walls.size() != top_size() || remaining < top_size())
+      return false;
+    std::vector<VertexId> w = link;
+    w.push_back(infinite_vertex);
+    added.assign(1, Simplex::from_range(w.begin(), w.end()));
+    orientations.assign(1, 0);
+    return true;
+  }
   if (link.size() < top_size())
     return false; // too few to span a top simplex: the static rebuild decides (and reports flat input)
   int dimension = 0;
-  const std::vector<Simplex> local =
+  std::vector<Simplex> local =
       detail::delaunay_just_after(dim, static_input(link), now.rational(), dimension);
   if (dimension < dim)
     return false;
+  // CGAL's order follows its spatial sort (a process-wide random generator): sorted, the seed below,
+  // and the signs evaluated to find it, do not depend on it.
+  std::sort(local.begin(), local.end());
   std::unordered_map<Simplex, std::vector<std::size_t>, SimplexHash> sides; // facet -> its top simplices
   for (std::size_t i = 0; i < local.size(); ++i)
     for (std::size_t j = 0; j < local[i].size(); ++j)
@@ -204,7 +217,11 @@ bool Engine::delete_locally(VertexId v, std::vector<Simplex>& removed, std::vect
     std::size_t near = it->second[0], far = it->second[1];
     if (apex(near) == infinite_vertex)
       std::swap(near, far);
-    const int own = side(v), other = side(apex(near));
+    // v's side is the recorded orientation of its top simplex on f: the triangulation's own sign.
+    std::array<VertexId, 4> seq{};
+    std::copy(f.begin(), f.end(), seq.begin());
+    seq[f.size()] = v;
+    const int own = orientation_of(seq.data(), f.size() + 1, *tri.apices(f), v), other = side(apex(near));
     if (own == 0 || other == 0)
       return false;
     seed = own == other ? near : far;

@@ -577,6 +577,61 @@ TEST_CASE("a cell present only at the first frame is deleted at t0", "[kinetic][
   REQUIRE(obs.mismatches == 0);
 }
 
+TEST_CASE("a cell present at one inner frame only is inserted and deleted there", "[kinetic][engine]") {
+  // Found in review: it used to be inserted and never deleted, frozen where it was for the rest of
+  // the run. Here it is present at frame 1 of 0..3 only.
+  Trajectories t = testing::random_walk(21, 20, 4, static_cast<int>(2000 * std::cbrt(20.0)), 600);
+  Trajectory& once = t.cells[0];
+  once.first_frame = 1;
+  once.positions = {once.positions[1]};
+  KineticAlphaComplex engine(t, with_radius(1200 * 1200));
+  ReplayObserver obs(engine);
+  engine.run(obs);
+  REQUIRE(engine.statistics().insertions == 1);
+  REQUIRE(engine.statistics().deletions == 1);
+  REQUIRE(obs.step_counts[static_cast<int>(StepKind::insertion)] == 1);
+  REQUIRE(obs.step_counts[static_cast<int>(StepKind::deletion)] == 1);
+  REQUIRE(obs.complex().count(Simplex{0}) == 0);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+}
+
+TEST_CASE("a hull cell with three neighbours leaves by closing its star with one hull facet",
+          "[kinetic][engine]") {
+  // d sits above the face abc of the tetrahedron abce, outside its circumsphere (centre (20, 20,
+  // -20), radius^2 1200; d is 2700 away), so it is joined to a, b and c only (its star: abcd and the
+  // three infinite tetrahedra over its hull facets). When it leaves at frame 1, abc becomes
+  // a hull facet again: the one infinite tetrahedron [-1 a b c] fills the hole
+  // (engine_local_updates.cpp).
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100, 200};
+  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p, p}}); };
+  still(1, {0, 0, 0});
+  still(2, {40, 0, 0});
+  still(3, {0, 40, 0});
+  still(4, {0, 0, -40});
+  t.cells.push_back({5, 2, 0, {{10, 10, 30}, {10, 10, 31}}});
+  KineticAlphaComplex engine(t, with_radius(100));
+  struct Deletions : ReplayObserver {
+    using ReplayObserver::ReplayObserver;
+    std::vector<Step> steps;
+    void batch(const EventTime& time, const std::vector<Step>& batch) override {
+      for (const Step& s : batch)
+        if (s.kind == StepKind::deletion)
+          steps.push_back(s);
+      ReplayObserver::batch(time, batch);
+    }
+  } obs(engine);
+  engine.run(obs);
+  REQUIRE(obs.steps.size() == 1);
+  CHECK(obs.steps[0].delaunay_removed == std::vector<Simplex>{Simplex{0, 1, 2, 4}});
+  CHECK(obs.steps[0].delaunay_created.empty());
+  REQUIRE(engine.statistics().local_deletions == 1);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+}
+
 TEST_CASE("cells moving in shared planes repair degenerate groups mid-slab and stay audited",
           "[kinetic][engine][degenerate]") {
   // Every cell keeps its z through the run, on one of four layers, and walks in x and y: four cells of
