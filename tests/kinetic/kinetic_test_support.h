@@ -59,6 +59,19 @@ private:
   std::set<Simplex> k_;
 };
 
+// The replay check, keeping the insertion and deletion steps (their Delaunay changes) in order.
+class ArrivalsObserver : public ReplayObserver {
+public:
+  using ReplayObserver::ReplayObserver;
+  void batch(const EventTime& time, const std::vector<Step>& steps) override {
+    for (const Step& s : steps)
+      if (s.kind == StepKind::insertion || s.kind == StepKind::deletion)
+        arrivals.push_back(s);
+    ReplayObserver::batch(time, steps);
+  }
+  std::vector<Step> arrivals;
+};
+
 // Records the stream as text, one line per batch (slab, frame flag, and every step with its ranks,
 // simplices, flip and degenerate groups), with each batch's u apart: two runs that must make the same
 // decisions give equal lines, and u equal up to the width of their isolating intervals.

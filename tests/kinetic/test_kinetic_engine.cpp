@@ -613,20 +613,12 @@ TEST_CASE("a hull cell with three neighbours leaves by closing its star with one
   still(4, {0, 0, -40});
   t.cells.push_back({5, 2, 0, {{10, 10, 30}, {10, 10, 31}}});
   KineticAlphaComplex engine(t, with_radius(100));
-  struct Deletions : ReplayObserver {
-    using ReplayObserver::ReplayObserver;
-    std::vector<Step> steps;
-    void batch(const EventTime& time, const std::vector<Step>& batch) override {
-      for (const Step& s : batch)
-        if (s.kind == StepKind::deletion)
-          steps.push_back(s);
-      ReplayObserver::batch(time, batch);
-    }
-  } obs(engine);
+  testing::ArrivalsObserver obs(engine);
   engine.run(obs);
-  REQUIRE(obs.steps.size() == 1);
-  CHECK(obs.steps[0].delaunay_removed == std::vector<Simplex>{Simplex{0, 1, 2, 4}});
-  CHECK(obs.steps[0].delaunay_created.empty());
+  REQUIRE(obs.arrivals.size() == 1);
+  REQUIRE(obs.arrivals[0].kind == StepKind::deletion);
+  CHECK(obs.arrivals[0].delaunay_removed == std::vector<Simplex>{Simplex{0, 1, 2, 4}});
+  CHECK(obs.arrivals[0].delaunay_created.empty());
   REQUIRE(engine.statistics().local_deletions == 1);
   REQUIRE(obs.mismatches == 0);
   REQUIRE(obs.inconsistencies == 0);

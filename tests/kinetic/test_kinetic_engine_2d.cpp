@@ -678,21 +678,11 @@ TEST_CASE("planar: a cell whose only neighbours are three cells around it leaves
   t.cells.push_back({4, 2, 0, {{10, 10, 0}, {11, 10, 0}}});
   t.cells.push_back({5, 2, 1, {{20, -200, 0}, {21, -200, 0}}});
   KineticAlphaComplex engine(t, with_radius(100));
-  // The replay check, and the Delaunay changes of the insertion and the deletion.
-  struct Changes : ReplayObserver {
-    using ReplayObserver::ReplayObserver;
-    std::vector<Step> steps;
-    void batch(const EventTime& time, const std::vector<Step>& batch) override {
-      for (const Step& s : batch)
-        if (s.kind == StepKind::insertion || s.kind == StepKind::deletion)
-          steps.push_back(s);
-      ReplayObserver::batch(time, batch);
-    }
-  } obs(engine);
+  testing::ArrivalsObserver obs(engine);
   engine.run(obs);
-  REQUIRE(obs.steps.size() == 2);
-  const Step& in = obs.steps[0];
-  const Step& out = obs.steps[1];
+  REQUIRE(obs.arrivals.size() == 2);
+  const Step& in = obs.arrivals[0];
+  const Step& out = obs.arrivals[1];
   REQUIRE(in.kind == StepKind::insertion);
   CHECK(in.delaunay_removed.empty()); // only the infinite triangle on ab
   CHECK(in.delaunay_created == std::vector<Simplex>{Simplex{0, 1, 4}});
@@ -703,6 +693,28 @@ TEST_CASE("planar: a cell whose only neighbours are three cells around it leaves
   REQUIRE(engine.statistics().local_deletions == 1);
   REQUIRE(engine.statistics().insertions == 1);
   REQUIRE(engine.statistics().local_insertions == 1);
+  REQUIRE(obs.mismatches == 0);
+  REQUIRE(obs.inconsistencies == 0);
+}
+
+TEST_CASE("planar: a hull cell with two neighbours leaves by closing its star with one hull edge",
+          "[kinetic][engine][2d]") {
+  // d lies beyond the edge bc of triangle abc and outside its circle (centre (20, 20), radius^2 800;
+  // d is 3200 away), so it is joined to b and c only. When it leaves at frame 1, bc is a hull edge
+  // again: the one infinite triangle [-1 b c] fills the hole (engine_local_updates.cpp).
+  Trajectories t = planar({0, 100, 200});
+  still(t, 1, 0, 0);
+  still(t, 2, 40, 0);
+  still(t, 3, 0, 40);
+  t.cells.push_back({4, 2, 0, {{60, 60, 0}, {61, 60, 0}}});
+  KineticAlphaComplex engine(t, with_radius(100));
+  testing::ArrivalsObserver obs(engine);
+  engine.run(obs);
+  REQUIRE(obs.arrivals.size() == 1);
+  REQUIRE(obs.arrivals[0].kind == StepKind::deletion);
+  CHECK(obs.arrivals[0].delaunay_removed == std::vector<Simplex>{Simplex{1, 2, 3}});
+  CHECK(obs.arrivals[0].delaunay_created.empty());
+  REQUIRE(engine.statistics().local_deletions == 1);
   REQUIRE(obs.mismatches == 0);
   REQUIRE(obs.inconsistencies == 0);
 }
