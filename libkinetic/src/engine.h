@@ -474,6 +474,7 @@ struct Engine {
                       std::vector<int>& orientations);
   bool record_local_change(Step& step, OldMembership& old_k, VertexId v, bool insert);
   int in_conflict_just_after(const Simplex& t, VertexId v);
+  int facet_side_just_after(const Simplex& f, VertexId x);
   bool find_conflict(VertexId v, Simplex& seed);
 
   // ------------------------------------ the run (engine_run.cpp)

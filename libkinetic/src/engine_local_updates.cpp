@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -64,12 +65,18 @@ int Engine::in_conflict_just_after(const Simplex& t, VertexId v) {
   std::copy(f.begin(), f.end(), seq.begin());
   seq[f.size()] = z;
   const int inner = orientation_of(seq.data(), f.size() + 1, ap, z);
-  const int s = sign_plus_now([&](auto tag) {
-    using NT = decltype(tag);
-    return dim == 2 ? certificate::orientation_2<NT>(pt(f[0]), pt(f[1]), pt(v))
-                    : certificate::orientation<NT>(pt(f[0]), pt(f[1]), pt(f[2]), pt(v));
-  });
+  const int s = facet_side_just_after(f, v);
   return s == 0 ? 0 : (s == inner ? -1 : 1);
+}
+
+// The sign just after now of the orientation of the finite facet f followed by x: which side of f's
+// plane (line) x is on; 0 when x stays in it for the whole slab.
+int Engine::facet_side_just_after(const Simplex& f, VertexId x) {
+  return sign_plus_now([&](auto tag) {
+    using NT = decltype(tag);
+    return dim == 2 ? certificate::orientation_2<NT>(pt(f[0]), pt(f[1]), pt(x))
+                    : certificate::orientation<NT>(pt(f[0]), pt(f[1]), pt(f[2]), pt(x));
+  });
 }
 
 // A top simplex whose circumsphere holds v just after now: one of those at v's nearest cell, which is
@@ -204,13 +211,6 @@ bool Engine::delete_locally(VertexId v, std::vector<Simplex>& removed, std::vect
     const auto it = sides.find(f);
     if (it == sides.end() || it->second.size() != 2)
       return false;
-    const auto side = [&](VertexId x) {
-      return sign_plus_now([&](auto tag) {
-        using NT = decltype(tag);
-        return dim == 2 ? certificate::orientation_2<NT>(pt(f[0]), pt(f[1]), pt(x))
-                        : certificate::orientation<NT>(pt(f[0]), pt(f[1]), pt(f[2]), pt(x));
-      });
-    };
     const auto apex = [&](std::size_t i) {
       return *std::find_if(local[i].begin(), local[i].end(), [&](VertexId x) { return !f.contains(x); });
     };
@@ -221,7 +221,8 @@ bool Engine::delete_locally(VertexId v, std::vector<Simplex>& removed, std::vect
     std::array<VertexId, 4> seq{};
     std::copy(f.begin(), f.end(), seq.begin());
     seq[f.size()] = v;
-    const int own = orientation_of(seq.data(), f.size() + 1, *tri.apices(f), v), other = side(apex(near));
+    const int own = orientation_of(seq.data(), f.size() + 1, *tri.apices(f), v),
+              other = facet_side_just_after(f, apex(near));
     if (own == 0 || other == 0)
       return false;
     seed = own == other ? near : far;
@@ -273,24 +274,20 @@ bool Engine::record_local_change(Step& step, OldMembership& old_k, VertexId v, b
   if (insert ? insert_locally(v, removed, added, orientations)
              : delete_locally(v, removed, added, orientations)) {
     // Canonical order, as after a static rebuild: the certificates are built in it.
-    std::vector<std::size_t> order(added.size());
-    for (std::size_t i = 0; i < order.size(); ++i)
-      order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return added[i] < added[j]; });
-    std::vector<Simplex> sorted_added;
-    std::vector<int> sorted_orientations;
-    for (std::size_t i : order) {
-      sorted_added.push_back(added[i]);
-      sorted_orientations.push_back(orientations[i]);
-    }
+    std::vector<std::pair<Simplex, int>> sorted;
+    for (std::size_t i = 0; i < added.size(); ++i)
+      sorted.emplace_back(added[i], orientations[i]);
+    std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t i = 0; i < sorted.size(); ++i)
+      std::tie(added[i], orientations[i]) = sorted[i];
     std::sort(removed.begin(), removed.end());
-    change_tets(removed, sorted_added, old_k, sorted_orientations.data());
-    reinstall_hull_ridges_over(sorted_added, removed);
+    change_tets(removed, added, old_k, orientations.data());
+    reinstall_hull_ridges_over(added, removed);
     ++(insert ? stats.local_insertions : stats.local_deletions);
     for (const Simplex& t : removed)
       if (is_finite(t))
         step.delaunay_removed.push_back(t);
-    for (const Simplex& t : sorted_added)
+    for (const Simplex& t : added)
       if (is_finite(t))
         step.delaunay_created.push_back(t);
     return true;
