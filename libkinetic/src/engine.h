@@ -323,7 +323,8 @@ struct Engine {
   int orientation_of(const VertexId* seq, std::size_t n, const Triangulation::Apices& ap,
                      VertexId apex) const;
   int orientation_sign_plus(const Simplex& t);
-  bool flat_without_turning_at_now(const Simplex& t); // engine_certificates.cpp
+  bool flat_without_turning_at_now(const Simplex& t);  // engine_certificates.cpp
+  int orientation_sign_before_frame(const Simplex& t); // 0: none at the previous frame
   int sign_after_own_orientation_root(const Simplex& t) const;
   bool top_simplex_turns_at_frame();  // engine_frames.cpp
   bool flat_at_now(const Simplex& t); // a finite top simplex whose orientation vanishes at now

@@ -112,21 +112,49 @@ int Engine::sign_after_own_orientation_root(const Simplex& t) const {
 // once more round an edge of abcd than they should be, with every certificate holding (their signs
 // do not see angles modulo 2 pi). Stress seed 11018: three cells met on one line and a fourth passed
 // through a hull face at u = 1/2, and the tetrahedra round a hull edge summed to 2.07 pi just after.
-// At a frame the sign just before now belongs to the previous slab's motion, which this test does
-// not read, so it says nothing there. The frame check (Engine::top_simplex_turns_at_frame) repairs
-// when a top simplex flat at the frame turns, as those of seed 11018 do when its slab is cut at
-// u = 1/2; a hull flip of a frame batch that adds a flat simplex is not checked.
+// At a frame the sign just before now belongs to the previous slab's motion
+// (Engine::orientation_sign_before_frame): the same test, across the bend. A simplex flat through
+// the whole previous slab opens at the frame (0 before, a sign after), as one whose own root is now
+// does inside a slab, and is not refused. Nor is one with a cell born at the frame (no sign before):
+// an insertion leaves Del(now+) (engine_local_updates.cpp), so no failure of its batch flips it.
 bool Engine::flat_without_turning_at_now(const Simplex& t) {
-  if (now.is_rational() && now.rational() == 0)
-    return false;
+  const bool at_frame = now.is_rational() && now.rational() == 0;
+  if (at_frame && slab == 0)
+    return false; // the structure was built just after t_0: no earlier flip to undo
   // At the simplex's own isolated root now is a sign change (no exact arithmetic needed to say so).
   if (sign_after_own_orientation_root(t) != 0 || !flat_at_now(t))
     return false;
   const auto orientation = [&](auto tag) { return orientation_poly<decltype(tag)>(t); };
-  if (sign_minus_now(orientation) != sign_plus_now(orientation))
+  const int before = at_frame ? orientation_sign_before_frame(t) : sign_minus_now(orientation);
+  if (before != sign_plus_now(orientation))
     return false;
   ++stats.hull_flips_refused_touching;
   return true;
+}
+
+// The sign of a finite top simplex's orientation just before the current frame t_k, under the motion
+// of slab k-1; 0 when it vanishes identically there or a cell of t was not present at t_{k-1}. Read
+// backwards from the frame, p(s) = x_k + s (x_{k-1} - x_k): the same points, so the same orientation,
+// and its sign just after s = 0 is that of the lowest nonzero coefficient (exact integers).
+int Engine::orientation_sign_before_frame(const Simplex& t) {
+  ++stats.sign_evaluations_exact;
+  std::array<MovingPoint, 4> back{};
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const Trajectory& c = traj.cells[static_cast<std::size_t>(t[i])];
+    if (slab == 0 || !c.present(slab - 1) || !c.present(slab))
+      return 0;
+    const GridPoint& x = c.at(slab);
+    const GridPoint& w = c.at(slab - 1);
+    back[i].a = {x[0], x[1], x[2]};
+    back[i].b = {w[0] - x[0], w[1] - x[1], w[2] - x[2]};
+  }
+  const Poly<mpz_class> o = t.size() == 3
+                                ? certificate::orientation_2<mpz_class>(back[0], back[1], back[2])
+                                : certificate::orientation<mpz_class>(back[0], back[1], back[2], back[3]);
+  for (int i = 0; i <= o.degree_bound(); ++i)
+    if (const int s = sgn(o[i]); s != 0)
+      return s;
+  return 0;
 }
 
 // For f whose polynomial (key) is, up to a factor c, the one whose isolated simple root is now: the

@@ -339,6 +339,43 @@ TEST_CASE("planar: a cell that reaches a hull edge at a frame and stays on it le
   REQUIRE(replay.inconsistencies == 0);
 }
 
+TEST_CASE("planar: a hull cell that enters the hull edge at a frame and goes on inward makes one hull flip "
+          "there",
+          "[kinetic][engine][2d][degenerate]") {
+  // b = (5,-3) -> (5,0) -> (5,2) reaches the hull edge ac (y = 0) exactly at frame 1 and bends there
+  // (3 per slab, then 2). The circle of abc contains d = (5,6) all through slab 0 (b = (5,-3): centre
+  // (5, 8/3), radius 17/3, |d - centre| = 10/3; it only grows as b rises), so Del is abd + bcd and b
+  // is a hull corner. Its hull certificate, the orientation of abc, is 0 at the frame and negative
+  // just after it under the new motion: one hull flip at t = 100 adds abc, flat there. Just before
+  // the frame, under slab 0's motion, abc had the opposite sign, so abc turns at the frame, and the
+  // flip stands: no refusal, no repair (Engine::flat_without_turning_at_now across a bend).
+  Trajectories t = planar({0, 100, 200});
+  still(t, 1, 0, 0);
+  moving(t, 2, {{5, -3, 0}, {5, 0, 0}, {5, 2, 0}});
+  still(t, 3, 10, 0);
+  still(t, 4, 5, 6);
+  KineticAlphaComplex engine(t, with_radius(1));
+  ReplayObserver replay(engine);
+  BatchLog log;
+  testing::BatchRecorder steps;
+  testing::TeeObserver both(log, steps);
+  testing::TeeObserver all(replay, both);
+  engine.run(all);
+  REQUIRE(log.batches.size() == 1);
+  REQUIRE(log.batches[0].time.at_frame);
+  REQUIRE(log.batches[0].time.time == 100.0);
+  REQUIRE(log.count(StepKind::hull_flip) == 1);
+  REQUIRE(log.count(StepKind::repair) == 0);
+  REQUIRE(engine.statistics().hull_flips_refused_touching == 0);
+  REQUIRE(engine.statistics().frames_repaired_for_flat_simplices == 0);
+  const Step& flip = steps.batches.front().second.front();
+  REQUIRE(flip.delaunay_created == std::vector<Simplex>{Simplex{0, 1, 2}});
+  REQUIRE(flip.delaunay_removed.empty());
+  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
+  REQUIRE(replay.mismatches == 0);
+  REQUIRE(replay.inconsistencies == 0);
+}
+
 TEST_CASE("planar: three cells passing through one line keep their triangle",
           "[kinetic][engine][2d][degenerate]") {
   // Three cells alone: c = (1, -2 + 4u) crosses the line y = 0 of a and b at u = 1/2, t = 50. The
