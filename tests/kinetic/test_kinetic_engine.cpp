@@ -563,6 +563,50 @@ TEST_CASE("a cell that reaches a hull facet at a frame and stays on it leaves it
   REQUIRE(replay.inconsistencies == 0);
 }
 
+TEST_CASE("a hull cell that enters the hull facet at a frame and goes on inward makes one hull flip there",
+          "[kinetic][engine][degenerate]") {
+  // a, b, c on z = 0, d = (3,3,9) above; p = (3,3,-3) -> (3,3,0) -> (3,3,2) reaches the plane of abc
+  // inside abc (x + y = 6 < 12) exactly at frame 1 and bends there (3 per slab, then 2). The sphere
+  // through a, b, c and p = (3,3,-3) has centre (6,6,15/2) and radius^2 513/4; d is at distance^2
+  // 81/4 from it, inside, and the spheres through circle abc only grow above z = 0 as p rises: Del is
+  // the three tetrahedra round edge pd all through slab 0, and p is a hull vertex. Its three hull
+  // ridges carry the orientation of pabc, 0 at the frame and reflex just after it: one hull flip at
+  // t = 100 (3-2 round the edge from the infinite vertex to p) adds pabc, flat there. pabc has the
+  // opposite orientation just before the frame (p below the plane) and just after (above), so it
+  // turns and the flip stands: no refusal, no repair (Engine::flat_without_turning_at_now across a
+  // bend). Just after, p is inside abcd, whose only triangulation with p is the star of p.
+  Trajectories t;
+  t.scale = 1;
+  t.frame_times = {0, 100, 200};
+  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p, p}}); };
+  still(1, {0, 0, 0});
+  still(2, {12, 0, 0});
+  still(3, {0, 12, 0});
+  still(4, {3, 3, 9});
+  t.cells.push_back({5, 1, 0, {{3, 3, -3}, {3, 3, 0}, {3, 3, 2}}});
+  KineticAlphaComplex engine(t, with_radius(1));
+  ReplayObserver replay(engine);
+  BatchLog log;
+  testing::BatchRecorder steps;
+  testing::TeeObserver both(log, steps);
+  testing::TeeObserver all(replay, both);
+  engine.run(all);
+  REQUIRE(log.batches.size() == 1);
+  REQUIRE(log.batches[0].time.at_frame);
+  REQUIRE(log.batches[0].time.time == 100.0);
+  REQUIRE(log.count(StepKind::hull_flip) == 1);
+  REQUIRE(log.count(StepKind::repair) == 0);
+  REQUIRE(engine.statistics().hull_flips == 1);
+  REQUIRE(engine.statistics().hull_flips_refused_touching == 0);
+  REQUIRE(engine.statistics().frames_repaired_for_flat_simplices == 0);
+  const Step& flip = steps.batches.front().second.front();
+  REQUIRE(flip.delaunay_created == std::vector<Simplex>{Simplex{0, 1, 2, 4}});
+  REQUIRE(flip.delaunay_removed.empty());
+  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
+  REQUIRE(replay.mismatches == 0);
+  REQUIRE(replay.inconsistencies == 0);
+}
+
 TEST_CASE("a cell present only at the first frame is deleted at t0", "[kinetic][engine]") {
   // Found by the kinetic-medusa integration tests: such a cell used to stay in K for the whole run.
   Trajectories t = testing::random_walk(21, 20, 3, static_cast<int>(2000 * std::cbrt(20.0)), 600);
