@@ -137,7 +137,6 @@ bool Engine::flat_without_turning_at_now(const Simplex& t) {
 // backwards from the frame, p(s) = x_k + s (x_{k-1} - x_k): the same points, so the same orientation,
 // and its sign just after s = 0 is that of the lowest nonzero coefficient (exact integers).
 int Engine::orientation_sign_before_frame(const Simplex& t) {
-  ++stats.sign_evaluations_exact;
   std::array<MovingPoint, 4> back{};
   for (std::size_t i = 0; i < t.size(); ++i) {
     const Trajectory& c = traj.cells[static_cast<std::size_t>(t[i])];
@@ -148,6 +147,7 @@ int Engine::orientation_sign_before_frame(const Simplex& t) {
     back[i].a = {x[0], x[1], x[2]};
     back[i].b = {w[0] - x[0], w[1] - x[1], w[2] - x[2]};
   }
+  ++stats.sign_evaluations_exact;
   const Poly<mpz_class> o = t.size() == 3
                                 ? certificate::orientation_2<mpz_class>(back[0], back[1], back[2])
                                 : certificate::orientation<mpz_class>(back[0], back[1], back[2], back[3]);

@@ -163,6 +163,20 @@ private:
   Observer &a_, &b_;
 };
 
+// One run of the engine with its stream replayed (ReplayObserver), logged by batch (Log: each test
+// file's own summary of a batch) and recorded step by step (BatchRecorder).
+template <class Log> struct RecordedRun {
+  KineticAlphaComplex engine;
+  ReplayObserver replay;
+  Log log;
+  BatchRecorder steps;
+  RecordedRun(const Trajectories& t, const KineticOptions& options) : engine(t, options), replay(engine) {
+    TeeObserver both(log, steps);
+    TeeObserver all(replay, both);
+    engine.run(all);
+  }
+};
+
 // The image of a run under x -> k x + offset (k > 0), with rho^2 scaled by k^2: a similarity, so the
 // Delaunay triangulation, the alpha complex and every event's slab parameter u* are the same
 // (MATH.md 1: the certificates are homogeneous in the coordinate differences).

@@ -11,6 +11,8 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
 
 using namespace medusa::kinetic;
 using medusa::kinetic::testing::built_by_formula;
@@ -19,16 +21,25 @@ using medusa::kinetic::testing::ReplayObserver;
 
 namespace {
 
-Trajectories appendix_b() {
-  // MATH.md Appendix B: a, b, c on x^2 + y^2 = 25, d above, e moving through the sphere.
+// Cells standing still or moving, over the given frames (grid scale 1).
+Trajectories spatial(std::vector<std::int64_t> frame_times) {
   Trajectories t;
   t.scale = 1;
-  t.frame_times = {0, 100};
-  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p}}); };
-  still(1, {5, 0, 0});
-  still(2, {-3, 4, 0});
-  still(3, {-3, -4, 0});
-  still(4, {0, 0, 10});
+  t.frame_times = std::move(frame_times);
+  return t;
+}
+
+void still(Trajectories& t, std::int64_t id, GridPoint p) {
+  t.cells.push_back({id, 1, 0, std::vector<GridPoint>(t.frames(), p)});
+}
+
+Trajectories appendix_b() {
+  // MATH.md Appendix B: a, b, c on x^2 + y^2 = 25, d above, e moving through the sphere.
+  Trajectories t = spatial({0, 100});
+  still(t, 1, {5, 0, 0});
+  still(t, 2, {-3, 4, 0});
+  still(t, 3, {-3, -4, 0});
+  still(t, 4, {0, 0, 10});
   t.cells.push_back({5, 2, 0, {{-2, 1, -6}, {2, 1, -2}}});
   return t;
 }
@@ -103,14 +114,11 @@ TEST_CASE("two cells approaching make their edge short exactly at the predicted 
   // Four fixed cells far apart and one cell moving towards cell 1 at (0,0,0) from (40,0,0) to
   // (10,0,0) over [0, 100]: |pq| = 40 - 30u; with rho = 10 the edge is short when |pq| <= 20, so at
   // u = 2/3, t = 200/3.
-  Trajectories t;
-  t.scale = 1;
-  t.frame_times = {0, 100};
-  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p}}); };
-  still(1, {0, 0, 0});
-  still(2, {0, 100, 3});
-  still(3, {-7, -100, 5});
-  still(4, {1, 2, 100});
+  Trajectories t = spatial({0, 100});
+  still(t, 1, {0, 0, 0});
+  still(t, 2, {0, 100, 3});
+  still(t, 3, {-7, -100, 5});
+  still(t, 4, {1, 2, 100});
   t.cells.push_back({5, 1, 0, {{40, 0, 0}, {10, 0, 0}}});
   KineticAlphaComplex engine(t, with_radius(100));
   ReplayObserver obs(engine);
@@ -267,14 +275,11 @@ TEST_CASE("an event closer to a frame than the static build's first delta happen
   // inside the sphere: not Del(t1+), so it is built again with a smaller delta. The frame batch is
   // then the insertion alone (no flip of a, b, c, d, e and back, no instant 4-simplex), and the
   // five points flip at u = 2^-26 and back at 9 * 2^-26, exactly.
-  Trajectories t;
-  t.scale = 1;
-  t.frame_times = {0, 100, 200};
-  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p, p}}); };
-  still(1, {-5, 0, 0});
-  still(2, {5, 0, 0});
-  still(3, {0, 5, 0});
-  still(4, {0, 0, 5});
+  Trajectories t = spatial({0, 100, 200});
+  still(t, 1, {-5, 0, 0});
+  still(t, 2, {5, 0, 0});
+  still(t, 3, {0, 5, 0});
+  still(t, 4, {0, 0, 5});
   const std::int64_t v = std::int64_t(1) << 26;
   t.cells.push_back({5, 2, 0, {{0, -5, 3}, {0, -5, 3}, {0, -5 + v, 3}}});
   t.cells.push_back({6, 2, 1, {{-50, 60, 6}, {-50, 60, 6}}});
@@ -391,14 +396,11 @@ TEST_CASE("a cell leaving the hull through a facet makes a hull flip when the te
   // a, b, c, d fixed; e = (2,2,2) + u (6,6,6) crosses the hull facet bcd (x + y + z = 10) at
   // u = 2/9, t = 200/9: the orientation of ebcd (a D-infinity certificate, case A) vanishes there.
   // rho = 1: every edge is longer than 2, so no radius event interferes.
-  Trajectories t;
-  t.scale = 1;
-  t.frame_times = {0, 100};
-  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p}}); };
-  still(1, {0, 0, 0});
-  still(2, {10, 0, 0});
-  still(3, {0, 10, 0});
-  still(4, {0, 0, 10});
+  Trajectories t = spatial({0, 100});
+  still(t, 1, {0, 0, 0});
+  still(t, 2, {10, 0, 0});
+  still(t, 3, {0, 10, 0});
+  still(t, 4, {0, 0, 10});
   t.cells.push_back({5, 1, 0, {{2, 2, 2}, {8, 8, 8}}});
   KineticAlphaComplex engine(t, with_radius(1));
   BatchLog log;
@@ -473,14 +475,11 @@ TEST_CASE("two mirror-image flips at exactly the same time form one batch of two
           "[kinetic][engine]") {
   // The worked example and its mirror image through the plane x = 500: both D5 certificates vanish
   // at u* = (47 - sqrt 257)/32, an irrational time, so the equality is decided exactly.
-  Trajectories t;
-  t.scale = 1;
-  t.frame_times = {0, 100};
-  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p}}); };
+  Trajectories t = spatial({0, 100});
   const GridPoint pts[4] = {{5, 0, 0}, {-3, 4, 0}, {-3, -4, 0}, {0, 0, 10}};
   for (int i = 0; i < 4; ++i) {
-    still(i + 1, pts[i]);
-    still(i + 11, {1000 - pts[i][0], pts[i][1], pts[i][2]});
+    still(t, i + 1, pts[i]);
+    still(t, i + 11, {1000 - pts[i][0], pts[i][1], pts[i][2]});
   }
   t.cells.push_back({5, 2, 0, {{-2, 1, -6}, {2, 1, -2}}});
   t.cells.push_back({15, 2, 0, {{1002, 1, -6}, {998, 1, -2}}});
@@ -503,14 +502,11 @@ TEST_CASE("a certificate vanishing exactly at a frame time is decided by the nex
   // The worked example scaled by 4: sphere through a, b, c, d has centre (0,0,15), radius 25. e runs
   // up the z axis and reaches the sphere at (0,0,-10) exactly at frame 1 (t = 100), then goes
   // inside: the flip belongs to the frame batch at t = 100, not to slab 0.
-  Trajectories t;
-  t.scale = 1;
-  t.frame_times = {0, 100, 200};
-  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p, p}}); };
-  still(1, {20, 0, 0});
-  still(2, {-12, 16, 0});
-  still(3, {-12, -16, 0});
-  still(4, {0, 0, 40});
+  Trajectories t = spatial({0, 100, 200});
+  still(t, 1, {20, 0, 0});
+  still(t, 2, {-12, 16, 0});
+  still(t, 3, {-12, -16, 0});
+  still(t, 4, {0, 0, 40});
   t.cells.push_back({5, 2, 0, {{0, 0, -30}, {0, 0, -10}, {0, 0, -2}}});
   KineticAlphaComplex engine(t, with_radius(1));
   BatchLog log;
@@ -532,35 +528,26 @@ TEST_CASE("a cell that reaches a hull facet at a frame and stays on it leaves it
   // tetrahedron, and then nothing happens. Before: the certificate counted as valid (identically
   // zero, MATH.md 3.9), abcd stayed flat through slab 1, and the audit found Del different from
   // CGAL's triangulation there.
-  Trajectories t;
-  t.scale = 1;
-  t.frame_times = {0, 100, 200};
-  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p, p}}); };
-  still(1, {0, 0, 0});
-  still(2, {10, 0, 0});
-  still(3, {0, 10, 0});
-  still(4, {3, 3, 10});
+  Trajectories t = spatial({0, 100, 200});
+  still(t, 1, {0, 0, 0});
+  still(t, 2, {10, 0, 0});
+  still(t, 3, {0, 10, 0});
+  still(t, 4, {3, 3, 10});
   t.cells.push_back({5, 1, 0, {{3, 3, 3}, {3, 3, 0}, {3, 3, 0}}});
-  KineticAlphaComplex engine(t, with_radius(1));
-  ReplayObserver replay(engine);
-  BatchLog log;
-  testing::BatchRecorder steps;
-  testing::TeeObserver both(log, steps);
-  testing::TeeObserver all(replay, both);
-  engine.run(all);
-  REQUIRE(log.batches.size() == 1);
-  REQUIRE(log.batches[0].time.at_frame);
-  REQUIRE(log.batches[0].time.time == 100.0);
-  REQUIRE(engine.statistics().flips() == 0);
-  REQUIRE(engine.statistics().frames_repaired_for_flat_simplices == 1);
-  REQUIRE(steps.batches.front().second.size() == 1);
-  const Step& repair = steps.batches.front().second.front();
+  const testing::RecordedRun<BatchLog> run(t, with_radius(1));
+  REQUIRE(run.log.batches.size() == 1);
+  REQUIRE(run.log.batches[0].time.at_frame);
+  REQUIRE(run.log.batches[0].time.time == 100.0);
+  REQUIRE(run.engine.statistics().flips() == 0);
+  REQUIRE(run.engine.statistics().frames_repaired_for_flat_simplices == 1);
+  REQUIRE(run.steps.batches.front().second.size() == 1);
+  const Step& repair = run.steps.batches.front().second.front();
   REQUIRE(repair.kind == StepKind::repair);
   REQUIRE(repair.delaunay_removed == std::vector<Simplex>{Simplex{0, 1, 2, 4}});
   REQUIRE(repair.delaunay_created.empty());
-  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
-  REQUIRE(replay.mismatches == 0);
-  REQUIRE(replay.inconsistencies == 0);
+  REQUIRE(run.engine.statistics().audits_compared_with_cgal > 0);
+  REQUIRE(run.replay.mismatches == 0);
+  REQUIRE(run.replay.inconsistencies == 0);
 }
 
 TEST_CASE("a hull cell that enters the hull facet at a frame and goes on inward makes one hull flip there",
@@ -575,36 +562,27 @@ TEST_CASE("a hull cell that enters the hull facet at a frame and goes on inward 
   // opposite orientation just before the frame (p below the plane) and just after (above), so it
   // turns and the flip stands: no refusal, no repair (Engine::flat_without_turning_at_now across a
   // bend). Just after, p is inside abcd, whose only triangulation with p is the star of p.
-  Trajectories t;
-  t.scale = 1;
-  t.frame_times = {0, 100, 200};
-  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p, p}}); };
-  still(1, {0, 0, 0});
-  still(2, {12, 0, 0});
-  still(3, {0, 12, 0});
-  still(4, {3, 3, 9});
+  Trajectories t = spatial({0, 100, 200});
+  still(t, 1, {0, 0, 0});
+  still(t, 2, {12, 0, 0});
+  still(t, 3, {0, 12, 0});
+  still(t, 4, {3, 3, 9});
   t.cells.push_back({5, 1, 0, {{3, 3, -3}, {3, 3, 0}, {3, 3, 2}}});
-  KineticAlphaComplex engine(t, with_radius(1));
-  ReplayObserver replay(engine);
-  BatchLog log;
-  testing::BatchRecorder steps;
-  testing::TeeObserver both(log, steps);
-  testing::TeeObserver all(replay, both);
-  engine.run(all);
-  REQUIRE(log.batches.size() == 1);
-  REQUIRE(log.batches[0].time.at_frame);
-  REQUIRE(log.batches[0].time.time == 100.0);
-  REQUIRE(log.count(StepKind::hull_flip) == 1);
-  REQUIRE(log.count(StepKind::repair) == 0);
-  REQUIRE(engine.statistics().hull_flips == 1);
-  REQUIRE(engine.statistics().hull_flips_refused_touching == 0);
-  REQUIRE(engine.statistics().frames_repaired_for_flat_simplices == 0);
-  const Step& flip = steps.batches.front().second.front();
+  const testing::RecordedRun<BatchLog> run(t, with_radius(1));
+  REQUIRE(run.log.batches.size() == 1);
+  REQUIRE(run.log.batches[0].time.at_frame);
+  REQUIRE(run.log.batches[0].time.time == 100.0);
+  REQUIRE(run.log.count(StepKind::hull_flip) == 1);
+  REQUIRE(run.log.count(StepKind::repair) == 0);
+  REQUIRE(run.engine.statistics().hull_flips == 1);
+  REQUIRE(run.engine.statistics().hull_flips_refused_touching == 0);
+  REQUIRE(run.engine.statistics().frames_repaired_for_flat_simplices == 0);
+  const Step& flip = run.steps.batches.front().second.front();
   REQUIRE(flip.delaunay_created == std::vector<Simplex>{Simplex{0, 1, 2, 4}});
   REQUIRE(flip.delaunay_removed.empty());
-  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
-  REQUIRE(replay.mismatches == 0);
-  REQUIRE(replay.inconsistencies == 0);
+  REQUIRE(run.engine.statistics().audits_compared_with_cgal > 0);
+  REQUIRE(run.replay.mismatches == 0);
+  REQUIRE(run.replay.inconsistencies == 0);
 }
 
 TEST_CASE("a cell present only at the first frame is deleted at t0", "[kinetic][engine]") {
@@ -647,14 +625,11 @@ TEST_CASE("a hull cell with three neighbours leaves by closing its star with one
   // three infinite tetrahedra over its hull facets). When it leaves at frame 1, abc becomes
   // a hull facet again: the one infinite tetrahedron [-1 a b c] fills the hole
   // (engine_local_updates.cpp).
-  Trajectories t;
-  t.scale = 1;
-  t.frame_times = {0, 100, 200};
-  auto still = [&](std::int64_t id, GridPoint p) { t.cells.push_back({id, 1, 0, {p, p, p}}); };
-  still(1, {0, 0, 0});
-  still(2, {40, 0, 0});
-  still(3, {0, 40, 0});
-  still(4, {0, 0, -40});
+  Trajectories t = spatial({0, 100, 200});
+  still(t, 1, {0, 0, 0});
+  still(t, 2, {40, 0, 0});
+  still(t, 3, {0, 40, 0});
+  still(t, 4, {0, 0, -40});
   t.cells.push_back({5, 2, 0, {{10, 10, 30}, {10, 10, 31}}});
   KineticAlphaComplex engine(t, with_radius(100));
   testing::ArrivalsObserver obs(engine);

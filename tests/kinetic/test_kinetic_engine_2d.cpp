@@ -317,26 +317,20 @@ TEST_CASE("planar: a cell that reaches a hull edge at a frame and stays on it le
   still(t, 2, 10, 0);
   still(t, 3, 5, 10);
   moving(t, 4, {{5, 3, 0}, {5, 0, 0}, {5, 0, 0}});
-  KineticAlphaComplex engine(t, with_radius(1));
-  ReplayObserver replay(engine);
-  BatchLog log;
-  testing::BatchRecorder steps;
-  testing::TeeObserver both(log, steps);
-  testing::TeeObserver all(replay, both);
-  engine.run(all);
-  REQUIRE(log.batches.size() == 1);
-  REQUIRE(log.batches[0].time.at_frame);
-  REQUIRE(log.batches[0].time.time == 100.0);
-  REQUIRE(engine.statistics().flips() == 0);
-  REQUIRE(engine.statistics().frames_repaired_for_flat_simplices == 1);
-  REQUIRE(steps.batches.front().second.size() == 1);
-  const Step& repair = steps.batches.front().second.front();
+  const testing::RecordedRun<BatchLog> run(t, with_radius(1));
+  REQUIRE(run.log.batches.size() == 1);
+  REQUIRE(run.log.batches[0].time.at_frame);
+  REQUIRE(run.log.batches[0].time.time == 100.0);
+  REQUIRE(run.engine.statistics().flips() == 0);
+  REQUIRE(run.engine.statistics().frames_repaired_for_flat_simplices == 1);
+  REQUIRE(run.steps.batches.front().second.size() == 1);
+  const Step& repair = run.steps.batches.front().second.front();
   REQUIRE(repair.kind == StepKind::repair);
   REQUIRE(repair.delaunay_removed == std::vector<Simplex>{Simplex{0, 1, 3}});
   REQUIRE(repair.delaunay_created.empty());
-  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
-  REQUIRE(replay.mismatches == 0);
-  REQUIRE(replay.inconsistencies == 0);
+  REQUIRE(run.engine.statistics().audits_compared_with_cgal > 0);
+  REQUIRE(run.replay.mismatches == 0);
+  REQUIRE(run.replay.inconsistencies == 0);
 }
 
 TEST_CASE("planar: a hull cell that enters the hull edge at a frame and goes on inward makes one hull flip "
@@ -354,26 +348,20 @@ TEST_CASE("planar: a hull cell that enters the hull edge at a frame and goes on 
   moving(t, 2, {{5, -3, 0}, {5, 0, 0}, {5, 2, 0}});
   still(t, 3, 10, 0);
   still(t, 4, 5, 6);
-  KineticAlphaComplex engine(t, with_radius(1));
-  ReplayObserver replay(engine);
-  BatchLog log;
-  testing::BatchRecorder steps;
-  testing::TeeObserver both(log, steps);
-  testing::TeeObserver all(replay, both);
-  engine.run(all);
-  REQUIRE(log.batches.size() == 1);
-  REQUIRE(log.batches[0].time.at_frame);
-  REQUIRE(log.batches[0].time.time == 100.0);
-  REQUIRE(log.count(StepKind::hull_flip) == 1);
-  REQUIRE(log.count(StepKind::repair) == 0);
-  REQUIRE(engine.statistics().hull_flips_refused_touching == 0);
-  REQUIRE(engine.statistics().frames_repaired_for_flat_simplices == 0);
-  const Step& flip = steps.batches.front().second.front();
+  const testing::RecordedRun<BatchLog> run(t, with_radius(1));
+  REQUIRE(run.log.batches.size() == 1);
+  REQUIRE(run.log.batches[0].time.at_frame);
+  REQUIRE(run.log.batches[0].time.time == 100.0);
+  REQUIRE(run.log.count(StepKind::hull_flip) == 1);
+  REQUIRE(run.log.count(StepKind::repair) == 0);
+  REQUIRE(run.engine.statistics().hull_flips_refused_touching == 0);
+  REQUIRE(run.engine.statistics().frames_repaired_for_flat_simplices == 0);
+  const Step& flip = run.steps.batches.front().second.front();
   REQUIRE(flip.delaunay_created == std::vector<Simplex>{Simplex{0, 1, 2}});
   REQUIRE(flip.delaunay_removed.empty());
-  REQUIRE(engine.statistics().audits_compared_with_cgal > 0);
-  REQUIRE(replay.mismatches == 0);
-  REQUIRE(replay.inconsistencies == 0);
+  REQUIRE(run.engine.statistics().audits_compared_with_cgal > 0);
+  REQUIRE(run.replay.mismatches == 0);
+  REQUIRE(run.replay.inconsistencies == 0);
 }
 
 TEST_CASE("planar: three cells passing through one line keep their triangle",
