@@ -117,6 +117,10 @@ int Engine::sign_after_own_orientation_root(const Simplex& t) const {
 // the whole previous slab opens at the frame (0 before, a sign after), as one whose own root is now
 // does inside a slab, and is not refused. Nor is one with a cell born at the frame (no sign before):
 // an insertion leaves Del(now+) (engine_local_updates.cpp), so no failure of its batch flips it.
+// At frames this is a guard, not a known case: in some 16,000 runs built to reach it (flat hull regions
+// at a frame, seed 11018 cut and bent there) it never fired. A case-A flip at a frame is preceded by
+// the frame's own repair (Engine::top_simplex_turns_at_frame), and a ridge whose facets both sit on a
+// simplex flat at the frame is not flipped (Engine::flippable, "below" rule) before this test is read.
 bool Engine::flat_without_turning_at_now(const Simplex& t) {
   const bool at_frame = now.is_rational() && now.rational() == 0;
   if (at_frame && slab == 0)
