@@ -7,6 +7,7 @@
 
 #include "medusa/complex/store_reader.h"
 
+#include <cstddef>
 #include <iostream>
 #include <memory>
 
@@ -17,6 +18,7 @@ struct BarcodeArguments {
   std::string store;
   std::string format = "pers";
   std::string output;
+  std::size_t max_bars = default_max_bars;
   DiagramSelection selection;
 };
 
@@ -35,7 +37,7 @@ void barcode_command(const BarcodeArguments& args) {
     else if (args.format == "json")
       write_json(out, diagrams);
     else
-      write_barcode_svg(out, diagrams, t0, t_end);
+      write_barcode_svg(out, diagrams, t0, t_end, args.max_bars);
   };
   if (args.output.empty() || args.output == "-")
     write(std::cout);
@@ -56,6 +58,10 @@ void add_barcode_command(CLI::App& app) {
       ->check(CLI::IsMember({"pers", "csv", "json", "svg"}))
       ->capture_default_str();
   barcode->add_option("-o,--output", args->output, "output file (default: stdout)");
+  barcode
+      ->add_option("--max-bars", args->max_bars,
+                   "svg: draw only the N longest bars of each degree of each diagram (0: all)")
+      ->capture_default_str();
   add_selection_options(*barcode, args->selection);
   barcode->callback([args] { barcode_command(*args); });
 }

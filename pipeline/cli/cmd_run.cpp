@@ -211,8 +211,9 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   const double t0 = static_cast<double>(medusa.input.frame_times.front());
   const double t_end = static_cast<double>(medusa.input.frame_times.back());
   write_file_atomically(stem + ".diagrams.csv", [&](std::ostream& out) { write_csv(out, shown); });
-  write_file_atomically(stem + ".barcode.svg",
-                        [&](std::ostream& out) { write_barcode_svg(out, shown, t0, t_end); });
+  write_file_atomically(stem + ".barcode.svg", [&](std::ostream& out) {
+    write_barcode_svg(out, shown, t0, t_end, default_max_bars);
+  });
   check_interrupted();
 
   write_run_summary(std::cout, medusa, stats, diagrams, radius);

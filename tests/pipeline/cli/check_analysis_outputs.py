@@ -3,6 +3,7 @@
 usage: check_analysis_outputs.py compare <medusa> <workdir> <store>...
        check_analysis_outputs.py curves <medusa> <workdir> <store> <cells.csv.gz>
        check_analysis_outputs.py at <medusa> <workdir> <store> <cells.csv.gz>
+       check_analysis_outputs.py barcode <medusa> <workdir> <store>
 Every check prints what it compares; an AssertionError (exit 1) names the first mismatch.
 """
 import csv
@@ -270,6 +271,44 @@ def check_at(medusa, work, store, cells_csv):
     assert sorted(tuple(sorted(ids[v] for v in c[1:])) for c in cells) == sorted(mid)
 
 
+def check_barcode(medusa, work, store, max_bars=5):
+    """`barcode --format svg --max-bars N` draws, per diagram and degree, the N longest bars of the
+    CSV export (essential ones first): their count and their lengths on the time axis."""
+    pairs = {}
+    for row in csv.DictReader(run([medusa, "barcode", store, "--format", "csv"], work).stdout.splitlines()):
+        pairs.setdefault((row["type"], row["direction"]), {}).setdefault(int(row["dimension"]), []).append(
+            (float(row["birth"]), float(row["death"])))
+    svg = run([medusa, "barcode", store, "--format", "svg", "--max-bars", str(max_bars)], work).stdout
+    root = ElementTree.fromstring(svg)
+    ns = "{http://www.w3.org/2000/svg}"
+    axis = [float(re.fullmatch(r"MCS (\S+)", t.text).group(1)) for t in root.iter(ns + "text") if t.text.startswith("MCS")]
+    t0, t_end = axis
+    colours = {"#1f77b4": 0, "#d62728": 1, "#2ca02c": 2}
+
+    def x_of(t):
+        t = t_end if t == math.inf else t0 if t == -math.inf else t
+        return 150 + 630 * (min(max(t, t0), t_end) - t0) / (t_end - t0)
+
+    sections, truncated = [], 0
+    for element in root:
+        if element.tag == ns + "text" and element.text.startswith("type "):
+            m = re.match(r"type (\S+), (forward|reverse) \((\d+) bars", element.text)
+            sections.append(((m.group(1), m.group(2)), int(m.group(3)), {}))
+            truncated += f"the {max_bars} longest of each degree shown" in element.text
+        elif element.tag == ns + "line" and element.get("stroke") in colours:
+            length = abs(float(element.get("x2")) - float(element.get("x1")))
+            sections[-1][2].setdefault(colours[element.get("stroke")], []).append(round(length, 2))
+    assert [s[0] for s in sections] == list(pairs), (list(pairs), [s[0] for s in sections])
+    for key, total, drawn in sections:
+        assert total == sum(len(v) for v in pairs[key].values()), key
+        for dim, bars in pairs[key].items():
+            longest = sorted(bars, key=lambda b: (not math.isinf(b[1]), -abs(b[1] - b[0])))[:max_bars]
+            expected = sorted(round(abs(x_of(d) - x_of(b)), 2) for b, d in longest)
+            assert sorted(drawn.get(dim, [])) == expected, (key, dim, sorted(drawn.get(dim, [])), expected)
+        print(key, {d: len(v) for d, v in drawn.items()}, "drawn of", {d: len(v) for d, v in pairs[key].items()})
+    assert truncated > 0, "no diagram was long enough to be cut: the check did not test the cap"
+
+
 def main():
     what, medusa, work = sys.argv[1], sys.argv[2], sys.argv[3]
     os.makedirs(work, exist_ok=True)
@@ -279,6 +318,8 @@ def main():
         check_curves(medusa, work, sys.argv[4], sys.argv[5])
     elif what == "at":
         check_at(medusa, work, sys.argv[4], sys.argv[5])
+    elif what == "barcode":
+        check_barcode(medusa, work, sys.argv[4])
     else:
         raise SystemExit(f"unknown check {what}")
     print("ok")
