@@ -7,7 +7,6 @@
 
 #include "medusa/complex/store_reader.h"
 
-#include <cstddef>
 #include <iostream>
 #include <memory>
 
@@ -18,7 +17,7 @@ struct BarcodeArguments {
   std::string store;
   std::string format = "pers";
   std::string output;
-  std::size_t max_bars = default_max_bars;
+  unsigned max_bars = default_max_bars;
   DiagramSelection selection;
 };
 
