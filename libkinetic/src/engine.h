@@ -232,10 +232,14 @@ struct Engine {
     return fold_poly<NT>(facet.facet(0), ap->v[0], ap->v[1]);
   }
 
-  // The orientation polynomial of a finite top simplex (a tetrahedron, a triangle in 2D).
+  // The orientation polynomial of a finite top simplex (a tetrahedron, a triangle in 2D); `at` gives
+  // the moving points (pt: this slab's motion).
+  template <class NT, class At> Poly<NT> orientation_poly(const Simplex& t, const At& at) const {
+    return t.size() == 3 ? certificate::orientation_2<NT>(at(t[0]), at(t[1]), at(t[2]))
+                         : certificate::orientation<NT>(at(t[0]), at(t[1]), at(t[2]), at(t[3]));
+  }
   template <class NT> Poly<NT> orientation_poly(const Simplex& t) const {
-    return t.size() == 3 ? certificate::orientation_2<NT>(pt(t[0]), pt(t[1]), pt(t[2]))
-                         : certificate::orientation<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(t[3]));
+    return orientation_poly<NT>(t, [this](VertexId v) -> const MovingPoint& { return pt(v); });
   }
 
   // For a finite facet with two finite apices: the product of its two top simplices' orientations,

@@ -139,26 +139,20 @@ bool Engine::flat_without_turning_at_now(const Simplex& t) {
 // The sign of a finite top simplex's orientation just before the current frame t_k, under the motion
 // of slab k-1; 0 when it vanishes identically there or a cell of t was not present at t_{k-1}. Read
 // backwards from the frame, p(s) = x_k + s (x_{k-1} - x_k): the same points, so the same orientation,
-// and its sign just after s = 0 is that of the lowest nonzero coefficient (exact integers).
+// and its sign just before t_k is its sign just after s = 0 (sign_plus at u = 0, exact integers).
 int Engine::orientation_sign_before_frame(const Simplex& t) {
-  std::array<MovingPoint, 4> back{};
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    const Trajectory& c = traj.cells[static_cast<std::size_t>(t[i])];
+  for (const VertexId v : t) {
+    const Trajectory& c = traj.cells[static_cast<std::size_t>(v)];
     if (slab == 0 || !c.present(slab - 1) || !c.present(slab))
       return 0;
-    const GridPoint& x = c.at(slab);
-    const GridPoint& w = c.at(slab - 1);
-    back[i].a = {x[0], x[1], x[2]};
-    back[i].b = {w[0] - x[0], w[1] - x[1], w[2] - x[2]};
   }
+  const auto backwards = [&](VertexId v) {
+    const Trajectory& c = traj.cells[static_cast<std::size_t>(v)];
+    const GridPoint &x = c.at(slab), &w = c.at(slab - 1);
+    return MovingPoint{{x[0], x[1], x[2]}, {w[0] - x[0], w[1] - x[1], w[2] - x[2]}};
+  };
   ++stats.sign_evaluations_exact;
-  const Poly<mpz_class> o = t.size() == 3
-                                ? certificate::orientation_2<mpz_class>(back[0], back[1], back[2])
-                                : certificate::orientation<mpz_class>(back[0], back[1], back[2], back[3]);
-  for (int i = 0; i <= o.degree_bound(); ++i)
-    if (const int s = sgn(o[i]); s != 0)
-      return s;
-  return 0;
+  return sign_plus(to_exact_poly(orientation_poly<mpz_class>(t, backwards)), SlabTime());
 }
 
 // For f whose polynomial (key) is, up to a factor c, the one whose isolated simple root is now: the
