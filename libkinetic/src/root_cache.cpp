@@ -2,6 +2,7 @@
 #include "root_cache.h"
 
 #include "medusa/kinetic/certificate_polynomials.h"
+#include "start_determinants.h"
 
 namespace medusa::kinetic::detail {
 
@@ -40,6 +41,18 @@ Poly<mpz_class> KeyPolynomial::coefficients(const std::array<MovingPoint, 5>& p)
 }
 
 bool KeyPolynomial::vanishes_at_start() const {
+  const MovingPoint* p[5] = {&pts[0], &pts[1], &pts[2], &pts[3], &pts[4]};
+  const auto n = static_cast<std::size_t>(count);
+  if (kind == 0)
+    return in_sphere_vanishes_at_start(p, n);
+  if (kind == 1)
+    return orientation_vanishes_at_start(p, n);
+  if (kind == 4) { // the orientations of the facet (n - 2 points) with each of its two apices
+    const MovingPoint* second[4] = {p[0], p[1], p[2], p[3]};
+    second[n - 2] = p[n - 1];
+    return orientation_vanishes_at_start(p, n - 1) || orientation_vanishes_at_start(second, n - 1);
+  }
+  // Radius and fold polynomials are products and sums of several determinants: the exact integers.
   std::array<MovingPoint, 5> frozen = pts;
   for (MovingPoint& p : frozen)
     p.b = {0, 0, 0};

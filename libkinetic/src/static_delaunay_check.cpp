@@ -5,6 +5,7 @@
 
 #include "medusa/kinetic/algebraic_time.h"
 #include "medusa/kinetic/certificate_polynomials.h"
+#include "start_determinants.h"
 
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpz.h>
@@ -19,15 +20,26 @@ Interval enclosure(const mpz_class& x) { return Interval(CGAL::to_interval(CGAL:
 
 // Whether the polynomial that build(NT tag) gives has no root in (u, u + delta] (identically zero
 // counts as none). Cheapest first: the Bernstein filter on [u, u + delta], which proves f has no
-// root there; at u = 0 with f(0) = 0 (lattice starts), the same on f / s^m from its exact
+// root there; at u = 0 with f(0) = 0 (lattice starts, told by the static determinant
+// `vanishes_at_start`), the same on f / u from its enclosure; then on f / u^m from its exact
 // coefficients; last, f's real roots, compared exactly with u and u + delta.
-template <class Build> bool keeps_sign(Build&& build, const Rational& u, const Rational& delta) {
+template <class Build, class AtStart>
+bool keeps_sign(Build&& build, AtStart&& vanishes_at_start, const Rational& u, const Rational& delta) {
   const std::pair<double, double> ue = CGAL::to_interval(u), de = CGAL::to_interval(delta);
   {
     CGAL::Protect_FPU_rounding<true> guard; // rounds upwards: hi encloses u + delta
     const double hi = ue.second + de.second;
-    if (ue.first < hi && bernstein_sign(build(Interval()), ue.first, hi) != 0)
+    const IntervalPoly f = build(Interval());
+    if (ue.first < hi && bernstein_sign(f, ue.first, hi) != 0)
       return true;
+    if (u == 0 && de.first > 0 && f.degree_bound() >= 1 && vanishes_at_start()) {
+      // f = u h exactly, and h's coefficients are f's from the first on.
+      IntervalPoly h = IntervalPoly::zero_of_degree(f.degree_bound() - 1);
+      for (int i = 1; i <= f.degree_bound(); ++i)
+        h[i - 1] = f[i];
+      if (bernstein_sign(h, 0.0, de.second) != 0)
+        return true;
+    }
   }
   const Poly<mpz_class> exact = build(mpz_class());
   const int degree = exact.degree_bound();
@@ -63,7 +75,7 @@ bool orientation_keeps_sign(const std::vector<const MovingPoint*>& p, const CGAL
         return p.size() == 3 ? certificate::orientation_2<NT>(*p[0], *p[1], *p[2])
                              : certificate::orientation<NT>(*p[0], *p[1], *p[2], *p[3]);
       },
-      u, delta);
+      [&] { return orientation_vanishes_at_start(p.data(), p.size()); }, u, delta);
 }
 
 bool in_sphere_keeps_sign(const std::vector<const MovingPoint*>& p, const MovingPoint& y, const CGAL::Gmpq& u,
@@ -73,6 +85,10 @@ bool in_sphere_keeps_sign(const std::vector<const MovingPoint*>& p, const Moving
         using NT = decltype(nt);
         return p.size() == 3 ? certificate::in_circle<NT>(*p[0], *p[1], *p[2], y)
                              : certificate::in_sphere<NT>(*p[0], *p[1], *p[2], *p[3], y);
+      },
+      [&] {
+        const MovingPoint* all[5] = {p[0], p[1], p[2], p.size() == 3 ? &y : p[3], &y};
+        return in_sphere_vanishes_at_start(all, p.size() + 1);
       },
       u, delta);
 }
