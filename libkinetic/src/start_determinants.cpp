@@ -4,6 +4,7 @@
 #include "medusa/kinetic/error.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/FPU.h>
 
 namespace medusa::kinetic::detail {
 
@@ -22,6 +23,10 @@ K::Point_2 at_start_2(const MovingPoint& m) {
 } // namespace
 
 bool orientation_vanishes_at_start(const MovingPoint* const* p, std::size_t count) {
+  // The static filters' error bounds are for rounding to nearest; callers run with rounding upwards
+  // (interval arithmetic). A filter misled by the mode could only fail to certify, never report a
+  // false zero, but the predicates are meant to run in the mode they were written for.
+  CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
   if (count == 4)
     return CGAL::orientation(at_start_3(*p[0]), at_start_3(*p[1]), at_start_3(*p[2]), at_start_3(*p[3])) ==
            CGAL::COPLANAR;
@@ -31,6 +36,7 @@ bool orientation_vanishes_at_start(const MovingPoint* const* p, std::size_t coun
 }
 
 bool in_sphere_vanishes_at_start(const MovingPoint* const* p, std::size_t count) {
+  CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST); // as above
   // CGAL's side_of_oriented_sphere (circle) is the sign of det[(p_i - t, |p_i - t|^2)], the
   // determinant of InS (InC) with its rows permuted; it states no precondition on the points' own
   // orientation in its code, and a zero determinant reads as ON_ORIENTED_BOUNDARY.

@@ -16,8 +16,8 @@ namespace medusa::kinetic::detail {
 bool orientation_vanishes_at_start(const MovingPoint* const* p, std::size_t count);
 
 // Whether InS(p0, .., p3; p4) (count 5) or InC(p0, p1, p2; p3) (count 4, x and y only) is zero at
-// u = 0. The determinant changes sign, not value, under a permutation of the points, so the order
-// does not matter.
+// u = 0. A permutation of the points changes at most the determinant's sign, so the order does not
+// matter.
 bool in_sphere_vanishes_at_start(const MovingPoint* const* p, std::size_t count);
 
 } // namespace medusa::kinetic::detail
