@@ -10,6 +10,7 @@
 #include "stage_timings.h"
 #include "svg_plot.h"
 
+#include "medusa/complex/async_observer.h"
 #include "medusa/complex/medusa_builder.h"
 #include "medusa/complex/store_reader.h"
 #include "medusa/complex/store_writer.h"
@@ -28,6 +29,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <thread>
 #include <unistd.h>
 
@@ -321,11 +323,19 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     complex::StoreWriter writer(output);
     complex::MedusaBuilder builder(writer);
     builder.set_run(info, data.trajectories);
+    // With more than one thread the builder and the store writer run beside the engine, on a thread
+    // of their own (AsyncObserver); declared after them, it stops before they are destroyed.
+    std::optional<complex::AsyncObserver> beside;
+    if (threads > 1)
+      beside.emplace(builder);
+    kinetic::Observer& store_side = beside ? static_cast<kinetic::Observer&>(*beside) : builder;
     meter.start_kinetic(data.trajectories.frames());
-    ProgressObserver observer(builder, engine, meter, data.trajectories.frames());
+    ProgressObserver observer(store_side, engine, meter, data.trajectories.frames());
     engine.run(observer);
-    // The engine's wall time includes the builder's callbacks, which belong to the store stage; their
-    // CPU time is not measured apart (see ProgressObserver::timed) and stays in the kinetic stage's.
+    // The engine's wall time includes the time spent in the store side's callbacks (with a thread of
+    // its own: queueing the calls, and waiting for it at the end), which belongs to the store stage;
+    // their CPU time is not measured apart (see ProgressObserver::timed) and stays in the kinetic
+    // stage's.
     timings.add("kinetic", clock.wall_seconds() - observer.builder_seconds(), clock.cpu_seconds());
     timings.add("medusa_store", observer.builder_seconds(), 0.0);
     stats = engine.statistics();
@@ -379,8 +389,9 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
                 "stage) even when stderr is not a terminal, then one line per update");
   run->add_flag("-q,--quiet", args->quiet, "no warnings and no progress on stderr");
   run->add_option("--threads", args->threads,
-                  "worker threads for the filtrations and reductions (0 = one per hardware thread; 1 = "
-                  "sequential); the results do not depend on it")
+                  "worker threads for the filtrations and reductions, and for the store writer beside the "
+                  "kinetic engine (0 = one per hardware thread; 1 = sequential); the results do not "
+                  "depend on it")
       ->capture_default_str();
   run->add_option(
       "--timings", args->timings,

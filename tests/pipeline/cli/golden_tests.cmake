@@ -8,9 +8,11 @@ set(GOLDEN_WORK ${CMAKE_CURRENT_BINARY_DIR}/golden)
 
 # medusa_golden_test(<name> ARGS <medusa arguments...> [CODE <exit code, default 0>]
 #                    [STDOUT <golden>] [STDERR <golden>] [FILES <output>=<golden>...]
-#                    [SETUP <fixture>] [REQUIRES <fixtures...>])
+#                    [SETUP <fixture>] [REQUIRES <fixtures...>] [IGNORE_STDOUT])
+# Without STDOUT, stdout must be empty, unless IGNORE_STDOUT (a run whose summary names its own
+# output files, checked elsewhere).
 function(medusa_golden_test name)
-  cmake_parse_arguments(G "" "CODE;STDOUT;STDERR;SETUP" "ARGS;FILES;REQUIRES" ${ARGN})
+  cmake_parse_arguments(G "IGNORE_STDOUT" "CODE;STDOUT;STDERR;SETUP" "ARGS;FILES;REQUIRES" ${ARGN})
   if(NOT DEFINED G_CODE)
     set(G_CODE 0)
   endif()
@@ -23,7 +25,8 @@ function(medusa_golden_test name)
   add_test(NAME golden_${name}
            COMMAND ${CMAKE_COMMAND} "-DCOMMAND=${command}" -DEXPECT_CODE=${G_CODE} -DWORKDIR=${GOLDEN_WORK} -DTEST=${name}
                    -DGOLDEN_DIR=${GOLDEN_DIR} -DSTDOUT=${G_STDOUT} -DSTDERR=${G_STDERR} "-DFILES=${files}"
-                   -DMEDUSA=$<TARGET_FILE:medusa> -DSOURCE_DIR=${PROJECT_SOURCE_DIR} -P ${GOLDEN_CHECK})
+                   -DMEDUSA=$<TARGET_FILE:medusa> -DSOURCE_DIR=${PROJECT_SOURCE_DIR} -DIGNORE_STDOUT=${G_IGNORE_STDOUT}
+                   -P ${GOLDEN_CHECK})
   set_tests_properties(golden_${name} PROPERTIES LABELS "cli;golden")
   if(G_SETUP)
     set_tests_properties(golden_${name} PROPERTIES FIXTURES_SETUP ${G_SETUP})
@@ -37,6 +40,13 @@ endfunction()
 # sorting seed (tests/data/cli/README.txt), radius 3. The run writes the CSV of all diagrams too.
 medusa_golden_test(run_small ARGS run ${DATA}/cells_3frames.csv.gz -o small.h5 --radius 3 --quiet
                    STDOUT run_small.txt FILES small.diagrams.csv=barcode_all.csv SETUP golden_small_store)
+# The store side runs on the engine's thread with --threads 1 and on a thread of its own otherwise
+# (AsyncObserver): both give the same diagrams.
+foreach(threads 1 2)
+  medusa_golden_test(run_small_on_${threads}_threads ARGS run ${DATA}/cells_3frames.csv.gz -o small_${threads}_threads.h5
+                     --radius 3 --quiet --threads ${threads} FILES small_${threads}_threads.diagrams.csv=barcode_all.csv
+                     IGNORE_STDOUT)
+endforeach()
 foreach(run nosorting_3d sorting_3d_seed2)
   medusa_golden_test(run_${run} ARGS run ${DATA}/${run}_3frames.csv.gz -o ${run}_3frames.h5 --radius 3 --quiet
                      STDOUT run_${run}.txt SETUP golden_compare_stores)

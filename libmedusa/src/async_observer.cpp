@@ -1,0 +1,123 @@
+// The worker thread and its bounded queue (async_observer.h).
+#include "medusa/complex/async_observer.h"
+
+#include <utility>
+
+namespace medusa::complex {
+
+AsyncObserver::AsyncObserver(kinetic::Observer& next, std::size_t block, std::size_t capacity)
+    : next_(next), block_(block == 0 ? 1 : block), capacity_(capacity == 0 ? 1 : capacity),
+      worker_([this] { work(); }) {}
+
+AsyncObserver::~AsyncObserver() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+    queue_.clear();
+  }
+  not_empty_.notify_all();
+  worker_.join();
+}
+
+void AsyncObserver::push(Call call) {
+  pending_.push_back(std::move(call));
+  if (pending_.size() >= block_)
+    hand_over();
+}
+
+void AsyncObserver::hand_over() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  not_full_.wait(lock, [&] { return queue_.size() < capacity_ || failure_; });
+  if (failure_) {
+    pending_.clear();
+    // Thrown once, to the engine's call that meets it; the calls after it (the engine unwinding) are
+    // ignored.
+    if (failure_reported_)
+      return;
+    failure_reported_ = true;
+    std::rethrow_exception(failure_);
+  }
+  queue_.push_back(std::move(pending_));
+  pending_.clear();
+  pending_.reserve(block_);
+  lock.unlock();
+  not_empty_.notify_one();
+}
+
+void AsyncObserver::work() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  for (;;) {
+    not_empty_.wait(lock, [&] { return !queue_.empty() || stopping_; });
+    if (stopping_)
+      return;
+    std::vector<Call> calls = std::move(queue_.front());
+    queue_.pop_front();
+    busy_ = true;
+    lock.unlock();
+    not_full_.notify_one();
+    std::exception_ptr failure;
+    try {
+      for (const Call& call : calls) {
+        switch (call.kind) {
+        case Kind::initial: next_.initial(call.time, call.complex); break;
+        case Kind::batch: next_.batch(call.time, call.steps); break;
+        case Kind::frame: next_.frame(call.frame, call.time); break;
+        case Kind::finish: next_.finish(call.time); break;
+        }
+      }
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    calls.clear(); // freed here, on the worker: the engine's thread does not pay for it
+    lock.lock();
+    busy_ = false;
+    if (failure) {
+      failure_ = failure;
+      queue_.clear(); // nothing after a failed call reaches the inner observer
+    }
+    if (failure || queue_.empty())
+      drained_.notify_all();
+    if (failure)
+      not_full_.notify_all();
+  }
+}
+
+void AsyncObserver::initial(const kinetic::EventTime& t0, const std::vector<kinetic::Simplex>& complex) {
+  Call call;
+  call.kind = Kind::initial;
+  call.time = t0;
+  call.complex = complex;
+  push(std::move(call));
+}
+
+void AsyncObserver::batch(const kinetic::EventTime& time, const std::vector<kinetic::Step>& steps) {
+  Call call;
+  call.kind = Kind::batch;
+  call.time = time;
+  call.steps = steps;
+  push(std::move(call));
+}
+
+void AsyncObserver::frame(std::size_t k, const kinetic::EventTime& time) {
+  Call call;
+  call.kind = Kind::frame;
+  call.time = time;
+  call.frame = k;
+  push(std::move(call));
+}
+
+void AsyncObserver::finish(const kinetic::EventTime& t_end) {
+  Call call;
+  call.kind = Kind::finish;
+  call.time = t_end;
+  pending_.push_back(std::move(call));
+  hand_over();
+  std::unique_lock<std::mutex> lock(mutex_);
+  drained_.wait(lock, [&] { return (queue_.empty() && !busy_) || failure_; });
+  if (failure_ && !failure_reported_) {
+    failure_reported_ = true;
+    std::rethrow_exception(failure_);
+  }
+}
+
+} // namespace medusa::complex
