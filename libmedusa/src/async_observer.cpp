@@ -1,13 +1,22 @@
 // The worker thread and its bounded queue (async_observer.h).
 #include "medusa/complex/async_observer.h"
 
+#include <csignal>
+#include <pthread.h>
 #include <utility>
 
 namespace medusa::complex {
 
 AsyncObserver::AsyncObserver(kinetic::Observer& next, std::size_t block, std::size_t capacity)
-    : next_(next), block_(block == 0 ? 1 : block), capacity_(capacity == 0 ? 1 : capacity),
-      worker_([this] { work(); }) {}
+    : next_(next), block_(block == 0 ? 1 : block), capacity_(capacity == 0 ? 1 : capacity) {
+  // Signals (SIGINT, SIGTERM: the CLI's interrupt handlers) go to the engine's thread, which checks
+  // for them: the worker starts with every signal blocked.
+  sigset_t all, previous;
+  sigfillset(&all);
+  pthread_sigmask(SIG_BLOCK, &all, &previous);
+  worker_ = std::thread([this] { work(); });
+  pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+}
 
 AsyncObserver::~AsyncObserver() {
   {
@@ -20,6 +29,11 @@ AsyncObserver::~AsyncObserver() {
 }
 
 void AsyncObserver::push(Call call) {
+  if (failed_.load(std::memory_order_acquire)) {
+    pending_.clear();
+    hand_over(); // throws the failure, once
+    return;
+  }
   pending_.push_back(std::move(call));
   if (pending_.size() >= block_)
     hand_over();
@@ -73,6 +87,7 @@ void AsyncObserver::work() {
     busy_ = false;
     if (failure) {
       failure_ = failure;
+      failed_.store(true, std::memory_order_release);
       queue_.clear(); // nothing after a failed call reaches the inner observer
     }
     if (failure || queue_.empty())
@@ -111,10 +126,19 @@ void AsyncObserver::finish(const kinetic::EventTime& t_end) {
   call.kind = Kind::finish;
   call.time = t_end;
   pending_.push_back(std::move(call));
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (failure_) {
+      failure_reported_ = true;
+      pending_.clear();
+      std::rethrow_exception(failure_);
+    }
+  }
   hand_over();
   std::unique_lock<std::mutex> lock(mutex_);
   drained_.wait(lock, [&] { return (queue_.empty() && !busy_) || failure_; });
-  if (failure_ && !failure_reported_) {
+  // Thrown again if an earlier call threw it already: a finish() that returns means a complete run.
+  if (failure_) {
     failure_reported_ = true;
     std::rethrow_exception(failure_);
   }

@@ -288,6 +288,8 @@ void StoreWriter::finish(const VirtualTime& end) {
   w.finished = true;
 }
 
+void skip_hdf5_cleanup_at_exit() { H5dont_atexit(); }
+
 void write_store(const std::string& path, const Medusa& medusa) {
   StoreWriter writer(path);
   writer.run(medusa.run, medusa.input);

@@ -324,7 +324,8 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     complex::MedusaBuilder builder(writer);
     builder.set_run(info, data.trajectories);
     // With more than one thread the builder and the store writer run beside the engine, on a thread
-    // of their own (AsyncObserver); declared after them, it stops before they are destroyed.
+    // of their own (AsyncObserver); declared after them, it stops before they are destroyed. The peak
+    // memory sampled at each frame then includes the calls still queued for them (a few blocks).
     std::optional<complex::AsyncObserver> beside;
     if (threads > 1)
       beside.emplace(builder);

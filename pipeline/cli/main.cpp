@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "interrupt.h"
 
+#include "medusa/complex/store_writer.h"
 #include "medusa/kinetic/error.h"
 
 #include <CLI/CLI.hpp>
@@ -43,6 +44,8 @@ int main(int argc, char** argv) {
   medusa::cli::add_curves_command(app);
   medusa::cli::add_at_command(app);
   medusa::cli::install_interrupt_handlers();
+  // A store whose final flush failed would otherwise crash HDF5's exit handler (store_writer.h).
+  medusa::complex::skip_hdf5_cleanup_at_exit();
 #ifdef __GLIBC__
   // Blocks of 128 KiB and more are mapped and unmapped one by one. glibc otherwise raises this
   // threshold after the first such block is freed and serves later large temporaries (store columns,

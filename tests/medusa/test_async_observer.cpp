@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <iostream>
 #include <memory>
@@ -119,33 +120,88 @@ TEST_CASE("an asynchronous observer copies each call, so the caller may reuse it
   CHECK(delayed.calls == direct.calls);
 }
 
-TEST_CASE("a failure of the inner observer is thrown to the caller once and stops the calls after it") {
+TEST_CASE(
+    "a failure of the inner observer is thrown to the caller at a later call and again by finish, and stops "
+    "the calls after it") {
   const medusa::test::Stream stream = medusa::test::random_stream(3);
   Recorder inner;
   inner.fail_at = 4;
-  std::string caught;
-  int throws = 0;
+  std::vector<std::string> caught;
+  bool finish_threw = false;
   {
     AsyncObserver async(inner, 1, 2);
     auto call = [&](auto&& f) {
       try {
         f();
       } catch (const std::runtime_error& e) {
-        caught = e.what();
-        ++throws;
+        caught.push_back(e.what());
       }
     };
     call([&] { async.initial(stream.t0, stream.initial); });
     for (const auto& b : stream.batches)
       call([&] { async.batch(b.time, b.steps); });
-    call([&] { async.finish(stream.t_end); });
+    try {
+      async.finish(stream.t_end);
+    } catch (const std::runtime_error& e) {
+      finish_threw = std::string(e.what()) == "store: disk full at call 4";
+    }
   }
   REQUIRE(stream.batches.size() > 6);
-  CHECK(throws == 1);
-  CHECK(caught == "store: disk full at call 4");
+  // Once among the calls after the failure (the worker may still be busy with the next ones), then
+  // finish() again: a finish() that returns means every call went through.
+  REQUIRE(caught.size() == 1);
+  CHECK(caught.front() == "store: disk full at call 4");
+  CHECK(finish_threw);
   // Calls 0-3 went through, call 4 failed, and none after it reached the inner observer.
   REQUIRE(inner.calls.size() == 5);
   CHECK(inner.calls.back().rfind("failed: batch", 0) == 0);
+}
+
+TEST_CASE("a failure of the inner observer's own finish is thrown by finish") {
+  const medusa::test::Stream stream = medusa::test::random_stream(5);
+  Recorder direct;
+  stream.play(direct);
+  Recorder inner;
+  inner.fail_at = direct.calls.size() - 1; // the last call: finish
+  {
+    AsyncObserver async(inner); // the defaults: the whole stream fits in one block
+    async.initial(stream.t0, stream.initial);
+    for (std::size_t k : stream.frames_after_initial)
+      async.frame(k, stream.t0);
+    for (const auto& b : stream.batches) {
+      async.batch(b.time, b.steps);
+      for (std::size_t k : b.frames_after)
+        async.frame(k, b.time);
+    }
+    CHECK_THROWS_WITH(async.finish(stream.t_end),
+                      "store: disk full at call " + std::to_string(inner.fail_at));
+  }
+  CHECK(inner.calls.size() == direct.calls.size());
+  CHECK(inner.calls.back().rfind("failed: finish", 0) == 0);
+}
+
+TEST_CASE(
+    "an asynchronous observer destroyed without finish drops the calls still queued and never finishes") {
+  // The engine failed or was interrupted: the observer is destroyed mid-stream.
+  const medusa::test::Stream stream = medusa::test::random_stream(9);
+  Recorder direct, inner;
+  stream.play(direct);
+  {
+    AsyncObserver async(inner, 1, 1000);
+    async.initial(stream.t0, stream.initial);
+    for (std::size_t k : stream.frames_after_initial)
+      async.frame(k, stream.t0);
+    for (const auto& b : stream.batches) {
+      async.batch(b.time, b.steps);
+      for (std::size_t k : b.frames_after)
+        async.frame(k, b.time);
+    }
+  }
+  // How far the worker got is up to the scheduler; what it passed on is a prefix of the stream.
+  REQUIRE(inner.calls.size() < direct.calls.size());
+  CHECK(std::equal(inner.calls.begin(), inner.calls.end(), direct.calls.begin()));
+  for (const std::string& c : inner.calls)
+    CHECK(c.rfind("finish", 0) != 0);
 }
 
 TEST_CASE("the medusa built through an asynchronous observer equals the one built directly") {

@@ -7,13 +7,18 @@
 // waits when the worker is `capacity` blocks behind, so memory stays bounded.
 //
 // The inner observer receives exactly the calls the engine made, in the same order, all from the
-// worker thread; nothing else may touch it (nor, for the store writer, the HDF5 library) until
-// finish() has returned. An exception thrown by the inner observer stops the worker; it is thrown
-// again to the engine at its next call, so the run stops with the store's own error message.
+// worker thread (which runs with every signal blocked); nothing else may touch it (nor, for the store
+// writer, the HDF5 library) until finish() has returned. An exception thrown by the inner observer
+// stops the worker and drops the calls after it; it is thrown to the engine at its next call (the
+// inner observer may be up to a block behind), and again by finish(), so the run stops with the
+// store's own error message and a finish() that returns means every call went through. If the
+// engine fails first, its own exception unwinds past the observer and a later failure of the inner
+// observer is not reported.
 #pragma once
 
 #include "medusa/kinetic/observer.h"
 
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
@@ -61,6 +66,7 @@ private:
   bool busy_ = false;     // the worker is inside a call of the inner observer
   bool stopping_ = false; // the destructor asks the worker to leave
   std::exception_ptr failure_;
+  std::atomic<bool> failed_{false}; // failure_ is set: read by the caller without the lock
   bool failure_reported_ = false;
   std::thread worker_;
 };

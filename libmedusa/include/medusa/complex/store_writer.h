@@ -40,4 +40,11 @@ private:
 // Writes a whole in-memory medusa (e.g. one read back) as a store at `path`.
 void write_store(const std::string& path, const Medusa& medusa);
 
+// Keeps the HDF5 library from closing, at process exit, the files still open in it. When the final
+// flush of a store fails (a full disk, a file size limit), HDF5 keeps the file after its close
+// failed, and its exit handler then crashes on it: a segfault after the one-line error, instead of
+// the store error's exit code. Every store is closed, or deleted, by its own writer or reader, so a
+// program calls this first, before any other use of HDF5 (later it has no effect).
+void skip_hdf5_cleanup_at_exit();
+
 } // namespace medusa::complex
