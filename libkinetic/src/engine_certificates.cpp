@@ -480,9 +480,7 @@ bool Engine::install_vanishing_at_start(int id, const IntervalPoly& f) {
   const int n = f.degree_bound();
   if (n < 1 || !now.is_rational() || now.rational() != 0)
     return false;
-  IntervalPoly h;
-  for (int i = n; i >= 1; --i)
-    h = h * IntervalPoly(Interval(0), Interval(1)) + IntervalPoly(f[i]);
+  const IntervalPoly h = f.shifted_down(1);
   const int sign = interval_sign(h, 0.0, 0.0);
   if (sign == 0)
     return false;

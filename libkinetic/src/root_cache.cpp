@@ -64,12 +64,10 @@ ExactPoly KeyPolynomial::operator()() const {
   const Poly<mpz_class> f = coefficients(pts);
   // Divide out u^m: the same roots in (0, 1], and no root at 0, where an isolating interval
   // starting at a frame may begin (CGAL's algebraic reals need a polynomial non-zero at the ends).
-  Poly<mpz_class> g;
   int m = 0;
   while (m < f.degree_bound() && f[m] == 0)
     ++m;
-  for (int i = f.degree_bound(); i >= m; --i)
-    g = g * Poly<mpz_class>(mpz_class(0), mpz_class(1)) + Poly<mpz_class>(f[i]);
+  const Poly<mpz_class> g = f.shifted_down(m);
   return to_exact_poly(g);
 }
 

@@ -34,10 +34,7 @@ bool keeps_sign(Build&& build, AtStart&& vanishes_at_start, const Rational& u, c
       return true;
     if (u == 0 && de.first > 0 && f.degree_bound() >= 1 && vanishes_at_start()) {
       // f = u h exactly, and h's coefficients are f's from the first on.
-      IntervalPoly h = IntervalPoly::zero_of_degree(f.degree_bound() - 1);
-      for (int i = 1; i <= f.degree_bound(); ++i)
-        h[i - 1] = f[i];
-      if (bernstein_sign(h, 0.0, de.second) != 0)
+      if (bernstein_sign(f.shifted_down(1), 0.0, de.second) != 0)
         return true;
     }
   }

@@ -29,13 +29,9 @@ AsyncObserver::~AsyncObserver() {
 }
 
 void AsyncObserver::push(Call call) {
-  if (failed_.load(std::memory_order_acquire)) {
-    pending_.clear();
-    hand_over(); // throws the failure, once
-    return;
-  }
   pending_.push_back(std::move(call));
-  if (pending_.size() >= block_)
+  // After a failure, at once: hand_over throws it (once) and drops the calls.
+  if (pending_.size() >= block_ || failed_.load(std::memory_order_acquire))
     hand_over();
 }
 
@@ -98,43 +94,20 @@ void AsyncObserver::work() {
 }
 
 void AsyncObserver::initial(const kinetic::EventTime& t0, const std::vector<kinetic::Simplex>& complex) {
-  Call call;
-  call.kind = Kind::initial;
-  call.time = t0;
-  call.complex = complex;
-  push(std::move(call));
+  push({Kind::initial, t0, 0, complex, {}});
 }
 
 void AsyncObserver::batch(const kinetic::EventTime& time, const std::vector<kinetic::Step>& steps) {
-  Call call;
-  call.kind = Kind::batch;
-  call.time = time;
-  call.steps = steps;
-  push(std::move(call));
+  push({Kind::batch, time, 0, {}, steps});
 }
 
 void AsyncObserver::frame(std::size_t k, const kinetic::EventTime& time) {
-  Call call;
-  call.kind = Kind::frame;
-  call.time = time;
-  call.frame = k;
-  push(std::move(call));
+  push({Kind::frame, time, k, {}, {}});
 }
 
 void AsyncObserver::finish(const kinetic::EventTime& t_end) {
-  Call call;
-  call.kind = Kind::finish;
-  call.time = t_end;
-  pending_.push_back(std::move(call));
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (failure_) {
-      failure_reported_ = true;
-      pending_.clear();
-      std::rethrow_exception(failure_);
-    }
-  }
-  hand_over();
+  pending_.push_back({Kind::finish, t_end, 0, {}, {}});
+  hand_over(); // throws a failure not thrown yet
   std::unique_lock<std::mutex> lock(mutex_);
   drained_.wait(lock, [&] { return (queue_.empty() && !busy_) || failure_; });
   // Thrown again if an earlier call threw it already: a finish() that returns means a complete run.

@@ -31,6 +31,12 @@ struct Stream {
   EventTime t_end;
 
   void play(kinetic::Observer& observer) const {
+    play_events(observer);
+    observer.finish(t_end);
+  }
+
+  // Everything but the final finish() (a run stopped, or a test that finishes on its own).
+  void play_events(kinetic::Observer& observer) const {
     observer.initial(t0, initial);
     for (std::size_t k : frames_after_initial)
       observer.frame(k, t0);
@@ -39,7 +45,6 @@ struct Stream {
       for (std::size_t k : b.frames_after)
         observer.frame(k, b.time);
     }
-    observer.finish(t_end);
   }
 };
 

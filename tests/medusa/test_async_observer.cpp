@@ -165,14 +165,7 @@ TEST_CASE("a failure of the inner observer's own finish is thrown by finish") {
   inner.fail_at = direct.calls.size() - 1; // the last call: finish
   {
     AsyncObserver async(inner); // the defaults: the whole stream fits in one block
-    async.initial(stream.t0, stream.initial);
-    for (std::size_t k : stream.frames_after_initial)
-      async.frame(k, stream.t0);
-    for (const auto& b : stream.batches) {
-      async.batch(b.time, b.steps);
-      for (std::size_t k : b.frames_after)
-        async.frame(k, b.time);
-    }
+    stream.play_events(async);
     CHECK_THROWS_WITH(async.finish(stream.t_end),
                       "store: disk full at call " + std::to_string(inner.fail_at));
   }
@@ -188,14 +181,7 @@ TEST_CASE(
   stream.play(direct);
   {
     AsyncObserver async(inner, 1, 1000);
-    async.initial(stream.t0, stream.initial);
-    for (std::size_t k : stream.frames_after_initial)
-      async.frame(k, stream.t0);
-    for (const auto& b : stream.batches) {
-      async.batch(b.time, b.steps);
-      for (std::size_t k : b.frames_after)
-        async.frame(k, b.time);
-    }
+    stream.play_events(async);
   }
   // How far the worker got is up to the scheduler; what it passed on is a prefix of the stream.
   REQUIRE(inner.calls.size() < direct.calls.size());

@@ -44,6 +44,17 @@ public:
   }
 
   int degree_bound() const { return deg_; } // highest stored index (coefficients may be zero)
+
+  // f / u^m for f whose coefficients of u^0 .. u^(m-1) are zero (the caller knows it: a root of
+  // multiplicity m at a slab start): the coefficients from u^m on, moved down.
+  Poly shifted_down(int m) const {
+    assert(m >= 0);
+    Poly r;
+    r.deg_ = deg_ - m < -1 ? -1 : deg_ - m;
+    for (int i = 0; i <= r.deg_; ++i)
+      r.c_[i] = c_[i + m];
+    return r;
+  }
   const NT& operator[](int i) const { return c_[i]; }
   NT& operator[](int i) { return c_[i]; }
 
