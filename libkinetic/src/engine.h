@@ -353,7 +353,9 @@ struct Engine {
   KeyPolynomial key_polynomial(const CacheKey& key) const;
   CacheKey cache_key(const Certificate& c) const;
   void mark_invalid(int id);
+  void retire_all_certs();
   void install_facet(const Simplex& facet);
+  void install_facet(const Simplex& facet, detail::Triangulation::Apices& ap); // ap: facet's record
   void install_radius(const Simplex& s) { install_radius(s, faces.at(s)); }
   void install_radius(const Simplex& s, Face& f); // f: s's state
   bool compute_short(const Simplex& s);

@@ -206,6 +206,24 @@ void Engine::kill_cert(int id) {
   free_certs.push_back(id);
 }
 
+// Every certificate dies at once (a frame rebuilds them all, MATH.md 2.3), and the ids are handed
+// out again from 0 up: the frame then installs certificate i + 1 beside certificate i, in the order it
+// visits the simplices, and retires them in that order at the next frame, where retiring them one by
+// one in the order of their last slab's flips was a cache miss each. The callers must drop their
+// ids (the records keep -1 until they get a new one); stale (id, version) pairs stay stale.
+void Engine::retire_all_certs() {
+  free_certs.clear();
+  for (std::size_t id = certs.size(); id-- > 0;) {
+    Certificate& c = certs[id];
+    if (c.alive) {
+      c.alive = false;
+      ++c.version;
+    }
+    free_certs.push_back(static_cast<int>(id));
+  }
+  pending_delaunay.clear(); // it only ever holds live Delaunay certificates
+}
+
 // Counts a certificate built by its formula; `enclosed` says cert_enclosure took it, which it does for
 // every certificate but the hull orientations.
 void Engine::count_built(const Certificate& c, bool enclosed) {
@@ -583,21 +601,23 @@ void Engine::mark_invalid(int id) {
 
 // A facet that left Del has no record any more: its certificate went with it (remove_tet).
 void Engine::install_facet(const Simplex& facet) {
-  detail::Triangulation::Apices* ap = tri.apices(facet);
-  if (ap == nullptr)
-    return;
-  if (ap->count != 2) {
+  if (detail::Triangulation::Apices* ap = tri.apices(facet))
+    install_facet(facet, *ap);
+}
+
+void Engine::install_facet(const Simplex& facet, detail::Triangulation::Apices& ap) {
+  if (ap.count != 2) {
     std::ostringstream os;
-    os << "facet " << facet << " has " << int(ap->count) << " tetrahedra";
+    os << "facet " << facet << " has " << int(ap.count) << " tetrahedra";
     throw InternalError(os.str());
   }
-  kill_cert(ap->cert);
-  ap->cert = new_cert(CertKind::delaunay, facet); // the table is not touched: ap stays valid
-  install(ap->cert);
-  if (!is_finite(facet) && !pending_delaunay.count({facet, ap->cert}) && hull_ridge_folded_at_now(facet)) {
+  kill_cert(ap.cert);
+  ap.cert = new_cert(CertKind::delaunay, facet); // the table is not touched: ap stays valid
+  install(ap.cert);
+  if (!is_finite(facet) && !pending_delaunay.count({facet, ap.cert}) && hull_ridge_folded_at_now(facet)) {
     ++stats.invalid_at_creation;
     ++stats.hull_ridges_folded_at_now;
-    mark_invalid(ap->cert);
+    mark_invalid(ap.cert);
     repair_pending = true;
   }
 }

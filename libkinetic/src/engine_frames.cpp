@@ -28,17 +28,17 @@ void Engine::set_slab_motion(std::size_t k) {
 void Engine::reinstall_all() {
   queue.clear();
   root_cache.clear();
-  std::vector<Simplex> fs;
-  for (const auto& kv : tri.facets())
-    fs.push_back(kv.first);
-  for (const Simplex& f : fs)
-    install_facet(f);
-  std::vector<Simplex> rs;
-  for (const auto& kv : faces)
-    if (kv.second.cert >= 0)
-      rs.push_back(kv.first);
-  for (const Simplex& s : rs) {
-    Face& f = faces.at(s);
+  // In place, in table order: installing a certificate reads the tables but never adds or removes an
+  // entry, so the records stay where they are, and a frame costs no second look-up per simplex.
+  retire_all_certs();
+  tri.for_each_facet([this](const Simplex& facet, detail::Triangulation::Apices& ap) {
+    ap.cert = -1;
+    install_facet(facet, ap);
+  });
+  for (auto& [s, f] : faces) {
+    if (f.cert < 0)
+      continue;
+    f.cert = -1;
     install_radius(s, f);
     // R = rho at the frame: a touch there, whatever the sign just after (Engine::resolve_touches).
     if (radius_vanishes_now(s))

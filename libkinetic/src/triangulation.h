@@ -121,6 +121,12 @@ public:
   };
   TetRange tets() const { return TetRange(facets_, tet_count_); }
   const FlatSimplexMap<Apices>& facets() const { return facets_; }
+  // Calls f(facet, record) for every facet, in table order; f may change the records but not add or
+  // remove a top simplex.
+  template <class F> void for_each_facet(F&& f) {
+    for (auto& [facet, record] : facets_)
+      f(facet, record);
+  }
   // Tetrahedra containing every vertex of s.
   std::vector<Simplex> tets_containing(const Simplex& s) const;
   const std::vector<Simplex>& tets_of(VertexId v) const;
