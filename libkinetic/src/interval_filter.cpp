@@ -176,6 +176,20 @@ int bernstein_sign(const IntervalPoly& f, double lo, double hi) {
 }
 
 int bernstein_sign_subdivided(const IntervalPoly& f, double lo, int depth) {
+  // Dominance first: for u and lo in [0, 1], |f(u) - f(lo)| <= sum_{i >= 1} |f_i| |u^i - lo^i| <=
+  // sum_{i >= 1} |f_i|, so f keeps the sign of f(lo) on [lo, 1] when |f(lo)| exceeds that sum. A few
+  // additions settle most certificates of a frame (lo = 0: f(lo) is f_0), where cells move little
+  // compared with their spacing, before any Bernstein coefficient is computed.
+  if (const int n = degree_of(f); n > 0) {
+    Interval tail(0);
+    for (int i = 1; i <= n; ++i)
+      tail += CGAL::abs(f[i]);
+    const Interval at = lo == 0.0 ? f[0] : horner(f, n, Interval(lo));
+    if (at.inf() > tail.sup())
+      return 1;
+    if (at.sup() < -tail.sup())
+      return -1;
+  }
   // A definite sign change proves a root in [lo, 1], so no subdivision can settle f: certificates
   // that fail inside the slab leave here after two evaluations instead of 2^depth pieces.
   const int at_lo = interval_sign(f, lo, lo), at_hi = interval_sign(f, 1.0, 1.0);
