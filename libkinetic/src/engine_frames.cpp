@@ -1,7 +1,9 @@
 // Frames: switching slabs, rebuilding every certificate, insertions and deletions (MATH.md 2.3, 5.6).
 #include "engine.h"
+#include "start_determinants.h"
 
 #include <algorithm>
+#include <array>
 #include <unordered_set>
 #include <vector>
 
@@ -39,9 +41,10 @@ void Engine::reinstall_all() {
     if (f.cert < 0)
       continue;
     f.cert = -1;
-    install_radius(s, f);
+    Interval at_frame(0); // undecided unless the install's enclosure says otherwise
+    install_radius(s, f, &at_frame);
     // R = rho at the frame: a touch there, whatever the sign just after (Engine::resolve_touches).
-    if (radius_vanishes_now(s))
+    if (!(at_frame.inf() > 0 || at_frame.sup() < 0) && radius_vanishes_now(s))
       pending_touch.emplace_back(f.cert, certs[static_cast<std::size_t>(f.cert)].version);
   }
 }
@@ -99,11 +102,21 @@ void Engine::frame(Observer& observer, std::size_t k) {
 // if it keeps its orientation: the facet may turn over and fold onto a neighbour at that instant, two
 // sign changes that cancel in every certificate (the frame analogue of Engine::resolve_hull_touches:
 // hull-box seed 18304 with a frame cut into the middle of slab 1).
+// Now is the slab start, where every cell sits at its grid position: CGAL's exact static predicate
+// on those positions (start_determinants.h) finds the flat ones at a fraction of the cost of an
+// interval evaluation. A top simplex that is not flat at the frame has its recorded sign there: it
+// could only have turned by flattening inside the slab that ended here.
 bool Engine::top_simplex_turns_at_frame() {
-  for (const Simplex& t : tri.tets())
-    if (is_finite(t) && orientation_enclosure_sign(t) == 0 &&
-        (orientation_sign_plus(t) != tri.orientation(t) || (flat_at_now(t) && degenerate_hull_facet_at(t))))
+  std::array<const MovingPoint*, 4> p{};
+  for (const Simplex& t : tri.tets()) {
+    if (!is_finite(t))
+      continue;
+    for (std::size_t i = 0; i < t.size(); ++i)
+      p[i] = &pt(t[i]);
+    if (orientation_vanishes_at_start(p.data(), t.size()) &&
+        (orientation_sign_plus(t) != tri.orientation(t) || degenerate_hull_facet_at(t)))
       return true;
+  }
   return false;
 }
 
