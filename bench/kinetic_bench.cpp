@@ -19,6 +19,7 @@
 #include "medusa/kinetic/certificate_enclosure.h"
 #include "medusa/kinetic/interval_filter.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "medusa/kinetic/root_isolation.h"
 
 #include <CGAL/Alpha_shape_2.h>
 #include <CGAL/Alpha_shape_face_base_2.h>
@@ -116,6 +117,19 @@ double static_rebuild_seconds(const Trajectories& t, std::size_t k, double rho2,
 struct FormulaCosts {
   // seconds per certificate: in-sphere (in-circle in 2D), edge, triangle, tetrahedron radius
   std::array<double, 4> build{}, filter{};
+  // seconds per certificate whose filter is undecided and that has a failure time in the slab: its
+  // first sign change isolated and narrowed to 2^-24, as libkinetic and the skeleton schedule it
+  // (0: the frame had none of that formula)
+  std::array<double, 4> isolate{};
+  // The cheapest isolation among the radius formulas timed: what every radius event costs at least
+  // on top of its certificate's filter.
+  double cheapest_radius_isolation() const {
+    double best = 0;
+    for (std::size_t j = 1; j < isolate.size(); ++j)
+      if (isolate[j] > 0 && (best == 0 || isolate[j] < best))
+        best = isolate[j];
+    return best;
+  }
   double times(const KineticStatistics& s, const std::array<double, 4>& c) const {
     return double(s.built_in_sphere) * c[0] + double(s.built_radius[0]) * c[1] +
            double(s.built_radius[1]) * c[2] + double(s.built_radius[2]) * c[3];
@@ -124,21 +138,42 @@ struct FormulaCosts {
 
 template <std::size_t N, class Build>
 void time_formula(const std::vector<std::array<int, N>>& tuples, Build&& build, double& build_seconds,
-                  double& filter_seconds, int& sink) {
+                  double& filter_seconds, double& isolate_seconds, int& sink) {
   if (tuples.empty())
     return;
+  std::vector<IntervalPoly> open; // the filter left them undecided: a root in the slab, most of them
   for (const bool filter : {false, true}) {
     double best = 1e300;
     for (int pass = 0; pass < 3; ++pass) {
       auto start = Clock::now();
       for (const auto& t : tuples) {
         const IntervalPoly f = build(t);
-        sink += filter ? bernstein_sign_subdivided(f, 0.0, 4) : certified_sign(f[0]);
+        const int sign = filter ? bernstein_sign_subdivided(f, 0.0, 4) : certified_sign(f[0]);
+        sink += sign;
+        if (filter && pass == 0 && sign == 0)
+          open.push_back(f);
       }
       best = std::min(best, std::chrono::duration<double>(Clock::now() - start).count());
     }
     (filter ? filter_seconds : build_seconds) = best / double(tuples.size());
   }
+  // Isolation alone (the polynomials are built above): libkinetic's path for a certificate with a
+  // failure time, first_sign_change then narrow_root to 2^-24 (Engine::schedule_first_change).
+  double best = 1e300;
+  std::size_t rooted = 0;
+  for (int pass = 0; pass < 3; ++pass) {
+    rooted = 0;
+    auto start = Clock::now();
+    for (const IntervalPoly& f : open) {
+      FirstSignChange next = first_sign_change(f, 0.0, 12);
+      if (next.status != FirstSignChange::Status::root)
+        continue;
+      ++rooted;
+      sink += static_cast<int>(narrow_root(f, next.lo, next.hi, next.sign, 0x1p-24));
+    }
+    best = std::min(best, std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  isolate_seconds = rooted > 0 ? best / double(rooted) : 0.0;
 }
 
 FormulaCosts formula_costs(const Trajectories& t, std::size_t k, const SquaredRadius& rho2) {
@@ -184,7 +219,7 @@ FormulaCosts formula_costs(const Trajectories& t, std::size_t k, const SquaredRa
       triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
     time_formula(
         in_circle, [&](const auto& v) { return in_circle_enclosure(m[v[0]], m[v[1]], m[v[2]], m[v[3]]); },
-        cost.build[0], cost.filter[0], sink);
+        cost.build[0], cost.filter[0], cost.isolate[0], sink);
   } else {
     using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
     using Dt = CGAL::Delaunay_triangulation_3<K, CGAL::Triangulation_data_structure_3<Vb>>;
@@ -214,18 +249,18 @@ FormulaCosts formula_costs(const Trajectories& t, std::size_t k, const SquaredRa
     time_formula(
         in_sphere,
         [&](const auto& v) { return in_sphere_enclosure(m[v[0]], m[v[1]], m[v[2]], m[v[3]], m[v[4]]); },
-        cost.build[0], cost.filter[0], sink);
+        cost.build[0], cost.filter[0], cost.isolate[0], sink);
     time_formula(
         tets,
         [&](const auto& v) { return tetrahedron_radius_enclosure(m[v[0]], m[v[1]], m[v[2]], m[v[3]], P, Q); },
-        cost.build[3], cost.filter[3], sink);
+        cost.build[3], cost.filter[3], cost.isolate[3], sink);
   }
   time_formula(
       edges, [&](const auto& v) { return edge_radius_enclosure(m[v[0]], m[v[1]], P, Q); }, cost.build[1],
-      cost.filter[1], sink);
+      cost.filter[1], cost.isolate[1], sink);
   time_formula(
       triangles, [&](const auto& v) { return triangle_radius_enclosure(m[v[0]], m[v[1]], m[v[2]], P, Q); },
-      cost.build[2], cost.filter[2], sink);
+      cost.build[2], cost.filter[2], cost.isolate[2], sink);
   if (sink == 42) // keeps the timed calls from being optimised away
     std::fputs("", stdout);
   return cost;
@@ -326,7 +361,10 @@ Trajectories random_walk_2d(std::uint64_t seed, int n, int frames, double step_s
 // job with its certificate arithmetic costs at least, against the same static rebuilds.
 // radius_seconds: the arithmetic of the kinetic run's radius certificates, which the skeleton leaves
 // out (FormulaCosts, one filter each).
-void skeleton_case(const Trajectories& t, const std::vector<double>& static_at, double radius_seconds) {
+// radius_isolation: the isolation of the kinetic run's radius events, at the cheapest radius formula's
+// cost each, which the skeleton leaves out as well.
+void skeleton_case(const Trajectories& t, const std::vector<double>& static_at, double radius_seconds,
+                   double radius_isolation) {
   std::string why;
   if (!medusa::bench::skeleton_applies(t, why)) {
     std::printf("Delaunay skeleton: not run (%s)\n", why.c_str());
@@ -355,8 +393,9 @@ void skeleton_case(const Trajectories& t, const std::vector<double>& static_at, 
               r.verified ? "equal to CGAL's static one" : r.verdict.c_str());
   if (r.verified)
     std::printf("lower bound for the kinetic alpha complex: the skeleton plus the arithmetic of the run's "
-                "radius certificates (%.3f s, one filter each): %.2f of the static rebuilds\n",
-                radius_seconds, (total + radius_seconds) / static_total);
+                "radius certificates (%.3f s, one filter each) and the isolation of its radius events' "
+                "times (%.3f s): %.2f of the static rebuilds\n",
+                radius_seconds, radius_isolation, (total + radius_seconds + radius_isolation) / static_total);
   std::fflush(stdout);
 }
 
@@ -437,12 +476,14 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
       "given their exact polynomial rounded to intervals, %zu compared as algebraic reals\n",
       s.exact_delaunay, s.exact_radius, s.exact_scheduled, s.invalid_at_creation, s.root_cache_hits,
       s.times_sharpened, s.times_compared_algebraically);
-  double radius_filtered = 0; // the radius certificates' arithmetic, one filter each
+  double radius_filtered = 0;  // the radius certificates' arithmetic, one filter each
+  double radius_isolation = 0; // the radius events' failure times, isolated and narrowed
   if (t.frames() > 1) {
     const std::size_t k = (t.frames() - 2) / 2;
     const FormulaCosts c = formula_costs(t, k, options.rho2);
     const double floor = c.times(s, c.build), filtered = c.times(s, c.filter);
     radius_filtered = filtered - double(s.built_in_sphere) * c.filter[0];
+    radius_isolation = double(s.radius_events) * c.cheapest_radius_isolation();
     const double static_all = static_first + static_total, kinetic_all = timer.initialisation + kinetic_slabs;
     std::printf("certificate arithmetic floor (polynomials enclosed from doubles, timed per formula at frame "
                 "%zu): %zu %s at %.0f ns, %zu hull orientations at 0, radius %zu edges at %.0f ns, %zu "
@@ -453,6 +494,10 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
                 s.built_hull, s.built_radius[0], 1e9 * c.build[1], s.built_radius[1], 1e9 * c.build[2],
                 s.built_radius[2], 1e9 * c.build[3], floor, floor / static_all, filtered,
                 filtered / static_all, kinetic_all / floor);
+    std::printf("isolating a failure time (first sign change, narrowed to 2^-24), per certificate with one: "
+                "%s %.0f ns, edge %.0f ns, triangle %.0f ns, tetrahedron %.0f ns (0: none at that frame)\n",
+                t.dimension == 2 ? "in-circle" : "in-sphere", 1e9 * c.isolate[0], 1e9 * c.isolate[1],
+                1e9 * c.isolate[2], 1e9 * c.isolate[3]);
     // What the target leaves for everything else (filters, queue, triangulation, membership,
     // isolation and narrowing of failure times), per event, against what it costs now.
     if (events > 0)
@@ -461,7 +506,7 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
   }
   std::printf("peak memory (RSS so far) %.1f MiB\n", peak_rss_mib());
   std::fflush(stdout);
-  skeleton_case(t, static_at, radius_filtered);
+  skeleton_case(t, static_at, radius_filtered, radius_isolation);
 }
 
 } // namespace
