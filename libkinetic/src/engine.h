@@ -340,8 +340,9 @@ struct Engine {
   int sign_after_own_root(const IntervalPoly& f, const CacheKey& key) const;
   int new_cert(CertKind kind, const Simplex& key);
   void kill_cert(int id);
-  // at_now, when given, receives the enclosure of the certificate's value at now computed on the way,
-  // or stays as it was when there was none (the exact paths).
+  // at_now, when given and now is a slab start (a frame), receives the enclosure of the certificate's
+  // value there from the first enclosure built, the one from plain doubles; it stays as it was when
+  // that enclosure was not built (hull orientations) or now is inside the slab.
   void install(int id, Interval* at_now = nullptr);
   void settle_certificate(int id, bool counted = true, Interval* at_now = nullptr);
   void count_built(const Certificate& c, bool enclosed);

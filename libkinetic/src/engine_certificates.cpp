@@ -210,7 +210,9 @@ void Engine::kill_cert(int id) {
 // out again from 0 up: the frame then installs certificate i + 1 beside certificate i, in the order it
 // visits the simplices, and retires them in that order at the next frame, where retiring them one by
 // one in the order of their last slab's flips was a cache miss each. The callers must drop their
-// ids (the records keep -1 until they get a new one); stale (id, version) pairs stay stale.
+// ids (the records keep -1 until they get a new one); stale (id, version) pairs stay stale. Nothing
+// catches an exception between this and the end of the frame's reinstall (Engine::reinstall_all):
+// one aborts the run, so records not yet visited never hand their old ids to anyone.
 void Engine::retire_all_certs() {
   free_certs.clear();
   for (std::size_t id = certs.size(); id-- > 0;) {

@@ -1,5 +1,6 @@
 // Frames: switching slabs, rebuilding every certificate, insertions and deletions (MATH.md 2.3, 5.6).
 #include "engine.h"
+#include "medusa/kinetic/error.h"
 #include "start_determinants.h"
 
 #include <algorithm>
@@ -107,6 +108,8 @@ void Engine::frame(Observer& observer, std::size_t k) {
 // interval evaluation. A top simplex that is not flat at the frame has its recorded sign there: it
 // could only have turned by flattening inside the slab that ended here.
 bool Engine::top_simplex_turns_at_frame() {
+  if (!now.is_rational() || now.rational() != 0)
+    throw InternalError("the frame test of flat top simplices runs at a slab start only");
   std::array<const MovingPoint*, 4> p{};
   for (const Simplex& t : tri.tets()) {
     if (!is_finite(t))

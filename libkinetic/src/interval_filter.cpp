@@ -180,7 +180,9 @@ int bernstein_sign_subdivided(const IntervalPoly& f, double lo, int depth) {
   // sum_{i >= 1} |f_i|, so f keeps the sign of f(lo) on [lo, 1] when |f(lo)| exceeds that sum. A few
   // additions settle most certificates of a frame (lo = 0: f(lo) is f_0), where cells move little
   // compared with their spacing, before any Bernstein coefficient is computed.
-  if (const int n = degree_of(f); n > 0) {
+  // (lo < 0, which an enclosure of a time just after a slab start can have, is left to Bernstein:
+  // |u^i - lo^i| is no longer bounded by 1 there.)
+  if (const int n = degree_of(f); n > 0 && lo >= 0.0) {
     Interval tail(0);
     for (int i = 1; i <= n; ++i)
       tail += CGAL::abs(f[i]);

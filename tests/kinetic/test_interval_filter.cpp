@@ -390,4 +390,7 @@ TEST_CASE("the dominance test reads the lower end of a wide constant term", "[ki
   f[0] = Interval(0.96, 1.1);
   REQUIRE(bernstein_sign_subdivided(f, 0.0, 0) == 1);
   REQUIRE(bernstein_sign_subdivided(Interval(-1) * f, 0.0, 0) == -1);
+  // Left of 0 the bound |u^i - lo^i| <= 1 fails: 1/2 - u is 3/2 at -1, more than its tail 1, and
+  // vanishes at 1/2, so no sign may be claimed on [-1, 1].
+  REQUIRE(bernstein_sign_subdivided(poly({0.5, -1}), -1.0, 4) == 0);
 }
