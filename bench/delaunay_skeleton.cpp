@@ -141,10 +141,17 @@ struct Space3 {
     for (int j = 0; j < 4; ++j)
       if (j != i && j != reflex)
         (k < 0 ? k : l) = j;
+    // The cells around the edge, checked as we go: index() on a cell without the vertex is undefined.
+    const auto indices = [&](Cell x, int& a, int& b) {
+      if (!x->has_vertex(c->vertex(k), a) || !x->has_vertex(c->vertex(l), b))
+        throw Degenerate{"a triangulation no longer consistent around a reflex edge"};
+    };
     const Cell c1 = c->neighbor(Tds::next_around_edge(k, l));
-    const int k1 = c1->index(c->vertex(k)), l1 = c1->index(c->vertex(l));
+    int k1 = -1, l1 = -1, k2 = -1, l2 = -1;
+    indices(c1, k1, l1);
     const Cell c2 = c1->neighbor(Tds::next_around_edge(k1, l1));
-    if (c2->neighbor(Tds::next_around_edge(c2->index(c->vertex(k)), c2->index(c->vertex(l)))) != c)
+    indices(c2, k2, l2);
+    if (c2->neighbor(Tds::next_around_edge(k2, l2)) != c)
       throw Degenerate{"a failed facet whose reflex edge has more than three cells"};
     c->stamp = 0;
     dt.tds().flip_flippable(c, k, l);
