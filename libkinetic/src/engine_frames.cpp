@@ -42,10 +42,9 @@ void Engine::reinstall_all() {
     if (f.cert < 0)
       continue;
     f.cert = -1;
-    Interval at_frame(0); // undecided unless the install's enclosure says otherwise
-    install_radius(s, f, &at_frame);
+    install_radius(s, f);
     // R = rho at the frame: a touch there, whatever the sign just after (Engine::resolve_touches).
-    if (!(at_frame.inf() > 0 || at_frame.sup() < 0) && radius_vanishes_now(s))
+    if (radius_vanishes_now(s))
       pending_touch.emplace_back(f.cert, certs[static_cast<std::size_t>(f.cert)].version);
   }
 }

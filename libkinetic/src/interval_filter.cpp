@@ -176,26 +176,23 @@ int bernstein_sign(const IntervalPoly& f, double lo, double hi) {
 }
 
 int bernstein_sign_subdivided(const IntervalPoly& f, double lo, int depth) {
+  const Interval value_lo = value_at_point(f, lo);
+  const int at_lo = certified_sign(value_lo);
   // Dominance first: for u and lo in [0, 1], |f(u) - f(lo)| <= sum_{i >= 1} |f_i| |u^i - lo^i| <=
   // sum_{i >= 1} |f_i|, so f keeps the sign of f(lo) on [lo, 1] when |f(lo)| exceeds that sum. A few
-  // additions settle most certificates of a frame (lo = 0: f(lo) is f_0), where cells move little
-  // compared with their spacing, before any Bernstein coefficient is computed.
-  // (lo < 0, which an enclosure of a time just after a slab start can have, is left to Bernstein:
-  // |u^i - lo^i| is no longer bounded by 1 there.)
-  if (const int n = degree_of(f); n > 0 && lo >= 0.0) {
+  // additions settle most certificates of a frame, where cells move little compared with their
+  // spacing, before any Bernstein coefficient is computed. (lo < 0, which an enclosure of a time just
+  // after a slab start can have, is left to Bernstein: |u^i - lo^i| is no longer bounded by 1 there.)
+  if (at_lo != 0 && lo >= 0.0) {
     Interval tail(0);
-    for (int i = 1; i <= n; ++i)
+    for (int i = 1, n = degree_of(f); i <= n; ++i)
       tail += CGAL::abs(f[i]);
-    const Interval at = lo == 0.0 ? f[0] : horner(f, n, Interval(lo));
-    if (at.inf() > tail.sup())
-      return 1;
-    if (at.sup() < -tail.sup())
-      return -1;
+    if (value_lo.inf() > tail.sup() || value_lo.sup() < -tail.sup())
+      return at_lo;
   }
   // A definite sign change proves a root in [lo, 1], so no subdivision can settle f: certificates
   // that fail inside the slab leave here after two evaluations instead of 2^depth pieces.
-  const int at_lo = interval_sign(f, lo, lo), at_hi = interval_sign(f, 1.0, 1.0);
-  if (at_lo * at_hi < 0)
+  if (at_lo * interval_sign(f, 1.0, 1.0) < 0)
     return 0;
   // The first Bernstein coefficient of every piece starting at lo is f(lo), computed by the same
   // Horner steps as at_lo (the Taylor shift's constant term; the doubles' bound is only wider): when
@@ -282,6 +279,8 @@ Interval value_at_point(const IntervalPoly& f, double x) {
   const int n = degree_of(f);
   if (n < 0)
     return Interval(0);
+  if (x == 0.0) // a slab start: the constant term, exactly as enclosed
+    return f[0];
   if (const auto fast = value_from_doubles(f, n, x); fast && certified_sign(*fast) != 0)
     return *fast;
   return horner(f, n, Interval(x));
