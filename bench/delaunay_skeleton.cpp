@@ -6,12 +6,17 @@
 #include "medusa/kinetic/moving_point.h"
 #include "medusa/kinetic/root_isolation.h"
 
+#include <CGAL/Alpha_shape_2.h>
+#include <CGAL/Alpha_shape_face_base_2.h>
+#include <CGAL/Alpha_shape_vertex_base_2.h>
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
+#include <CGAL/Gmpz.h>
 #include <CGAL/Random.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Triangulation_face_base_2.h>
@@ -31,6 +36,7 @@ namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Clock = std::chrono::steady_clock;
+using kinetic::Interval;
 using kinetic::IntervalPoly;
 using kinetic::MovingPoint;
 using Exact = CGAL::Simple_cartesian<CGAL::Gmpq>;
@@ -53,12 +59,26 @@ struct StampedCell : CGAL::Delaunay_triangulation_cell_base_3<
   std::uint32_t stamp = 0;
 };
 
+// The planar alpha layer's state of an edge (MATH.md 4.1, 4.4): short, in the alpha complex, and its
+// radius certificate's serial (0, or one of an earlier slab: none, the edge is not on the
+// frontier). Both faces of an edge hold
+// the same copy.
+struct EdgeState {
+  std::uint32_t serial = 0;
+  bool is_short = false, in_k = false;
+};
+
 template <class Tds = void>
 struct StampedFace : CGAL::Triangulation_face_base_2<K, CGAL::Triangulation_ds_face_base_2<Tds>> {
   using Base = CGAL::Triangulation_face_base_2<K, CGAL::Triangulation_ds_face_base_2<Tds>>;
   template <class Tds2> struct Rebind_TDS { using Other = StampedFace<Tds2>; };
   using Base::Base;
   std::uint32_t stamp = 0;
+  // The alpha layer: the triangle's radius certificate (0: none) and shortness (a triangle is in the
+  // alpha complex iff it is short, MATH.md 4.1), and its edges', edge i opposite vertex i.
+  std::uint32_t serial = 0;
+  bool is_short = false;
+  std::array<EdgeState, 3> edge{};
 };
 
 // The dimension-specific parts: CGAL's types, the certificate of a facet, the flip of a failed facet
@@ -236,18 +256,25 @@ template <class Space> class Skeleton {
   using Cell = typename Space::Cell;
   using Vertex = typename Dt::Vertex_handle;
 
+  // What a queue entry certifies: a facet's in-sphere, or (the planar alpha layer) an edge's or a
+  // triangle's radius.
+  enum class Kind : std::uint8_t { delaunay, edge_radius, triangle_radius };
+
   struct Entry {
     double lo, hi; // the failure time lies in (lo, hi)
     Cell cell;
-    std::uint32_t stamp, neighbour_stamp;
+    std::uint32_t stamp, neighbour_stamp; // a radius entry: its certificate's serial in `stamp`
     int facet;
+    Kind kind = Kind::delaunay;
+    Vertex a{}, b{}; // an edge radius entry: the edge's ends (a flip may move the edge to other faces)
   };
   struct LaterFirst {
     bool operator()(const Entry& a, const Entry& b) const { return a.lo > b.lo; }
   };
 
 public:
-  explicit Skeleton(const kinetic::Trajectories& t) : t_(t), n_(static_cast<int>(t.cells.size())) {
+  Skeleton(const kinetic::Trajectories& t, const kinetic::SquaredRadius* rho2)
+      : t_(t), n_(static_cast<int>(t.cells.size())), alpha_(rho2 != nullptr && Space::dim == 2) {
     std::int64_t lo = 0, hi = 0;
     for (const auto& c : t.cells)
       for (const auto& p : c.positions)
@@ -259,6 +286,12 @@ public:
     motion_.resize(static_cast<std::size_t>(n_) + corners_.size());
     for (std::size_t i = 0; i < corners_.size(); ++i)
       motion_[static_cast<std::size_t>(n_) + i].a = corners_[i];
+    if (alpha_) {
+      rho2_ = *rho2;
+      P_ = Interval(CGAL::to_interval(CGAL::Gmpz(rho2->num.get_mpz_t())));
+      Q_ = Interval(CGAL::to_interval(CGAL::Gmpz(rho2->den.get_mpz_t())));
+    }
+    run_.alpha = alpha_;
   }
 
   SkeletonRun run() {
@@ -273,6 +306,12 @@ public:
     r.verified = Space::cells(dt_) == Space::cells(triangulate(t_.frames() - 1));
     if (!r.verified)
       r.verdict = "its final triangulation differs from CGAL's static one";
+    if constexpr (Space::dim == 2)
+      if (alpha_ && r.verified) {
+        r.alpha_verified = alpha_complex() == static_alpha_complex(t_.frames() - 1);
+        if (!r.alpha_verified)
+          r.verdict = "its final alpha complex differs from CGAL's exact Alpha_shape_2";
+      }
     return r;
   }
 
@@ -283,11 +322,20 @@ private:
     valid_sign_ = valid_sign();
     for (auto c = Space::cells_begin(dt_); c != Space::cells_end(dt_); ++c)
       c->stamp = ++next_stamp_;
+    if constexpr (Space::dim == 2)
+      if (alpha_)
+        alpha_initialise(); // with the triangulation at frame 0: not part of any slab
     for (std::size_t k = 0; k + 1 < t_.frames(); ++k) {
       const auto start = Clock::now();
       set_motion(k);
       heap_.clear();
-      Space::for_each_facet(dt_, [&](Cell c, int i) { install(c, i, 0.0); });
+      {
+        CGAL::Protect_FPU_rounding<true> guard;
+        Space::for_each_facet(dt_, [&](Cell c, int i) { install(c, i, 0.0); });
+        if constexpr (Space::dim == 2)
+          if (alpha_)
+            alpha_frame();
+      }
       const auto rebuilt = Clock::now();
       run_slab();
       r.rebuild_seconds += std::chrono::duration<double>(rebuilt - start).count();
@@ -347,33 +395,53 @@ private:
     return sign < 0 ? -1 : 1;
   }
 
+  // The sign of f over [start, 1] or its first change there: the engine's filters in its order, the
+  // dominance and depth-0 Bernstein test (bernstein_sign_subdivided) before the Bernstein-Descartes
+  // search.
+  static kinetic::FirstSignChange settle(const IntervalPoly& f, double start) {
+    const int sign = kinetic::bernstein_sign_subdivided(f, start, 0);
+    if (sign != 0) {
+      kinetic::FirstSignChange none;
+      none.status = kinetic::FirstSignChange::Status::none;
+      none.sign = sign;
+      return none;
+    }
+    return kinetic::first_sign_change(f, start, 12);
+  }
+
+  // Narrowed to 2^-24 when scheduled, as the engine does: most pairs of queued times then separate
+  // without refinement. (Narrowing lazily, when an entry reaches the top, saves nothing: a time
+  // reaches the top by the left end of its isolating piece, long before it would fire.)
+  void schedule(const IntervalPoly& f, const kinetic::FirstSignChange& next, Entry e) {
+    e.lo = next.lo;
+    e.hi = next.hi;
+    kinetic::narrow_root(f, e.lo, e.hi, next.sign, 0x1p-24);
+    push(e);
+  }
+
   // The certificate of facet i of c, valid at `start`: settled when it keeps its sign on [start, 1],
-  // or its first failure isolated and queued. `known`: its polynomial, when the caller has it.
+  // or its first failure isolated and queued. `known`: its polynomial, when the caller has it. The
+  // certificate arithmetic runs rounding upwards: the caller sets the mode once for a frame or an
+  // event, as an engine would (CGAL's predicates in flip() need it to nearest).
   void install(Cell c, int i, double start, const IntervalPoly* known = nullptr) {
     const Cell d = c->neighbor(i);
     if (dt_.is_infinite(c) || dt_.is_infinite(d))
       return; // a facet of the far simplex's hull: it never fails
-    CGAL::Protect_FPU_rounding<true> guard;
     ++run_.certificates;
     IntervalPoly f = known ? *known : certificate(c, i, false);
-    kinetic::FirstSignChange next = kinetic::first_sign_change(f, start, 12);
+    kinetic::FirstSignChange next = settle(f, start);
     if (next.status == kinetic::FirstSignChange::Status::undecided && !known) {
       ++run_.tight;
       f = certificate(c, i, true);
-      next = kinetic::first_sign_change(f, start, 12);
+      next = settle(f, start);
     }
     if (next.status == kinetic::FirstSignChange::Status::undecided)
       throw Degenerate{"a certificate doubles cannot settle (vanishing at its start, or a multiple root)"};
     if (next.sign < 0) {
       push({start, start, c, c->stamp, d->stamp, i});
     } else if (next.status == kinetic::FirstSignChange::Status::root) {
-      // Narrowed to 2^-24 when scheduled, as the engine does: most pairs of queued times then
-      // separate without refinement. (Narrowing lazily, when an entry reaches the top, saves nothing:
-      // a time reaches the top by the left end of its isolating piece, long before it would fire.)
       ++run_.isolated;
-      double lo = next.lo, hi = next.hi;
-      kinetic::narrow_root(f, lo, hi, next.sign, 0x1p-24);
-      push({lo, hi, c, c->stamp, d->stamp, i});
+      schedule(f, next, {0, 0, c, c->stamp, d->stamp, i});
     }
   }
 
@@ -403,6 +471,12 @@ private:
     std::array<Cell, 3> made{};
     while (!heap_.empty()) {
       const Entry e = pop();
+      if constexpr (Space::dim == 2)
+        if (e.kind != Kind::delaunay) {
+          CGAL::Protect_FPU_rounding<true> guard;
+          radius_event(e);
+          continue;
+        }
       if (!current(e)) {
         ++run_.stale;
         continue;
@@ -418,11 +492,15 @@ private:
       }
       // Orientations just after the root: at the right end of its isolating interval.
       const double u = e.hi;
+      if constexpr (Space::dim == 2)
+        if (alpha_)
+          before_flip(e.cell, e.facet);
       bool two_three = true;
       const int count = Space::flip(
           dt_, e.cell, e.facet, [&](Vertex v) { return Space::at(pt(v), u); },
           [&](Vertex v) { return exact_at(pt(v), u); }, made, two_three);
       ++(two_three ? run_.flips23 : run_.flips32);
+      CGAL::Protect_FPU_rounding<true> guard;
       for (int m = 0; m < count; ++m)
         made[static_cast<std::size_t>(m)]->stamp = ++next_stamp_;
       for (int m = 0; m < count; ++m)
@@ -434,18 +512,365 @@ private:
             continue;
           install(c, j, u, inner ? &after : nullptr);
         }
+      if constexpr (Space::dim == 2)
+        if (alpha_)
+          after_flip(made[0], made[1], u);
     }
   }
 
+  // ---- The planar alpha layer (MATH.md 4): the fixed-radius alpha complex on the frontier rule of
+  // 4.4, its radius certificates in the faces, membership through flips (Proposition 4.5 in the
+  // plane: the new simplices of a 2-2 flip are in K iff its triangles are short) and radius events
+  // (Lemma 4.1, Gabriel status tested at the event, never tracked: Lemma 4.3). General position
+  // only, as the rest of the skeleton: a radius certificate that vanishes at an event or a frame
+  // stops it. Simplices with a far corner are left out: the corners are farther than 2 rho from
+  // every cell, so they change no simplex of the cells' alpha complex. All of it runs rounding
+  // upwards (the callers' guards).
+
+  bool real(Vertex v) const { return !dt_.is_infinite(v) && v->info() < n_; }
+  bool real_face(Cell f) const { return real(f->vertex(0)) && real(f->vertex(1)) && real(f->vertex(2)); }
+  bool real_edge(Cell f, int i) const { return real(f->vertex(Dt::cw(i))) && real(f->vertex(Dt::ccw(i))); }
+  bool short_face(Cell f) const { return f->is_short; } // false on faces that are not real
+
+  void set_edge(Cell f, int i, const EdgeState& s) {
+    f->edge[static_cast<std::size_t>(i)] = s;
+    const Cell g = f->neighbor(i);
+    g->edge[static_cast<std::size_t>(dt_.tds().mirror_index(f, i))] = s;
+  }
+
+  // The radius polynomial of edge i of f, or of f's triangle (i < 0): negative iff short.
+  IntervalPoly radius_poly(Cell f, int i, bool tight) const {
+    if (i >= 0) {
+      const MovingPoint &p = pt(f->vertex(Dt::cw(i))), &q = pt(f->vertex(Dt::ccw(i)));
+      return tight ? kinetic::certificate::edge_radius<Interval>(p, q, P_, Q_)
+                   : kinetic::edge_radius_enclosure(p, q, P_, Q_);
+    }
+    const MovingPoint &a = pt(f->vertex(0)), &b = pt(f->vertex(1)), &c = pt(f->vertex(2));
+    return tight ? kinetic::certificate::triangle_radius<Interval>(a, b, c, P_, Q_)
+                 : kinetic::triangle_radius_enclosure(a, b, c, P_, Q_);
+  }
+
+  // Shortness just after u (the event's right end): the sign of the radius polynomial there.
+  bool short_at(Cell f, int i, double u, IntervalPoly& poly) const {
+    poly = radius_poly(f, i, false);
+    int s = kinetic::certified_sign(kinetic::value_at_point(poly, u));
+    if (s == 0) {
+      poly = radius_poly(f, i, true);
+      s = kinetic::certified_sign(kinetic::value_at_point(poly, u));
+    }
+    if (s == 0)
+      throw Degenerate{"a radius certificate vanishing at an event"};
+    return s < 0;
+  }
+
+  // Puts a frontier simplex's radius certificate in place from `start`, with a new serial (any queued
+  // entry of an earlier certificate of it goes stale). `known`: its polynomial, when the caller has it.
+  void install_radius(Cell f, int i, double start, const IntervalPoly* known = nullptr) {
+    ++run_.radius_certificates;
+    IntervalPoly poly = known ? *known : radius_poly(f, i, false);
+    kinetic::FirstSignChange next = settle(poly, start);
+    if (next.status == kinetic::FirstSignChange::Status::undecided) {
+      poly = radius_poly(f, i, true);
+      next = settle(poly, start);
+    }
+    if (next.status == kinetic::FirstSignChange::Status::undecided)
+      throw Degenerate{"a radius certificate doubles cannot settle"};
+    const std::uint32_t serial = ++next_serial_;
+    bool held_short = false;
+    if (i >= 0) {
+      EdgeState s = f->edge[static_cast<std::size_t>(i)];
+      held_short = s.is_short;
+      s.serial = serial;
+      set_edge(f, i, s);
+    } else {
+      held_short = f->is_short;
+      f->serial = serial;
+    }
+    Entry e{start, start, f, serial, 0, i, i >= 0 ? Kind::edge_radius : Kind::triangle_radius};
+    if (i >= 0) {
+      e.a = f->vertex(Dt::cw(i));
+      e.b = f->vertex(Dt::ccw(i));
+    }
+    if ((next.sign < 0) != held_short) {
+      // It has changed since the state was set: a crossing within the isolating interval of the
+      // event that made it a frontier simplex (the skeleton evaluates at that interval's right end).
+      // Taken now, as the engine takes a certificate invalid at its creation.
+      push(e);
+    } else if (next.status == kinetic::FirstSignChange::Status::root) {
+      ++run_.radius_isolated;
+      schedule(poly, next, e);
+    }
+  }
+
+  // Serials up to epoch_ are of earlier slabs: their certificates ended at the frame, so a frame
+  // need not clear them.
+  bool certified(std::uint32_t serial) const { return serial > epoch_; }
+
+  void drop_edge_certificate(Cell f, int i) {
+    EdgeState s = f->edge[static_cast<std::size_t>(i)];
+    if (!certified(s.serial))
+      return;
+    s.serial = 0;
+    set_edge(f, i, s);
+  }
+
+  // MATH.md 4.4: an edge is on the frontier when long, or short with no short triangle; a triangle
+  // when short, or long with three short edges.
+  bool edge_on_frontier(Cell f, int i) const {
+    return real_edge(f, i) && (!f->edge[static_cast<std::size_t>(i)].is_short ||
+                               (!short_face(f) && !short_face(f->neighbor(i))));
+  }
+  bool face_on_frontier(Cell f) const {
+    return real_face(f) &&
+           (f->is_short || (f->edge[0].is_short && f->edge[1].is_short && f->edge[2].is_short));
+  }
+
+  // Gabriel at u (Lemma 4.2): neither apex of edge i of f strictly inside the edge's diametral disc.
+  bool gabriel_at(Cell f, int i, double u) const {
+    const kinetic::certificate::PointAtTime p{&pt(f->vertex(Dt::cw(i))), Interval(u)},
+        q{&pt(f->vertex(Dt::ccw(i))), Interval(u)};
+    for (const Vertex x : {f->vertex(i), dt_.tds().mirror_vertex(f, i)}) {
+      if (dt_.is_infinite(x))
+        continue;
+      const int s = kinetic::certified_sign(kinetic::certificate::gabriel_edge<Interval>(
+          p, q, kinetic::certificate::PointAtTime{&pt(x), Interval(u)})[0]);
+      if (s == 0)
+        throw Degenerate{"a point on an edge's diametral circle at an event"};
+      if (s < 0)
+        return false;
+    }
+    return true;
+  }
+
+  // Shortness and membership at frame 0, from the cells' positions there.
+  void alpha_initialise() {
+    CGAL::Protect_FPU_rounding<true> guard;
+    IntervalPoly poly;
+    for (auto f = dt_.tds().faces_begin(); f != dt_.tds().faces_end(); ++f) {
+      f->serial = 0;
+      f->is_short = real_face(f) && short_at(f, -1, 0.0, poly);
+    }
+    for (auto e = dt_.tds().edges_begin(); e != dt_.tds().edges_end(); ++e) {
+      const Cell f = e->first;
+      const int i = e->second;
+      EdgeState s;
+      if (real_edge(f, i)) {
+        s.is_short = short_at(f, i, 0.0, poly);
+        s.in_k = short_face(f) || short_face(f->neighbor(i)) || (s.is_short && gabriel_at(f, i, 0.0));
+      }
+      set_edge(f, i, s);
+    }
+  }
+
+  // Every frontier simplex's radius certificate, at a frame (MATH.md 2.3).
+  void alpha_frame() {
+    epoch_ = next_serial_;
+    for (auto f = dt_.tds().faces_begin(); f != dt_.tds().faces_end(); ++f)
+      if (face_on_frontier(f))
+        install_radius(f, -1, 0.0);
+    for (auto e = dt_.tds().edges_begin(); e != dt_.tds().edges_end(); ++e)
+      if (edge_on_frontier(e->first, e->second))
+        install_radius(e->first, e->second, 0.0);
+  }
+
+  // A frontier simplex changes shortness at the entry's time (MATH.md 4.4 update rules, 4.1).
+  void radius_event(const Entry& e) {
+    const double u = e.hi;
+    if (e.kind == Kind::triangle_radius) {
+      const Cell f = e.cell;
+      if (f->serial != e.stamp) {
+        ++run_.stale;
+        return;
+      }
+      ++run_.radius_events;
+      ++run_.alpha_changes; // the triangle enters or leaves K
+      f->is_short = !f->is_short;
+      for (int j = 0; j < 3; ++j) {
+        EdgeState s = f->edge[static_cast<std::size_t>(j)];
+        if (f->is_short) { // its edges have a short coface now: off the frontier, in K
+          s.serial = 0;
+          run_.alpha_changes += !s.in_k;
+          s.in_k = true;
+          set_edge(f, j, s);
+        } else { // its edges, all short, may be maximal short again, and may leave K
+          const bool other = short_face(f->neighbor(j));
+          const bool in_k = other || gabriel_at(f, j, u);
+          run_.alpha_changes += in_k != s.in_k;
+          s.in_k = in_k;
+          set_edge(f, j, s);
+          if (!other)
+            install_radius(f, j, u);
+        }
+      }
+      install_radius(f, -1, u); // it stays on the frontier
+      return;
+    }
+    Cell f;
+    int i = 0;
+    if (!dt_.is_edge(e.a, e.b, f, i) || f->edge[static_cast<std::size_t>(i)].serial != e.stamp) {
+      ++run_.stale;
+      return;
+    }
+    ++run_.radius_events;
+    EdgeState s = f->edge[static_cast<std::size_t>(i)];
+    s.is_short = !s.is_short;
+    // Long before, so no short triangle: in K now iff Gabriel; leaving K when it turns long.
+    const bool in_k = s.is_short && gabriel_at(f, i, u);
+    run_.alpha_changes += in_k != s.in_k;
+    s.in_k = in_k;
+    set_edge(f, i, s);
+    for (const Cell h : {f, f->neighbor(i)}) {
+      if (s.is_short && !certified(h->serial) && face_on_frontier(h))
+        install_radius(h, -1, u); // three short edges: the long triangle joins the frontier
+      else if (!s.is_short)
+        h->serial = 0; // a long edge: its triangles have a long face, off the frontier
+    }
+    install_radius(f, i, u); // it stays on the frontier
+  }
+
+  // The flip of edge i of c: the simplices it removes leave K; the state of the four edges of the
+  // quadrilateral is kept, to be put back in the rewritten faces.
+  void before_flip(Cell c, int i) {
+    const Cell d = c->neighbor(i);
+    run_.alpha_changes += c->edge[static_cast<std::size_t>(i)].in_k + short_face(c) + short_face(d);
+    const int di = dt_.tds().mirror_index(c, i);
+    int m = 0;
+    for (const auto& [f, j] : {std::pair{c, Dt::cw(i)}, std::pair{c, Dt::ccw(i)}, std::pair{d, Dt::cw(di)},
+                               std::pair{d, Dt::ccw(di)}})
+      quad_[static_cast<std::size_t>(m++)] = {f->vertex(Dt::cw(j)), f->vertex(Dt::ccw(j)),
+                                              f->edge[static_cast<std::size_t>(j)]};
+  }
+
+  void after_flip(Cell c, Cell d, double u) {
+    int new_edge = -1;
+    for (int j = 0; j < 3; ++j) {
+      const Vertex a = c->vertex(Dt::cw(j)), b = c->vertex(Dt::ccw(j));
+      bool kept = false;
+      for (const auto& q : quad_)
+        if ((q.a == a && q.b == b) || (q.a == b && q.b == a)) {
+          c->edge[static_cast<std::size_t>(j)] = q.state;
+          kept = true;
+        }
+      if (!kept)
+        new_edge = j;
+    }
+    for (int j = 0; j < 3; ++j) {
+      const Vertex a = d->vertex(Dt::cw(j)), b = d->vertex(Dt::ccw(j));
+      for (const auto& q : quad_)
+        if ((q.a == a && q.b == b) || (q.a == b && q.b == a))
+          d->edge[static_cast<std::size_t>(j)] = q.state;
+    }
+    // The new triangles and the new edge: shortness just after the flip; in K iff the triangles are
+    // short (Proposition 4.5 in the plane).
+    std::array<IntervalPoly, 3> poly;
+    for (const Cell h : {c, d}) {
+      h->serial = 0;
+      h->is_short = real_face(h) && short_at(h, -1, u, poly[h == c ? 0 : 1]);
+      run_.alpha_changes += h->is_short;
+    }
+    EdgeState s;
+    if (real_edge(c, new_edge)) {
+      s.is_short = short_at(c, new_edge, u, poly[2]);
+      s.in_k = short_face(c) || short_face(d);
+      run_.alpha_changes += s.in_k;
+    }
+    set_edge(c, new_edge, s);
+    // The frontier over the new simplices and the quadrilateral's edges (MATH.md 4.4, after a change
+    // of Del).
+    for (const Cell h : {c, d})
+      if (face_on_frontier(h))
+        install_radius(h, -1, u, &poly[h == c ? 0 : 1]);
+    if (edge_on_frontier(c, new_edge))
+      install_radius(c, new_edge, u, &poly[2]);
+    for (const Cell h : {c, d})
+      for (int j = 0; j < 3; ++j) {
+        if (h == c && j == new_edge)
+          continue;
+        if (h == d && h->neighbor(j) == c)
+          continue;
+        const bool on = edge_on_frontier(h, j), has = certified(h->edge[static_cast<std::size_t>(j)].serial);
+        if (on && !has)
+          install_radius(h, j, u);
+        else if (!on && has)
+          drop_edge_certificate(h, j);
+      }
+  }
+
+  using Simplices = std::pair<std::vector<std::array<int, 3>>, std::vector<std::array<int, 2>>>;
+
+  // The alpha complex held at the end: its triangles and edges as sorted cell indices.
+  Simplices alpha_complex() const {
+    Simplices out;
+    for (auto f = dt_.finite_faces_begin(); f != dt_.finite_faces_end(); ++f)
+      if (f->is_short) {
+        std::array<int, 3> v{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+        std::sort(v.begin(), v.end());
+        out.first.push_back(v);
+      }
+    for (auto e = dt_.finite_edges_begin(); e != dt_.finite_edges_end(); ++e)
+      if (e->first->edge[static_cast<std::size_t>(e->second)].in_k) {
+        std::array<int, 2> v{e->first->vertex(Dt::cw(e->second))->info(),
+                             e->first->vertex(Dt::ccw(e->second))->info()};
+        std::sort(v.begin(), v.end());
+        out.second.push_back(v);
+      }
+    std::sort(out.first.begin(), out.first.end());
+    std::sort(out.second.begin(), out.second.end());
+    return out;
+  }
+
+  // The oracle: CGAL's Alpha_shape_2 on the exact kernel, of the cells' positions at frame k.
+  Simplices static_alpha_complex(std::size_t k) const {
+    using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+    using Vb = CGAL::Alpha_shape_vertex_base_2<EK, CGAL::Triangulation_vertex_base_with_info_2<int, EK>>;
+    using Fb = CGAL::Alpha_shape_face_base_2<EK>;
+    using Edt = CGAL::Delaunay_triangulation_2<EK, CGAL::Triangulation_data_structure_2<Vb, Fb>>;
+    using Shape = CGAL::Alpha_shape_2<Edt>;
+    std::vector<std::pair<EK::Point_2, int>> pts;
+    for (int i = 0; i < n_; ++i) {
+      const auto& p = t_.cells[static_cast<std::size_t>(i)].at(k);
+      pts.emplace_back(EK::Point_2(double(p[0]), double(p[1])), i);
+    }
+    Edt dt(pts.begin(), pts.end());
+    const EK::FT alpha(mpq_class(rho2_.num, rho2_.den)); // exact: Epeck's FT is over mpq_class
+    Shape shape(dt, alpha, Shape::GENERAL);
+    Simplices out;
+    for (auto f = shape.finite_faces_begin(); f != shape.finite_faces_end(); ++f)
+      if (shape.classify(f) != Shape::EXTERIOR) {
+        std::array<int, 3> v{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+        std::sort(v.begin(), v.end());
+        out.first.push_back(v);
+      }
+    for (auto e = shape.finite_edges_begin(); e != shape.finite_edges_end(); ++e)
+      if (shape.classify(*e) != Shape::EXTERIOR) {
+        std::array<int, 2> v{e->first->vertex(Shape::cw(e->second))->info(),
+                             e->first->vertex(Shape::ccw(e->second))->info()};
+        std::sort(v.begin(), v.end());
+        out.second.push_back(v);
+      }
+    std::sort(out.first.begin(), out.first.end());
+    std::sort(out.second.begin(), out.second.end());
+    return out;
+  }
+
+  struct QuadEdge {
+    Vertex a, b;
+    EdgeState state;
+  };
+
   const kinetic::Trajectories& t_;
   const int n_;
+  const bool alpha_; // the planar alpha layer runs
+  kinetic::SquaredRadius rho2_;
+  Interval P_, Q_;
   std::vector<kinetic::GridPoint> corners_;
   std::vector<MovingPoint> motion_;
   Dt dt_;
   int valid_sign_ = 1;
   std::vector<Entry> heap_;
-  std::uint32_t next_stamp_ = 0;
-  SkeletonRun run_; // counted as the run goes
+  std::uint32_t next_stamp_ = 0, next_serial_ = 0, epoch_ = 0;
+  std::array<QuadEdge, 4> quad_{}; // the edges of the quadrilateral of the flip in progress
+  SkeletonRun run_;                // counted as the run goes
 };
 
 } // namespace
@@ -463,8 +888,8 @@ bool skeleton_applies(const kinetic::Trajectories& t, std::string& why) {
   return true;
 }
 
-SkeletonRun run_delaunay_skeleton(const kinetic::Trajectories& t) {
-  return t.dimension == 2 ? Skeleton<Space2>(t).run() : Skeleton<Space3>(t).run();
+SkeletonRun run_delaunay_skeleton(const kinetic::Trajectories& t, const kinetic::SquaredRadius* rho2) {
+  return t.dimension == 2 ? Skeleton<Space2>(t, rho2).run() : Skeleton<Space3>(t, rho2).run();
 }
 
 } // namespace medusa::bench

@@ -10,20 +10,29 @@
 // names a cell, a facet and the stamps of the two cells, and a flip restamps the cells it rewrites,
 // so no table is ever looked up.
 //
+// In the plane, given the radius, it maintains the fixed-radius alpha complex too (MATH.md 4): each
+// frontier simplex's radius certificate (4.4) in the faces, rebuilt at every frame and settled or
+// queued as the in-circle ones; shortness and membership through 2-2 flips (Proposition 4.5: the
+// new simplices are in K iff the new triangles are short) and radius events (Lemma 4.1, Gabriel
+// status tested at the event: 4.2); its final alpha complex must equal CGAL's exact Alpha_shape_2.
+// A radius certificate found already failed when it is created (a crossing inside the isolating
+// interval of the event that created it) is taken at once, as the engine takes one.
+//
 // What it leaves out, so that its time is a lower bound for any engine doing the engine's job with
-// this arithmetic: the alpha complex (no radius certificates, no membership); degeneracies (it stops
+// this arithmetic: in 3D, the alpha complex (no radius certificates, no membership); degeneracies (it stops
 // at the first certificate doubles cannot settle or the first failure that is not a plain flip, so a
 // CC3D run's lattice start stops it at once); exact event order (failure times are ordered on the
 // left ends of their enclosures, narrowed to 2^-24, and a flip and its new certificates are
 // evaluated at the right end: the engine's tightening of each event time to the last bit is left
 // out too, and two failures closer than 2^-24 may be taken in the wrong order, which can also stop
 // it); the hull (four far static points enclose the cells, so the hull never changes); insertions and
-// deletions. It runs in 3D (2-3 and 3-2 flips on Triangulation_data_structure_3) and in the plane
-// (2-2 flips on Triangulation_data_structure_2, the in-circle certificate), on runs whose cells are
-// present at every frame, and checks at the end that its triangulation equals CGAL's static one: only
-// a run that ends equal counts.
+// deletions; the observer stream (the alpha layer counts membership changes, reports none). It runs in 3D
+// (2-3 and 3-2 flips on Triangulation_data_structure_3) and in the plane (2-2 flips on
+// Triangulation_data_structure_2, the in-circle certificate), on runs whose cells are present at every frame,
+// and checks at the end that its triangulation equals CGAL's static one: only a run that ends equal counts.
 #pragma once
 
+#include "medusa/kinetic/kinetic_alpha_complex.h"
 #include "medusa/kinetic/trajectories.h"
 
 #include <cstddef>
@@ -43,11 +52,20 @@ struct SkeletonRun {
   bool completed = false; // false: stopped at a degenerate configuration (verdict says which)
   bool verified = false;  // the final triangulation equals CGAL's static one
   std::string verdict;    // why not, when not
+  // The planar alpha layer (run with a radius in 2D): the fixed-radius alpha complex on top.
+  bool alpha = false;
+  std::size_t radius_certificates = 0; // built, at frames and after events
+  std::size_t radius_isolated = 0;     // of them, with a failure time isolated in the slab
+  std::size_t radius_events = 0;       // frontier simplices turning short or long
+  std::size_t alpha_changes = 0;       // simplices entering or leaving the alpha complex
+  bool alpha_verified = false;         // the final alpha complex equals CGAL's exact Alpha_shape_2
 };
 
 // False (and `why`) when the run is not one the skeleton handles: every cell at every frame.
 bool skeleton_applies(const kinetic::Trajectories& t, std::string& why);
 
-SkeletonRun run_delaunay_skeleton(const kinetic::Trajectories& t);
+// With rho2 in the plane, the skeleton maintains the fixed-radius alpha complex too (MATH.md 4).
+SkeletonRun run_delaunay_skeleton(const kinetic::Trajectories& t,
+                                  const kinetic::SquaredRadius* rho2 = nullptr);
 
 } // namespace medusa::bench

@@ -4,7 +4,8 @@
 // process. Prints per-frame times, their ratio, events per second, the certificate filter hit rate,
 // the certificate arithmetic floor (what the run's certificates cost before any event processing),
 // peak memory, and a lower bound for any engine of libkinetic's design: the Delaunay skeleton
-// (delaunay_skeleton.h) on the same frames, plus the arithmetic of the run's radius certificates.
+// (delaunay_skeleton.h) on the same frames, plus the arithmetic of the run's radius certificates; in
+// the plane, the skeleton with the alpha complex maintained as well, measured.
 //
 // Usage: kinetic_bench [--csv cells.csv.gz|run-folder --radius R] [--random N --frames F --step S]
 //                     [--turnover F] [--dim 2|3]
@@ -357,6 +358,31 @@ Trajectories random_walk_2d(std::uint64_t seed, int n, int frames, double step_s
   return t;
 }
 
+// The skeleton with its planar alpha layer (delaunay_skeleton.h): the alpha complex measured, not
+// estimated from the radius certificates' arithmetic as skeleton_case does.
+void alpha_skeleton_case(const Trajectories& t, const std::vector<double>& static_at,
+                         const SquaredRadius& rho2) {
+  const medusa::bench::SkeletonRun r = medusa::bench::run_delaunay_skeleton(t, &rho2);
+  if (!r.completed || !r.alpha_verified) {
+    std::printf("alpha skeleton: %s\n", r.verdict.c_str());
+    return;
+  }
+  double total = 0, static_total = 0;
+  for (double s : r.slab_seconds)
+    total += s;
+  for (std::size_t k = 1; k < t.frames(); ++k)
+    static_total += static_at[k];
+  std::printf("alpha skeleton (the skeleton with the fixed-radius alpha complex: frontier radius "
+              "certificates in CGAL's faces, membership through flips and radius events; general "
+              "position only): %.2f ms per slab (frame rebuilds %.2f of it), %.2f of the static rebuilds; "
+              "%zu 2-2 flips, %zu radius events, %zu changes of the alpha complex, %zu radius certificates "
+              "(%zu with a failure time); final alpha complex equal to CGAL's exact Alpha_shape_2\n",
+              1e3 * total / double(r.slab_seconds.size()), total > 0 ? r.rebuild_seconds / total : 0.0,
+              total / static_total, r.flips23, r.radius_events, r.alpha_changes, r.radius_certificates,
+              r.radius_isolated);
+  std::fflush(stdout);
+}
+
 // The Delaunay skeleton (delaunay_skeleton.h) on the same frames: what any engine doing libkinetic's
 // job with its certificate arithmetic costs at least, against the same static rebuilds.
 // radius_seconds: the arithmetic of the kinetic run's radius certificates, which the skeleton leaves
@@ -364,7 +390,7 @@ Trajectories random_walk_2d(std::uint64_t seed, int n, int frames, double step_s
 // radius_isolation: the isolation of the kinetic run's radius events, at the cheapest radius formula's
 // cost each, which the skeleton leaves out as well.
 void skeleton_case(const Trajectories& t, const std::vector<double>& static_at, double radius_seconds,
-                   double radius_isolation) {
+                   double radius_isolation, const SquaredRadius& rho2) {
   std::string why;
   if (!medusa::bench::skeleton_applies(t, why)) {
     std::printf("Delaunay skeleton: not run (%s)\n", why.c_str());
@@ -375,6 +401,8 @@ void skeleton_case(const Trajectories& t, const std::vector<double>& static_at, 
     std::printf("Delaunay skeleton: %s\n", r.verdict.c_str());
     return;
   }
+  if (t.dimension == 2)
+    alpha_skeleton_case(t, static_at, rho2);
   double total = 0, static_total = 0;
   for (double s : r.slab_seconds)
     total += s;
@@ -506,7 +534,7 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
   }
   std::printf("peak memory (RSS so far) %.1f MiB\n", peak_rss_mib());
   std::fflush(stdout);
-  skeleton_case(t, static_at, radius_filtered, radius_isolation);
+  skeleton_case(t, static_at, radius_filtered, radius_isolation, options.rho2);
 }
 
 } // namespace
