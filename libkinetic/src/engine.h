@@ -340,8 +340,11 @@ struct Engine {
   int sign_after_own_root(const IntervalPoly& f, const CacheKey& key) const;
   int new_cert(CertKind kind, const Simplex& key);
   void kill_cert(int id);
-  void install(int id);
-  void settle_certificate(int id, bool counted = true);
+  // at_now, when given and now is a slab start (a frame), receives the enclosure of the certificate's
+  // value there from the first enclosure built, the one from plain doubles; it stays as it was when
+  // that enclosure was not built (hull orientations) or now is inside the slab.
+  void install(int id, Interval* at_now = nullptr);
+  void settle_certificate(int id, bool counted = true, Interval* at_now = nullptr);
   void count_built(const Certificate& c, bool enclosed);
   // wide: f is the enclosure from plain doubles (certificate_enclosure.h), replaced by the interval
   // one before its root is reported (Engine::run_slab).
@@ -357,7 +360,7 @@ struct Engine {
   void install_facet(const Simplex& facet);
   void install_facet(const Simplex& facet, detail::Triangulation::Apices& ap); // ap: facet's record
   void install_radius(const Simplex& s) { install_radius(s, faces.at(s)); }
-  void install_radius(const Simplex& s, Face& f); // f: s's state
+  void install_radius(const Simplex& s, Face& f, Interval* at_now = nullptr); // f: s's state
   bool compute_short(const Simplex& s);
 
   // ------------------------------------ Del changes, frontier, membership (engine_membership.cpp)

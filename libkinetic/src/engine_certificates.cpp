@@ -284,15 +284,15 @@ bool Engine::hull_ridge_folded_at_now(const Simplex& facet) {
 
 // Evaluates a fresh certificate at `now`: schedules its next failure in (now, 1), or queues it in
 // the current batch when it is already invalid just after now (MATH.md 3.7, 3.9).
-void Engine::install(int id) {
+void Engine::install(int id, Interval* at_now) {
   ++stats.certificates_built;
-  settle_certificate(id);
+  settle_certificate(id, true, at_now);
 }
 
 // install's work. A certificate replaced by its substitute is settled again, and is still one
 // certificate, counted (by formula and by how it was settled) as the one it replaced: `counted` is
 // false for the second pass.
-void Engine::settle_certificate(int id, bool counted) {
+void Engine::settle_certificate(int id, bool counted, Interval* at_now) {
   Certificate& c = certs[static_cast<std::size_t>(id)];
   const auto tally = [counted](std::size_t& counter) { counter += counted ? 1 : 0; };
   {
@@ -306,6 +306,8 @@ void Engine::settle_certificate(int id, bool counted) {
     const bool enclosed = cert_enclosure(c, f);
     if (counted)
       count_built(c, enclosed);
+    if (enclosed && at_now != nullptr && lo == 0.0 && hi == 0.0)
+      *at_now = f[0]; // the value at a slab start is the constant term
     if (enclosed) {
       if (bernstein_sign_subdivided(f, lo, 4) > 0) {
         tally(stats.filter_settled);
@@ -624,10 +626,10 @@ void Engine::install_facet(const Simplex& facet, detail::Triangulation::Apices& 
   }
 }
 
-void Engine::install_radius(const Simplex& s, Face& f) {
+void Engine::install_radius(const Simplex& s, Face& f, Interval* at_now) {
   kill_cert(f.cert);
   f.cert = new_cert(CertKind::radius, s);
-  install(f.cert);
+  install(f.cert, at_now);
 }
 
 bool Engine::compute_short(const Simplex& s) {

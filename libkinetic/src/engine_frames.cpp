@@ -42,9 +42,10 @@ void Engine::reinstall_all() {
     if (f.cert < 0)
       continue;
     f.cert = -1;
-    install_radius(s, f);
+    Interval at_frame(0); // undecided unless the install's enclosure says otherwise
+    install_radius(s, f, &at_frame);
     // R = rho at the frame: a touch there, whatever the sign just after (Engine::resolve_touches).
-    if (radius_vanishes_now(s))
+    if (!(at_frame.inf() > 0 || at_frame.sup() < 0) && radius_vanishes_now(s))
       pending_touch.emplace_back(f.cert, certs[static_cast<std::size_t>(f.cert)].version);
   }
 }
