@@ -68,6 +68,15 @@ void Engine::check_collision(const Simplex& e) const {
 }
 
 void Engine::check_collisions_in_slab() const {
+  // In the plane the Delaunay edges are the triangulation's facets, whose table is smaller than the
+  // faces' (which holds the triangles too): this pass runs at every frame.
+  if (dim == 2) {
+    tri.for_each_facet([this](const Simplex& e, const detail::Triangulation::Apices&) {
+      if (is_finite(e))
+        check_collision(e);
+    });
+    return;
+  }
   for (const auto& kv : faces)
     if (kv.first.size() == 2)
       check_collision(kv.first);

@@ -111,12 +111,15 @@ bool Engine::top_simplex_turns_at_frame() {
   if (!now.is_rational() || now.rational() != 0)
     throw InternalError("the frame test of flat top simplices runs at a slab start only");
   std::array<const MovingPoint*, 4> p{};
+  // One switch to round-to-nearest for every top simplex, not two per test (start_determinants.h);
+  // the rare flat one's follow-up tests set the mode they need themselves.
+  CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
   for (const Simplex& t : tri.tets()) {
     if (!is_finite(t))
       continue;
     for (std::size_t i = 0; i < t.size(); ++i)
       p[i] = &pt(t[i]);
-    if (orientation_vanishes_at_start(p.data(), t.size()) &&
+    if (orientation_vanishes_at_start_in_nearest(p.data(), t.size()) &&
         (orientation_sign_plus(t) != tri.orientation(t) || degenerate_hull_facet_at(t)))
       return true;
   }

@@ -27,6 +27,11 @@ bool orientation_vanishes_at_start(const MovingPoint* const* p, std::size_t coun
   // (interval arithmetic). A filter misled by the mode could only fail to certify, never report a
   // false zero, but the predicates are meant to run in the mode they were written for.
   CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+  return orientation_vanishes_at_start_in_nearest(p, count);
+}
+
+bool orientation_vanishes_at_start_in_nearest(const MovingPoint* const* p, std::size_t count) {
+  CGAL_assertion(CGAL::FPU_get_cw() == CGAL_FE_TONEAREST);
   if (count == 4)
     return CGAL::orientation(at_start_3(*p[0]), at_start_3(*p[1]), at_start_3(*p[2]), at_start_3(*p[3])) ==
            CGAL::COPLANAR;

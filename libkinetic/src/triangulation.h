@@ -127,6 +127,10 @@ public:
     for (auto& [facet, record] : facets_)
       f(facet, record);
   }
+  template <class F> void for_each_facet(F&& f) const {
+    for (const auto& [facet, record] : facets_)
+      f(facet, record);
+  }
   // Tetrahedra containing every vertex of s.
   std::vector<Simplex> tets_containing(const Simplex& s) const;
   const std::vector<Simplex>& tets_of(VertexId v) const;
