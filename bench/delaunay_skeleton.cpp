@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -40,6 +41,8 @@ using kinetic::Interval;
 using kinetic::IntervalPoly;
 using kinetic::MovingPoint;
 using Exact = CGAL::Simple_cartesian<CGAL::Gmpq>;
+
+__extension__ typedef __int128 Int128; // GCC and Clang: products of two grid differences
 
 // What the skeleton does not handle (it stops there): it is a lower bound for input in general
 // position, not an engine.
@@ -282,6 +285,13 @@ public:
           lo = std::min(lo, p[static_cast<std::size_t>(d)]);
           hi = std::max(hi, p[static_cast<std::size_t>(d)]);
         }
+    if (alpha_) {
+      // The corners must stay farther than 2 rho from every cell (alpha layer, below).
+      const auto pad =
+          static_cast<std::int64_t>(std::ceil(2.0 * std::sqrt(rho2->num.get_d() / rho2->den.get_d()))) + 1;
+      lo -= pad;
+      hi += pad;
+    }
     corners_ = Space::corners(lo, hi);
     motion_.resize(static_cast<std::size_t>(n_) + corners_.size());
     for (std::size_t i = 0; i < corners_.size(); ++i)
@@ -494,7 +504,7 @@ private:
       const double u = e.hi;
       if constexpr (Space::dim == 2)
         if (alpha_)
-          before_flip(e.cell, e.facet);
+          before_flip(e.cell, e.facet, u);
       bool two_three = true;
       const int count = Space::flip(
           dt_, e.cell, e.facet, [&](Vertex v) { return Space::at(pt(v), u); },
@@ -642,6 +652,50 @@ private:
     return true;
   }
 
+  // The stream a medusa builder reads (MATH.md 6), as an engine hands it to its observer: one record
+  // per flip (its four cells) and per simplex entering or leaving K (its cells), with the event's
+  // time, kept for the slab.
+  void emit(Kind kind, Cell f, double u, int i = -1) {
+    Record r{u, kind, {-1, -1, -1, -1}};
+    if (kind == Kind::triangle_radius)
+      r.v = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info(), -1};
+    else if (kind == Kind::edge_radius)
+      r.v = {f->vertex(Dt::cw(i))->info(), f->vertex(Dt::ccw(i))->info(), -1, -1};
+    else
+      r.v = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info(),
+             dt_.tds().mirror_vertex(f, i)->info()};
+    stream_.push_back(r);
+    run_.alpha_changes += kind != Kind::delaunay;
+  }
+
+  // MATH.md 2.5: the ends of edge i of f meeting at some u in (0, 1), decided in integers as
+  // libkinetic decides it (Engine::check_collision): every coordinate of p - q = da + u db vanishes
+  // at the same u. Colliding cells are joined by a Delaunay edge just before they meet, so the
+  // edges at a frame and those a flip creates are all that need it.
+  void check_collision(Cell f, int i) const {
+    const MovingPoint &p = pt(f->vertex(Dt::cw(i))), &q = pt(f->vertex(Dt::ccw(i)));
+    int pivot = -1;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::int64_t da = p.a[k] - q.a[k], db = p.b[k] - q.b[k];
+      if (db == 0) {
+        if (da != 0)
+          return;
+        continue;
+      }
+      if (da == 0 || (da > 0) == (db > 0) || (da > 0 ? da : -da) >= (db > 0 ? db : -db))
+        return;
+      if (pivot < 0) {
+        pivot = static_cast<int>(k);
+      } else {
+        const auto j = static_cast<std::size_t>(pivot);
+        if (static_cast<Int128>(da) * (p.b[j] - q.b[j]) != static_cast<Int128>(p.a[j] - q.a[j]) * db)
+          return;
+      }
+    }
+    if (pivot >= 0)
+      throw Degenerate{"two cells meet inside a slab"};
+  }
+
   // Shortness and membership at frame 0, from the cells' positions there.
   void alpha_initialise() {
     CGAL::Protect_FPU_rounding<true> guard;
@@ -665,12 +719,17 @@ private:
   // Every frontier simplex's radius certificate, at a frame (MATH.md 2.3).
   void alpha_frame() {
     epoch_ = next_serial_;
+    stream_.clear(); // the last slab's records, read by the observer by now
     for (auto f = dt_.tds().faces_begin(); f != dt_.tds().faces_end(); ++f)
       if (face_on_frontier(f))
         install_radius(f, -1, 0.0);
-    for (auto e = dt_.tds().edges_begin(); e != dt_.tds().edges_end(); ++e)
+    for (auto e = dt_.tds().edges_begin(); e != dt_.tds().edges_end(); ++e) {
+      if (!real_edge(e->first, e->second))
+        continue;
+      check_collision(e->first, e->second);
       if (edge_on_frontier(e->first, e->second))
         install_radius(e->first, e->second, 0.0);
+    }
   }
 
   // A frontier simplex changes shortness at the entry's time (MATH.md 4.4 update rules, 4.1).
@@ -683,19 +742,21 @@ private:
         return;
       }
       ++run_.radius_events;
-      ++run_.alpha_changes; // the triangle enters or leaves K
+      emit(Kind::triangle_radius, f, u); // the triangle enters or leaves K
       f->is_short = !f->is_short;
       for (int j = 0; j < 3; ++j) {
         EdgeState s = f->edge[static_cast<std::size_t>(j)];
         if (f->is_short) { // its edges have a short coface now: off the frontier, in K
           s.serial = 0;
-          run_.alpha_changes += !s.in_k;
+          if (!s.in_k)
+            emit(Kind::edge_radius, f, u, j);
           s.in_k = true;
           set_edge(f, j, s);
         } else { // its edges, all short, may be maximal short again, and may leave K
           const bool other = short_face(f->neighbor(j));
           const bool in_k = other || gabriel_at(f, j, u);
-          run_.alpha_changes += in_k != s.in_k;
+          if (in_k != s.in_k)
+            emit(Kind::edge_radius, f, u, j);
           s.in_k = in_k;
           set_edge(f, j, s);
           if (!other)
@@ -716,7 +777,8 @@ private:
     s.is_short = !s.is_short;
     // Long before, so no short triangle: in K now iff Gabriel; leaving K when it turns long.
     const bool in_k = s.is_short && gabriel_at(f, i, u);
-    run_.alpha_changes += in_k != s.in_k;
+    if (in_k != s.in_k)
+      emit(Kind::edge_radius, f, u, i);
     s.in_k = in_k;
     set_edge(f, i, s);
     for (const Cell h : {f, f->neighbor(i)}) {
@@ -730,9 +792,14 @@ private:
 
   // The flip of edge i of c: the simplices it removes leave K; the state of the four edges of the
   // quadrilateral is kept, to be put back in the rewritten faces.
-  void before_flip(Cell c, int i) {
+  void before_flip(Cell c, int i, double u) {
     const Cell d = c->neighbor(i);
-    run_.alpha_changes += c->edge[static_cast<std::size_t>(i)].in_k + short_face(c) + short_face(d);
+    emit(Kind::delaunay, c, u, i); // the flip: its quadrilateral's vertices
+    if (c->edge[static_cast<std::size_t>(i)].in_k)
+      emit(Kind::edge_radius, c, u, i);
+    for (const Cell h : {c, d})
+      if (short_face(h))
+        emit(Kind::triangle_radius, h, u);
     const int di = dt_.tds().mirror_index(c, i);
     int m = 0;
     for (const auto& [f, j] : {std::pair{c, Dt::cw(i)}, std::pair{c, Dt::ccw(i)}, std::pair{d, Dt::cw(di)},
@@ -760,21 +827,29 @@ private:
         if ((q.a == a && q.b == b) || (q.a == b && q.b == a))
           d->edge[static_cast<std::size_t>(j)] = q.state;
     }
-    // The new triangles and the new edge: shortness just after the flip; in K iff the triangles are
-    // short (Proposition 4.5 in the plane).
+    // The new edge and the new triangles: shortness just after the flip; in K iff the triangles are
+    // short (Proposition 4.5 in the plane). A triangle with a long edge is long (R is monotone,
+    // MATH.md 4.1), and off the frontier: only one with three short edges needs its radius.
     std::array<IntervalPoly, 3> poly;
-    for (const Cell h : {c, d}) {
-      h->serial = 0;
-      h->is_short = real_face(h) && short_at(h, -1, u, poly[h == c ? 0 : 1]);
-      run_.alpha_changes += h->is_short;
-    }
     EdgeState s;
-    if (real_edge(c, new_edge)) {
+    const bool real = real_edge(c, new_edge);
+    if (real) {
       s.is_short = short_at(c, new_edge, u, poly[2]);
-      s.in_k = short_face(c) || short_face(d);
-      run_.alpha_changes += s.in_k;
+      check_collision(c, new_edge);
     }
     set_edge(c, new_edge, s);
+    for (const Cell h : {c, d}) {
+      h->serial = 0;
+      h->is_short = h->edge[0].is_short && h->edge[1].is_short && h->edge[2].is_short && real_face(h) &&
+                    short_at(h, -1, u, poly[h == c ? 0 : 1]);
+      if (h->is_short)
+        emit(Kind::triangle_radius, h, u);
+    }
+    if (real && (short_face(c) || short_face(d))) {
+      s.in_k = true;
+      emit(Kind::edge_radius, c, u, new_edge);
+      set_edge(c, new_edge, s);
+    }
     // The frontier over the new simplices and the quadrilateral's edges (MATH.md 4.4, after a change
     // of Del).
     for (const Cell h : {c, d})
@@ -857,6 +932,11 @@ private:
     Vertex a, b;
     EdgeState state;
   };
+  struct Record {
+    double u;
+    Kind kind;
+    std::array<int, 4> v;
+  };
 
   const kinetic::Trajectories& t_;
   const int n_;
@@ -870,6 +950,7 @@ private:
   std::vector<Entry> heap_;
   std::uint32_t next_stamp_ = 0, next_serial_ = 0, epoch_ = 0;
   std::array<QuadEdge, 4> quad_{}; // the edges of the quadrilateral of the flip in progress
+  std::vector<Record> stream_;     // the slab's output (emit)
   SkeletonRun run_;                // counted as the run goes
 };
 

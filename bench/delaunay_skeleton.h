@@ -16,7 +16,10 @@
 // new simplices are in K iff the new triangles are short) and radius events (Lemma 4.1, Gabriel
 // status tested at the event: 4.2); its final alpha complex must equal CGAL's exact Alpha_shape_2.
 // A radius certificate found already failed when it is created (a crossing inside the isolating
-// interval of the event that created it) is taken at once, as the engine takes one.
+// interval of the event that created it) is taken at once, as the engine takes one. It also does two
+// more parts of the engine's job there: the collision test of MATH.md 2.5 on every edge at a frame and
+// every edge a flip creates, and the output stream (a record per flip and per simplex entering or
+// leaving K, kept for the slab).
 //
 // What it leaves out, so that its time is a lower bound for any engine doing the engine's job with
 // this arithmetic: in 3D, the alpha complex (no radius certificates, no membership); degeneracies (it stops
@@ -26,7 +29,7 @@
 // evaluated at the right end: the engine's tightening of each event time to the last bit is left
 // out too, and two failures closer than 2^-24 may be taken in the wrong order, which can also stop
 // it); the hull (four far static points enclose the cells, so the hull never changes); insertions and
-// deletions; the observer stream (the alpha layer counts membership changes, reports none). It runs in 3D
+// deletions; in 3D, collisions and the output stream. It runs in 3D
 // (2-3 and 3-2 flips on Triangulation_data_structure_3) and in the plane (2-2 flips on
 // Triangulation_data_structure_2, the in-circle certificate), on runs whose cells are present at every frame,
 // and checks at the end that its triangulation equals CGAL's static one: only a run that ends equal counts.
