@@ -49,6 +49,10 @@ __extension__ typedef __int128 Int128; // GCC and Clang: products of two grid di
 struct Degenerate {
   const char* what;
 };
+// A check against CGAL's static structures that failed (SkeletonOptions::check_frames).
+struct Mismatch {
+  std::string what;
+};
 
 // Cells and faces with a stamp: a queue entry is current while the cell and its neighbour across the
 // entry's facet carry the stamps they had when it was made (a flip restamps every cell it rewrites).
@@ -276,8 +280,10 @@ template <class Space> class Skeleton {
   };
 
 public:
-  Skeleton(const kinetic::Trajectories& t, const kinetic::SquaredRadius* rho2)
-      : t_(t), n_(static_cast<int>(t.cells.size())), alpha_(rho2 != nullptr && Space::dim == 2) {
+  Skeleton(const kinetic::Trajectories& t, const SkeletonOptions& options)
+      : t_(t), n_(static_cast<int>(t.cells.size())), alpha_(options.rho2 != nullptr && Space::dim == 2),
+        check_frames_(options.check_frames) {
+    const kinetic::SquaredRadius* rho2 = options.rho2;
     std::int64_t lo = 0, hi = 0;
     for (const auto& c : t.cells)
       for (const auto& p : c.positions)
@@ -311,6 +317,9 @@ public:
     } catch (const Degenerate& d) {
       r.verdict = std::string("stopped: ") + d.what + " (the skeleton handles general position only)";
       return r;
+    } catch (const Mismatch& m) {
+      r.verdict = m.what;
+      return r;
     }
     r.completed = true;
     r.verified = Space::cells(dt_) == Space::cells(triangulate(t_.frames() - 1));
@@ -336,6 +345,8 @@ private:
       if (alpha_)
         alpha_initialise(); // with the triangulation at frame 0: not part of any slab
     for (std::size_t k = 0; k + 1 < t_.frames(); ++k) {
+      if (check_frames_ && k > 0)
+        check_frame(k); // untimed
       const auto start = Clock::now();
       set_motion(k);
       heap_.clear();
@@ -350,6 +361,43 @@ private:
       run_slab();
       r.rebuild_seconds += std::chrono::duration<double>(rebuilt - start).count();
       r.slab_seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+    }
+  }
+
+  // At frame k, before its rebuild: the triangulation equals CGAL's static one, and in the plane the
+  // alpha layer's state is what MATH.md 4 defines there: the alpha complex equals CGAL's exact
+  // Alpha_shape_2, every edge's shortness is the exact one, and exactly the frontier simplices hold
+  // a certificate of the slab just ended.
+  void check_frame(std::size_t k) const {
+    const std::string at = " at frame " + std::to_string(k);
+    if (Space::cells(dt_) != Space::cells(triangulate(k)))
+      throw Mismatch{"its triangulation differs from CGAL's static one" + at};
+    if constexpr (Space::dim == 2) {
+      if (!alpha_)
+        return;
+      if (alpha_complex() != static_alpha_complex(k))
+        throw Mismatch{"its alpha complex differs from CGAL's exact Alpha_shape_2" + at};
+      for (auto f = dt_.tds().faces_begin(); f != dt_.tds().faces_end(); ++f)
+        if (face_on_frontier(f) != certified(f->serial))
+          throw Mismatch{"a triangle's certificate and its place on the frontier disagree" + at};
+      for (auto e = dt_.tds().edges_begin(); e != dt_.tds().edges_end(); ++e) {
+        const Cell f = e->first;
+        const int i = e->second;
+        if (!real_edge(f, i))
+          continue;
+        const auto& p = t_.cells[static_cast<std::size_t>(f->vertex(Dt::cw(i))->info())].at(k);
+        const auto& q = t_.cells[static_cast<std::size_t>(f->vertex(Dt::ccw(i))->info())].at(k);
+        mpz_class d2 = 0;
+        for (int c = 0; c < 2; ++c) {
+          const mpz_class d(std::to_string(p[static_cast<std::size_t>(c)] - q[static_cast<std::size_t>(c)]));
+          d2 += d * d;
+        }
+        const EdgeState& st = f->edge[static_cast<std::size_t>(i)];
+        if (st.is_short != (rho2_.den * d2 <= 4 * rho2_.num))
+          throw Mismatch{"an edge's shortness differs from the exact one" + at};
+        if (edge_on_frontier(f, i) != certified(st.serial))
+          throw Mismatch{"an edge's certificate and its place on the frontier disagree" + at};
+      }
     }
   }
 
@@ -940,7 +988,8 @@ private:
 
   const kinetic::Trajectories& t_;
   const int n_;
-  const bool alpha_; // the planar alpha layer runs
+  const bool alpha_;        // the planar alpha layer runs
+  const bool check_frames_; // check_frame at every frame
   kinetic::SquaredRadius rho2_;
   Interval P_, Q_;
   std::vector<kinetic::GridPoint> corners_;
@@ -969,8 +1018,8 @@ bool skeleton_applies(const kinetic::Trajectories& t, std::string& why) {
   return true;
 }
 
-SkeletonRun run_delaunay_skeleton(const kinetic::Trajectories& t, const kinetic::SquaredRadius* rho2) {
-  return t.dimension == 2 ? Skeleton<Space2>(t, rho2).run() : Skeleton<Space3>(t, rho2).run();
+SkeletonRun run_delaunay_skeleton(const kinetic::Trajectories& t, const SkeletonOptions& options) {
+  return t.dimension == 2 ? Skeleton<Space2>(t, options).run() : Skeleton<Space3>(t, options).run();
 }
 
 } // namespace medusa::bench

@@ -32,7 +32,8 @@
 // deletions; in 3D, collisions and the output stream. It runs in 3D
 // (2-3 and 3-2 flips on Triangulation_data_structure_3) and in the plane (2-2 flips on
 // Triangulation_data_structure_2, the in-circle certificate), on runs whose cells are present at every frame,
-// and checks at the end that its triangulation equals CGAL's static one: only a run that ends equal counts.
+// and checks at the end (with SkeletonOptions::check_frames, at every frame, untimed) that its triangulation
+// equals CGAL's static one: only a run that ends equal counts.
 #pragma once
 
 #include "medusa/kinetic/kinetic_alpha_complex.h"
@@ -67,8 +68,11 @@ struct SkeletonRun {
 // False (and `why`) when the run is not one the skeleton handles: every cell at every frame.
 bool skeleton_applies(const kinetic::Trajectories& t, std::string& why);
 
-// With rho2 in the plane, the skeleton maintains the fixed-radius alpha complex too (MATH.md 4).
-SkeletonRun run_delaunay_skeleton(const kinetic::Trajectories& t,
-                                  const kinetic::SquaredRadius* rho2 = nullptr);
+struct SkeletonOptions {
+  const kinetic::SquaredRadius* rho2 = nullptr; // in the plane: maintain the fixed-radius alpha complex too
+  bool check_frames = false; // compare with CGAL at every frame (untimed), not only at the end
+};
+
+SkeletonRun run_delaunay_skeleton(const kinetic::Trajectories& t, const SkeletonOptions& options = {});
 
 } // namespace medusa::bench

@@ -8,7 +8,7 @@
 // the plane, the skeleton with the alpha complex maintained as well, measured.
 //
 // Usage: kinetic_bench [--csv cells.csv.gz|run-folder --radius R] [--random N --frames F --step S]
-//                     [--turnover F] [--dim 2|3]
+//                     [--turnover F] [--dim 2|3] [--check-skeleton]
 // With no argument: the bundled large_3d run (4,945 cells, 11 frames) and random walks of 1,000 and
 // 10,000 cells over 5 frames, then the planar cases: the real 2D run tests/data/cc3d/sorting_2d
 // (193 cells, 20 frames) and planar random walks of 1,000 and 10,000 cells. --dim 2 or 3 runs one
@@ -50,6 +50,10 @@ namespace {
 
 using namespace medusa::kinetic;
 using Clock = std::chrono::steady_clock;
+
+// --check-skeleton: the skeleton compares its state with CGAL's at every frame, untimed (the ctest of
+// bench/CMakeLists.txt), not only at the end.
+bool check_skeleton = false;
 
 double peak_rss_mib() {
   rusage u{};
@@ -362,7 +366,10 @@ Trajectories random_walk_2d(std::uint64_t seed, int n, int frames, double step_s
 // estimated from the radius certificates' arithmetic as skeleton_case does.
 void alpha_skeleton_case(const Trajectories& t, const std::vector<double>& static_at,
                          const SquaredRadius& rho2) {
-  const medusa::bench::SkeletonRun r = medusa::bench::run_delaunay_skeleton(t, &rho2);
+  medusa::bench::SkeletonOptions options;
+  options.rho2 = &rho2;
+  options.check_frames = check_skeleton;
+  const medusa::bench::SkeletonRun r = medusa::bench::run_delaunay_skeleton(t, options);
   if (!r.completed || !r.alpha_verified) {
     std::printf("alpha skeleton: %s\n", r.verdict.c_str());
     return;
@@ -396,7 +403,9 @@ void skeleton_case(const Trajectories& t, const std::vector<double>& static_at, 
     std::printf("Delaunay skeleton: not run (%s)\n", why.c_str());
     return;
   }
-  const medusa::bench::SkeletonRun r = medusa::bench::run_delaunay_skeleton(t);
+  medusa::bench::SkeletonOptions options;
+  options.check_frames = check_skeleton;
+  const medusa::bench::SkeletonRun r = medusa::bench::run_delaunay_skeleton(t, options);
   if (!r.completed) {
     std::printf("Delaunay skeleton: %s\n", r.verdict.c_str());
     return;
@@ -563,16 +572,20 @@ int main(int argc, char** argv) {
       turnover = std::stod(args[++i]);
     } else if (args[i] == "--frames" && i + 1 < args.size()) {
       frames = std::stoi(args[++i]);
+    } else if (args[i] == "--check-skeleton") {
+      check_skeleton = true;
     } else if (args[i] == "--dim" && i + 1 < args.size() && (args[i + 1] == "2" || args[i + 1] == "3")) {
       only_dim = std::stoi(args[++i]);
     } else {
       std::fprintf(stderr,
                    "usage: kinetic_bench [--csv cells.csv.gz|run-folder] [--radius R] [--random N]... "
-                   "[--frames F] [--step S] [--turnover F] [--dim 2|3]\n"
+                   "[--frames F] [--step S] [--turnover F] [--dim 2|3] [--check-skeleton]\n"
                    "  --step S: standard deviation of the random walks' step per frame and coordinate, in\n"
                    "            lattice units (cells are 5 apart; default 0.7)\n"
                    "  --turnover F: each random-walk cell is born late with probability F and dies early\n"
-                   "            with probability F (insertions and deletions at every frame; default 0)\n");
+                   "            with probability F (insertions and deletions at every frame; default 0)\n"
+                   "  --check-skeleton: the lower-bound skeleton checks its state against CGAL's at every\n"
+                   "            frame (untimed), not only at the end\n");
       return 2;
     }
   }
