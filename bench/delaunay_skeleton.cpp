@@ -2,6 +2,7 @@
 
 #include "medusa/kinetic/certificate_enclosure.h"
 #include "medusa/kinetic/certificate_polynomials.h"
+#include "medusa/kinetic/collision.h"
 #include "medusa/kinetic/interval_filter.h"
 #include "medusa/kinetic/moving_point.h"
 #include "medusa/kinetic/root_isolation.h"
@@ -41,8 +42,6 @@ using kinetic::Interval;
 using kinetic::IntervalPoly;
 using kinetic::MovingPoint;
 using Exact = CGAL::Simple_cartesian<CGAL::Gmpq>;
-
-__extension__ typedef __int128 Int128; // GCC and Clang: products of two grid differences
 
 // What the skeleton does not handle (it stops there): it is a lower bound for input in general
 // position, not an engine.
@@ -716,31 +715,11 @@ private:
     run_.alpha_changes += kind != Kind::delaunay;
   }
 
-  // MATH.md 2.5: the ends of edge i of f meeting at some u in (0, 1), decided in integers as
-  // libkinetic decides it (Engine::check_collision): every coordinate of p - q = da + u db vanishes
-  // at the same u. Colliding cells are joined by a Delaunay edge just before they meet, so the
-  // edges at a frame and those a flip creates are all that need it.
+  // MATH.md 2.5: the ends of edge i of f meeting inside the slab, decided in integers as libkinetic
+  // decides it (meeting_in_slab). Colliding cells are joined by a Delaunay edge just before they
+  // meet, so the edges at a frame and those a flip creates are all that need it.
   void check_collision(Cell f, int i) const {
-    const MovingPoint &p = pt(f->vertex(Dt::cw(i))), &q = pt(f->vertex(Dt::ccw(i)));
-    int pivot = -1;
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::int64_t da = p.a[k] - q.a[k], db = p.b[k] - q.b[k];
-      if (db == 0) {
-        if (da != 0)
-          return;
-        continue;
-      }
-      if (da == 0 || (da > 0) == (db > 0) || (da > 0 ? da : -da) >= (db > 0 ? db : -db))
-        return;
-      if (pivot < 0) {
-        pivot = static_cast<int>(k);
-      } else {
-        const auto j = static_cast<std::size_t>(pivot);
-        if (static_cast<Int128>(da) * (p.b[j] - q.b[j]) != static_cast<Int128>(p.a[j] - q.a[j]) * db)
-          return;
-      }
-    }
-    if (pivot >= 0)
+    if (kinetic::meeting_in_slab(pt(f->vertex(Dt::cw(i))), pt(f->vertex(Dt::ccw(i)))))
       throw Degenerate{"two cells meet inside a slab"};
   }
 

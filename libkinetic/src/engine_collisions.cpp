@@ -1,6 +1,7 @@
 // Collision checks: two cells at one position at a frame, or meeting inside a slab (MATH.md 2.5).
 #include "engine.h"
 
+#include "medusa/kinetic/collision.h"
 #include "medusa/kinetic/error.h"
 
 #include <algorithm>
@@ -8,10 +9,6 @@
 #include <vector>
 
 namespace medusa::kinetic::detail {
-
-namespace {
-__extension__ typedef __int128 Int128; // GCC and Clang: products of two grid differences
-} // namespace
 
 void Engine::check_collisions_at_frame(std::size_t k) const {
   std::vector<std::pair<GridPoint, std::size_t>> pos;
@@ -29,34 +26,13 @@ void Engine::check_collisions_at_frame(std::size_t k) const {
 
 // Collision inside the slab (MATH.md 2.5): p_i(u) = p_j(u) for some u in (now, 1). Tested on the
 // Delaunay edges at the slab start and on every edge when it is created: colliding cells are
-// joined by a Delaunay edge just before they meet.
+// joined by a Delaunay edge just before they meet. Decided in integers (meeting_in_slab); only a
+// real collision builds the rational root.
 void Engine::check_collision(const Simplex& e) const {
-  const MovingPoint &p = pt(e[0]), &q = pt(e[1]);
-  // p - q = d(u) = da + u db vanishes at one u in (0, 1) iff every coordinate does so at the same u:
-  // da_i = db_i = 0, or da_i / db_i = -u with |da_i| < |db_i| and opposite signs. Decided in
-  // integers (|da|, |db| < 2^41, so the cross products fit in 128 bits); only a real collision
-  // builds the rational root.
-  int pivot = -1;
-  for (int i = 0; i < 3; ++i) {
-    const std::int64_t da = p.a[i] - q.a[i], db = p.b[i] - q.b[i];
-    if (db == 0) {
-      if (da != 0)
-        return;
-      continue;
-    }
-    if (da == 0 || (da > 0) == (db > 0) || (da > 0 ? da : -da) >= (db > 0 ? db : -db))
-      return; // this coordinate vanishes at u <= 0 or u >= 1
-    if (pivot < 0) {
-      pivot = i;
-    } else {
-      const std::int64_t pa = p.a[pivot] - q.a[pivot], pb = p.b[pivot] - q.b[pivot];
-      if (static_cast<Int128>(da) * pb != static_cast<Int128>(pa) * db)
-        return;
-    }
-  }
-  if (pivot < 0)
-    return; // equal positions and velocities: excluded at the frame (check_collisions_at_frame)
-  mpq_class root(mpz_class(-(p.a[pivot] - q.a[pivot])), mpz_class(p.b[pivot] - q.b[pivot]));
+  const std::optional<MeetingTime> meeting = meeting_in_slab(pt(e[0]), pt(e[1]));
+  if (!meeting)
+    return;
+  mpq_class root(mpz_class(meeting->num), mpz_class(meeting->den));
   root.canonicalize();
   if (!(now < SlabTime(Rational(root.get_mpq_t()))))
     return;
