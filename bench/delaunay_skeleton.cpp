@@ -900,25 +900,34 @@ private:
 
   using Simplices = std::pair<std::vector<std::array<int, 3>>, std::vector<std::array<int, 2>>>;
 
-  // The alpha complex held at the end: its triangles and edges as sorted cell indices.
+  // A face's cells, or those of its edge i, as sorted indices: in the skeleton's triangulation and
+  // in the oracle's alike.
+  template <class Face> static std::array<int, 3> triangle_of(const Face& f) {
+    std::array<int, 3> v{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+    std::sort(v.begin(), v.end());
+    return v;
+  }
+  template <class Face> static std::array<int, 2> edge_of(const Face& f, int i) {
+    std::array<int, 2> v{f->vertex(Dt::cw(i))->info(), f->vertex(Dt::ccw(i))->info()};
+    std::sort(v.begin(), v.end());
+    return v;
+  }
+  static Simplices sorted(Simplices s) {
+    std::sort(s.first.begin(), s.first.end());
+    std::sort(s.second.begin(), s.second.end());
+    return s;
+  }
+
+  // The alpha complex held: its triangles and edges.
   Simplices alpha_complex() const {
     Simplices out;
     for (auto f = dt_.finite_faces_begin(); f != dt_.finite_faces_end(); ++f)
-      if (f->is_short) {
-        std::array<int, 3> v{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
-        std::sort(v.begin(), v.end());
-        out.first.push_back(v);
-      }
+      if (f->is_short)
+        out.first.push_back(triangle_of(f));
     for (auto e = dt_.finite_edges_begin(); e != dt_.finite_edges_end(); ++e)
-      if (e->first->edge[static_cast<std::size_t>(e->second)].in_k) {
-        std::array<int, 2> v{e->first->vertex(Dt::cw(e->second))->info(),
-                             e->first->vertex(Dt::ccw(e->second))->info()};
-        std::sort(v.begin(), v.end());
-        out.second.push_back(v);
-      }
-    std::sort(out.first.begin(), out.first.end());
-    std::sort(out.second.begin(), out.second.end());
-    return out;
+      if (e->first->edge[static_cast<std::size_t>(e->second)].in_k)
+        out.second.push_back(edge_of(e->first, e->second));
+    return sorted(std::move(out));
   }
 
   // The oracle: CGAL's Alpha_shape_2 on the exact kernel, of the cells' positions at frame k.
@@ -938,21 +947,12 @@ private:
     Shape shape(dt, alpha, Shape::GENERAL);
     Simplices out;
     for (auto f = shape.finite_faces_begin(); f != shape.finite_faces_end(); ++f)
-      if (shape.classify(f) != Shape::EXTERIOR) {
-        std::array<int, 3> v{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
-        std::sort(v.begin(), v.end());
-        out.first.push_back(v);
-      }
+      if (shape.classify(f) != Shape::EXTERIOR)
+        out.first.push_back(triangle_of(f));
     for (auto e = shape.finite_edges_begin(); e != shape.finite_edges_end(); ++e)
-      if (shape.classify(*e) != Shape::EXTERIOR) {
-        std::array<int, 2> v{e->first->vertex(Shape::cw(e->second))->info(),
-                             e->first->vertex(Shape::ccw(e->second))->info()};
-        std::sort(v.begin(), v.end());
-        out.second.push_back(v);
-      }
-    std::sort(out.first.begin(), out.first.end());
-    std::sort(out.second.begin(), out.second.end());
-    return out;
+      if (shape.classify(*e) != Shape::EXTERIOR)
+        out.second.push_back(edge_of(e->first, e->second));
+    return sorted(std::move(out));
   }
 
   struct QuadEdge {

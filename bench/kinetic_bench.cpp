@@ -362,6 +362,21 @@ Trajectories random_walk_2d(std::uint64_t seed, int n, int frames, double step_s
   return t;
 }
 
+// A skeleton run's time over its slabs, and the static rebuilds' over the same frames: slab k of the
+// skeleton starts with frame k's certificate rebuild (frame 0's included, which the kinetic run counts
+// in its initialisation); the static side rebuilds at frames 1 .. F - 1.
+struct SkeletonTotals {
+  double skeleton = 0, rebuilds = 0;
+};
+SkeletonTotals totals(const medusa::bench::SkeletonRun& r, const std::vector<double>& static_at) {
+  SkeletonTotals t;
+  for (double s : r.slab_seconds)
+    t.skeleton += s;
+  for (std::size_t k = 1; k < static_at.size(); ++k)
+    t.rebuilds += static_at[k];
+  return t;
+}
+
 // The skeleton with its planar alpha layer (delaunay_skeleton.h): the alpha complex measured, not
 // estimated from the radius certificates' arithmetic as skeleton_case does.
 void alpha_skeleton_case(const Trajectories& t, const std::vector<double>& static_at,
@@ -374,11 +389,7 @@ void alpha_skeleton_case(const Trajectories& t, const std::vector<double>& stati
     std::printf("alpha skeleton: %s\n", r.verdict.c_str());
     return;
   }
-  double total = 0, static_total = 0;
-  for (double s : r.slab_seconds)
-    total += s;
-  for (std::size_t k = 1; k < t.frames(); ++k)
-    static_total += static_at[k];
+  const auto [total, static_total] = totals(r, static_at);
   std::printf("alpha skeleton (the skeleton with the fixed-radius alpha complex: frontier radius "
               "certificates in CGAL's faces, membership through flips and radius events; general "
               "position only): %.2f ms per slab (frame rebuilds %.2f of it), %.2f of the static rebuilds; "
@@ -412,13 +423,7 @@ void skeleton_case(const Trajectories& t, const std::vector<double>& static_at, 
   }
   if (t.dimension == 2)
     alpha_skeleton_case(t, static_at, rho2);
-  double total = 0, static_total = 0;
-  for (double s : r.slab_seconds)
-    total += s;
-  // Slab k of the skeleton starts with frame k's certificate rebuild (frame 0's included, which the
-  // kinetic run counts in its initialisation); the static side rebuilds at frames 1 .. F - 1.
-  for (std::size_t k = 1; k < t.frames(); ++k)
-    static_total += static_at[k];
+  const auto [total, static_total] = totals(r, static_at);
   std::printf("Delaunay skeleton (no alpha complex, general position only, certificates in CGAL cells; a "
               "lower bound, bench/delaunay_skeleton.h): %.2f ms per slab (frame rebuilds %.2f of it), "
               "%.2f of the static rebuilds over the run's %zu slabs; %zu %s flips and %zu 3-2 flips; %zu "
