@@ -321,15 +321,13 @@ public:
       return r;
     }
     r.completed = true;
-    r.verified = Space::cells(dt_) == Space::cells(triangulate(t_.frames() - 1));
-    if (!r.verified)
-      r.verdict = "its final triangulation differs from CGAL's static one";
-    if constexpr (Space::dim == 2)
-      if (alpha_ && r.verified) {
-        r.alpha_verified = alpha_complex() == static_alpha_complex(t_.frames() - 1);
-        if (!r.alpha_verified)
-          r.verdict = "its final alpha complex differs from CGAL's exact Alpha_shape_2";
-      }
+    try {
+      check_frame(t_.frames() - 1); // the last frame: what --check-skeleton checks at every frame
+      r.verified = true;
+      r.alpha_verified = alpha_;
+    } catch (const Mismatch& m) {
+      r.verdict = m.what;
+    }
     return r;
   }
 
@@ -363,10 +361,10 @@ private:
     }
   }
 
-  // At frame k, before its rebuild: the triangulation equals CGAL's static one, and in the plane the
-  // alpha layer's state is what MATH.md 4 defines there: the alpha complex equals CGAL's exact
-  // Alpha_shape_2, every edge's shortness is the exact one, and exactly the frontier simplices hold
-  // a certificate of the slab just ended.
+  // At frame k, before its rebuild (or at the end of the run): the triangulation equals CGAL's static
+  // one, and in the plane the alpha layer's state is what MATH.md 4 defines there: the alpha complex equals
+  // CGAL's exact Alpha_shape_2, every edge's shortness is the exact one, and exactly the frontier simplices
+  // hold a certificate of the slab just ended.
   void check_frame(std::size_t k) const {
     const std::string at = " at frame " + std::to_string(k);
     if (Space::cells(dt_) != Space::cells(triangulate(k)))
@@ -466,6 +464,21 @@ private:
     return kinetic::first_sign_change(f, start, 12);
   }
 
+  // settle on f, the enclosure from plain doubles; where that leaves the sign open, on the tighter
+  // enclosure `tight()` returns (interval arithmetic, as the engine's second path), which replaces f.
+  // Stops the skeleton when neither decides.
+  template <class Tight>
+  kinetic::FirstSignChange settle_or_tighten(IntervalPoly& f, double start, Tight&& tight, const char* why) {
+    kinetic::FirstSignChange next = settle(f, start);
+    if (next.status == kinetic::FirstSignChange::Status::undecided) {
+      f = tight();
+      next = settle(f, start);
+    }
+    if (next.status == kinetic::FirstSignChange::Status::undecided)
+      throw Degenerate{why};
+    return next;
+  }
+
   // Narrowed to 2^-24 when scheduled, as the engine does: most pairs of queued times then separate
   // without refinement. (Narrowing lazily, when an entry reaches the top, saves nothing: a time
   // reaches the top by the left end of its isolating piece, long before it would fire.)
@@ -486,14 +499,15 @@ private:
       return; // a facet of the far simplex's hull: it never fails
     ++run_.certificates;
     IntervalPoly f = known ? *known : certificate(c, i, false);
-    kinetic::FirstSignChange next = settle(f, start);
-    if (next.status == kinetic::FirstSignChange::Status::undecided && !known) {
-      ++run_.tight;
-      f = certificate(c, i, true);
-      next = settle(f, start);
-    }
-    if (next.status == kinetic::FirstSignChange::Status::undecided)
-      throw Degenerate{"a certificate doubles cannot settle (vanishing at its start, or a multiple root)"};
+    const kinetic::FirstSignChange next = settle_or_tighten(
+        f, start,
+        [&] {
+          if (known)
+            return *known; // the failed certificate's own polynomial: nothing tighter to build
+          ++run_.tight;
+          return certificate(c, i, true);
+        },
+        "a certificate doubles cannot settle (vanishing at its start, or a multiple root)");
     if (next.sign < 0) {
       push({start, start, c, c->stamp, d->stamp, i});
     } else if (next.status == kinetic::FirstSignChange::Status::root) {
@@ -625,13 +639,8 @@ private:
   void install_radius(Cell f, int i, double start, const IntervalPoly* known = nullptr) {
     ++run_.radius_certificates;
     IntervalPoly poly = known ? *known : radius_poly(f, i, false);
-    kinetic::FirstSignChange next = settle(poly, start);
-    if (next.status == kinetic::FirstSignChange::Status::undecided) {
-      poly = radius_poly(f, i, true);
-      next = settle(poly, start);
-    }
-    if (next.status == kinetic::FirstSignChange::Status::undecided)
-      throw Degenerate{"a radius certificate doubles cannot settle"};
+    const kinetic::FirstSignChange next = settle_or_tighten(
+        poly, start, [&] { return radius_poly(f, i, true); }, "a radius certificate doubles cannot settle");
     const std::uint32_t serial = ++next_serial_;
     bool held_short = false;
     if (i >= 0) {

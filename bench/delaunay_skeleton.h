@@ -54,7 +54,8 @@ struct SkeletonRun {
   std::size_t isolated = 0;             // of them, with a failure time isolated in the slab
   std::size_t tight = 0;  // recomputed in interval arithmetic where the doubles left a sign open
   bool completed = false; // false: stopped at a degenerate configuration (verdict says which)
-  bool verified = false;  // the final triangulation equals CGAL's static one
+  bool verified = false;  // at the last frame: the triangulation equals CGAL's static one (and the
+                          // alpha layer's state passes the same checks as check_frames's)
   std::string verdict;    // why not, when not
   // The planar alpha layer (run with a radius in 2D): the fixed-radius alpha complex on top.
   bool alpha = false;
@@ -62,7 +63,7 @@ struct SkeletonRun {
   std::size_t radius_isolated = 0;     // of them, with a failure time isolated in the slab
   std::size_t radius_events = 0;       // frontier simplices turning short or long
   std::size_t alpha_changes = 0;       // simplices entering or leaving the alpha complex
-  bool alpha_verified = false;         // the final alpha complex equals CGAL's exact Alpha_shape_2
+  bool alpha_verified = false;         // verified, with the alpha layer (CGAL's exact Alpha_shape_2)
 };
 
 // False (and `why`) when the run is not one the skeleton handles: every cell at every frame.
