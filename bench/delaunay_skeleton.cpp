@@ -65,7 +65,7 @@ struct StampedCell : CGAL::Delaunay_triangulation_cell_base_3<
   std::uint32_t stamp = 0;
 };
 
-// The planar alpha layer's state of an edge (MATH.md 4.1, 4.4): short, in the alpha complex, and its
+// The planar alpha layer's state of an edge (docs/MATH.md §4.1, §4.4): short, in the alpha complex, and its
 // radius certificate's serial (0, or one of an earlier slab: none, the edge is not on the
 // frontier). Both faces of an edge hold
 // the same copy.
@@ -81,7 +81,7 @@ struct StampedFace : CGAL::Triangulation_face_base_2<K, CGAL::Triangulation_ds_f
   using Base::Base;
   std::uint32_t stamp = 0;
   // The alpha layer: the triangle's radius certificate (0: none) and shortness (a triangle is in the
-  // alpha complex iff it is short, MATH.md 4.1), and its edges', edge i opposite vertex i.
+  // alpha complex iff it is short, docs/MATH.md §4.1), and its edges', edge i opposite vertex i.
   std::uint32_t serial = 0;
   bool is_short = false;
   std::array<EdgeState, 3> edge{};
@@ -124,7 +124,7 @@ struct Space3 {
   }
 
   // The failed facet i of c at u: a 2-3 flip when the union of its two cells is convex, else a 3-2 flip
-  // of the reflex edge, which three cells surround in general position (MATH.md 4.5). Writes the
+  // of the reflex edge, which three cells surround in general position (docs/MATH.md §4.5). Writes the
   // rewritten cells to `made` and returns how many; a cell the flip deletes gets stamp 0.
   template <class At, class ExactAt>
   static int flip(Dt& dt, Cell c, int i, At&& at, ExactAt&& exact_at, std::array<Cell, 3>& made,
@@ -362,9 +362,9 @@ private:
   }
 
   // At frame k, before its rebuild (or at the end of the run): the triangulation equals CGAL's static
-  // one, and in the plane the alpha layer's state is what MATH.md 4 defines there: the alpha complex equals
-  // CGAL's exact Alpha_shape_2, every edge's shortness is the exact one, and exactly the frontier simplices
-  // hold a certificate of the slab just ended.
+  // one, and in the plane the alpha layer's state is what docs/MATH.md §4 defines there: the alpha complex
+  // equals CGAL's exact Alpha_shape_2, every edge's shortness is the exact one, and exactly the frontier
+  // simplices hold a certificate of the slab just ended.
   void check_frame(std::size_t k) const {
     const std::string at = " at frame " + std::to_string(k);
     if (Space::cells(dt_) != Space::cells(triangulate(k)))
@@ -589,7 +589,7 @@ private:
     }
   }
 
-  // ---- The planar alpha layer (MATH.md 4): the fixed-radius alpha complex on the frontier rule of
+  // ---- The planar alpha layer (docs/MATH.md §4): the fixed-radius alpha complex on the frontier rule of
   // 4.4, its radius certificates in the faces, membership through flips (Proposition 4.5 in the
   // plane: the new simplices of a 2-2 flip are in K iff its triangles are short) and radius events
   // (Lemma 4.1, Gabriel status tested at the event, never tracked: Lemma 4.3). General position
@@ -680,7 +680,7 @@ private:
     set_edge(f, i, s);
   }
 
-  // MATH.md 4.4: an edge is on the frontier when long, or short with no short triangle; a triangle
+  // docs/MATH.md §4.4: an edge is on the frontier when long, or short with no short triangle; a triangle
   // when short, or long with three short edges.
   bool edge_on_frontier(Cell f, int i) const {
     return real_edge(f, i) && (!f->edge[static_cast<std::size_t>(i)].is_short ||
@@ -708,7 +708,7 @@ private:
     return true;
   }
 
-  // The stream a medusa builder reads (MATH.md 6), as an engine hands it to its observer: one record
+  // The stream a medusa builder reads (docs/MATH.md §6), as an engine hands it to its observer: one record
   // per flip (its four cells) and per simplex entering or leaving K (its cells), with the event's
   // time, kept for the slab.
   void emit(Kind kind, Cell f, double u, int i = -1) {
@@ -724,7 +724,7 @@ private:
     run_.alpha_changes += kind != Kind::delaunay;
   }
 
-  // MATH.md 2.5: the ends of edge i of f meeting inside the slab, decided in integers as libkinetic
+  // docs/MATH.md §2.5: the ends of edge i of f meeting inside the slab, decided in integers as libkinetic
   // decides it (meeting_in_slab). Colliding cells are joined by a Delaunay edge just before they
   // meet, so the edges at a frame and those a flip creates are all that need it.
   void check_collision(Cell f, int i) const {
@@ -752,7 +752,7 @@ private:
     }
   }
 
-  // Every frontier simplex's radius certificate, at a frame (MATH.md 2.3).
+  // Every frontier simplex's radius certificate, at a frame (docs/MATH.md §2.3).
   void alpha_frame() {
     epoch_ = next_serial_;
     stream_.clear(); // the last slab's records, read by the observer by now
@@ -768,7 +768,7 @@ private:
     }
   }
 
-  // A frontier simplex changes shortness at the entry's time (MATH.md 4.4 update rules, 4.1).
+  // A frontier simplex changes shortness at the entry's time (docs/MATH.md §4.4 update rules, 4.1).
   void radius_event(const Entry& e) {
     const double u = e.hi;
     if (e.kind == Kind::triangle_radius) {
@@ -865,7 +865,7 @@ private:
     }
     // The new edge and the new triangles: shortness just after the flip; in K iff the triangles are
     // short (Proposition 4.5 in the plane). A triangle with a long edge is long (R is monotone,
-    // MATH.md 4.1), and off the frontier: only one with three short edges needs its radius.
+    // docs/MATH.md §4.1), and off the frontier: only one with three short edges needs its radius.
     std::array<IntervalPoly, 3> poly;
     EdgeState s;
     const bool real = real_edge(c, new_edge);
@@ -886,7 +886,7 @@ private:
       emit(Kind::edge_radius, c, u, new_edge);
       set_edge(c, new_edge, s);
     }
-    // The frontier over the new simplices and the quadrilateral's edges (MATH.md 4.4, after a change
+    // The frontier over the new simplices and the quadrilateral's edges (docs/MATH.md §4.4, after a change
     // of Del).
     for (const Cell h : {c, d})
       if (face_on_frontier(h))

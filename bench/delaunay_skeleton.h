@@ -1,7 +1,7 @@
 // A lower bound for kinetic_bench: the leanest kinetic Delaunay triangulation we know how to write on
 // the same certificate arithmetic as libkinetic, timed on the same frames.
 //
-// What it keeps of the engine's work (MATH.md 2.3, 3): every facet's in-sphere certificate enclosed
+// What it keeps of the engine's work (docs/MATH.md §2.3, §3): every facet's in-sphere certificate enclosed
 // from doubles, at every frame for every facet and after every flip for the new ones, and either
 // proven to keep its sign over the rest of the slab or its first failure isolated (one
 // Bernstein-Descartes search, root_isolation.h) and narrowed to 2^-24 as the engine narrows it; a
@@ -10,14 +10,14 @@
 // names a cell, a facet and the stamps of the two cells, and a flip restamps the cells it rewrites,
 // so no table is ever looked up.
 //
-// In the plane, given the radius, it maintains the fixed-radius alpha complex too (MATH.md 4): each
+// In the plane, given the radius, it maintains the fixed-radius alpha complex too (docs/MATH.md §4): each
 // frontier simplex's radius certificate (4.4) in the faces, rebuilt at every frame and settled or
 // queued as the in-circle ones; shortness and membership through 2-2 flips (Proposition 4.5: the
 // new simplices are in K iff the new triangles are short) and radius events (Lemma 4.1, Gabriel
 // status tested at the event: 4.2); its final alpha complex must equal CGAL's exact Alpha_shape_2.
 // A radius certificate found already failed when it is created (a crossing inside the isolating
 // interval of the event that created it) is taken at once, as the engine takes one. It also does two
-// more parts of the engine's job there: the collision test of MATH.md 2.5 on every edge at a frame and
+// more parts of the engine's job there: the collision test of docs/MATH.md §2.5 on every edge at a frame and
 // every edge a flip creates, and the output stream (a record per flip and per simplex entering or
 // leaving K, kept for the slab).
 //

@@ -1,4 +1,4 @@
-// Distance benchmark: the pairwise distance matrices of many runs (MATH.md 7.7) computed by
+// Distance benchmark: the pairwise distance matrices of many runs (docs/MATH.md §7.7) computed by
 // libpersistence against gudhi.hera, the baseline a Python user would take, on the same diagrams.
 // For each homology degree 0..2 and each filtration direction of the whole medusa (the diagrams
 // `medusa compare` reads, on its normalised time axis), the bottleneck distance and W_1, W_2
@@ -13,7 +13,7 @@
 // both sides (GUDHI 3.7's Hera does not return on an empty diagram) and counted.
 //
 // Usage: distance_bench --store run.h5 [--store ...] [--python /usr/bin/python3] [--tmp DIR] [--csv]
-#include "medusa/complex/store_reader.h"
+#include "medusa/medusa/store_reader.h"
 #include "medusa/persistence/bottleneck.h"
 #include "medusa/persistence/distance_matrix.h"
 #include "medusa/persistence/medusa_diagrams.h"
@@ -78,7 +78,7 @@ std::vector<Group> read_groups(const std::vector<std::string>& stores, std::vect
     for (const char* direction : {"forward", "reverse"})
       groups.push_back({"H" + std::to_string(k) + " " + direction, {}});
   for (const std::string& store : stores) {
-    const complex::Medusa medusa = complex::read_store(store);
+    const medusa::Medusa medusa = medusa::read_store(store);
     names.push_back(std::filesystem::path(store).stem().string());
     if (medusa.input.frame_times.size() < 2)
       throw std::runtime_error(store + " has fewer than two frames");

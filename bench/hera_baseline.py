@@ -7,7 +7,7 @@ MANIFEST lines: `group<TAB>metric<TAB>file_1<TAB>...<TAB>file_n`, metric one of 
 file holds the finite points of one diagram, `birth death` per line (%.17g), diagonal points already
 left out (Hera's bottleneck does not accept them). For every i < j both diagrams of which have points
 (GUDHI 3.7's Hera does not return on an empty diagram; distance_bench skips the same pairs) the
-distance is computed as our library defines it (MATH.md 7.7): bottleneck exact (delta = 0),
+distance is computed as our library defines it (docs/MATH.md §7.7): bottleneck exact (delta = 0),
 W_p with the L-infinity ground metric (internal_p = inf) and Hera's relative error delta = 0.01.
 Only the distance calls are timed, not the reading of the files.
 OUTPUT.json: [{"group", "metric", "seconds", "pairs": [[i, j, value], ...]}, ...].

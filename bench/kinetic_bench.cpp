@@ -112,7 +112,7 @@ double static_rebuild_seconds(const Trajectories& t, std::size_t k, double rho2,
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The certificate arithmetic alone (MATH.md 3). Every certificate libkinetic builds needs at least
+// The certificate arithmetic alone (docs/MATH.md §3). Every certificate libkinetic builds needs at least
 // its polynomial, enclosed from doubles (certificate_enclosure.h) on the cheapest path; most are then
 // settled by one Bernstein filter on it. Both are timed per formula on every facet, edge, triangle
 // and tetrahedron of CGAL's triangulation at frame k over slab k (best of three passes). Multiplied
@@ -320,7 +320,7 @@ Trajectories random_walk(std::uint64_t seed, int n, int frames, double step_sd) 
 // Cell turnover, as in a growing CompuCell3D tissue: each cell is, with probability `fraction`, born
 // at a random later frame (its earlier positions dropped), and with the same probability dies after
 // a random earlier frame, so that about fraction * n / (frames - 1) cells appear and as many vanish
-// per frame: insertions and deletions at every frame (MATH.md 5.6).
+// per frame: insertions and deletions at every frame (docs/MATH.md §5.6).
 void add_turnover(Trajectories& t, double fraction, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> coin(0, 1);
@@ -484,7 +484,7 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
   // The last frame rebuilds no certificate (no slab follows), so the mean above favours the kinetic
   // side by one rebuild in F - 1; these two lines do not.
   if (t.frames() > 2)
-    std::printf("frames 1..%zu (each with its certificate rebuild, MATH.md 2.3): ratio %.2f\n",
+    std::printf("frames 1..%zu (each with its certificate rebuild, docs/MATH.md §2.3): ratio %.2f\n",
                 t.frames() - 2, kinetic_inner / static_inner);
   std::printf(
       "whole run with the initial triangulation: kinetic %.2f s, static %.2f s (%zu rebuilds), ratio %.2f\n",

@@ -1,6 +1,6 @@
 // Reduction benchmark: the forward filtration of a medusa reduced by libpersistence in memory
 // (make_filtration, then reduce: the PHAT boundary matrix built from the filtration and reduced with
-// bit_tree_pivot_column + twist_reduction, MATH.md 7.5) against PHAT's own `phat` command on the same
+// bit_tree_pivot_column + twist_reduction, docs/MATH.md §7.5) against PHAT's own `phat` command on the same
 // boundary matrix saved in PHAT's binary format, and against what that command does (load_binary +
 // compute_persistence_pairs) run in this process. Checks that the three give the same pairs, then
 // prints times, peak memory and the ratios ours / phat.
@@ -11,7 +11,7 @@
 // bench/README.md). Times are the minimum over the repeats; memory is the peak resident set above
 // the resident set before the step (reset through /proc/self/clear_refs), and for the `phat` child
 // its own maximum resident set (wait4).
-#include "medusa/complex/store_reader.h"
+#include "medusa/medusa/store_reader.h"
 #include "medusa/persistence/boundary_matrix.h"
 #include "medusa/persistence/filtration.h"
 
@@ -134,7 +134,7 @@ void print_header(const Options& o) {
 }
 
 // One boundary matrix: our path, PHAT in this process, the phat command; same pairs required.
-void run_case(const Options& o, const std::string& name, const std::vector<complex::Cell>& cells,
+void run_case(const Options& o, const std::string& name, const std::vector<medusa::Cell>& cells,
               const std::vector<int>& vertex_type, int type) {
   const auto filtration_of = [&] {
     return type == all_types ? make_filtration(cells, Direction::forward)
@@ -278,7 +278,7 @@ int main(int argc, char** argv) {
     std::filesystem::remove(idle + ".pairs");
     print_header(o);
     for (const std::string& store : o.stores) {
-      const complex::Medusa medusa = complex::read_store(store);
+      const medusa::Medusa medusa = medusa::read_store(store);
       const std::string stem = std::filesystem::path(store).stem().string();
       std::vector<int> vertex_type;
       for (const kinetic::Trajectory& t : medusa.input.cells)

@@ -8,7 +8,7 @@ are not stored in it, so they come from the `<stem>.diagrams.csv` that `medusa r
 store, or, when that file is missing, from `medusa barcode --format csv` (give --medusa if `medusa` is
 not on the PATH). Writes <prefix>.barcodes.png (one panel per cell type and filtration direction, bars
 coloured by homology degree) and <prefix>.betti.png (Betti curves of the forward and reverse
-filtrations, MATH.md 7.8: beta_k(s) = #{(b, d): b <= s < d}, reverse diagrams on the -t axis plotted
+filtrations, docs/MATH.md §7.8: beta_k(s) = #{(b, d): b <= s < d}, reverse diagrams on the -t axis plotted
 back on t). The prefix defaults to the store's name without .h5.
 """
 import argparse
@@ -125,7 +125,7 @@ def plot_barcodes(rows, info, path):
 
 
 def betti_curve(rows, k, direction, times):
-    """beta_k on the time axis: forward b <= s < d; reverse on -t, i.e. d < s <= b in t (MATH.md 7.3, 7.8)."""
+    """beta_k on the time axis: forward b <= s < d; reverse on -t, i.e. d < s <= b in t (docs/MATH.md §7.3, §7.8)."""
     pairs = [(r["birth"], r["death"]) for r in rows if r["dim"] == k]
     if direction == "forward":
         return [sum(1 for b, d in pairs if b <= s < d) for s in times]

@@ -2,8 +2,8 @@
 // gzopen reads both, so gzip headers in the corpus reach the decompressor too). InputError is the
 // expected answer to garbage; a crash, a sanitizer report or a hang is a finding.
 #include "fuzz_input_file.h"
+#include "medusa/core/error.h"
 #include "medusa/io/csv_reader.h"
-#include "medusa/kinetic/error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string& path = medusa::fuzz::write_input(data, size, "-cells.csv");

@@ -2,8 +2,8 @@
 // VTK STRUCTURED_POINTS, ASCII or BINARY, plain or gzip). InputError is the expected answer to
 // garbage; a crash, a sanitizer report, a hang or an allocation beyond -rss_limit_mb is a finding.
 #include "fuzz_input_file.h"
+#include "medusa/core/error.h"
 #include "medusa/io/vtk_reader.h"
-#include "medusa/kinetic/error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string& path = medusa::fuzz::write_input(data, size, "-Step_000.vtk");

@@ -1,6 +1,6 @@
 #include "medusa/kinetic/algebraic_time.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "medusa/kinetic/root_isolation.h"
 
 #include <CGAL/Interval_nt.h>

@@ -1,4 +1,4 @@
-// A kinetic certificate (MATH.md 3.1): the Delaunay certificate of a facet or the radius certificate
+// A kinetic certificate (docs/MATH.md §3.1): the Delaunay certificate of a facet or the radius certificate
 // of a finite face, with the version that invalidates its stale queue entries.
 #pragma once
 
@@ -10,11 +10,11 @@ namespace medusa::kinetic::detail {
 
 enum class CertKind : std::uint8_t { delaunay, radius };
 
-// What a Delaunay certificate that vanishes for the whole slab is replaced by (MATH.md 3.9 takes
+// What a Delaunay certificate that vanishes for the whole slab is replaced by (docs/MATH.md §3.9 takes
 // such a certificate as valid, which is not always so; Engine::install).
 enum class Substitute : std::uint8_t {
   none,
-  // A hull ridge (case B of MATH.md 3.2) whose orientation vanishes: its facets stay in one plane
+  // A hull ridge (case B of docs/MATH.md §3.2) whose orientation vanishes: its facets stay in one plane
   // (line), and the certificate is then that they lie side by side there, the negated
   // Engine::fold_poly, which fails when a facet degenerates and the two fold onto each other.
   hull_fold,

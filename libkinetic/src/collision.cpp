@@ -1,4 +1,4 @@
-// Two cells meeting inside a slab (collision.h, MATH.md 2.5).
+// Two cells meeting inside a slab (collision.h, docs/MATH.md §2.5).
 #include "medusa/kinetic/collision.h"
 
 #include <cstddef>

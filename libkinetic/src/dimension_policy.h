@@ -1,5 +1,5 @@
 // The combinatorial rules that depend on the dimension d of the run (3, or 2 for planar runs): the
-// elementary flip through a facet (MATH.md 4.5: 2-3 / 3-2 in 3D, 2-2 in 2D; hull flips through the
+// elementary flip through a facet (docs/MATH.md §4.5: 2-3 / 3-2 in 3D, 2-2 in 2D; hull flips through the
 // infinite vertex alike) and the Euler characteristic of the augmented triangulation. Top simplices
 // have d + 1 vertices and facets d; the geometric rules (certificate polynomials) are in engine.h and
 // the static structures in static_delaunay.h.

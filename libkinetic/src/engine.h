@@ -52,7 +52,7 @@ struct Engine {
   Interval Pi, Qi;
   std::shared_ptr<const SquaredRadius> rho2_shared;
 
-  // The dimension of the run (MATH.md 5.7): 3, or 2 for a planar run whose z is constant. Top
+  // The dimension of the run (docs/MATH.md §5.7): 3, or 2 for a planar run whose z is constant. Top
   // simplices ("tets" below) have dim + 1 vertices, facets dim; the dimension-specific rules are
   // delaunay_poly, orientation_poly, the flip rule (dimension_policy.h) and the static structures
   // (static_delaunay.h). Everything else is shared.
@@ -93,7 +93,7 @@ struct Engine {
 
   // Certificates built on the same points share their polynomial up to sign, hence its roots: the
   // in-sphere of a 5-point set (the facet of a flip and the new interior facets), the orientation of
-  // a 4-point set, the radius of a face (MATH.md 3.8, caching; cleared at every frame).
+  // a 4-point set, the radius of a face (docs/MATH.md §3.8, caching; cleared at every frame).
   RootCache root_cache;
 
   // Scratch space of process_batch and change_tets, kept to avoid allocations per event.
@@ -123,7 +123,7 @@ struct Engine {
   static const Interval& pick(const mpz_class&, const Interval& approx, const Interval&) { return approx; }
   static const mpz_class& pick(const mpz_class& exact, const Interval&, const mpz_class&) { return exact; }
 
-  // Delaunay certificate of a facet, positive while valid (MATH.md 3.1, 3.2), in the run's dimension.
+  // Delaunay certificate of a facet, positive while valid (docs/MATH.md §3.1, §3.2), in the run's dimension.
   template <class NT> Poly<NT> delaunay_poly(const Simplex& facet) const {
     return dim == 2 ? delaunay_poly_2<NT>(facet) : delaunay_poly_3<NT>(facet);
   }
@@ -174,7 +174,7 @@ struct Engine {
     return true;
   }
 
-  // The planar analogue (MATH.md 3.2 one dimension down): a facet is an edge with two triangles.
+  // The planar analogue (docs/MATH.md §3.2 one dimension down): a facet is an edge with two triangles.
   template <class NT> Poly<NT> delaunay_poly_2(const Simplex& facet) const {
     const detail::Triangulation::Apices* ap = tri.apices(facet);
     VertexId p = ap->v[0], q = ap->v[1];
@@ -258,7 +258,7 @@ struct Engine {
     return f;
   }
 
-  // The radius polynomial f of a finite simplex: f <= 0 iff short (MATH.md 3.3).
+  // The radius polynomial f of a finite simplex: f <= 0 iff short (docs/MATH.md §3.3).
   template <class NT> Poly<NT> radius_poly(const Simplex& s, const NT& p, const NT& q) const {
     switch (s.size()) {
     case 2: return certificate::edge_radius<NT>(pt(s[0]), pt(s[1]), p, q);
@@ -422,7 +422,7 @@ struct Engine {
   template <class StateOf> bool settle(const Simplex& s, Face& f, StateOf&& state_of);
   std::vector<Simplex> current_complex() const;
 
-  // ------------------------------------ flips (MATH.md 4.5) and radius events (engine_flips.cpp)
+  // ------------------------------------ flips (docs/MATH.md §4.5) and radius events (engine_flips.cpp)
 
   void flip(const Simplex& facet, const FlipChange& change, std::vector<Step>& steps);
   void repair(std::vector<Step>& steps);
@@ -449,7 +449,7 @@ struct Engine {
   void reorient_kept(const std::vector<Simplex>& kept); // top simplices the rebuild kept
   void reinstall_hull_ridges_over(const std::vector<Simplex>& added, const std::vector<Simplex>& removed);
   // Calls f on the infinite facets over the ridges of f_hull when it is a hull facet: the hull
-  // ridges whose certificates are oriented by the top simplex below f_hull (MATH.md 3.2 case B).
+  // ridges whose certificates are oriented by the top simplex below f_hull (docs/MATH.md §3.2 case B).
   template <class F> void for_each_hull_ridge_over(const Simplex& f_hull, F&& f) const {
     if (tri.two_sided(f_hull).orientation_slot(infinite_vertex) < 0)
       return;
@@ -524,7 +524,7 @@ void Engine::count_in_facets(const Simplex& c, int short_delta, int k_delta, Sta
     }
 }
 
-// The frontier (MATH.md 4.4): maximal short simplices and minimal long ones.
+// The frontier (docs/MATH.md §4.4): maximal short simplices and minimal long ones.
 template <class FacetShort>
 bool Engine::in_frontier(const Simplex& s, const Face& f, FacetShort&& facet_short) {
   if (f.is_short)
@@ -547,7 +547,7 @@ template <class NT> Poly<NT> Engine::cert_poly(const Certificate& c) const {
     return delaunay_poly<NT>(c.key);
   }
   Poly<NT> f = radius_poly<NT>(c.key, pick(P, Pi, NT()), pick(Q, Qi, NT()));
-  // Positive while valid: -f while short, +f while long (MATH.md 3.1).
+  // Positive while valid: -f while short, +f while long (docs/MATH.md §3.1).
   return faces.at(c.key).is_short ? -f : f;
 }
 

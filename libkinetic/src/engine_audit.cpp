@@ -2,8 +2,8 @@
 #include "engine.h"
 
 #include "dimension_policy.h"
+#include "medusa/core/error.h"
 #include "medusa/kinetic/certificate_polynomials.h"
-#include "medusa/kinetic/error.h"
 #include "static_delaunay.h"
 
 #include <CGAL/FPU.h>
@@ -39,7 +39,7 @@ void Engine::audit() {
     return; // the slab has no room left (event at u = 1)
   // The audit compares open conditions (valid on (now, next event)) with closed ones at q, so q must
   // avoid the isolated zeros of every certificate polynomial, such as a radius touching rho without
-  // crossing it (a tangential root, MATH.md 3.9): move q towards now until none vanishes there. The
+  // crossing it (a tangential root, docs/MATH.md §3.9): move q towards now until none vanishes there. The
   // signs at q (0 only for identically-zero polynomials) serve the checks below.
   std::vector<std::pair<Simplex, ExactPoly>> delaunay_polys, radius_polys;
   mpz_class p = P, qq = Q;
@@ -113,7 +113,7 @@ void Engine::audit() {
     });
   if (del_faces.size() != faces.size())
     audit_failure("a simplex not in Del is still recorded");
-  // Local Delaunay, exactly, at q (identically-zero certificates are valid, MATH.md 3.9).
+  // Local Delaunay, exactly, at q (identically-zero certificates are valid, docs/MATH.md §3.9).
   for (std::size_t i = 0; i < delaunay_polys.size(); ++i) {
     const Simplex& facet = delaunay_polys[i].first;
     if (delaunay_sign[i] < 0) {
@@ -142,7 +142,7 @@ void Engine::audit() {
       os << "simplex " << kv.first << " has a wrong shortness flag";
       audit_failure(os.str());
     }
-    // Certificates exactly on the frontier (MATH.md 4.4).
+    // Certificates exactly on the frontier (docs/MATH.md §4.4).
     bool certified = kv.second.cert >= 0 && certs[static_cast<std::size_t>(kv.second.cert)].alive;
     if (certified != in_frontier(kv.first)) {
       std::ostringstream os;
@@ -165,7 +165,7 @@ void Engine::audit() {
   for (const Simplex& t : tri.tets())
     same_triangulation = same_triangulation && cgal_set.count(t);
   if (!same_triangulation) {
-    // A degenerate (identically cospherical) group triangulated differently (MATH.md 5.3): the
+    // A degenerate (identically cospherical) group triangulated differently (docs/MATH.md §5.3): the
     // complexes are not compared, but ours must still triangulate the points at q.
     audit_embedded(q, cgal_tets);
     return;

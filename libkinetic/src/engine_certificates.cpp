@@ -1,9 +1,9 @@
 // Certificates: their polynomials' orientation, creation and retirement, and installation (the
-// interval filter, root isolation in doubles, the exact path with the per-slab root cache), MATH.md 3.
+// interval filter, root isolation in doubles, the exact path with the per-slab root cache), docs/MATH.md §3.
 #include "engine.h"
 
+#include "medusa/core/error.h"
 #include "medusa/kinetic/certificate_polynomials.h"
-#include "medusa/kinetic/error.h"
 #include "medusa/kinetic/interval_filter.h"
 #include "medusa/kinetic/root_isolation.h"
 
@@ -91,7 +91,7 @@ int Engine::orientation_sign_plus(const Simplex& t) {
 }
 
 // A hull flip at a root of this very orientation (the failed certificate of four finite points,
-// three in 2D, MATH.md 3.2 case B) creates the top simplex that is flat at now; the root is then an
+// three in 2D, docs/MATH.md §3.2 case B) creates the top simplex that is flat at now; the root is then an
 // event, a sign change, and the sign just after it is known without exact arithmetic. 0 otherwise.
 int Engine::sign_after_own_orientation_root(const Simplex& t) const {
   if (now.isolated() == nullptr)
@@ -105,7 +105,7 @@ int Engine::sign_after_own_orientation_root(const Simplex& t) const {
 }
 
 // A finite top simplex flat at now inside a slab whose orientation only touches zero there: it has
-// one sign just before and just after now. A hull flip (MATH.md 3.2 case B) adds the top simplex
+// one sign just before and just after now. A hull flip (docs/MATH.md §3.2 case B) adds the top simplex
 // abcd at the root of its ridge's certificate O(a, b, c, d); a ridge that turns reflex at now makes
 // that root a sign change. One that only touches zero was reflex just before now too: an earlier flip
 // of the batch made it so, and pasting the sliver abcd onto it can leave the top simplices wrapped
@@ -166,7 +166,7 @@ int Engine::sign_after_own_root(const IntervalPoly& f, const CacheKey& key) cons
   return -proportionality_sign(f, current->enclosure, current->shift) * current->sign_lo;
 }
 
-// A hull certificate (MATH.md 3.2): a ridge's (case B, the key holds the infinite vertex) or a hull
+// A hull certificate (docs/MATH.md §3.2): a ridge's (case B, the key holds the infinite vertex) or a hull
 // facet's (case A, the infinite vertex is an apex), each the orientation of four (three) cells.
 bool Engine::is_hull_orientation(const Certificate& c) const {
   if (c.kind != CertKind::delaunay || c.substitute != Substitute::none)
@@ -206,7 +206,7 @@ void Engine::kill_cert(int id) {
   free_certs.push_back(id);
 }
 
-// Every certificate dies at once (a frame rebuilds them all, MATH.md 2.3), and the ids are handed
+// Every certificate dies at once (a frame rebuilds them all, docs/MATH.md §2.3), and the ids are handed
 // out again from 0 up: the frame then installs certificate i + 1 beside certificate i, in the order it
 // visits the simplices, and retires them in that order at the next frame, where retiring them one by
 // one in the order of their last slab's flips was a cache miss each. The callers must drop their
@@ -283,7 +283,7 @@ bool Engine::hull_ridge_folded_at_now(const Simplex& facet) {
 }
 
 // Evaluates a fresh certificate at `now`: schedules its next failure in (now, 1), or queues it in
-// the current batch when it is already invalid just after now (MATH.md 3.7, 3.9).
+// the current batch when it is already invalid just after now (docs/MATH.md §3.7, §3.9).
 void Engine::install(int id, Interval* at_now) {
   ++stats.certificates_built;
   settle_certificate(id, true, at_now);
@@ -343,10 +343,10 @@ void Engine::settle_certificate(int id, bool counted, Interval* at_now) {
   }
   ExactPoly f = to_exact_poly(exact);
   if (CGAL::is_zero(f)) {
-    // Identically zero: valid, never scheduled (MATH.md 3.9); but a radius polynomial f == 0 means
+    // Identically zero: valid, never scheduled (docs/MATH.md §3.9); but a radius polynomial f == 0 means
     // R = rho throughout, which is short, so a face still flagged long fails now (e.g. two cells
     // moving rigidly at distance exactly 2 rho from a frame on). Nor is every identically-zero hull
-    // ridge (case B of MATH.md 3.2: an infinite facet) valid: its two hull facets lie in one plane
+    // ridge (case B of docs/MATH.md §3.2: an infinite facet) valid: its two hull facets lie in one plane
     // (line) for the whole slab, which is a convex hull only while they lie side by side, not once
     // they fold onto each other (stress seed 6304: a hull flip at an instant when five hull cells
     // were coplanar left two facets folded; hull-box seed 146: a cell crossed the ridge line of
@@ -425,7 +425,7 @@ void Engine::settle_certificate(int id, bool counted, Interval* at_now) {
   }
 }
 
-// The fast path of install (MATH.md 3.8): the sign just after now and the next failure time,
+// The fast path of install (docs/MATH.md §3.8): the sign just after now and the next failure time,
 // isolated in double interval arithmetic. False when doubles cannot decide; nothing is changed then.
 bool Engine::install_in_doubles(int id, const IntervalPoly& f, bool wide) {
   const Certificate& c = certs[static_cast<std::size_t>(id)];
@@ -495,7 +495,7 @@ bool Engine::schedule_first_change(int id, const IntervalPoly& f, int sign, doub
 
 // At a slab start (u = 0: t_0 and frames) an enclosure that straddles zero often belongs to a
 // certificate that vanishes there exactly: CC3D's initial lattice is full of cospherical and coplanar
-// sets (MATH.md 5.5). One exact static determinant proves f(0) = 0; then f = u h, h is enclosed by
+// sets (docs/MATH.md §5.5). One exact static determinant proves f(0) = 0; then f = u h, h is enclosed by
 // f's enclosure shifted down, and the sign just after 0 is h(0)'s. False when this does not decide;
 // nothing is changed then.
 bool Engine::install_vanishing_at_start(int id, const IntervalPoly& f) {
@@ -515,7 +515,7 @@ bool Engine::install_vanishing_at_start(int id, const IntervalPoly& f) {
 
 // The second path, on the exact coefficients rounded outward to doubles (tight enclosures): at a
 // rational slab start (u = 0: t_0 and frames) the root at 0 of multiplicity m is divided out first,
-// which settles the lattice-degenerate certificates of CC3D's initial layout (MATH.md 5.5) without
+// which settles the lattice-degenerate certificates of CC3D's initial layout (docs/MATH.md §5.5) without
 // CGAL. False when doubles cannot decide; nothing is changed then.
 bool Engine::install_from_exact_coefficients(int id, const Poly<mpz_class>& f) {
   const bool at_zero = now.is_rational() && now.rational() == 0;
@@ -581,7 +581,7 @@ CacheKey Engine::cache_key(const Certificate& c) const {
     bool infinite = std::find(pts.begin(), end, infinite_vertex) != end;
     k.v[0] = infinite ? 1 : 0;
     if (infinite) {
-      // Case A: the finite top simplex; case B: its d + 1 finite points (MATH.md 3.2).
+      // Case A: the finite top simplex; case B: its d + 1 finite points (docs/MATH.md §3.2).
       end = std::remove(pts.begin(), end, infinite_vertex);
       n = static_cast<std::size_t>(end - pts.begin());
     }
@@ -647,7 +647,7 @@ bool Engine::compute_short(const Simplex& s) {
   }
   int sp = sign_plus_now(
       [&](auto tag) { return radius_poly<decltype(tag)>(s, pick(P, Pi, tag), pick(Q, Qi, tag)); });
-  return sp <= 0; // f == 0 identically means R = rho: short (MATH.md 3.9)
+  return sp <= 0; // f == 0 identically means R = rho: short (docs/MATH.md §3.9)
 }
 
 } // namespace medusa::kinetic::detail

@@ -1,8 +1,8 @@
-// Collision checks: two cells at one position at a frame, or meeting inside a slab (MATH.md 2.5).
+// Collision checks: two cells at one position at a frame, or meeting inside a slab (docs/MATH.md §2.5).
 #include "engine.h"
 
+#include "medusa/core/error.h"
 #include "medusa/kinetic/collision.h"
-#include "medusa/kinetic/error.h"
 
 #include <algorithm>
 #include <string>
@@ -24,7 +24,7 @@ void Engine::check_collisions_at_frame(std::size_t k) const {
                           std::to_string(traj.frame_times[k]) + ")");
 }
 
-// Collision inside the slab (MATH.md 2.5): p_i(u) = p_j(u) for some u in (now, 1). Tested on the
+// Collision inside the slab (docs/MATH.md §2.5): p_i(u) = p_j(u) for some u in (now, 1). Tested on the
 // Delaunay edges at the slab start and on every edge when it is created: colliding cells are
 // joined by a Delaunay edge just before they meet. Decided in integers (meeting_in_slab); only a
 // real collision builds the rational root.

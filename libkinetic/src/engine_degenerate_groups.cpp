@@ -1,4 +1,4 @@
-// The degenerate groups of a static repair (MATH.md 6.3, second bullet): the non-simplicial faces of
+// The degenerate groups of a static repair (docs/MATH.md §6.3, second bullet): the non-simplicial faces of
 // the Delaunay subdivision at t* in the repaired region, with g(P) <= rho^2. One routine serves both
 // dimensions d of the run (3, or 2 for planar runs): the top simplices ("tets") have d + 1 vertices,
 // their facets d, and the cocircularity test across a facet is the in-sphere (in-circle in 2D).
@@ -108,7 +108,7 @@ bool Engine::cospherical_at_now(const Simplex& t, VertexId y) {
 }
 
 // Is the face with these coplanar vertices (>= 3, not collinear) within rho, g(P) <= rho^2? `apices`
-// are the points that may lie inside its circle's ball (MATH.md 6.3, Lemma 4.2), `cofaces` the finite
+// are the points that may lie inside its circle's ball (docs/MATH.md §6.3, Lemma 4.2), `cofaces` the finite
 // tetrahedra around it, whose circumspheres are those of its Delaunay cofaces.
 bool Engine::face_group_within_rho(const std::vector<VertexId>& p, const std::vector<VertexId>& apices,
                                    const std::vector<Simplex>& cofaces) {
@@ -143,7 +143,7 @@ bool Engine::face_group_within_rho(const std::vector<VertexId>& p, const std::ve
 }
 
 // Are the four points of t (coplanar at now) on one circle? Coplanar points are concyclic iff the
-// fourth has power 0 with respect to the smallest circumsphere of the other three (MATH.md 3.4), which
+// fourth has power 0 with respect to the smallest circumsphere of the other three (docs/MATH.md §3.4), which
 // needs those three not collinear (|n|^2 != 0; three collinear points are never concyclic with a
 // fourth, and then some other triple is not collinear unless all four are, which is not concyclic).
 bool Engine::concyclic_at_now(const Simplex& t) {
@@ -212,9 +212,9 @@ std::vector<DegenerateGroup> Engine::degenerate_groups(const std::vector<Simplex
       // be a concyclic hull face, handled below.
       continue;
     }
-    // g = R_S^2 (MATH.md 6.3): any top simplex of the cell that is not flat at t* has S as circumsphere.
-    // A class of top simplices all flat at t* is no cell of D(t*) (d + 2 or more points momentarily in
-    // one hyperplane, where every in-sphere vanishes): it spans no sphere and is skipped.
+    // g = R_S^2 (docs/MATH.md §6.3): any top simplex of the cell that is not flat at t* has S as
+    // circumsphere. A class of top simplices all flat at t* is no cell of D(t*) (d + 2 or more points
+    // momentarily in one hyperplane, where every in-sphere vanishes): it spans no sphere and is skipped.
     const Simplex* solid = nullptr;
     for (const Simplex& t : cell)
       if (orientation_at_now(t) != 0) {

@@ -1,5 +1,5 @@
 // The event loop inside a slab: popping simultaneous failures from the queue, processing a batch
-// and emitting its ranked steps to the observer (MATH.md 5.2).
+// and emitting its ranked steps to the observer (docs/MATH.md §5.2).
 #include "engine.h"
 
 #include <algorithm>
@@ -40,7 +40,7 @@ void Engine::emit_batch(Observer& observer, std::vector<Step>& steps, bool at_fr
 }
 
 // Processes the batch at `now`: Delaunay failures first (canonical order), then radius events,
-// then the final re-evaluation (MATH.md 5.2).
+// then the final re-evaluation (docs/MATH.md §5.2).
 void Engine::process_batch(std::vector<Step>& steps) {
   resolve_hull_touches();
   resolve_delaunay(steps);

@@ -1,11 +1,11 @@
-// Resolving failed certificates at the current time: flips (MATH.md 4.5), Delaunay failures in
+// Resolving failed certificates at the current time: flips (docs/MATH.md §4.5), Delaunay failures in
 // canonical order and radius events (5.2).
 #include "engine.h"
 
 #include "dimension_policy.h"
 #include "face.h"
+#include "medusa/core/error.h"
 #include "medusa/kinetic/certificate_polynomials.h"
-#include "medusa/kinetic/error.h"
 
 #include <algorithm>
 #include <array>
@@ -28,7 +28,7 @@ void Engine::flip(const Simplex& facet, const FlipChange& change, std::vector<St
   for (std::size_t i = 0; i < added.size(); ++i)
     if (is_finite(added[i]) && (orientations[i] = orientation_sign_plus(added[i])) == 0) {
       // A new top simplex would stay flat: no elementary flip resolves this degenerate group (e.g.
-      // four points coplanar through the slab); MATH.md 5.2 step 3 asks for a static repair.
+      // four points coplanar through the slab); docs/MATH.md §5.2 step 3 asks for a static repair.
       repair(steps);
       return;
     }
@@ -38,7 +38,7 @@ void Engine::flip(const Simplex& facet, const FlipChange& change, std::vector<St
                           : StepKind::flip23;
   if (!hull) {
     // The simplex of the group (a 4-simplex; a 3-simplex in 2D) is an instant cell iff R_S <= rho and
-    // the old top simplices are in K (MATH.md 6.3). The old top simplices are inscribed in the
+    // the old top simplices are in K (docs/MATH.md §6.3). The old top simplices are inscribed in the
     // group's sphere (circle) at now, so the radius of any of them is R_S.
     bool old_in_k = true;
     for (const Simplex& t : removed)
@@ -67,7 +67,7 @@ void Engine::flip(const Simplex& facet, const FlipChange& change, std::vector<St
   steps.push_back(std::move(step));
 }
 
-// Static repair of the whole triangulation at now+ as one step (MATH.md 5.2 step 3, 5.4).
+// Static repair of the whole triangulation at now+ as one step (docs/MATH.md §5.2 step 3, 5.4).
 void Engine::repair(std::vector<Step>& steps) {
   if (!now.is_rational())
     ++stats.repairs_at_algebraic_times;
@@ -75,7 +75,7 @@ void Engine::repair(std::vector<Step>& steps) {
   step.kind = StepKind::repair;
   OldMembership old_k;
   record_tet_changes(step, old_k);
-  // The non-simplicial Delaunay faces at now give instant cells (MATH.md 6.3), in either dimension
+  // The non-simplicial Delaunay faces at now give instant cells (docs/MATH.md §6.3), in either dimension
   // (engine_degenerate_groups.cpp).
   step.groups = degenerate_groups(step.delaunay_removed, step.delaunay_created);
   settle_membership(old_k, step);
@@ -83,7 +83,7 @@ void Engine::repair(std::vector<Step>& steps) {
   steps.push_back(std::move(step));
 }
 
-// Whether the elementary flip of a failed facet yields a triangulation at now+ (MATH.md 5.2 step 2,
+// Whether the elementary flip of a failed facet yields a triangulation at now+ (docs/MATH.md §5.2 step 2,
 // "if its configuration is flippable"). A failed certificate in generic motion always passes;
 // simultaneous degenerate failures (six or more cospherical points, an edge of degree four, a cycle
 // of flips) may not, and step 3 then asks for a static repair. `change` receives the flip.
@@ -96,7 +96,7 @@ bool Engine::flippable(const Simplex& facet, FlipChange& change) {
   // embedded at now+, the local tests below can pass a flip that leaves it so, and later certificates,
   // read against the orientations recorded, miss the inversion (stress seed 5142: four cells on one
   // line at u = 1/2). Only a static repair decides such a neighbourhood. Hull flips are exempt: their
-  // certificates are orientations (MATH.md 3.2), so the top simplex a hull flip removes (case A) or
+  // certificates are orientations (docs/MATH.md §3.2), so the top simplex a hull flip removes (case A) or
   // adds (case B) is flat at now by definition.
   if (is_finite(facet) && p != infinite_vertex && q != infinite_vertex)
     for (const Simplex& t : change.removed)
@@ -183,14 +183,14 @@ bool Engine::flippable(const Simplex& facet, FlipChange& change) {
 }
 
 void Engine::resolve_delaunay(std::vector<Step>& steps) {
-  // A batch of simultaneous degenerate failures can cycle through flips (MATH.md 5.2 step 3, "a cycle
+  // A batch of simultaneous degenerate failures can cycle through flips (docs/MATH.md §5.2 step 3, "a cycle
   // of flips"): past this many elementary flips in one batch, a static repair settles it.
   const std::size_t limit = 20 * traj.cells.size() + 1000;
   std::size_t flips_in_batch = 0, repairs_in_batch = 0;
   FlipChange change;
   while (!pending_delaunay.empty() || repair_pending) {
     // The first flippable failure in canonical order; a static repair when none is, when the flips
-    // do not converge (MATH.md 5.2 steps 2 and 3), or when a hull ridge was found folded at now.
+    // do not converge (docs/MATH.md §5.2 steps 2 and 3), or when a hull ridge was found folded at now.
     bool flipped = false;
     if (flips_in_batch < limit && !repair_pending)
       for (auto it = pending_delaunay.begin(); it != pending_delaunay.end();) {
@@ -212,7 +212,7 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
       }
     if (flipped || (pending_delaunay.empty() && !repair_pending))
       continue;
-    // A repair gives Del(now+) (MATH.md 5.4), so failures left after it can only be those its
+    // A repair gives Del(now+) (docs/MATH.md §5.4), so failures left after it can only be those its
     // rational stand-in for now+ (rational_before_next_event) settled differently; a few more rounds
     // of flips settle them, and more than that is a bug.
     if (++repairs_in_batch > 3) {
@@ -231,12 +231,12 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
 // own radius is rho at now may change membership there: the face is short, and a link vertex on its
 // smallest circumsphere, moving out of it or into it, makes it Gabriel or not, while the one coface
 // that would carry it (the frontier simplex, of radius rho at now only) is in K at no time around now.
-// So the faces of the touching simplex are settled again at now+ (the final re-evaluation of MATH.md
-// 5.2 step 4), and its certificate is installed again for its next root. MATH.md 3.9 drops roots of
+// So the faces of the touching simplex are settled again at now+ (the final re-evaluation of docs/MATH.md
+// §5.2 step 4), and its certificate is installed again for its next root. docs/MATH.md §3.9 drops roots of
 // even multiplicity as non-events; that misses this case (tests/kinetic/test_kinetic_dense_lattice.cpp).
 // The face that changes need not be a face of the touching simplex: a short face t with R(t) = rho
 // whose link vertex x crosses its smallest circumsphere S makes t + x inscribed in S at now, so R(t +
-// x) touches rho; t + x may carry no certificate (long with a long facet, MATH.md 4.4), but then
+// x) touches rho; t + x may carry no certificate (long with a long facet, docs/MATH.md §4.4), but then
 // that facet is inscribed in S too and touches rho, and so on down to a frontier simplex, whose
 // certificate reports the touch. Every such t is a face of a top simplex containing the simplex that
 // touches, so the faces of all of those are settled again (hull-box seed 8: x = 8 entered the
@@ -257,8 +257,8 @@ void Engine::resolve_touches(OldMembership& old_k) {
   }
 }
 
-// Hull touches: a hull certificate (an orientation, MATH.md 3.2) whose root at now has even
-// multiplicity. MATH.md 3.9 drops such roots as non-events, which is right for the certificate's own
+// Hull touches: a hull certificate (an orientation, docs/MATH.md §3.2) whose root at now has even
+// multiplicity. docs/MATH.md §3.9 drops such roots as non-events, which is right for the certificate's own
 // sign but not always for the hull: when three hull cells become collinear at now, every top simplex
 // on them is flat at now, and one that only touches flatness can hide a hull facet turning over and
 // folding onto its neighbour at once, two sign changes that cancel in each certificate (hull-box seed
@@ -342,7 +342,7 @@ void Engine::resolve_radius(Step& settle, OldMembership& old_k) {
     f.is_short = !f.is_short;
     install_radius(s);
     ++stats.radius_events;
-    // Frontier update rules of MATH.md 4.4: facets may leave or enter, cofaces may enter or leave.
+    // Frontier update rules of docs/MATH.md §4.4: facets may leave or enter, cofaces may enter or leave.
     if (s.size() > 2)
       for (std::size_t i = 0; i < s.size(); ++i)
         update_frontier(s.facet(i));

@@ -1,6 +1,6 @@
-// Frames: switching slabs, rebuilding every certificate, insertions and deletions (MATH.md 2.3, 5.6).
+// Frames: switching slabs, rebuilding every certificate, insertions and deletions (docs/MATH.md §2.3, §5.6).
 #include "engine.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "start_determinants.h"
 
 #include <algorithm>
@@ -23,7 +23,7 @@ void Engine::set_slab_motion(std::size_t k) {
       const GridPoint& y = c.at(k + 1);
       m.b = {y[0] - x[0], y[1] - x[1], y[2] - x[2]};
     } else {
-      m.b = {0, 0, 0}; // ending at this frame: velocity 0 for this instant (MATH.md 5.6)
+      m.b = {0, 0, 0}; // ending at this frame: velocity 0 for this instant (docs/MATH.md §5.6)
     }
   }
 }
@@ -51,7 +51,7 @@ void Engine::reinstall_all() {
 }
 
 void Engine::frame(Observer& observer, std::size_t k) {
-  // Slab k-1 ended at t_k; switch to slab k and rebuild every certificate (MATH.md 2.3, 5.6).
+  // Slab k-1 ended at t_k; switch to slab k and rebuild every certificate (docs/MATH.md §2.3, §5.6).
   // At t_0 the structure was just built (initialise); only cells present at t_0 alone are deleted.
   std::vector<Step> steps;
   if (k > 0) {
@@ -65,7 +65,7 @@ void Engine::frame(Observer& observer, std::size_t k) {
     }
     resolve_delaunay(steps);
   }
-  // Insertions, then deletions, one rank each in increasing cell id (MATH.md 5.6).
+  // Insertions, then deletions, one rank each in increasing cell id (docs/MATH.md §5.6).
   std::vector<std::pair<std::int64_t, VertexId>> born, dying;
   for (std::size_t i = 0; i < traj.cells.size(); ++i) {
     const Trajectory& c = traj.cells[i];
@@ -82,7 +82,7 @@ void Engine::frame(Observer& observer, std::size_t k) {
     insert_or_delete(cell_vertex.second, true, steps);
   for (const auto& cell_vertex : dying)
     insert_or_delete(cell_vertex.second, false, steps);
-  process_batch(steps); // radius events at the frame, then the final re-evaluation (MATH.md 5.6 step 5)
+  process_batch(steps); // radius events at the frame, then the final re-evaluation (docs/MATH.md §5.6 step 5)
   check_collisions_in_slab();
   emit_batch(observer, steps, true);
   if (k > 0)
@@ -97,8 +97,8 @@ void Engine::frame(Observer& observer, std::size_t k) {
 // and cells that reach one plane (line) exactly there, typically on the hull, can carry their top
 // simplex through it. Every certificate that reads its recorded orientation then means nothing, and
 // elementary flips chosen on them can leave it inside out (stress seed 6265: the hull flip at one
-// ridge took away the hull facet whose certificate reported it). So Del(now+) is rebuilt (MATH.md
-// 5.4), which also sets the orientations of the top simplices it keeps (Engine::reorient_kept).
+// ridge took away the hull facet whose certificate reported it). So Del(now+) is rebuilt (docs/MATH.md
+// §5.4), which also sets the orientations of the top simplices it keeps (Engine::reorient_kept).
 // One flat at the frame next to a degenerate hull facet (three cells collinear) is rebuilt too, even
 // if it keeps its orientation: the facet may turn over and fold onto a neighbour at that instant, two
 // sign changes that cancel in every certificate (the frame analogue of Engine::resolve_hull_touches:
@@ -126,7 +126,7 @@ bool Engine::top_simplex_turns_at_frame() {
   return false;
 }
 
-// One insertion or deletion of vertex v at the current frame, as its own rank (MATH.md 5.6), with
+// One insertion or deletion of vertex v at the current frame, as its own rank (docs/MATH.md §5.6), with
 // the Delaunay changes made by a static rebuild and the membership re-evaluated around them.
 void Engine::insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps) {
   Step step;

@@ -1,10 +1,10 @@
 // Triangulation changes and the alpha complex on them: replacing tetrahedra, cofaces, the frontier
-// of radius certificates (MATH.md 4.4), the Gabriel test and membership re-evaluation (4.5).
+// of radius certificates (docs/MATH.md §4.4), the Gabriel test and membership re-evaluation (4.5).
 #include "engine.h"
 
 #include "face.h"
+#include "medusa/core/error.h"
 #include "medusa/kinetic/certificate_polynomials.h"
-#include "medusa/kinetic/error.h"
 #include "touched_faces.h"
 
 #include <algorithm>
@@ -99,12 +99,12 @@ void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::ve
       check_collision(f);
     Face& state = *state_of(f);
     // Created in canonical order, f comes after its facets. A long facet makes f long (R is monotone,
-    // MATH.md 4.1) with no radius polynomial: f's longness is implied, as for any face with a long
+    // docs/MATH.md §4.1) with no radius polynomial: f's longness is implied, as for any face with a long
     // face (4.4, "skipped (implied)"), and f is not in the frontier.
     state.is_short = !has_long_facet(f, state_of) && compute_short(f);
     count_in_facets(f, int(state.is_short), 0, state_of); // a new face is not in K yet
   }
-  // Frontier membership of every surviving touched simplex: their cofaces changed (MATH.md 4.4,
+  // Frontier membership of every surviving touched simplex: their cofaces changed (docs/MATH.md §4.4,
   // "after any change of Del"). Cofaces of new simplices are new, hence touched as well.
   for (TouchedFace& t : touched.faces)
     if (t.state != nullptr && !t.leaves) {
@@ -171,7 +171,7 @@ void Engine::set_frontier(const Simplex& s, Face& f, bool want) {
 }
 
 bool Engine::gabriel_now(const Simplex& s) {
-  // Not strictly inside the smallest circumball: sign^+ of G1/G2 >= 0 (MATH.md 3.4, 4.1 Lemma 4.2),
+  // Not strictly inside the smallest circumball: sign^+ of G1/G2 >= 0 (docs/MATH.md §3.4, §4.1 Lemma 4.2),
   // for every link vertex (each tested once). The certificates are first evaluated at now's
   // enclosure only (certificate::PointAtTime); the few that this leaves undecided get sign^+ from
   // their polynomials (sign_plus_now: interval polynomial, then exact).
@@ -220,7 +220,7 @@ bool Engine::gabriel_now(const Simplex& s) {
 }
 
 // Every simplex of K is short (its smallest circumsphere is no larger than an empty sphere of
-// radius <= rho, MATH.md 4.1), so a long one is out without looking at its cofaces; top simplices
+// radius <= rho, docs/MATH.md §4.1), so a long one is out without looking at its cofaces; top simplices
 // are always Gabriel (4.1). Cofaces are settled before faces (decreasing dimension), so the counts
 // read here are current.
 template <class StateOf> bool Engine::settle(const Simplex& s, Face& f, StateOf&& state_of) {
@@ -243,7 +243,7 @@ void record(const Simplex& s, bool before, bool after, Step& step) {
 
 } // namespace
 
-// Re-evaluates membership (MATH.md 4.5 "re-eval") on the touched simplices, in decreasing
+// Re-evaluates membership (docs/MATH.md §4.5 "re-eval") on the touched simplices, in decreasing
 // dimension, and fills the step's entered/left lists (in no particular order: emit_batch sorts them).
 void Engine::settle_membership(const OldMembership& old_k, Step& step) {
   // Only the order of dimensions matters (a simplex reads its cofaces' counts, never those of its

@@ -1,7 +1,7 @@
 // The whole run: construction, the initial complex at t_0 and the loop over slabs.
 #include "engine.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <chrono>
 #include <memory>
@@ -40,9 +40,9 @@ void Engine::initialise(Observer& observer) {
   OldMembership old_k;
   rebuild_static(old_k);
   std::vector<Step> ignored;
-  resolve_delaunay(ignored); // Del(t0+) (MATH.md 5.5): fix what the frozen delta left
+  resolve_delaunay(ignored); // Del(t0+) (docs/MATH.md §5.5): fix what the frozen delta left
   pending_radius.clear();
-  // Membership of every simplex, in decreasing dimension (MATH.md 4.6).
+  // Membership of every simplex, in decreasing dimension (docs/MATH.md §4.6).
   OldMembership all;
   for (const auto& kv : faces)
     all.emplace(kv.first, false);
@@ -72,7 +72,7 @@ void Engine::run(Observer& observer) {
   const TimeComparisonCounts comparisons_after = time_comparison_counts();
   stats.times_sharpened = comparisons_after.sharpened - comparisons_before.sharpened;
   stats.times_compared_algebraically = comparisons_after.algebraic - comparisons_before.algebraic;
-  // t_end: the reported state is K(t_end-) (MATH.md conventions).
+  // t_end: the reported state is K(t_end-) (docs/MATH.md §0).
   slab = traj.frames() - 1;
   now = SlabTime();
   ++batch_index; // t_end is later than every batch: cells alive at the end die there

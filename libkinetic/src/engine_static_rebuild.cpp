@@ -1,8 +1,8 @@
-// Static rebuilds of Del with CGAL at now+ (insertions, deletions, repairs; MATH.md 5.4, 5.5).
+// Static rebuilds of Del with CGAL at now+ (insertions, deletions, repairs; docs/MATH.md §5.4, §5.5).
 #include "engine.h"
 
+#include "medusa/core/error.h"
 #include "medusa/kinetic/certificate_polynomials.h"
-#include "medusa/kinetic/error.h"
 #include "static_delaunay.h"
 
 #include <algorithm>
@@ -39,7 +39,7 @@ void Engine::rebuild_static(OldMembership& old_k) {
       now.is_rational() ? detail::delaunay_just_after(dim, static_input(ids), now.rational(), dimension)
                         : delaunay_after_algebraic_now(ids, dimension);
   if (dimension < dim) {
-    // MATH.md 5.7: degenerate input is reported, in either dimension.
+    // docs/MATH.md §5.7: degenerate input is reported, in either dimension.
     if (ids.size() < top_size())
       throw GeometryError("fewer than " + std::to_string(top_size()) + " cells are present at frame " +
                           std::to_string(slab) + ": the " + std::to_string(dim) +
@@ -66,7 +66,7 @@ void Engine::rebuild_static(OldMembership& old_k) {
   reorient_kept(kept);
 }
 
-// A hull ridge's certificate (MATH.md 3.2 case B) is oriented by the recorded orientation of the top
+// A hull ridge's certificate (docs/MATH.md §3.2 case B) is oriented by the recorded orientation of the top
 // simplex below one of its hull facets, which is not a face of the ridge's own top simplices. A
 // static change can replace that simplex and leave the ridge's top simplices as they were, so
 // apply_tet_change does not rebuild the certificate. After a flip that is harmless: the old and the
@@ -158,7 +158,7 @@ std::vector<Simplex> Engine::delaunay_after_algebraic_now(const std::vector<Vert
 // orientation turns stale, so every certificate that reads it would fail at now+ again and again
 // (stress seed 4195, tests/kinetic/test_kinetic_engine.cpp). The orientation is set anew and
 // those certificates are built again: the facets of the top simplex and, for each of its facets on
-// the hull, the infinite facets over that facet's own facets (MATH.md 3.2 case B).
+// the hull, the infinite facets over that facet's own facets (docs/MATH.md §3.2 case B).
 void Engine::reorient_kept(const std::vector<Simplex>& kept) {
   for (const Simplex& t : kept) {
     if (!is_finite(t))
@@ -181,7 +181,7 @@ void Engine::reorient_kept(const std::vector<Simplex>& kept) {
 
 // A rational q in (now, next event) (or (now, 1) without one): Del at q is Del(now+) except where a
 // certificate fails in (now, q], and those failures are found at now+ and flipped by the caller
-// (static repair at an algebraic time, MATH.md 5.4).
+// (static repair at an algebraic time, docs/MATH.md §5.4).
 Rational Engine::rational_before_next_event() const {
   SlabTime upper(Rational(1));
   for (auto copy = queue; !copy.empty(); copy.pop()) {

@@ -1,4 +1,4 @@
-// The event queue: certificate failure times in exact order, earliest first (MATH.md 3.7, 5.2).
+// The event queue: certificate failure times in exact order, earliest first (docs/MATH.md §3.7, §5.2).
 // Entries of retired or reinstalled certificates stay in the queue and are skipped by version.
 #pragma once
 

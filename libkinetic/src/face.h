@@ -16,7 +16,7 @@ struct Face {
   int cert = -1;
   int tets = 0; // top simplices of Del (infinite ones included) that contain this simplex
   // Its finite (k+1)-cofaces in Del that are short, and those in K: the frontier rule asks whether a
-  // short simplex has a short coface (MATH.md 4.4), the membership rule whether any coface is in K
+  // short simplex has a short coface (docs/MATH.md §4.4), the membership rule whether any coface is in K
   // (4.5). Kept up to date by Engine::count_in_facets wherever a flag changes or a face comes or
   // goes, so neither rule searches the triangulation (edges and larger; the audit recounts).
   int short_cofaces = 0;

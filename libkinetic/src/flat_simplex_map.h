@@ -1,11 +1,11 @@
 // A hash map from simplices to small values, stored flat (open addressing, linear probing,
 // backward-shift deletion). The engine looks up the alpha-complex state of every face of every
-// changed top simplex at every event (MATH.md 4.4, 4.5); a node-based std::unordered_map costs two
+// changed top simplex at every event (docs/MATH.md §4.4, §4.5); a node-based std::unordered_map costs two
 // dependent cache misses per lookup there, this table one. The empty simplex (size 0) marks a free
 // slot, so keys must be non-empty.
 #pragma once
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "medusa/kinetic/simplex.h"
 
 #include <algorithm>

@@ -138,7 +138,7 @@ int bernstein_coefficients(const IntervalPoly& f, double lo, double hi,
     g[i] = f[i];
   if (lo != 0.0 || hi != 1.0) {
     // Taylor shift h(v) = f(lo + v) by repeated synthetic division, then scale by (hi - lo)^i so that
-    // g(v) = f(lo + (hi - lo) v) on v in [0, 1] (MATH.md 3.8, restriction to [u_lo, 1]).
+    // g(v) = f(lo + (hi - lo) v) on v in [0, 1] (docs/MATH.md §3.8, restriction to [u_lo, 1]).
     const Interval l(lo);
     for (int k = 0; k < n; ++k)
       for (int i = n - 1; i >= k; --i)

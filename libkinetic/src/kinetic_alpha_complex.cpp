@@ -1,11 +1,11 @@
 // The public API of the kinetic alpha complex: the exact squared radius from a decimal, and the
-// pimpl forwarding to the engine (engine.h, engine_*.cpp). MATH.md sections are cited where each
+// pimpl forwarding to the engine (engine.h, engine_*.cpp). docs/MATH.md sections are cited where each
 // rule is applied.
 #include "medusa/kinetic/kinetic_alpha_complex.h"
 
 #include "engine.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <algorithm>
 #include <memory>

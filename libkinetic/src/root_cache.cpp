@@ -1,4 +1,4 @@
-// The exact polynomial behind a root-cache key (MATH.md 3.1, 3.8).
+// The exact polynomial behind a root-cache key (docs/MATH.md §3.1, §3.8).
 #include "root_cache.h"
 
 #include "medusa/kinetic/certificate_polynomials.h"

@@ -1,4 +1,4 @@
-// The per-slab root cache (MATH.md 3.8, caching): certificates built on the same points share their
+// The per-slab root cache (docs/MATH.md §3.8, caching): certificates built on the same points share their
 // polynomial up to sign, hence its roots. A key names the polynomial; KeyPolynomial rebuilds it.
 #pragma once
 
@@ -33,7 +33,7 @@ struct CacheKeyHash {
 
 using RootCache = std::unordered_map<CacheKey, RealRoots, CacheKeyHash>;
 
-// The exact polynomial behind a root-cache key, up to sign (MATH.md 3.1): the in-sphere determinant
+// The exact polynomial behind a root-cache key, up to sign (docs/MATH.md §3.1): the in-sphere determinant
 // of five points (in-circle of four in 2D), the orientation of four (three in 2D), or the radius
 // polynomial of a simplex, or the fold test of a hull ridge (Engine::fold_poly). It copies the points'
 // motion, so it stays valid after the triangulation has moved on within the slab.

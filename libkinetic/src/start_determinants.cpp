@@ -1,7 +1,7 @@
 // Static determinants at a slab start through CGAL's exact filtered predicates (start_determinants.h).
 #include "start_determinants.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/FPU.h>

@@ -1,4 +1,4 @@
-// Exact zero tests of the determinant certificates at a slab start (u = 0; MATH.md 3.1, 5.5).
+// Exact zero tests of the determinant certificates at a slab start (u = 0; docs/MATH.md §3.1, §5.5).
 // There every point sits at its grid position a, so an orientation or in-sphere certificate is a
 // static determinant of those positions. CGAL's filtered predicates decide its sign exactly
 // (Epick: exact on double inputs, and every coordinate is an integer below 2^40,

@@ -89,14 +89,14 @@ template <int D, class Dt> std::vector<Simplex> top_simplices(const Dt& dt) {
   return result;
 }
 
-// Whether dt, CGAL's Delaunay triangulation of the points at u + delta, is Del(u+) (MATH.md 5.5,
+// Whether dt, CGAL's Delaunay triangulation of the points at u + delta, is Del(u+) (docs/MATH.md §5.5,
 // method A): it has every point as a vertex, and no certificate it rests on has a root in
 // (u, u + delta]: the orientation of each finite top simplex, the in-sphere (in-circle) test across
 // each facet between two finite ones, and at each ridge of the hull the orientation of a hull facet
 // with the neighbouring hull facet's far vertex. dt is a Delaunay triangulation at u + delta, and
 // the kinetic structure these certificates make stays one while none of them changes sign, so it is
 // the Delaunay triangulation throughout (u, u + delta], hence Del(u+). A triangulation that is flat
-// at u + delta holds only when the points are flat for good (MATH.md 5.7); the caller reports them.
+// at u + delta holds only when the points are flat for good (docs/MATH.md §5.7); the caller reports them.
 template <int D, class Dt>
 bool just_after_holds(const Dt& dt, const StaticInput& input, const CGAL::Gmpq& u, const CGAL::Gmpq& delta) {
   if (dt.dimension() < D)

@@ -2,7 +2,7 @@
 // time) and the dispatch to the planar or 3D CGAL structures (static_delaunay_2.cpp, _3.cpp).
 #include "static_delaunay.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@ namespace medusa::kinetic::detail {
 
 std::vector<Simplex> delaunay_just_after(int dim, const StaticInput& input, const CGAL::Gmpq& u,
                                          int& dimension) {
-  // MATH.md 5.5, method A's practical variant: delta = 2^-k, k growing until no certificate of the
+  // docs/MATH.md §5.5, method A's practical variant: delta = 2^-k, k growing until no certificate of the
   // triangulation at u + delta has a root in (u, u + delta]. Certificates have finitely many roots,
   // so the loop ends (the cap only guards that; the bound of 5.5 is for u = 0, and at a rational u
   // it grows with u's denominator). At a frame (u = 0) the points 2^k a + b are exact doubles while

@@ -1,5 +1,5 @@
 // Static Delaunay triangulations and alpha complexes computed from scratch with CGAL: the initial
-// triangulation, insertions and deletions at frames (MATH.md 5.5, method A: points frozen at a small
+// triangulation, insertions and deletions at frames (docs/MATH.md §5.5, method A: points frozen at a small
 // rational delta after the frame) and the oracle of audit(). `dim` is the dimension of the run: 3
 // (Delaunay_triangulation_3, Fixed_alpha_shape_3) or 2 (the points' x and y; Delaunay_triangulation_2,
 // Alpha_shape_2 in GENERAL mode).
@@ -20,7 +20,7 @@ struct StaticInput {
 };
 
 // Top simplices (tetrahedra, triangles in 2D; infinite vertex = -1) of Del(u+), the Delaunay
-// triangulation of the points a + (u + eps) b for every small eps > 0 (MATH.md 5.5, method A): CGAL's
+// triangulation of the points a + (u + eps) b for every small eps > 0 (docs/MATH.md §5.5, method A): CGAL's
 // triangulation of the points at u + delta for a dyadic delta, accepted when no certificate it rests
 // on has a root in (u, u + delta] (just_after_holds, static_cgal.h), and built again with a smaller
 // delta otherwise. Returns the affine dimension of the point set in `dimension` (the result is empty
@@ -34,7 +34,7 @@ bool orientation_keeps_sign(const std::vector<const MovingPoint*>& p, const CGAL
                             const CGAL::Gmpq& delta);
 bool in_sphere_keeps_sign(const std::vector<const MovingPoint*>& p, const MovingPoint& y, const CGAL::Gmpq& u,
                           const CGAL::Gmpq& delta);
-// Whether the points span fewer than dim dimensions at every time of the slab (MATH.md 5.7).
+// Whether the points span fewer than dim dimensions at every time of the slab (docs/MATH.md §5.7).
 bool flat_for_good(int dim, const StaticInput& input);
 
 // Top simplices of the Delaunay triangulation of the points a + u b exactly at the rational u

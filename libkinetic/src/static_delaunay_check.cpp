@@ -1,5 +1,5 @@
-// The tests that decide whether a static triangulation built at u + delta is Del(u+) (MATH.md 5.5,
-// method A): no certificate of MATH.md 3.1 that it rests on has a root in (u, u + delta], and the
+// The tests that decide whether a static triangulation built at u + delta is Del(u+) (docs/MATH.md §5.5,
+// method A): no certificate of docs/MATH.md §3.1 that it rests on has a root in (u, u + delta], and the
 // points are not flat at u + delta alone.
 #include "static_delaunay.h"
 
@@ -90,7 +90,7 @@ bool in_sphere_keeps_sign(const std::vector<const MovingPoint*>& p, const Moving
       u, delta);
 }
 
-// MATH.md 5.7: the points span fewer than dim dimensions at every time of the slab iff, for a pair
+// docs/MATH.md §5.7: the points span fewer than dim dimensions at every time of the slab iff, for a pair
 // (3D: a triple) that spans a line (a plane) at some time, every orientation with another point
 // vanishes identically; when every pair (triple) is degenerate for good the set is flat anyway.
 bool flat_for_good(int dim, const StaticInput& input) {

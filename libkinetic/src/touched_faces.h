@@ -1,5 +1,5 @@
 // The faces and facets touched when top simplices of Del are replaced (a flip, a static repair, the
-// initial triangulation), each once and in canonical order (MATH.md 5.2), with the change in the
+// initial triangulation), each once and in canonical order (docs/MATH.md §5.2), with the change in the
 // number of top simplices that hold each face. The engine then looks each face up once.
 #pragma once
 

@@ -1,6 +1,6 @@
 #include "medusa/kinetic/trajectories.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <string>
 
@@ -18,7 +18,7 @@ void Trajectories::validate() const {
       throw InputError("frame times must increase strictly: frame " + std::to_string(k) + " has time " +
                        std::to_string(frame_times[k]) + " after " + std::to_string(frame_times[k - 1]));
   // Coordinates must stay within 2^40 grid units so that certificate filters evaluate their inputs
-  // exactly in double (MATH.md 1.5 assumes |X| < 2^30; we allow headroom).
+  // exactly in double (docs/MATH.md §1.5 assumes |X| < 2^30; we allow headroom).
   constexpr std::int64_t limit = std::int64_t(1) << 40;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const Trajectory& c = cells[i];

@@ -1,6 +1,6 @@
 #include "triangulation.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <algorithm>
 #include <sstream>

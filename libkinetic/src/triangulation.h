@@ -3,7 +3,7 @@
 // -1 and sorts first), facets (triangles, or edges in 2D) with their two apices, and the top
 // simplices incident to each vertex. The dimension is the size of the simplices added. Geometry lives
 // elsewhere: certificates decide validity, this structure only records the combinatorics (flips are set
-// operations, MATH.md 4.5).
+// operations, docs/MATH.md §4.5).
 #pragma once
 
 #include "flat_simplex_map.h"
@@ -44,7 +44,7 @@ public:
 
   // The apices of facet f (the vertices completing it to its two tetrahedra); count is 2 in a
   // valid triangulation. With each apex v[k], the orientation given to the top simplex f + v[k]
-  // when it was added: every certificate of the facet needs it (MATH.md 3.2), and the facet's record
+  // when it was added: every certificate of the facet needs it (docs/MATH.md §3.2), and the facet's record
   // is at hand where the top simplex would take a look-up of its own.
   struct Apices {
     std::array<VertexId, 2> v{{0, 0}};
@@ -136,7 +136,7 @@ public:
   const std::vector<Simplex>& tets_of(VertexId v) const;
 
   // Calls f(t) for every top simplex t containing s, without allocating: the queries of the
-  // frontier and membership rules (MATH.md 4.4, 4.5) run for every touched face of every event, so
+  // frontier and membership rules (docs/MATH.md §4.4, §4.5) run for every touched face of every event, so
   // they scan the shortest incident list of s's vertices.
   template <class F> void for_each_tet_containing(const Simplex& s, F&& f) const {
     const std::vector<Simplex>& list = shortest_incident_list(s);

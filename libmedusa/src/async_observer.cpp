@@ -1,11 +1,11 @@
 // The worker thread and its bounded queue (async_observer.h).
-#include "medusa/complex/async_observer.h"
+#include "medusa/medusa/async_observer.h"
 
 #include <csignal>
 #include <pthread.h>
 #include <utility>
 
-namespace medusa::complex {
+namespace medusa {
 
 AsyncObserver::AsyncObserver(kinetic::Observer& next, std::size_t block, std::size_t capacity)
     : next_(next), block_(block == 0 ? 1 : block), capacity_(capacity == 0 ? 1 : capacity) {
@@ -117,4 +117,4 @@ void AsyncObserver::finish(const kinetic::EventTime& t_end) {
   }
 }
 
-} // namespace medusa::complex
+} // namespace medusa

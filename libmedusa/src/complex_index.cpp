@@ -1,18 +1,18 @@
-#include "medusa/complex/complex_index.h"
+#include "medusa/medusa/complex_index.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <algorithm>
 #include <string>
 
-namespace medusa::complex {
+namespace medusa {
 
 ComplexIndex::ComplexIndex(const Medusa& medusa, std::optional<int> type) : medusa_(medusa), type_(type) {
   std::vector<IntervalTree::Interval> after, before;
   for (const Cell& c : medusa.cells) {
     if (type && !medusa.has_type(c, *type))
       continue;
-    // MATH.md 6.6 in batch indices: K(b+) stabs [birth, death), K(b-) stabs (birth, death].
+    // docs/MATH.md §6.6 in batch indices: K(b+) stabs [birth, death), K(b-) stabs (birth, death].
     after.push_back({c.birth.batch, c.death.batch, c.id});
     before.push_back({c.birth.batch + 1, c.death.batch + 1, c.id});
   }
@@ -77,4 +77,4 @@ std::vector<CellId> ComplexIndex::at_time(double t) const {
   return after(last);
 }
 
-} // namespace medusa::complex
+} // namespace medusa

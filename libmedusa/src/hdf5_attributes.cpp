@@ -4,11 +4,11 @@
 #include "hdf5_handle.h"
 #include "hdf5_types.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <algorithm>
 
-namespace medusa::complex::h5 {
+namespace medusa::h5 {
 
 namespace {
 
@@ -139,4 +139,4 @@ std::string read_string_attribute(hid_t object, const std::string& name, const s
   return values.front();
 }
 
-} // namespace medusa::complex::h5
+} // namespace medusa::h5

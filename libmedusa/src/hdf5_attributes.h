@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace medusa::complex::h5 {
+namespace medusa::h5 {
 
 void write_attribute(hid_t object, const std::string& name, std::int64_t value, const std::string& path);
 void write_attribute(hid_t object, const std::string& name, std::uint64_t value, const std::string& path);
@@ -26,4 +26,4 @@ std::string read_string_attribute(hid_t object, const std::string& name, const s
 std::vector<std::string> read_strings_attribute(hid_t object, const std::string& name,
                                                 const std::string& path);
 
-} // namespace medusa::complex::h5
+} // namespace medusa::h5

@@ -4,11 +4,11 @@
 
 #include <algorithm>
 
-namespace medusa::complex::h5 {
+namespace medusa::h5 {
 
 namespace {
 // About 64 KiB per chunk for 8-byte values: large enough for good compression, small enough that a
-// streaming writer's buffers stay small (MATH.md 6.5).
+// streaming writer's buffers stay small (docs/MATH.md §6.5).
 constexpr std::size_t chunk_bytes = 65536;
 } // namespace
 
@@ -48,4 +48,4 @@ void ColumnBase::write(const void* data, std::size_t rows) {
   written_ += rows;
 }
 
-} // namespace medusa::complex::h5
+} // namespace medusa::h5

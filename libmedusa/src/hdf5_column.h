@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace medusa::complex::h5 {
+namespace medusa::h5 {
 
 class ColumnBase {
 public:
@@ -55,4 +55,4 @@ private:
   std::vector<T> buffer_;
 };
 
-} // namespace medusa::complex::h5
+} // namespace medusa::h5

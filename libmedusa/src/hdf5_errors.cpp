@@ -1,10 +1,10 @@
 #include "hdf5_errors.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <vector>
 
-namespace medusa::complex::h5 {
+namespace medusa::h5 {
 
 Quiet::Quiet() {
   H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
@@ -43,4 +43,4 @@ void fail(const std::string& path, const std::string& what) {
   throw StoreError("store " + path + ": " + what + ": " + error_text());
 }
 
-} // namespace medusa::complex::h5
+} // namespace medusa::h5

@@ -6,7 +6,7 @@
 
 #include <string>
 
-namespace medusa::complex::h5 {
+namespace medusa::h5 {
 
 // Switches HDF5's automatic error printing off for the lifetime of the object (restored after).
 class Quiet {
@@ -27,4 +27,4 @@ std::string error_text();
 // Throws StoreError("store <path>: <what>: <HDF5 text>").
 [[noreturn]] void fail(const std::string& path, const std::string& what);
 
-} // namespace medusa::complex::h5
+} // namespace medusa::h5

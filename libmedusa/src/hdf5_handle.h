@@ -5,7 +5,7 @@
 
 #include <utility>
 
-namespace medusa::complex::h5 {
+namespace medusa::h5 {
 
 class Handle {
 public:
@@ -50,4 +50,4 @@ inline Handle type_handle(hid_t id) { return Handle(id, H5Tclose); }
 inline Handle plist_handle(hid_t id) { return Handle(id, H5Pclose); }
 inline Handle attribute_handle(hid_t id) { return Handle(id, H5Aclose); }
 
-} // namespace medusa::complex::h5
+} // namespace medusa::h5

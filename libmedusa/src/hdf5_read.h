@@ -5,12 +5,12 @@
 #include "hdf5_handle.h"
 #include "hdf5_types.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <string>
 #include <vector>
 
-namespace medusa::complex::h5 {
+namespace medusa::h5 {
 
 // Reads dataset `name` of `group` (shape (n) when width is 1, else (n, width)) as T. The HDF5 class
 // (integer or float) must match T's; values are converted to T's width by HDF5, which fails on overflow
@@ -41,4 +41,4 @@ std::vector<T> read_column(hid_t group, const std::string& group_name, const std
   return values;
 }
 
-} // namespace medusa::complex::h5
+} // namespace medusa::h5

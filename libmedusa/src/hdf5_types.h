@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-namespace medusa::complex::h5 {
+namespace medusa::h5 {
 
 template <class T> struct TypeOf;
 template <> struct TypeOf<std::uint8_t> {
@@ -34,4 +34,4 @@ template <> struct TypeOf<double> {
   static hid_t file() { return H5T_IEEE_F64LE; }
 };
 
-} // namespace medusa::complex::h5
+} // namespace medusa::h5

@@ -1,13 +1,13 @@
-#include "medusa/complex/homology.h"
+#include "medusa/medusa/homology.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <algorithm>
 #include <numeric>
 #include <string>
 #include <unordered_map>
 
-namespace medusa::complex {
+namespace medusa {
 
 namespace {
 
@@ -52,7 +52,7 @@ std::vector<std::size_t> betti_numbers(const ChainComplex& complex) {
   }
 
   // rank[k] = rank of d_k : C_k -> C_{k-1}. Reduce from the top dimension down, clearing the columns
-  // of pivots (twist, MATH.md 7.5): a column whose index is a pivot of d_{k+1} reduces to zero.
+  // of pivots (twist, docs/MATH.md §7.5): a column whose index is a pivot of d_{k+1} reduces to zero.
   std::vector<std::size_t> rank(static_cast<std::size_t>(top) + 2, 0);
   std::vector<char> cleared(n, 0);
   for (int k = top; k >= 1; --k) {
@@ -99,4 +99,4 @@ std::vector<std::size_t> betti_numbers(const ChainComplex& complex) {
   return betti;
 }
 
-} // namespace medusa::complex
+} // namespace medusa

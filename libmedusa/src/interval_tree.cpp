@@ -1,8 +1,8 @@
-#include "medusa/complex/interval_tree.h"
+#include "medusa/medusa/interval_tree.h"
 
 #include <algorithm>
 
-namespace medusa::complex {
+namespace medusa {
 
 IntervalTree::IntervalTree(std::vector<Interval> intervals) {
   intervals.erase(
@@ -75,4 +75,4 @@ void IntervalTree::stab(std::uint64_t x, std::vector<std::uint64_t>& out) const 
   }
 }
 
-} // namespace medusa::complex
+} // namespace medusa

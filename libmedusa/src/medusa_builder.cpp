@@ -1,12 +1,12 @@
-#include "medusa/complex/medusa_builder.h"
+#include "medusa/medusa/medusa_builder.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "vertex_text.h"
 
 #include <algorithm>
 #include <string>
 
-namespace medusa::complex {
+namespace medusa {
 
 namespace {
 
@@ -25,7 +25,7 @@ std::vector<VertexId> join(const Simplex& sigma, VertexId p) {
   return v;
 }
 
-// Increasing dimension, then lexicographic: the order of MATH.md 6.4 for births and instant cells.
+// Increasing dimension, then lexicographic: the order of docs/MATH.md §6.4 for births and instant cells.
 bool canonical_less(const std::vector<VertexId>& a, const std::vector<VertexId>& b) {
   if (a.size() != b.size())
     return a.size() < b.size();
@@ -130,7 +130,7 @@ void MedusaBuilder::initial(const kinetic::EventTime& t0, const std::vector<Simp
   b.at_frame = t0.at_frame;
   b.ranks = 0;
   sink_.batch(b);
-  // MATH.md 6.2: the initial complex is born at (0, 0).
+  // docs/MATH.md §6.2: the initial complex is born at (0, 0).
   std::vector<Simplex> sorted = complex;
   std::sort(sorted.begin(), sorted.end());
   const VirtualTime when = virtual_time(t0, 0);
@@ -139,7 +139,7 @@ void MedusaBuilder::initial(const kinetic::EventTime& t0, const std::vector<Simp
 }
 
 void MedusaBuilder::step(const kinetic::Step& st, const VirtualTime& when) {
-  // MATH.md 6.4: births, then instant cells, then deaths; births and instant cells in increasing
+  // docs/MATH.md §6.4: births, then instant cells, then deaths; births and instant cells in increasing
   // dimension because their facets may be born (or be instant) at the same rank.
   std::vector<Simplex> entered = st.entered;
   std::sort(entered.begin(), entered.end());
@@ -148,7 +148,7 @@ void MedusaBuilder::step(const kinetic::Step& st, const VirtualTime& when) {
 
   std::map<std::vector<VertexId>, CellKind> instants;
   auto add = [&](std::vector<VertexId> v, CellKind kind) { instants.emplace(std::move(v), kind); };
-  // Flip (MATH.md 6.3): the simplex of the flip group (the 4-simplex of a 2-3 / 3-2 flip, the
+  // Flip (docs/MATH.md §6.3): the simplex of the flip group (the 4-simplex of a 2-3 / 3-2 flip, the
   // 3-simplex of a planar 2-2 flip) when R_S <= rho and the old top simplices are in L_{r-1};
   // libkinetic decides this and reports it as in_alpha.
   if (st.flip && st.flip->in_alpha) {
@@ -156,14 +156,14 @@ void MedusaBuilder::step(const kinetic::Step& st, const VirtualTime& when) {
     std::sort(v.begin(), v.end());
     add(std::move(v), CellKind::flip);
   }
-  // Joins (MATH.md 6.3): sigma + {p} for sigma leaving K at an insertion of p, entering at a deletion.
+  // Joins (docs/MATH.md §6.3): sigma + {p} for sigma leaving K at an insertion of p, entering at a deletion.
   if (st.kind == kinetic::StepKind::insertion || st.kind == kinetic::StepKind::deletion) {
     const auto& sigmas = st.kind == kinetic::StepKind::insertion ? st.left : st.entered;
     for (const Simplex& s : sigmas)
       if (!s.contains(st.vertex))
         add(join(s, st.vertex), CellKind::join);
   }
-  // Degenerate groups (MATH.md 6.3): every subset in neither L_{r-1} nor L_r. Here the active map
+  // Degenerate groups (docs/MATH.md §6.3): every subset in neither L_{r-1} nor L_r. Here the active map
   // holds exactly L_{r-1} u L_r (births done, deaths not yet).
   for (const kinetic::DegenerateGroup& g : st.groups) {
     std::vector<VertexId> gv = g.vertices;
@@ -242,7 +242,7 @@ void MedusaBuilder::frame(std::size_t k, const kinetic::EventTime& time) {
 void MedusaBuilder::finish(const kinetic::EventTime& t_end) {
   check_order(t_end, "finish");
   finished_ = true;
-  // MATH.md 6.2: every active cell dies at the final virtual time (t_end, rank 0), so that the query
+  // docs/MATH.md §6.2: every active cell dies at the final virtual time (t_end, rank 0), so that the query
   // K(t_end-) of 6.6 (rank 0, closed right end) returns them.
   const VirtualTime end = virtual_time(t_end, 0);
   std::vector<Simplex> simplices;
@@ -255,4 +255,4 @@ void MedusaBuilder::finish(const kinetic::EventTime& t_end) {
   sink_.finish(end);
 }
 
-} // namespace medusa::complex
+} // namespace medusa

@@ -1,11 +1,11 @@
-#include "medusa/complex/medusa.h"
+#include "medusa/medusa/medusa.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <algorithm>
 #include <string>
 
-namespace medusa::complex {
+namespace medusa {
 
 bool Medusa::has_type(const Cell& c, int type) const {
   for (VertexId v : c.vertices)
@@ -38,4 +38,4 @@ void MedusaCollector::finish(const VirtualTime& end) {
                           std::to_string(medusa_.cells.size() - 1));
 }
 
-} // namespace medusa::complex
+} // namespace medusa

@@ -1,12 +1,12 @@
-#include "medusa/complex/signatures.h"
+#include "medusa/medusa/signatures.h"
 
-#include "medusa/complex/homology.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
+#include "medusa/medusa/homology.h"
 
 #include <string>
 #include <unordered_map>
 
-namespace medusa::complex {
+namespace medusa {
 
 Signature signature_of(const Medusa& medusa, const std::vector<CellId>& cells) {
   Signature s;
@@ -73,4 +73,4 @@ std::vector<SignatureSample> signatures_over_time(const ComplexIndex& index) {
   return samples;
 }
 
-} // namespace medusa::complex
+} // namespace medusa

@@ -1,7 +1,7 @@
 // Names of the groups, datasets and attributes of the store (docs/FORMAT.md is the specification).
 #pragma once
 
-namespace medusa::complex::layout {
+namespace medusa::layout {
 
 inline constexpr const char* format_name = "medusa-store";
 
@@ -60,4 +60,4 @@ inline constexpr const char* vertices = "vertices";
 inline constexpr const char* facet_offset = "facet_offset";
 inline constexpr const char* facets = "facets";
 
-} // namespace medusa::complex::layout
+} // namespace medusa::layout

@@ -1,4 +1,4 @@
-#include "medusa/complex/store_reader.h"
+#include "medusa/medusa/store_reader.h"
 
 #include "hdf5_attributes.h"
 #include "hdf5_errors.h"
@@ -6,12 +6,12 @@
 #include "hdf5_read.h"
 #include "store_layout.h"
 
-#include "medusa/complex/store_writer.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
+#include "medusa/medusa/store_writer.h"
 
 #include <string>
 
-namespace medusa::complex {
+namespace medusa {
 
 namespace L = layout;
 using h5::Handle;
@@ -181,4 +181,4 @@ Medusa read_store(const std::string& path, const StoreReadOptions& options) {
   return m;
 }
 
-} // namespace medusa::complex
+} // namespace medusa

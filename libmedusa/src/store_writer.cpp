@@ -1,4 +1,4 @@
-#include "medusa/complex/store_writer.h"
+#include "medusa/medusa/store_writer.h"
 
 #include "hdf5_attributes.h"
 #include "hdf5_column.h"
@@ -6,13 +6,13 @@
 #include "hdf5_handle.h"
 #include "store_layout.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <cstdio>
 #include <optional>
 #include <unistd.h>
 
-namespace medusa::complex {
+namespace medusa {
 
 namespace L = layout;
 using h5::Column;
@@ -302,4 +302,4 @@ void write_store(const std::string& path, const Medusa& medusa) {
   writer.finish(medusa.end);
 }
 
-} // namespace medusa::complex
+} // namespace medusa

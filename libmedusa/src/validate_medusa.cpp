@@ -1,13 +1,13 @@
-#include "medusa/complex/store_reader.h"
+#include "medusa/medusa/store_reader.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "vertex_text.h"
 
 #include <algorithm>
 #include <map>
 #include <string>
 
-namespace medusa::complex {
+namespace medusa {
 
 namespace {
 
@@ -47,7 +47,7 @@ void validate_medusa(const Medusa& m, const std::string& name) {
     const std::size_t expected = c.vertices.size() == 1 ? 0 : c.vertices.size();
     if (c.facets.size() != expected)
       invalid(name, cell_text(c) + " has " + std::to_string(c.facets.size()) + " facets");
-    // MATH.md 6.4: facet i is the cell of the tuple without vertex i whose lifetime contains c's.
+    // docs/MATH.md §6.4: facet i is the cell of the tuple without vertex i whose lifetime contains c's.
     for (std::size_t k = 0; k < c.facets.size(); ++k) {
       if (c.facets[k] >= n)
         invalid(name, cell_text(c) + " has an unknown facet " + std::to_string(c.facets[k]));
@@ -71,7 +71,7 @@ void validate_medusa(const Medusa& m, const std::string& name) {
           invalid(name, cell_text(c) + " violates d d = 0");
     }
   }
-  // Cells of one simplex have disjoint lifetimes (MATH.md 6.2).
+  // Cells of one simplex have disjoint lifetimes (docs/MATH.md §6.2).
   std::vector<const Cell*> sorted;
   sorted.reserve(n);
   for (const Cell& c : m.cells)
@@ -87,4 +87,4 @@ void validate_medusa(const Medusa& m, const std::string& name) {
               cell_text(*sorted[i]) + " overlaps the lifetime of cell " + std::to_string(sorted[i - 1]->id));
 }
 
-} // namespace medusa::complex
+} // namespace medusa

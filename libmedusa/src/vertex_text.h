@@ -1,13 +1,13 @@
 // Text of a vertex tuple for one-line error messages.
 #pragma once
 
-#include "medusa/complex/cell.h"
+#include "medusa/medusa/cell.h"
 
 #include <sstream>
 #include <string>
 #include <vector>
 
-namespace medusa::complex {
+namespace medusa {
 
 template <class Range> std::string vertex_text(const Range& vertices) {
   std::ostringstream os;
@@ -21,4 +21,4 @@ template <class Range> std::string vertex_text(const Range& vertices) {
   return os.str();
 }
 
-} // namespace medusa::complex
+} // namespace medusa

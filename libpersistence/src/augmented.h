@@ -1,4 +1,4 @@
-// The augmented bipartite graph of W_p (MATH.md 7.7), internal to libpersistence: rows are the
+// The augmented bipartite graph of W_p (docs/MATH.md §7.7), internal to libpersistence: rows are the
 // points of a (0..n-1) and the diagonal copies of b (n..n+m-1); columns are the points of b (0..m-1)
 // and the diagonal copies of a (m..m+n-1). A point goes to a diagonal copy only through its own
 // projection; diagonal copies match each other for free.

@@ -185,7 +185,7 @@ DistanceResult bottleneck_distance(const PointDiagram& a, const PointDiagram& b,
   if (a.essential.size() != b.essential.size()) {
     result.essential = std::numeric_limits<double>::infinity();
   } else {
-    // On a line, sorted order is an optimal matching for every W_p and for d_B (MATH.md 7.7).
+    // On a line, sorted order is an optimal matching for every W_p and for d_B (docs/MATH.md §7.7).
     std::vector<double> x = a.essential, y = b.essential;
     std::sort(x.begin(), x.end());
     std::sort(y.begin(), y.end());

@@ -1,6 +1,6 @@
 #include "medusa/persistence/degree_check.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <string>
 
@@ -11,7 +11,7 @@ void check_homology_degrees(const Diagram& diagram) {
     if (p.dim > 3 && (p.essential || !p.zero_length))
       throw InternalError("diagram: cell " + std::to_string(p.birth_cell) + " creates " +
                           (p.essential ? "an essential" : "a positive-length") + " class of degree " +
-                          std::to_string(p.dim) + " (MATH.md 7.6 allows degrees 0..3 only)");
+                          std::to_string(p.dim) + " (docs/MATH.md §7.6 allows degrees 0..3 only)");
 }
 
 } // namespace medusa::persistence

@@ -1,6 +1,6 @@
 #include "medusa/persistence/diagram.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <algorithm>
 #include <limits>
@@ -8,15 +8,15 @@
 
 namespace medusa::persistence {
 
-Diagram make_diagram(const std::vector<complex::Cell>& cells, const Filtration& filtration,
+Diagram make_diagram(const std::vector<medusa::Cell>& cells, const Filtration& filtration,
                      const std::vector<IndexPair>& pairs) {
   const bool forward = filtration.direction == Direction::forward;
-  // The filtration value of a cell: its birth forward, its death in reverse (MATH.md 7.2, 7.3).
-  auto value_time = [&](std::int64_t j) -> const complex::VirtualTime& {
-    const complex::Cell& c = cells.at(filtration.cells.at(static_cast<std::size_t>(j)));
+  // The filtration value of a cell: its birth forward, its death in reverse (docs/MATH.md §7.2, §7.3).
+  auto value_time = [&](std::int64_t j) -> const medusa::VirtualTime& {
+    const medusa::Cell& c = cells.at(filtration.cells.at(static_cast<std::size_t>(j)));
     return forward ? c.birth : c.death;
   };
-  auto cell_at = [&](std::int64_t j) -> const complex::Cell& {
+  auto cell_at = [&](std::int64_t j) -> const medusa::Cell& {
     return cells.at(filtration.cells.at(static_cast<std::size_t>(j)));
   };
 
@@ -34,8 +34,8 @@ Diagram make_diagram(const std::vector<complex::Cell>& cells, const Filtration& 
       throw InternalError("diagram: invalid reduction pair (" + std::to_string(b) + ", " + std::to_string(d) +
                           ") for a filtration of " + std::to_string(n) + " cells");
     in_pair[static_cast<std::size_t>(b)] = in_pair[static_cast<std::size_t>(d)] = 1;
-    const complex::Cell& birth_cell = cell_at(b);
-    const complex::Cell& death_cell = cell_at(d);
+    const medusa::Cell& birth_cell = cell_at(b);
+    const medusa::Cell& death_cell = cell_at(d);
     PersistencePair p;
     p.dim = birth_cell.dim();
     p.birth_time = value_time(b);
@@ -52,12 +52,12 @@ Diagram make_diagram(const std::vector<complex::Cell>& cells, const Filtration& 
     diagram.pairs.push_back(std::move(p));
   }
   // Unpaired columns are positive (a negative column is always a death): essential classes
-  // (MATH.md 7.5).
+  // (docs/MATH.md §7.5).
   const double infinity = std::numeric_limits<double>::infinity();
   for (std::int64_t j = 0; j < n; ++j) {
     if (in_pair[static_cast<std::size_t>(j)])
       continue;
-    const complex::Cell& c = cell_at(j);
+    const medusa::Cell& c = cell_at(j);
     PersistencePair p;
     p.dim = c.dim();
     p.birth_time = value_time(j);
@@ -78,7 +78,7 @@ Diagram make_diagram(const std::vector<complex::Cell>& cells, const Filtration& 
 
 namespace {
 
-const complex::Cell& cell_at_position(const std::vector<complex::Cell>& cells, std::size_t position) {
+const medusa::Cell& cell_at_position(const std::vector<medusa::Cell>& cells, std::size_t position) {
   if (position >= cells.size())
     throw InternalError("diagram: cell position " + std::to_string(position) + " outside a vector of " +
                         std::to_string(cells.size()) + " cells");
@@ -88,12 +88,12 @@ const complex::Cell& cell_at_position(const std::vector<complex::Cell>& cells, s
 } // namespace
 
 const std::vector<kinetic::VertexId>& birth_vertices(const PersistencePair& p,
-                                                     const std::vector<complex::Cell>& cells) {
+                                                     const std::vector<medusa::Cell>& cells) {
   return cell_at_position(cells, p.birth_position).vertices;
 }
 
 const std::vector<kinetic::VertexId>& death_vertices(const PersistencePair& p,
-                                                     const std::vector<complex::Cell>& cells) {
+                                                     const std::vector<medusa::Cell>& cells) {
   static const std::vector<kinetic::VertexId> none;
   return p.essential ? none : cell_at_position(cells, p.death_position).vertices;
 }

@@ -1,6 +1,6 @@
 #include "medusa/persistence/diagram_store.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <hdf5.h>
 
@@ -321,7 +321,7 @@ std::vector<Diagram> read_diagrams(const std::string& store_path) {
       p.death_cell = death_cell[i];
       p.essential = essential[i] != 0;
       p.zero_length = zero_length[i] != 0;
-      // An essential class never dies: +inf forward, -inf reverse (MATH.md 7.3, 7.5).
+      // An essential class never dies: +inf forward, -inf reverse (docs/MATH.md §7.3, §7.5).
       const double never = d.direction == Direction::forward ? std::numeric_limits<double>::infinity()
                                                              : -std::numeric_limits<double>::infinity();
       check(p.essential == (p.death == never), store_path,

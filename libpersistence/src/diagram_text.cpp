@@ -14,7 +14,7 @@ void put_double(std::ostream& out, double value) {
 
 } // namespace
 
-void write_diagram_text(std::ostream& out, const Diagram& diagram, const std::vector<complex::Cell>& cells) {
+void write_diagram_text(std::ostream& out, const Diagram& diagram, const std::vector<medusa::Cell>& cells) {
   out << "# medusa diagram direction=" << (diagram.direction == Direction::forward ? "forward" : "reverse")
       << " cell_type=" << diagram.cell_type << " points=" << diagram.pairs.size() << '\n';
   for (const auto& p : diagram.pairs) {

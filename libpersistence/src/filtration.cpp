@@ -1,6 +1,6 @@
 #include "medusa/persistence/filtration.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <algorithm>
 #include <limits>
@@ -12,11 +12,11 @@
 namespace medusa::persistence {
 namespace {
 
-using complex::Cell;
+using medusa::Cell;
 
 std::string cell_name(const Cell& c) { return "cell " + std::to_string(c.id); }
 
-// The order of MATH.md 7.2 (forward: birth batch, birth rank, dimension, vertex tuple) or 7.3
+// The order of docs/MATH.md §7.2 (forward: birth batch, birth rank, dimension, vertex tuple) or 7.3
 // (reverse: latest death first), without the vertex tuple, packed so that sorting reads the cells
 // only on ties: cells are large and scattered in memory, and reading them in every comparison was
 // most of the time of make_filtration.
@@ -55,7 +55,7 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
   bool ids_are_positions = true;
   for (std::size_t i = 0; i < cells.size() && ids_are_positions; ++i)
     ids_are_positions = cells[i].id == i;
-  std::unordered_map<complex::CellId, std::size_t> position;
+  std::unordered_map<medusa::CellId, std::size_t> position;
   if (!ids_are_positions) {
     position.reserve(cells.size());
     for (std::size_t i = 0; i < cells.size(); ++i)
@@ -63,7 +63,7 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
         throw InputError("filtration: duplicate " + cell_name(cells[i]));
   }
   const std::size_t unknown = cells.size();
-  const auto locate = [&](complex::CellId id) {
+  const auto locate = [&](medusa::CellId id) {
     if (ids_are_positions)
       return id < cells.size() ? static_cast<std::size_t>(id) : unknown;
     const auto it = position.find(id);
@@ -79,7 +79,7 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
       return a.before(b);
     return cells[a.position].vertices < cells[b.position].vertices;
   });
-  // The key is a total order on a valid medusa (MATH.md 7.2): equal keys mean one simplex with two
+  // The key is a total order on a valid medusa (docs/MATH.md §7.2): equal keys mean one simplex with two
   // overlapping lifetimes.
   for (std::size_t j = 1; j < keys.size(); ++j)
     if (keys[j - 1].same_time_and_dim(keys[j]) &&
@@ -108,7 +108,7 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
                           " facets, expected " + std::to_string(expected));
     auto& column = f.columns[j];
     column.reserve(c.facets.size());
-    for (complex::CellId facet_id : c.facets) {
+    for (medusa::CellId facet_id : c.facets) {
       const std::size_t at = locate(facet_id);
       if (at == unknown)
         throw InputError("filtration: " + cell_name(c) + " names unknown facet cell " +
@@ -118,7 +118,7 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
           !std::includes(c.vertices.begin(), c.vertices.end(), facet.vertices.begin(), facet.vertices.end()))
         throw InternalError("filtration: " + cell_name(facet) + " is not a facet of " + cell_name(c));
       const std::int64_t row = index_of[at];
-      // A face of a type-X cell is type-X, so a missing row is a broken sub-medusa (MATH.md 7.4).
+      // A face of a type-X cell is type-X, so a missing row is a broken sub-medusa (docs/MATH.md §7.4).
       if (row < 0 || row >= static_cast<std::int64_t>(j))
         throw InternalError("filtration: facet " + cell_name(facet) + " does not precede its coface " +
                             cell_name(c));

@@ -14,7 +14,7 @@ template <class Cost> double solve(std::size_t N, const Cost& cost) {
   // Start from feasible potentials, u_i = min_j c_ij then v_j = min_i (c_ij - u_i), and a greedy
   // matching on the edges they make tight. Every augmentation below keeps the reduced costs
   // non-negative and the matched edges tight, so the result is still optimal; on the augmented
-  // graph of W_p (MATH.md 7.7) most rows, among them the free diagonal-to-diagonal ones, are matched
+  // graph of W_p (docs/MATH.md §7.7) most rows, among them the free diagonal-to-diagonal ones, are matched
   // here instead of by an O(N^2) augmenting search each.
   for (std::size_t i = 1; i <= N; ++i) {
     double row_min = inf;

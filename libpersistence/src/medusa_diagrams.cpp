@@ -49,13 +49,13 @@ std::vector<std::pair<int, Direction>> medusa_jobs(const std::vector<int>& types
   return jobs;
 }
 
-Filtration make_job_filtration(const std::vector<complex::Cell>& cells, const std::vector<int>& vertex_type,
+Filtration make_job_filtration(const std::vector<medusa::Cell>& cells, const std::vector<int>& vertex_type,
                                const std::pair<int, Direction>& job) {
   return job.first == all_types ? make_filtration(cells, job.second)
                                 : make_type_filtration(cells, vertex_type, job.first, job.second);
 }
 
-Diagram audited_diagram(const std::vector<complex::Cell>& cells, const Filtration& f) {
+Diagram audited_diagram(const std::vector<medusa::Cell>& cells, const Filtration& f) {
   Diagram d = compute_diagram(cells, f);
   check_euler(d, f);
   check_homology_degrees(d);
@@ -64,7 +64,7 @@ Diagram audited_diagram(const std::vector<complex::Cell>& cells, const Filtratio
 
 } // namespace
 
-std::vector<Diagram> compute_medusa_diagrams(const std::vector<complex::Cell>& cells,
+std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& cells,
                                              const std::vector<int>& vertex_type,
                                              const std::vector<int>& types, unsigned threads,
                                              DiagramPhaseSeconds* phases) {

@@ -1,6 +1,6 @@
 #include "medusa/persistence/points.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <cmath>
 #include <string>

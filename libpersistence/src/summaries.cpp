@@ -1,6 +1,6 @@
 #include "medusa/persistence/summaries.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include "medusa/persistence/wasserstein.h"
 
 #include "augmented.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <algorithm>
 #include <cmath>
@@ -86,7 +86,7 @@ DistanceResult wasserstein_distance(const PointDiagram& a, const PointDiagram& b
   if (a.essential.size() != b.essential.size()) {
     result.essential = detail::AugmentedProblem::infinity();
   } else {
-    // Sorted births are an optimal matching on the line (MATH.md 7.7).
+    // Sorted births are an optimal matching on the line (docs/MATH.md §7.7).
     std::vector<double> x = a.essential, y = b.essential;
     std::sort(x.begin(), x.end());
     std::sort(y.begin(), y.end());

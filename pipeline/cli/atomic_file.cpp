@@ -1,6 +1,6 @@
 #include "atomic_file.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <cstdio>
 #include <fstream>

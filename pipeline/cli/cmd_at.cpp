@@ -1,13 +1,13 @@
-// `medusa at`: the alpha complex K(T+) at one time T (MATH.md 6.6), for ParaView (VTK) or as a list
+// `medusa at`: the alpha complex K(T+) at one time T (docs/MATH.md §6.6), for ParaView (VTK) or as a list
 // of simplices (CSV).
 #include "atomic_file.h"
 #include "commands.h"
 #include "complex_export.h"
 #include "diagram_export.h"
 
-#include "medusa/complex/complex_index.h"
-#include "medusa/complex/store_reader.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
+#include "medusa/medusa/complex_index.h"
+#include "medusa/medusa/store_reader.h"
 
 #include <algorithm>
 #include <iostream>
@@ -29,7 +29,7 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 }
 
 void at_command(const AtArguments& args) {
-  const complex::Medusa medusa = complex::read_store(args.store);
+  const medusa::Medusa medusa = medusa::read_store(args.store);
   if (args.type) {
     const auto& cells = medusa.input.cells;
     if (std::none_of(cells.begin(), cells.end(),
@@ -38,11 +38,11 @@ void at_command(const AtArguments& args) {
   }
   // Validates T against the frames before the (batch-approximate) index query.
   const auto positions = positions_at_time(medusa.input, args.time);
-  const complex::ComplexIndex index(medusa, args.type);
-  const std::vector<complex::CellId> cells = index.at_time(args.time);
+  const medusa::ComplexIndex index(medusa, args.type);
+  const std::vector<medusa::CellId> cells = index.at_time(args.time);
 
   std::array<std::size_t, 4> counts{};
-  for (complex::CellId id : cells)
+  for (medusa::CellId id : cells)
     ++counts[static_cast<std::size_t>(std::clamp(medusa.cell(id).dim(), 0, 3))];
   const std::string what =
       std::string(args.type ? "type " + std::to_string(*args.type) + " subcomplex of " : "") +
@@ -77,7 +77,7 @@ void add_at_command(CLI::App& app) {
                        : "'" + value + "' does not end in .vtk or .csv";
           },
           "FILE"));
-  at->add_option("--type", args->type, "only the subcomplex of this cell type id (MATH.md 7.4)");
+  at->add_option("--type", args->type, "only the subcomplex of this cell type id (docs/MATH.md §7.4)");
   at->callback([args] { at_command(*args); });
 }
 

@@ -5,7 +5,7 @@
 #include "diagram_selection.h"
 #include "svg_plot.h"
 
-#include "medusa/complex/store_reader.h"
+#include "medusa/medusa/store_reader.h"
 
 #include <iostream>
 #include <memory>
@@ -22,7 +22,7 @@ struct BarcodeArguments {
 };
 
 void barcode_command(const BarcodeArguments& args) {
-  const complex::Medusa medusa = complex::read_store(args.store);
+  const medusa::Medusa medusa = medusa::read_store(args.store);
   const std::vector<persistence::Diagram> diagrams = selected_diagrams(medusa, args.selection);
   const double t0 =
       medusa.input.frame_times.empty() ? 0.0 : static_cast<double>(medusa.input.frame_times.front());

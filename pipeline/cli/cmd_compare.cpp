@@ -1,5 +1,5 @@
 // `medusa compare`: pairwise distances between the diagrams of several runs on the normalised time
-// axis (MATH.md 7.7), average-linkage clustering, and their CSV/SVG exports.
+// axis (docs/MATH.md §7.7), average-linkage clustering, and their CSV/SVG exports.
 #include "atomic_file.h"
 #include "commands.h"
 #include "comparison.h"
@@ -7,7 +7,7 @@
 #include "interrupt.h"
 #include "matrix_svg.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "medusa/persistence/clustering.h"
 
 #include <algorithm>
@@ -139,13 +139,14 @@ void add_compare_command(CLI::App& app) {
   compare->add_option("stores", args->stores, "HDF5 stores written by `medusa run` (two or more)")
       ->required();
   compare
-      ->add_option("--metric", args->metric,
-                   "bottleneck, or wasserstein:p for W_p with p >= 1 (ground metric L-infinity, MATH.md 7.7)")
+      ->add_option(
+          "--metric", args->metric,
+          "bottleneck, or wasserstein:p for W_p with p >= 1 (ground metric L-infinity, docs/MATH.md §7.7)")
       ->check(CLI::Validator([](std::string& value) { return metric_spec_error(value); }, "METRIC"))
       ->capture_default_str();
   compare
       ->add_option("--type", args->selection.type,
-                   "the sub-medusa of this cell type id (MATH.md 7.4), or 'all' for the whole medusa")
+                   "the sub-medusa of this cell type id (docs/MATH.md §7.4), or 'all' for the whole medusa")
       ->check(CLI::Validator(
           [](std::string& value) {
             return value == "all" || (!value.empty() && value.size() < 10 &&
@@ -158,7 +159,8 @@ void add_compare_command(CLI::App& app) {
   compare->add_option("--dim", args->selection.dim, "homology degree")
       ->check(CLI::Range(0, 3))
       ->capture_default_str();
-  compare->add_option("--filtration", args->selection.filtration, "forward or reverse (MATH.md 7.2, 7.3)")
+  compare
+      ->add_option("--filtration", args->selection.filtration, "forward or reverse (docs/MATH.md §7.2, §7.3)")
       ->check(CLI::IsMember({"forward", "reverse"}))
       ->capture_default_str();
   compare->add_flag("--ignore-essential", args->ignore_essential,

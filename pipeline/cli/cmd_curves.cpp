@@ -1,5 +1,5 @@
 // `medusa curves`: simplex counts, Euler characteristic and Betti numbers of the time slices K_t
-// (MATH.md 6.6), for the whole complex and for each cell type's subcomplex (7.4), as CSV and SVG.
+// (docs/MATH.md §6.6), for the whole complex and for each cell type's subcomplex (7.4), as CSV and SVG.
 #include "atomic_file.h"
 #include "commands.h"
 #include "curve_plot.h"
@@ -7,8 +7,8 @@
 #include "diagram_selection.h"
 #include "interrupt.h"
 
-#include "medusa/complex/signatures.h"
-#include "medusa/complex/store_reader.h"
+#include "medusa/medusa/signatures.h"
+#include "medusa/medusa/store_reader.h"
 
 #include <algorithm>
 #include <iostream>
@@ -26,7 +26,7 @@ struct CurvesArguments {
 
 struct TypeCurves {
   std::string label; // "all" or the type id
-  std::vector<complex::SignatureSample> samples;
+  std::vector<medusa::SignatureSample> samples;
 };
 
 std::string store_stem(const std::string& store) {
@@ -36,12 +36,12 @@ std::string store_stem(const std::string& store) {
   return store;
 }
 
-// One sample per frame, at the frame's time: the signature reported at frame k (MATH.md 6.6), which
+// One sample per frame, at the frame's time: the signature reported at frame k (docs/MATH.md §6.6), which
 // is that after the last batch at or before t_k (K(t_end-) for the last frame).
-std::vector<complex::SignatureSample> frame_samples(const std::vector<complex::SignatureSample>& samples,
-                                                    const kinetic::Trajectories& input) {
-  std::vector<complex::SignatureSample> by_frame(input.frames());
-  for (const complex::SignatureSample& s : samples)
+std::vector<medusa::SignatureSample> frame_samples(const std::vector<medusa::SignatureSample>& samples,
+                                                   const kinetic::Trajectories& input) {
+  std::vector<medusa::SignatureSample> by_frame(input.frames());
+  for (const medusa::SignatureSample& s : samples)
     for (std::size_t k : s.frames) {
       by_frame.at(k) = s;
       by_frame[k].time = static_cast<double>(input.frame_times[k]);
@@ -53,8 +53,8 @@ std::vector<complex::SignatureSample> frame_samples(const std::vector<complex::S
 void write_curves_csv(std::ostream& out, const std::vector<TypeCurves>& all) {
   out << "time,type,f0,f1,f2,f3,euler,b0,b1,b2\n";
   for (const TypeCurves& c : all)
-    for (const complex::SignatureSample& s : c.samples) {
-      const complex::Signature& g = s.signature;
+    for (const medusa::SignatureSample& s : c.samples) {
+      const medusa::Signature& g = s.signature;
       out << format_time(s.time) << ',' << c.label << ',' << g.f[0] << ',' << g.f[1] << ',' << g.f[2] << ','
           << g.f[3] << ',' << g.euler << ',' << g.betti[0] << ',' << g.betti[1] << ',' << g.betti[2] << '\n';
     }
@@ -67,7 +67,7 @@ std::vector<CurvePanel> panels_of(const std::vector<TypeCurves>& all) {
     CurvePanel counts{"type " + c.label + ": simplices of K_t", {}};
     for (int k = 0; k <= 3; ++k) {
       Curve b{"b" + std::to_string(k), {}, {}}, f{"f" + std::to_string(k), {}, {}};
-      for (const complex::SignatureSample& s : c.samples) {
+      for (const medusa::SignatureSample& s : c.samples) {
         b.times.push_back(s.time);
         b.values.push_back(static_cast<double>(s.signature.betti[static_cast<std::size_t>(k)]));
         f.times.push_back(s.time);
@@ -83,23 +83,23 @@ std::vector<CurvePanel> panels_of(const std::vector<TypeCurves>& all) {
   return panels;
 }
 
-void describe(std::ostream& out, const complex::SignatureSample& s) {
-  const complex::Signature& g = s.signature;
+void describe(std::ostream& out, const medusa::SignatureSample& s) {
+  const medusa::Signature& g = s.signature;
   out << "MCS " << format_time(s.time) << ": " << g.f[0] << " vertices, " << g.f[1] << " edges, " << g.f[2]
       << " triangles, " << g.f[3] << " tetrahedra; b0 " << g.betti[0] << ", b1 " << g.betti[1] << ", b2 "
       << g.betti[2];
 }
 
 void curves_command(const CurvesArguments& args) {
-  const complex::Medusa medusa = complex::read_store(args.store);
+  const medusa::Medusa medusa = medusa::read_store(args.store);
   std::vector<TypeCurves> all;
   std::vector<std::optional<int>> types{std::nullopt};
   for (int t : distinct_types(vertex_types(medusa)))
     types.emplace_back(t);
   for (const std::optional<int>& type : types) {
     check_interrupted();
-    const complex::ComplexIndex index(medusa, type);
-    std::vector<complex::SignatureSample> samples = complex::signatures_over_time(index);
+    const medusa::ComplexIndex index(medusa, type);
+    std::vector<medusa::SignatureSample> samples = medusa::signatures_over_time(index);
     if (args.frames_only)
       samples = frame_samples(samples, medusa.input);
     all.push_back({type ? std::to_string(*type) : "all", std::move(samples)});
@@ -140,7 +140,7 @@ void add_curves_command(CLI::App& app) {
                      "<prefix>.curves.svg (default: the store name without .h5)");
   curves->add_flag(
       "--frames-only", args->frames_only,
-      "one row per input frame (the state reported at the frame, MATH.md 6.6) instead of one per "
+      "one row per input frame (the state reported at the frame, docs/MATH.md §6.6) instead of one per "
       "event batch");
   curves->callback([args] { curves_command(*args); });
 }

@@ -3,7 +3,7 @@
 #include "diagram_export.h"
 #include "diagram_selection.h"
 
-#include "medusa/complex/store_reader.h"
+#include "medusa/medusa/store_reader.h"
 
 #include <iostream>
 #include <memory>
@@ -25,7 +25,7 @@ void add_diagrams_command(CLI::App& app) {
   diagrams->add_option("store", args->store, "HDF5 store written by `medusa run`")->required();
   add_selection_options(*diagrams, args->selection);
   diagrams->callback([args] {
-    const complex::Medusa medusa = complex::read_store(args->store);
+    const medusa::Medusa medusa = medusa::read_store(args->store);
     write_pairs_text(std::cout, selected_diagrams(medusa, args->selection));
   });
 }

@@ -2,7 +2,7 @@
 #include "commands.h"
 #include "diagram_selection.h"
 
-#include "medusa/complex/store_reader.h"
+#include "medusa/medusa/store_reader.h"
 
 #include <iostream>
 #include <memory>
@@ -11,7 +11,7 @@ namespace medusa::cli {
 namespace {
 
 void info_command(const std::string& path) {
-  const complex::Medusa medusa = complex::read_store(path);
+  const medusa::Medusa medusa = medusa::read_store(path);
   const kinetic::Trajectories& input = medusa.input;
   std::cout << "store: " << path << "\n"
             << "software version: " << medusa.run.software_version << "\n"

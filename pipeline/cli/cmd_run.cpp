@@ -1,5 +1,5 @@
 // `medusa run`: CC3D run -> trajectories -> kinetic alpha complex -> medusa store -> diagrams
-// (MATH.md 1-7), with a plain-words summary on stdout.
+// (docs/MATH.md §1-§7), with a plain-words summary on stdout.
 #include "atomic_file.h"
 #include "commands.h"
 #include "diagram_export.h"
@@ -10,13 +10,14 @@
 #include "stage_timings.h"
 #include "svg_plot.h"
 
-#include "medusa/complex/async_observer.h"
-#include "medusa/complex/medusa_builder.h"
-#include "medusa/complex/store_reader.h"
-#include "medusa/complex/store_writer.h"
+#include "medusa/core/error.h"
+#include "medusa/core/version.h"
 #include "medusa/io/run_reader.h"
-#include "medusa/kinetic/error.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "medusa/medusa/async_observer.h"
+#include "medusa/medusa/medusa_builder.h"
+#include "medusa/medusa/store_reader.h"
+#include "medusa/medusa/store_writer.h"
 #include "medusa/persistence/diagram_store.h"
 #include "medusa/persistence/medusa_diagrams.h"
 
@@ -51,7 +52,7 @@ struct RunArguments {
 // Forwards the event stream to the builder; reports progress and polls for interrupts. It also
 // times the builder (which streams the store) apart from the kinetic engine that calls it.
 // libkinetic reports t_end with the batch index of the last event batch, while the builder wants
-// the end strictly after every batch (MATH.md 6.2: cells alive at t_end die at the final virtual
+// the end strictly after every batch (docs/MATH.md §6.2: cells alive at t_end die at the final virtual
 // time); the end is then given the next batch index.
 class ProgressObserver : public kinetic::Observer {
 public:
@@ -136,7 +137,7 @@ io::RunSource choose_source(const RunArguments& args) {
   if (args.source == "csv")
     return io::RunSource::csv;
   // Default for a CC3D folder: CC3D's own centres (cells.csv.gz) are on the 10^-6 grid, while the
-  // VTK voxel centroids are not and would need --snap (MATH.md 1.2, 1.3).
+  // VTK voxel centroids are not and would need --snap (docs/MATH.md §1.2, §1.3).
   const fs::path folder(args.input);
   std::error_code ec;
   if (fs::is_directory(folder, ec) &&
@@ -165,9 +166,9 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   meter.stage("medusa store: reading back " + output);
   StageClock clock;
   // The diagrams need only the cells: the batch records (one per event time) stay on disk.
-  complex::StoreReadOptions cells_only;
+  medusa::StoreReadOptions cells_only;
   cells_only.events = false;
-  const complex::Medusa medusa = complex::read_store(output, cells_only);
+  const medusa::Medusa medusa = medusa::read_store(output, cells_only);
   timings.add("medusa_store", clock);
   check_interrupted();
 
@@ -308,25 +309,25 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   kinetic_options.audit = args.audit;
 
   const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
-  complex::RunInfo info;
+  medusa::RunInfo info;
   info.radius = std::stod(radius);
   info.radius_text = radius;
   info.source_files = data.sources;
   info.command_line = command_line;
-  info.software_version = MEDUSA_VERSION;
+  info.software_version = medusa::version;
 
   kinetic::KineticStatistics stats;
   std::vector<std::int64_t> peak_rss_at_frame;
   {
     clock = StageClock{};
     kinetic::KineticAlphaComplex engine(data.trajectories, kinetic_options);
-    complex::StoreWriter writer(output);
-    complex::MedusaBuilder builder(writer);
+    medusa::StoreWriter writer(output);
+    medusa::MedusaBuilder builder(writer);
     builder.set_run(info, data.trajectories);
     // With more than one thread the builder and the store writer run beside the engine, on a thread
     // of their own (AsyncObserver); declared after them, it stops before they are destroyed. The peak
     // memory sampled at each frame then includes the calls still queued for them (a few blocks).
-    std::optional<complex::AsyncObserver> beside;
+    std::optional<medusa::AsyncObserver> beside;
     if (threads > 1)
       beside.emplace(builder);
     kinetic::Observer& store_side = beside ? static_cast<kinetic::Observer&>(*beside) : builder;

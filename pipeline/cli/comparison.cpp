@@ -2,8 +2,8 @@
 
 #include "diagram_selection.h"
 
-#include "medusa/complex/store_reader.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
+#include "medusa/medusa/store_reader.h"
 #include "medusa/persistence/bottleneck.h"
 #include "medusa/persistence/medusa_diagrams.h"
 #include "medusa/persistence/wasserstein.h"
@@ -31,7 +31,7 @@ bool parse_wasserstein(const std::string& spec, double& p, std::string& text) {
 } // namespace
 
 ComparedDiagram compared_diagram(const std::string& store, const ComparisonSelection& selection) {
-  const complex::Medusa medusa = complex::read_store(store);
+  const medusa::Medusa medusa = medusa::read_store(store);
   DiagramSelection wanted;
   wanted.type = selection.type;
   wanted.filtration = selection.filtration;

@@ -1,5 +1,5 @@
 // What `medusa compare` compares: one diagram per store (one cell type, homology degree and
-// filtration direction), as points on the normalised time axis of MATH.md 7.7, and the metric.
+// filtration direction), as points on the normalised time axis of docs/MATH.md §7.7, and the metric.
 #pragma once
 
 #include "medusa/persistence/distance.h"
@@ -24,8 +24,8 @@ struct ComparisonSelection {
   std::string filtration = "forward";
 };
 
-// Reads `store`, computes its diagrams (MATH.md 7.2-7.4) and returns the selected one mapped to points
-// (reverse diagrams to -t, MATH.md 7.3) with the time normalisation t -> (t - t0) / (t_end - t0).
+// Reads `store`, computes its diagrams (docs/MATH.md §7.2-§7.4) and returns the selected one mapped to points
+// (reverse diagrams to -t, docs/MATH.md §7.3) with the time normalisation t -> (t - t0) / (t_end - t0).
 // InputError if the type does not occur in the store.
 ComparedDiagram compared_diagram(const std::string& store, const ComparisonSelection& selection);
 

@@ -1,6 +1,6 @@
 #include "complex_export.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +18,7 @@ std::string coordinate(double x) {
 }
 
 // The common type of a simplex's vertices, or 0 (never a cell type: 0 is CC3D's medium).
-int common_type(const kinetic::Trajectories& input, const complex::Cell& c) {
+int common_type(const kinetic::Trajectories& input, const medusa::Cell& c) {
   const int first = input.cells[static_cast<std::size_t>(c.vertices.front())].type;
   for (kinetic::VertexId v : c.vertices)
     if (input.cells[static_cast<std::size_t>(v)].type != first)
@@ -61,14 +61,14 @@ std::vector<std::optional<std::array<double, 3>>> positions_at_time(const kineti
   return positions;
 }
 
-void write_complex_vtk(std::ostream& out, const complex::Medusa& medusa,
-                       const std::vector<complex::CellId>& cells,
+void write_complex_vtk(std::ostream& out, const medusa::Medusa& medusa,
+                       const std::vector<medusa::CellId>& cells,
                        const std::vector<std::optional<std::array<double, 3>>>& positions,
                        const std::string& title) {
   const kinetic::Trajectories& input = medusa.input;
   // Points: the vertices of the complex in increasing vertex id, numbered from 0.
   std::map<kinetic::VertexId, std::size_t> point_of;
-  for (complex::CellId id : cells)
+  for (medusa::CellId id : cells)
     for (kinetic::VertexId v : medusa.cell(id).vertices)
       point_of.emplace(v, 0);
   std::size_t next = 0;
@@ -80,7 +80,7 @@ void write_complex_vtk(std::ostream& out, const complex::Medusa& medusa,
                           ") is in K_t but has no position at that time");
   }
   std::size_t size = 0;
-  for (complex::CellId id : cells)
+  for (medusa::CellId id : cells)
     size += medusa.cell(id).vertices.size() + 1;
 
   out << "# vtk DataFile Version 3.0\n" << title << "\nASCII\nDATASET UNSTRUCTURED_GRID\n";
@@ -90,8 +90,8 @@ void write_complex_vtk(std::ostream& out, const complex::Medusa& medusa,
     out << coordinate(x[0]) << ' ' << coordinate(x[1]) << ' ' << coordinate(x[2]) << '\n';
   }
   out << "CELLS " << cells.size() << ' ' << size << '\n';
-  for (complex::CellId id : cells) {
-    const complex::Cell& c = medusa.cell(id);
+  for (medusa::CellId id : cells) {
+    const medusa::Cell& c = medusa.cell(id);
     out << c.vertices.size();
     for (kinetic::VertexId v : c.vertices)
       out << ' ' << point_of.at(v);
@@ -100,7 +100,7 @@ void write_complex_vtk(std::ostream& out, const complex::Medusa& medusa,
   // VTK_VERTEX, VTK_LINE, VTK_TRIANGLE, VTK_TETRA.
   constexpr int vtk_type[] = {1, 3, 5, 10};
   out << "CELL_TYPES " << cells.size() << '\n';
-  for (complex::CellId id : cells) {
+  for (medusa::CellId id : cells) {
     const int d = medusa.cell(id).dim();
     if (d < 0 || d > 3)
       throw InternalError("medusa at: cell " + std::to_string(id) + " of dimension " + std::to_string(d) +
@@ -108,10 +108,10 @@ void write_complex_vtk(std::ostream& out, const complex::Medusa& medusa,
     out << vtk_type[d] << '\n';
   }
   out << "CELL_DATA " << cells.size() << "\nSCALARS cell_type int 1\nLOOKUP_TABLE default\n";
-  for (complex::CellId id : cells)
+  for (medusa::CellId id : cells)
     out << common_type(input, medusa.cell(id)) << '\n';
   out << "SCALARS dimension int 1\nLOOKUP_TABLE default\n";
-  for (complex::CellId id : cells)
+  for (medusa::CellId id : cells)
     out << medusa.cell(id).dim() << '\n';
   out << "POINT_DATA " << point_of.size() << "\nSCALARS cell_id long 1\nLOOKUP_TABLE default\n";
   for (const auto& entry : point_of)
@@ -121,12 +121,12 @@ void write_complex_vtk(std::ostream& out, const complex::Medusa& medusa,
     out << input.cells[static_cast<std::size_t>(entry.first)].type << '\n';
 }
 
-void write_complex_csv(std::ostream& out, const complex::Medusa& medusa,
-                       const std::vector<complex::CellId>& cells) {
+void write_complex_csv(std::ostream& out, const medusa::Medusa& medusa,
+                       const std::vector<medusa::CellId>& cells) {
   std::vector<std::vector<std::int64_t>> rows;
   rows.reserve(cells.size());
-  for (complex::CellId id : cells) {
-    const complex::Cell& c = medusa.cell(id);
+  for (medusa::CellId id : cells) {
+    const medusa::Cell& c = medusa.cell(id);
     std::vector<std::int64_t> row{c.dim()};
     for (kinetic::VertexId v : c.vertices)
       row.push_back(medusa.input.cells.at(static_cast<std::size_t>(v)).cell_id);

@@ -1,8 +1,8 @@
-// Export of one time slice K_t of the alpha complex (MATH.md 6.6): vertex positions interpolated along
-// the piecewise-linear trajectories (MATH.md 2.1), as legacy VTK or as a CSV list of simplices.
+// Export of one time slice K_t of the alpha complex (docs/MATH.md §6.6): vertex positions interpolated along
+// the piecewise-linear trajectories (docs/MATH.md §2.1), as legacy VTK or as a CSV list of simplices.
 #pragma once
 
-#include "medusa/complex/medusa.h"
+#include "medusa/medusa/medusa.h"
 
 #include <array>
 #include <optional>
@@ -12,7 +12,7 @@
 namespace medusa::cli {
 
 // Physical position of every trajectory at time t (index = vertex id), linear between the frames
-// around t (x = X / scale, MATH.md 1.1); empty for trajectories absent on both frames of t's slab.
+// around t (x = X / scale, docs/MATH.md §1.1); empty for trajectories absent on both frames of t's slab.
 // Throws InputError when t is outside [t_0, t_end].
 std::vector<std::optional<std::array<double, 3>>> positions_at_time(const kinetic::Trajectories& input,
                                                                     double t);
@@ -21,14 +21,14 @@ std::vector<std::optional<std::array<double, 3>>> positions_at_time(const kineti
 // VTK_LINE, VTK_TRIANGLE or VTK_TETRA; CELL_DATA "cell_type" (the common CC3D type of its vertices, or
 // 0 when they differ) and "dimension"; POINT_DATA "cell_id" and "cell_type". InternalError when a
 // vertex has no position.
-void write_complex_vtk(std::ostream& out, const complex::Medusa& medusa,
-                       const std::vector<complex::CellId>& cells,
+void write_complex_vtk(std::ostream& out, const medusa::Medusa& medusa,
+                       const std::vector<medusa::CellId>& cells,
                        const std::vector<std::optional<std::array<double, 3>>>& positions,
                        const std::string& title);
 
 // CSV `dimension,v0,v1,v2,v3`: one simplex per row, its vertices as CC3D cell ids in increasing order
 // (trailing fields empty), rows sorted by dimension then ids.
-void write_complex_csv(std::ostream& out, const complex::Medusa& medusa,
-                       const std::vector<complex::CellId>& cells);
+void write_complex_csv(std::ostream& out, const medusa::Medusa& medusa,
+                       const std::vector<medusa::CellId>& cells);
 
 } // namespace medusa::cli

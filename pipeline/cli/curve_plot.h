@@ -1,5 +1,5 @@
 // Piecewise constant curves over time as a standalone SVG: one panel per group of curves, each curve a
-// step line (the value holds from its sample time until the next sample, MATH.md 6.6).
+// step line (the value holds from its sample time until the next sample, docs/MATH.md §6.6).
 #pragma once
 
 #include <ostream>

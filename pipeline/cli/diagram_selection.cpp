@@ -1,6 +1,6 @@
 #include "diagram_selection.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "medusa/persistence/medusa_diagrams.h"
 
 #include <algorithm>
@@ -24,13 +24,14 @@ unsigned worker_threads(unsigned requested) {
 }
 
 void add_selection_options(CLI::App& command, DiagramSelection& selection) {
-  command.add_option("--filtration", selection.filtration, "forward, reverse or both (MATH.md 7.2, 7.3)")
+  command
+      .add_option("--filtration", selection.filtration, "forward, reverse or both (docs/MATH.md §7.2, §7.3)")
       ->check(CLI::IsMember({"forward", "reverse", "both"}))
       ->capture_default_str();
   command
       .add_option(
           "--type", selection.type,
-          "only the sub-medusa of this cell type id (MATH.md 7.4), or 'all' for the whole medusa only")
+          "only the sub-medusa of this cell type id (docs/MATH.md §7.4), or 'all' for the whole medusa only")
       ->check(CLI::Validator(
           [](std::string& value) {
             return value == "all" || parse_type(value) ? std::string()
@@ -47,7 +48,7 @@ void add_selection_options(CLI::App& command, DiagramSelection& selection) {
       ->capture_default_str();
 }
 
-std::vector<int> vertex_types(const complex::Medusa& medusa) {
+std::vector<int> vertex_types(const medusa::Medusa& medusa) {
   std::vector<int> types;
   types.reserve(medusa.input.cells.size());
   for (const kinetic::Trajectory& t : medusa.input.cells)
@@ -62,7 +63,7 @@ std::vector<int> distinct_types(const std::vector<int>& vertex_type) {
   return types;
 }
 
-std::vector<persistence::Diagram> selected_diagrams(const complex::Medusa& medusa,
+std::vector<persistence::Diagram> selected_diagrams(const medusa::Medusa& medusa,
                                                     const DiagramSelection& selection) {
   const std::vector<int> vertex_type = vertex_types(medusa);
   std::vector<int> types = distinct_types(vertex_type);

@@ -1,8 +1,8 @@
-// Which diagrams of a medusa a command works on: direction, cell type, homology degree (MATH.md
-// 7.2-7.4), and computing them from the cells.
+// Which diagrams of a medusa a command works on: direction, cell type, homology degree (docs/MATH.md
+// §7.2-7.4), and computing them from the cells.
 #pragma once
 
-#include "medusa/complex/medusa.h"
+#include "medusa/medusa/medusa.h"
 #include "medusa/persistence/diagram.h"
 
 #include <CLI/CLI.hpp>
@@ -29,12 +29,12 @@ void add_selection_options(CLI::App& command, DiagramSelection& selection);
 unsigned worker_threads(unsigned requested);
 
 // Vertex types of the stored input (index = vertex id) and the distinct types, increasing.
-std::vector<int> vertex_types(const complex::Medusa& medusa);
+std::vector<int> vertex_types(const medusa::Medusa& medusa);
 std::vector<int> distinct_types(const std::vector<int>& vertex_type);
 
 // The diagrams of `medusa` that the selection asks for, in compute_medusa_diagrams order, with pairs
 // of other degrees and (unless asked) zero-length pairs removed. An unknown type is an InputError.
-std::vector<persistence::Diagram> selected_diagrams(const complex::Medusa& medusa,
+std::vector<persistence::Diagram> selected_diagrams(const medusa::Medusa& medusa,
                                                     const DiagramSelection& selection);
 
 std::string direction_name(persistence::Direction direction);

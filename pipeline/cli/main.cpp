@@ -3,8 +3,9 @@
 #include "commands.h"
 #include "interrupt.h"
 
-#include "medusa/complex/store_writer.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
+#include "medusa/core/version.h"
+#include "medusa/medusa/store_writer.h"
 
 #include <CLI/CLI.hpp>
 
@@ -35,7 +36,7 @@ int main(int argc, char** argv) {
   CLI::App app{
       "medusa: topology of cell-sorting simulations (kinetic alpha complex, alpha medusa, persistence)"};
   app.require_subcommand(1, 1);
-  app.set_version_flag("--version", std::string("medusa ") + MEDUSA_VERSION);
+  app.set_version_flag("--version", std::string("medusa ") + medusa::version);
   medusa::cli::add_run_command(app, joined(argc, argv));
   medusa::cli::add_info_command(app);
   medusa::cli::add_diagrams_command(app);
@@ -45,7 +46,7 @@ int main(int argc, char** argv) {
   medusa::cli::add_at_command(app);
   medusa::cli::install_interrupt_handlers();
   // A store whose final flush failed would otherwise crash HDF5's exit handler (store_writer.h).
-  medusa::complex::skip_hdf5_cleanup_at_exit();
+  medusa::skip_hdf5_cleanup_at_exit();
 #ifdef __GLIBC__
   // Blocks of 128 KiB and more are mapped and unmapped one by one. glibc otherwise raises this
   // threshold after the first such block is freed and serves later large temporaries (store columns,

@@ -1,4 +1,4 @@
-// Standalone SVG pictures of a comparison (MATH.md 7.7): the distance matrix as a heatmap and its
+// Standalone SVG pictures of a comparison (docs/MATH.md §7.7): the distance matrix as a heatmap and its
 // hierarchical clustering as a dendrogram. Infinite distances (different numbers of essential classes)
 // are drawn apart: hatched grey cells, merges on a separate "inf" level above the finite ones.
 #pragma once

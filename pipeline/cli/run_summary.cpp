@@ -19,7 +19,7 @@ const char* const feature_names[] = {"cluster", "loop", "cavity"};
 const char* const feature_plurals[] = {"clusters", "loops", "cavities"};
 
 // H2 of a planar run's medusa is no cavity of the flat tissue: its space-time lives in R^3, where by
-// MATH.md 7.6's argument for H3 one dimension down every H2 class is a bubble of space-time (a hole
+// docs/MATH.md §7.6's argument for H3 one dimension down every H2 class is a bubble of space-time (a hole
 // that opened inside the tissue and closed again, born when it closes) and none of positive length
 // dies (tests/medusa/test_medusa_2d.cpp checks it on the real 2D run).
 void describe_planar_bubbles(std::ostream& out, const persistence::Diagram& diagram) {
@@ -35,7 +35,7 @@ void describe_planar_bubbles(std::ostream& out, const persistence::Diagram& diag
 void describe_forward_diagram(std::ostream& out, const persistence::Diagram& diagram, double t0, double t_end,
                               int dimension) {
   // Components alive just after t0: born in batch 0 and not killed there (zero-length pairs are
-  // killed in their birth batch, MATH.md 7.5). Those alive at the end are the essential classes.
+  // killed in their birth batch, docs/MATH.md §7.5). Those alive at the end are the essential classes.
   std::size_t at_start = 0, at_end = 0;
   const persistence::PersistencePair* last_merge = nullptr; // the longest-lived finite H0 class
   for (const persistence::PersistencePair& p : diagram.pairs)
@@ -54,7 +54,7 @@ void describe_forward_diagram(std::ostream& out, const persistence::Diagram& dia
   out << "\n";
   // Loops and cavities: a class that dies was filled; an essential one never was. It is a class of
   // the whole space-time medusa, so it need not be open at the end: a ring that later breaks apart
-  // without being filled stays one (MATH.md 7.5, 7.6). The longest-lived filled one is the telling
+  // without being filled stays one (docs/MATH.md §7.5, §7.6). The longest-lived filled one is the telling
   // feature; essential classes are counted apart.
   for (int k = 1; k <= 2; ++k) {
     if (k == 2 && dimension == 2) {
@@ -85,7 +85,7 @@ void describe_forward_diagram(std::ostream& out, const persistence::Diagram& dia
   }
 }
 
-void write_run_summary(std::ostream& out, const complex::Medusa& medusa,
+void write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
                        const kinetic::KineticStatistics& stats,
                        const std::vector<persistence::Diagram>& diagrams, const std::string& radius_text) {
   const kinetic::Trajectories& input = medusa.input;

@@ -1,9 +1,9 @@
 // The plain-words summary `medusa run` prints: sizes, events, medusa cells per dimension, and the
-// most persistent features of each cell type's forward diagram (MATH.md 7.2, 7.4).
+// most persistent features of each cell type's forward diagram (docs/MATH.md §7.2, §7.4).
 #pragma once
 
-#include "medusa/complex/medusa.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "medusa/medusa/medusa.h"
 #include "medusa/persistence/diagram.h"
 
 #include <ostream>
@@ -12,7 +12,7 @@
 
 namespace medusa::cli {
 
-void write_run_summary(std::ostream& out, const complex::Medusa& medusa,
+void write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
                        const kinetic::KineticStatistics& stats,
                        const std::vector<persistence::Diagram>& diagrams, const std::string& radius_text);
 

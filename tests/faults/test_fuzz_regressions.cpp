@@ -5,10 +5,10 @@
 // files on which a sanitizer caught undefined behaviour (scripts/fuzz replays them all under ASan and
 // UBSan as seeds), but none may crash, hang or throw anything else.
 #include "child_process.h"
-#include "medusa/complex/store_reader.h"
+#include "medusa/core/error.h"
 #include "medusa/io/csv_reader.h"
 #include "medusa/io/vtk_reader.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/medusa/store_reader.h"
 
 #include <catch2/catch.hpp>
 
@@ -74,5 +74,5 @@ TEST_CASE("the VTK reader survives every fuzz regression input and rejects the m
 
 TEST_CASE("the store reader survives every fuzz regression input and rejects the malformed ones",
           "[faults]") {
-  check_all_rejected("fuzz_store_reader", [](const std::string& f) { medusa::complex::read_store(f); });
+  check_all_rejected("fuzz_store_reader", [](const std::string& f) { medusa::read_store(f); });
 }

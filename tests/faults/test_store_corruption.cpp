@@ -3,8 +3,8 @@
 // The store format (docs/FORMAT.md) makes this possible: 1.10 metadata with checksums everywhere and
 // fletcher32 on every chunk.
 #include "child_process.h"
-#include "medusa/complex/store_reader.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
+#include "medusa/medusa/store_reader.h"
 #include "store_fixture.h"
 #include "support/command_output.h"
 
@@ -25,7 +25,7 @@ ChildResult read_flipped(const std::vector<char>& bytes, std::size_t offset, con
   write_flipped(bad, bytes, offset, 0xFF);
   return run_in_child([&](std::string& report) {
     try {
-      medusa::complex::read_store(bad);
+      medusa::read_store(bad);
       report = "read without error";
       return child_returned;
     } catch (const medusa::StoreError& e) {
@@ -64,7 +64,7 @@ TEST_CASE("the small valid store used for the fault tests reads back", "[faults]
   const std::string path = temp_path("faults-valid.h5");
   RemoveFiles cleanup{{path}};
   write_small_store(path);
-  const medusa::complex::Medusa m = medusa::complex::read_store(path);
+  const medusa::Medusa m = medusa::read_store(path);
   CHECK(m.cells.size() == 31);
   CHECK(m.run.radius_text == "1.05");
 }

@@ -3,10 +3,10 @@
 // complete). The full disk is a 64 KiB tmpfs when the test may mount one (root with CAP_SYS_ADMIN);
 // the file-size limit RLIMIT_FSIZE gives the same failure (EFBIG from write) everywhere else.
 #include "child_process.h"
-#include "medusa/complex/medusa.h"
-#include "medusa/complex/store_reader.h"
-#include "medusa/complex/store_writer.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
+#include "medusa/medusa/medusa.h"
+#include "medusa/medusa/store_reader.h"
+#include "medusa/medusa/store_writer.h"
 #include "store_fixture.h"
 
 #include <catch2/catch.hpp>
@@ -26,8 +26,8 @@ constexpr std::uint64_t positions_seed = 20240611;
 
 // The Appendix B medusa with an input of 5000 cells over 2 frames at random grid positions: some
 // 180 KB of incompressible positions after compression, far more than the 64 KiB available.
-medusa::complex::Medusa large_medusa() {
-  medusa::complex::Medusa m = collect(appendix_b_stream(), 5, 2);
+medusa::Medusa large_medusa() {
+  medusa::Medusa m = collect(appendix_b_stream(), 5, 2);
   m.input = dummy_input(5000, 2);
   std::mt19937_64 random(positions_seed);
   std::uniform_int_distribution<std::int64_t> coordinate(0, std::int64_t{1} << 40);
@@ -44,7 +44,7 @@ ChildResult write_too_large(const std::string& path, const std::function<void()>
   return run_in_child([&](std::string& report) {
     limit();
     try {
-      medusa::complex::write_store(path, large_medusa());
+      medusa::write_store(path, large_medusa());
       report = "the store was written";
       return child_returned;
     } catch (const medusa::StoreError& e) {
@@ -90,10 +90,10 @@ TEST_CASE("the store used for the full-disk tests is valid and larger than the s
   const std::string path = temp_path("faults-large.h5");
   RemoveFiles cleanup{{path}};
   CAPTURE(positions_seed);
-  const medusa::complex::Medusa m = large_medusa();
-  medusa::complex::write_store(path, m);
+  const medusa::Medusa m = large_medusa();
+  medusa::write_store(path, m);
   CHECK(fs::file_size(path) > 2 * 64 * 1024);
-  const medusa::complex::Medusa back = medusa::complex::read_store(path);
+  const medusa::Medusa back = medusa::read_store(path);
   CHECK(back.cells.size() == m.cells.size());
   REQUIRE(back.input.cells.size() == m.input.cells.size());
   CHECK(back.input.cells.back().positions == m.input.cells.back().positions);

@@ -1,4 +1,4 @@
-// An independent check of MATH.md 6.2's filter on the event stream: inside every batch, each
+// An independent check of docs/MATH.md §6.2's filter on the event stream: inside every batch, each
 // intermediate complex L_r (r = 1..m) must satisfy L_r = { s in L_r : every face of s lies in
 // K(t*-) u K(t*+) u U_batch }, i.e. hold no momentary contact. U_batch is taken from the steps: (i)
 // simplices with a vertex inserted or deleted in the batch, (ii) subsets of the flip groups reported

@@ -1,4 +1,4 @@
-// An observer for the degenerate-group tests (MATH.md 5.4, 6.3), 3D and planar: besides the replay
+// An observer for the degenerate-group tests (docs/MATH.md §5.4, §6.3), 3D and planar: besides the replay
 // checks of ReplayObserver, records the repair steps (when, and the top simplices they remove and
 // create), their degenerate groups and every simplex that enters or leaves K in a step.
 #pragma once

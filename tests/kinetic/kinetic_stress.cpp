@@ -12,7 +12,7 @@
 // MEDUSA_STRESS_VERBOSE=1 also prints why each rejected input was rejected.
 // Exit code 1 when some seed failed.
 #include "kinetic_test_support.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <algorithm>
 #include <chrono>

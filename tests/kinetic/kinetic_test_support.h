@@ -179,7 +179,7 @@ template <class Log> struct RecordedRun {
 
 // The image of a run under x -> k x + offset (k > 0), with rho^2 scaled by k^2: a similarity, so the
 // Delaunay triangulation, the alpha complex and every event's slab parameter u* are the same
-// (MATH.md 1: the certificates are homogeneous in the coordinate differences).
+// (docs/MATH.md §1: the certificates are homogeneous in the coordinate differences).
 inline void apply_similarity(Trajectories& t, KineticOptions& options, std::int64_t k,
                              const GridPoint& offset) {
   for (Trajectory& c : t.cells)
@@ -245,7 +245,7 @@ inline bool meet(const GridPoint& a0, const GridPoint& a1, const GridPoint& b0, 
 
 // The planar analogue: n cells walking in the plane z = 0, a run of dimension 2. Steps that would
 // make two cells meet (at a frame or inside a slab) are drawn again, so dense walks on a coarse grid
-// stay collision-free (MATH.md 2.5).
+// stay collision-free (docs/MATH.md §2.5).
 inline Trajectories random_walk_2d(std::uint64_t seed, int n, int frames, int box, int step) {
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<int> start(0, box), d(-step, step);
@@ -346,7 +346,7 @@ inline void add_births_and_deaths(Trajectories& t, std::mt19937_64& rng) {
 // Cuts about half of the slabs at their middle with a new frame, the motion unchanged: coordinates
 // and rho^2 are scaled by 2 and 4 so that the middles are grid points. Degenerate instants at u = 1/2
 // of a slab (cells meeting a line or a hull face there) then fall on a frame, where the engine
-// rebuilds every certificate (MATH.md 2.3) and resolves them as a frame batch. From rng alone.
+// rebuilds every certificate (docs/MATH.md §2.3) and resolves them as a frame batch. From rng alone.
 inline void add_midpoint_frames(Trajectories& t, KineticOptions& options, std::mt19937_64& rng) {
   std::vector<bool> cut(t.frame_times.size() - 1);
   std::vector<std::int64_t> times;

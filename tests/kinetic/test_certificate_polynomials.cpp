@@ -1,4 +1,4 @@
-// Each certificate formula of MATH.md 3.1 against CGAL's exact static predicates and constructions
+// Each certificate formula of docs/MATH.md §3.1 against CGAL's exact static predicates and constructions
 // on random integer inputs, at several rational times, for both signs.
 #include "medusa/kinetic/algebraic_time.h"
 #include "medusa/kinetic/certificate_polynomials.h"

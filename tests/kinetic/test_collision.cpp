@@ -1,4 +1,4 @@
-// meeting_in_slab (collision.h, MATH.md 2.5): two cells at one position inside a slab, decided in
+// meeting_in_slab (collision.h, docs/MATH.md §2.5): two cells at one position inside a slab, decided in
 // integers. Each case is worked out by hand: p(u) - q(u) = da + u db per coordinate.
 #include "medusa/kinetic/collision.h"
 

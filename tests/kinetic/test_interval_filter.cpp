@@ -27,7 +27,7 @@ IntervalPoly poly(std::initializer_list<double> c) {
 
 TEST_CASE("the Bernstein filter proves the worked example's orientation certificate positive",
           "[kinetic][filter]") {
-  // O(b,a,d,e) = 320 - 240u of MATH.md Appendix B: Bernstein (320, 80), positive on [0, 1].
+  // O(b,a,d,e) = 320 - 240u of docs/MATH.md §B: Bernstein (320, 80), positive on [0, 1].
   CGAL::Protect_FPU_rounding<true> guard;
   REQUIRE(bernstein_sign(poly({320, -240}), 0.0) == 1);
   REQUIRE(bernstein_sign(poly({-320, 240}), 0.0) == -1);
@@ -35,7 +35,7 @@ TEST_CASE("the Bernstein filter proves the worked example's orientation certific
 
 TEST_CASE("the Bernstein filter refuses to decide a polynomial with a root in the slab",
           "[kinetic][filter]") {
-  // 32u^2 - 94u + 61 has a root at u ~ 0.9678 (MATH.md Appendix B).
+  // 32u^2 - 94u + 61 has a root at u ~ 0.9678 (docs/MATH.md §B).
   CGAL::Protect_FPU_rounding<true> guard;
   REQUIRE(bernstein_sign(poly({61, -94, 32}), 0.0) == 0);
   // On [0.97, 1] it is negative throughout.
@@ -66,7 +66,7 @@ TEST_CASE("subdivision settles negative polynomials and refuses every sign chang
   CGAL::Protect_FPU_rounding<true> guard;
   // -((4u - 2)^2 + 1/100) < 0 on [0, 1], with the same undecided first test as above.
   REQUIRE(bernstein_sign_subdivided(poly({-4.01, 16, -16}), 0.0, 3) == -1);
-  // Opposite signs at the ends (a root at 1/2, or at 0.9678 in MATH.md Appendix B's certificate).
+  // Opposite signs at the ends (a root at 1/2, or at 0.9678 in docs/MATH.md §B's certificate).
   REQUIRE(bernstein_sign_subdivided(poly({-1, 2}), 0.0, 6) == 0);
   REQUIRE(bernstein_sign_subdivided(poly({61, -94, 32}), 0.0, 6) == 0);
   // After its root, on [0.97, 1], the same certificate is negative throughout.

@@ -1,4 +1,4 @@
-// Degenerate groups of static repairs (MATH.md 6.3, second bullet) and momentary contacts inside a
+// Degenerate groups of static repairs (docs/MATH.md §6.3, second bullet) and momentary contacts inside a
 // batch (6.2), on hand-built cases derived on paper, with the audit on.
 #include "batch_filter_check.h"
 #include "group_observer.h"
@@ -25,7 +25,7 @@ using Group = std::vector<VertexId>;
 // (z = 0) 0 = (0,0), 1 = (20,0), 2 = (0,20), 3 = (20,20) in (x,y); top (z = 20) 4..7 likewise, shifted
 // by delta. Every face keeps its corners coplanar through the motion (a translate of an affine
 // image of a square), so the flips at the cospherical moment would create tetrahedra that stay flat:
-// the engine repairs statically (MATH.md 5.2 step 3, 5.4).
+// the engine repairs statically (docs/MATH.md §5.2 step 3, 5.4).
 Trajectories sheared_cube(const std::vector<std::int64_t>& deltas) {
   Trajectories t;
   t.scale = 1;
@@ -53,7 +53,7 @@ TEST_CASE("a box sheared through a cube reports the cube as a group iff its circ
   // 300, and six square faces (four concyclic coplanar corners), R^2 = 2 * 10^2 = 200, Gabriel (the
   // other corners are at distance^2 200 + 400 from a face centre, outside the face's ball). Edges
   // and triangles are simplicial. So the groups with g <= rho^2 are: the cube and the six faces for
-  // rho^2 >= 300 (R = rho included, MATH.md 6.3 "<="), the six faces for 200 <= rho^2 < 300, none
+  // rho^2 >= 300 (R = rho included, docs/MATH.md §6.3 "<="), the six faces for 200 <= rho^2 < 300, none
   // below. Mid-slab (u = 1/2, delta from -6 to 6) and at an inner frame (delta -6, 0, 6).
   const std::vector<std::int64_t> deltas =
       GENERATE(std::vector<std::int64_t>{-6, 6}, std::vector<std::int64_t>{-6, 0, 6});
@@ -86,7 +86,7 @@ TEST_CASE("a box sheared through a cube reports the cube as a group iff its circ
 TEST_CASE("a box sheared to a cube and back without a Delaunay change reports no group",
           "[kinetic][engine][degenerate][groups]") {
   // delta = -6, 0, -6: the cube instant is the inner frame and the in-sphere certificates touch 0
-  // there without changing sign (tangential, MATH.md 5.2 step 1): no flip, no repair, no group.
+  // there without changing sign (tangential, docs/MATH.md §5.2 step 1): no flip, no repair, no group.
   Trajectories t = sheared_cube({-6, 0, -6});
   KineticAlphaComplex engine(t, with_radius(400));
   GroupObserver obs(engine);
@@ -135,7 +135,7 @@ TEST_CASE("a radius touching rho at the time of a real event is filtered out of 
           "[kinetic][engine][degenerate][batch]") {
   // rho^2 = 25: an edge is short iff its length^2 <= 100. b passes a at distance 10 exactly at u = 1/2
   // (|ab|^2 = (80u - 40)^2 + 100, a double root of the edge certificate: R(ab) = rho at t* without
-  // crossing, a momentary contact, MATH.md 3.9, 6.2); at the same instant d reaches distance 10 from c
+  // crossing, a momentary contact, docs/MATH.md §3.9, §6.2); at the same instant d reaches distance 10 from c
   // and keeps approaching (|cd| = 15 - 10u): a real radius event. At t* both ab and cd are in the
   // closed-condition complex A_r (R = rho, Gabriel: no other point near their diametral balls); the
   // filtered L_r of 6.2 keeps cd (in K(t*+)) and drops ab (in neither K(t*-) nor K(t*+), no vertex
@@ -169,7 +169,7 @@ TEST_CASE("a radius touching rho at the time of a real event is filtered out of 
 
 TEST_CASE("every intermediate complex of a batch is already filtered (no momentary contact)",
           "[kinetic][engine][batch]") {
-  // MATH.md 6.2 asks for L_r = A_r filtered by K(t*-) u K(t*+) u U_batch. The engine decides every
+  // docs/MATH.md §6.2 asks for L_r = A_r filtered by K(t*-) u K(t*+) u U_batch. The engine decides every
   // rank with sign^+ at t* (5.1), never with the closed conditions of A_r, so a simplex that only
   // touches rho (or the Gabriel boundary) at t* never enters; this checks on varied runs that no rank
   // holds a simplex the filter would remove: random walks (flips and radius events), insertions and

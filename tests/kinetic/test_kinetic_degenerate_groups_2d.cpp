@@ -1,13 +1,13 @@
-// Degenerate groups of planar static repairs (MATH.md 6.3, second bullet, in dimension 2), on a
+// Degenerate groups of planar static repairs (docs/MATH.md §6.3, second bullet, in dimension 2), on a
 // hand-built run derived on paper, with the audit on.
 //
 // Why the run looks the way it does. In 2D a cocircular moment reached by generic motion never ends
 // in a repair: the edge xy of a failing in-circle certificate has x, y, p, q on one circle at t*, so
 // the quadrilateral xpyq is strictly convex at t* and just after, pq is not an edge, and the 2-2 flip
-// applies (MATH.md 5.2 step 2; Lawson's flips reach Del(t*+)). Repairs come from momentarily
+// applies (docs/MATH.md §5.2 step 2; Lawson's flips reach Del(t*+)). Repairs come from momentarily
 // collinear points (an edge whose two triangles are flat at t* and whose quadrilateral is not convex
 // just after). What a repair then meets is a set of points that are cocircular at t* and stay so
-// through the new slab (identically-zero in-circles, MATH.md 5.3, never flipped), whose triangulation
+// through the new slab (identically-zero in-circles, docs/MATH.md §5.3, never flipped), whose triangulation
 // the global rebuild re-chooses by CGAL's symbolic perturbation (5.4, 5.5): that set is a 2-cell of
 // D(t*) cut through by the repair, a degenerate group.
 #include "group_observer.h"
@@ -35,7 +35,7 @@ TEST_CASE("a planar repair through five cocircular cells reports them as a group
           "[kinetic][engine][2d][degenerate][groups]") {
   // From the derivation above: one repair, at the frame t = 100; it removes p1 p2 p3 and p1 p3 e and
   // creates e p2 p3 and p1 e p2 (besides the flat triangles on x = 29); the only group is the
-  // pentagon {0, 1, 2, 3, 4} with g = 25, reported for rho^2 >= 25 (R = rho included, MATH.md 6.3
+  // pentagon {0, 1, 2, 3, 4} with g = 25, reported for rho^2 >= 25 (R = rho included, docs/MATH.md §6.3
   // "<="), none below.
   const long rho2 = GENERATE(26L, 25L, 24L);
   CAPTURE(rho2);

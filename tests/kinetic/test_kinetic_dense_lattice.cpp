@@ -1,5 +1,5 @@
 // Dense walks on a coarse integer lattice with births and deaths (testing::dense_lattice_run): many
-// certificates fail at once in degenerate configurations, which MATH.md 5.2 settles by flipping the
+// certificates fail at once in degenerate configurations, which docs/MATH.md §5.2 settles by flipping the
 // flippable failures in canonical order and repairing statically when none is flippable or the flips
 // cycle; and distances of exactly 2 rho recur. Each seed below is one that the stress tool
 // (kinetic_stress.cpp) found failing: in 3D a flip applied without its flippability test, a flip
@@ -8,7 +8,7 @@
 // folded onto each other, a top simplex turned inside out at a frame, or a repair at an algebraic
 // time built past a flat instant. Each must now run to the end with the audit green.
 #include "kinetic_test_support.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <CGAL/Random.h>
 #include <gmpxx.h>
@@ -54,7 +54,7 @@ KineticStatistics run_to_the_end(std::uint64_t seed, int box_dim = 0, bool midpo
   return s;
 }
 
-// Brute force over every pair of cells (MATH.md 2.5), independent of the engine: the errors the
+// Brute force over every pair of cells (docs/MATH.md §2.5), independent of the engine: the errors the
 // engine may report for the first frame or slab in which two cells meet. It checks frame k, then
 // slab k (k = 0, 1, ...), and names one meeting of the first of these that has any.
 std::vector<std::string> first_meetings(const Trajectories& t) {
@@ -153,7 +153,7 @@ TEST_CASE("a face whose radius is rho enters K when a link vertex leaves its sma
   // Seed 1126 (2D): cells 29 and 43 move rigidly 5 apart with rho = 2.5 (R = rho throughout slab 2);
   // at u ~ 0.873 a third cell leaves the edge's smallest circle, so the edge becomes Gabriel and
   // enters K. The triangle of the three has R = rho at that instant only (a root of even multiplicity
-  // of its radius certificate), which MATH.md 3.9 drops as a non-event. Before: "audit failed in slab
+  // of its radius certificate), which docs/MATH.md §3.9 drops as a non-event. Before: "audit failed in slab
   // 2 after u ~ 0.873247: ... 1 missing (e.g. [29 43])".
   const KineticStatistics s = run_to_the_end(1126);
   REQUIRE(s.radius_touches > 0);
@@ -398,7 +398,7 @@ TEST_CASE("a run builds the same certificates whatever ran before it in the proc
 TEST_CASE("a run's event stream is unchanged by a similarity of its input",
           "[kinetic][degenerate][lattice]") {
   // x -> k x + offset with rho scaled by k keeps the triangulation, the complex and every event's
-  // slab parameter (the certificates are homogeneous in coordinate differences, MATH.md 1), so the
+  // slab parameter (the certificates are homogeneous in coordinate differences, docs/MATH.md §1), so the
   // stream must be the same, step for step: k is odd and not a power of two, so the doubles behind
   // the filters round differently, and the offset takes coordinates near the 2^40 limit. Seed 242
   // gave a different stream before static builds checked that they are Del(t+) (static_delaunay.h):

@@ -1,7 +1,7 @@
 // The kinetic engine with the audit on: hand-built cases derived on paper, then randomised runs
 // whose every batch is audited against CGAL's static Delaunay_triangulation_3 + Fixed_alpha_shape_3.
 #include "kinetic_test_support.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -34,7 +34,7 @@ void still(Trajectories& t, std::int64_t id, GridPoint p) {
 }
 
 Trajectories appendix_b() {
-  // MATH.md Appendix B: a, b, c on x^2 + y^2 = 25, d above, e moving through the sphere.
+  // docs/MATH.md §B: a, b, c on x^2 + y^2 = 25, d above, e moving through the sphere.
   Trajectories t = spatial({0, 100});
   still(t, 1, {5, 0, 0});
   still(t, 2, {-3, 4, 0});
@@ -175,7 +175,7 @@ TEST_CASE("a CC3D-sized lattice settles every certificate without the exact poly
   // CC3D's initial layout on the 10^-6 grid: centres 5 pixels = 5,000,000 units apart, where the
   // interval enclosures of the in-sphere determinants of lattice cubes straddle zero at t0. Those
   // vanish exactly there; one exact static determinant shows it and the rest is settled in doubles
-  // (MATH.md 5.5). The flips install certificates on the flipped points at the flip time, which the
+  // (docs/MATH.md §5.5). The flips install certificates on the flipped points at the flip time, which the
   // failed certificate's isolated root settles in doubles too.
   const std::uint64_t seed = 12;
   CAPTURE(seed);
@@ -191,7 +191,7 @@ TEST_CASE("a CC3D-sized lattice settles every certificate without the exact poly
   REQUIRE(s.start_zero_settled > 0);
   REQUIRE(s.flips23 + s.flips32 > 0);
   // Left to the exact polynomial: those vanishing to second order at t0 (three collinear hull points
-  // in an orientation), within the issue's 1% (MATH.md 3.8).
+  // in an orientation), within the issue's 1% (docs/MATH.md §3.8).
   REQUIRE(s.exact_settled * 100 <= s.certificates_built);
   REQUIRE(s.audits_compared_with_cgal > 0);
   REQUIRE(obs.mismatches == 0);
@@ -271,7 +271,7 @@ TEST_CASE("an event closer to a frame than the static build's first delta happen
   // a, b, c, d on the sphere |x| = 5; e waits at (0, -5, 3) through slab 0, then runs up x = 0, z = 3
   // at 2^26 per slab and crosses that sphere at y = -4 and y = 4: u = 2^-26 and 9 * 2^-26 of slab 1.
   // Cell f, born far away at frame 1, makes the engine rebuild Del statically there. CGAL's first
-  // triangulation is built at delta = 2^-24 after the frame (MATH.md 5.5, method A), where e is
+  // triangulation is built at delta = 2^-24 after the frame (docs/MATH.md §5.5, method A), where e is
   // inside the sphere: not Del(t1+), so it is built again with a smaller delta. The frame batch is
   // then the insertion alone (no flip of a, b, c, d, e and back, no instant 4-simplex), and the
   // five points flip at u = 2^-26 and back at 9 * 2^-26, exactly.
@@ -341,7 +341,7 @@ TEST_CASE("cells inserted and deleted in the middle of a run keep the audit gree
 }
 
 TEST_CASE("a cell present at the last frame only adds nothing to the stream", "[kinetic][engine]") {
-  // K is reported up to K(t_end-) and t_end gets no instant cells (MATH.md 6.2): the run with the
+  // K is reported up to K(t_end-) and t_end gets no instant cells (docs/MATH.md §6.2): the run with the
   // extra cell must give exactly the stream of the run without it.
   const Trajectories without = testing::random_walk(22, 30, 5, 50, 5);
   Trajectories with = without;
@@ -526,7 +526,7 @@ TEST_CASE("a cell that reaches a hull facet at a frame and stays on it leaves it
   // the frame batch is one static repair (a top simplex flat at the frame and not positively oriented
   // just after it, Engine::top_simplex_turns_at_frame) that removes abcd and creates no finite
   // tetrahedron, and then nothing happens. Before: the certificate counted as valid (identically
-  // zero, MATH.md 3.9), abcd stayed flat through slab 1, and the audit found Del different from
+  // zero, docs/MATH.md §3.9), abcd stayed flat through slab 1, and the audit found Del different from
   // CGAL's triangulation there.
   Trajectories t = spatial({0, 100, 200});
   still(t, 1, {0, 0, 0});
@@ -648,7 +648,7 @@ TEST_CASE("cells moving in shared planes repair degenerate groups mid-slab and s
   // Every cell keeps its z through the run, on one of four layers, and walks in x and y: four cells of
   // a layer stay coplanar through every slab (identically-zero orientations), so a flip that would
   // flatten a tetrahedron between them can fall at an irrational time; no elementary flip applies
-  // and the engine repairs the triangulation statically (MATH.md 5.2 step 3, 5.4). The audit checks
+  // and the engine repairs the triangulation statically (docs/MATH.md §5.2 step 3, 5.4). The audit checks
   // every batch against CGAL.
   auto seed = GENERATE(range<std::uint64_t>(1, 4));
   CAPTURE(seed);
@@ -702,8 +702,8 @@ TEST_CASE("certificates settled on the enclosures from doubles keep the audit gr
 TEST_CASE("certificates built at the start are counted by formula as CGAL's triangulation has faces",
           "[kinetic][engine][statistics]") {
   // Stationary cells over one slab: every facet of Del(t0+) gets one Delaunay certificate (in-sphere
-  // between two finite tetrahedra, orientation otherwise, MATH.md 3.2), and every frontier simplex one
-  // radius certificate (MATH.md 4.4). With rho below every half edge length all edges are long and in
+  // between two finite tetrahedra, orientation otherwise, docs/MATH.md §3.2), and every frontier simplex one
+  // radius certificate (docs/MATH.md §4.4). With rho below every half edge length all edges are long and in
   // F and nothing else is; with rho above every circumradius F is the finite tetrahedra. The last
   // frame rebuilds nothing (no slab follows), so each is built once.
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;

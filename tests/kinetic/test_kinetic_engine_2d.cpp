@@ -2,7 +2,7 @@
 // paper, randomised runs and adversarial inputs, every audited batch checked against CGAL's static
 // Delaunay_triangulation_2 + Alpha_shape_2 (GENERAL mode, exact kernel).
 #include "kinetic_test_support.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -123,7 +123,7 @@ TEST_CASE("planar: two cells approaching make their edge short exactly at the pr
 TEST_CASE("planar: four points becoming cocircular flip their edge at that time with a 3-simplex",
           "[kinetic][engine][2d]") {
   // rho = 6 >= R_S = 5, and both old triangles are short just before t* (abd becomes short when d
-  // passes y ~ 9.317), so the flip's 3-simplex is an instant cell (MATH.md 6.3). Afterwards every edge
+  // passes y ~ 9.317), so the flip's 3-simplex is an instant cell (docs/MATH.md §6.3). Afterwards every edge
   // of the new triangulation (length <= 10) and both new triangles (R^2 = (y^2 + 25)/2 <= 25) are
   // short: K = 4 vertices, 5 edges, 2 triangles.
   Trajectories t = cocircular_flip();
@@ -180,7 +180,7 @@ TEST_CASE("planar: an event closer to a frame than the static build's first delt
   // a, b, c on the circle |x| = 5; d waits at (3, -5) through slab 0, then runs up x = 3 at 2^26 per
   // slab and crosses that circle at y = -4 and y = 4: u = 2^-26 and 9 * 2^-26 of slab 1. Cell e, born
   // far away at frame 1, makes the engine rebuild Del statically there; at the static build's first
-  // delta, 2^-24, d is inside the circle (MATH.md 5.5, method A): not Del(t1+), so it is built again
+  // delta, 2^-24, d is inside the circle (docs/MATH.md §5.5, method A): not Del(t1+), so it is built again
   // with a smaller delta. The frame batch is the insertion alone (no flip of ab into cd and back with
   // an instant 3-simplex), ab flips into cd at u = 2^-26 exactly and back at 9 * 2^-26.
   Trajectories t = planar({0, 100, 200});
@@ -233,7 +233,7 @@ TEST_CASE("planar: a structure that passes every local test just after t0 but wr
   // that cycle: at u = 0 every one of its triangles is positively oriented, every interior edge
   // locally Delaunay and every hull corner convex, yet it is a pentagram covering the middle twice.
   // Some certificate of it has a root in (0, 2^-24] (the structure changes there), so it is not
-  // taken (MATH.md 5.5, method A, static_cgal.h just_after_holds): K(t0+) is the fan in the
+  // taken (docs/MATH.md §5.5, method A, static_cgal.h just_after_holds): K(t0+) is the fan in the
   // pentagon's own order, with the pentagon's edges and no star edge. (The audit would catch the
   // pentagram too: where Del differs from CGAL's triangulation it now checks that it covers the hull
   // once, Engine::audit_embedded.)
@@ -614,7 +614,7 @@ TEST_CASE("planar: cells inserted and deleted in the middle of a run keep the au
 TEST_CASE("planar: twelve cells becoming cocircular at one instant are resolved in one audited batch",
           "[kinetic][engine][2d][degenerate]") {
   // All in-circle certificates of the twelve-gon's diagonals vanish at u = 1/2 (t = 50), an exact
-  // rational time: one batch of 2-2 flips or a static repair (MATH.md 5.2), audited before and after.
+  // rational time: one batch of 2-2 flips or a static repair (docs/MATH.md §5.2), audited before and after.
   auto rho2 = GENERATE(long(40 * 40), long(60 * 60));
   CAPTURE(rho2);
   Trajectories t = testing::cocircular_burst();
@@ -656,8 +656,8 @@ TEST_CASE(
 TEST_CASE("planar: certificates built at the start are counted by formula as CGAL's triangulation has faces",
           "[kinetic][engine][2d][statistics]") {
   // The planar analogue of the 3D case: stationary cells over one slab; every edge of Del(t0+) gets
-  // one Delaunay certificate (in-circle between two finite triangles, orientation otherwise, MATH.md
-  // 3.2 one dimension down) and every frontier simplex one radius certificate (4.4): with rho below
+  // one Delaunay certificate (in-circle between two finite triangles, orientation otherwise, docs/MATH.md
+  // §3.2 one dimension down) and every frontier simplex one radius certificate (4.4): with rho below
   // every half edge length the finite edges, with rho above every circumradius the finite triangles.
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Dt = CGAL::Delaunay_triangulation_2<K>;

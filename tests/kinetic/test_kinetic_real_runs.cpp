@@ -88,7 +88,7 @@ TEST_CASE("a real run where cells divide and die inserts and deletes them with t
 }
 
 TEST_CASE("a real run holds no momentary contact inside a batch", "[kinetic][real][batch]") {
-  // MATH.md 6.2: every intermediate complex of a batch must already be filtered by K(t*-) u K(t*+)
+  // docs/MATH.md §6.2: every intermediate complex of a batch must already be filtered by K(t*-) u K(t*+)
   // u U_batch (see batch_filter_check.h). The division window of the mitosis run: insertions and
   // deletions make batches of several ranks. The audit is off (the tests above audit this window).
   // No bundled real run repairs statically at rho = 3, so the repairs' degenerate groups (6.3) are

@@ -57,7 +57,7 @@ SlabTime isolated_time(std::initializer_list<long> c, double start = 0.0) {
 
 TEST_CASE("isolation finds the flip time of the worked example in an interval around it",
           "[kinetic][isolation]") {
-  // 32u^2 - 94u + 61 (MATH.md Appendix B) is positive at 0 and has its first root at
+  // 32u^2 - 94u + 61 (docs/MATH.md §B) is positive at 0 and has its first root at
   // u* = (47 - sqrt(257)) / 32 ~ 0.96778; the other root (47 + sqrt(257)) / 32 > 1.
   CGAL::Protect_FPU_rounding<true> guard;
   FirstSignChange r = first_sign_change(interval_poly({61, -94, 32}), 0.0, 12);
@@ -311,7 +311,7 @@ TEST_CASE("the tightest narrowing finds every short dyadic root exactly", "[kine
   // f = (2^b u - k) h(u), h > 0 on [0, 1] with small integer coefficients: every coefficient is an
   // exact double, so f vanishes exactly (as a point interval) at k / 2^b and nowhere near it, and
   // narrowing to width 0 must end on lo == hi == k / 2^b (events at equal rational times compare
-  // equal, MATH.md 3.7).
+  // equal, docs/MATH.md §3.7).
   const unsigned seed = std::random_device{}();
   CAPTURE(seed);
   std::mt19937_64 rng(seed);

@@ -111,7 +111,7 @@ TEST_CASE("the zero tests at a slab start agree with the exact polynomials' cons
 }
 
 TEST_CASE("the eight corners of a lattice cube are cospherical at the slab start and not after it") {
-  // CC3D's BlobInitializer layout (MATH.md 5.5): cells on a cubic lattice of spacing 5.
+  // CC3D's BlobInitializer layout (docs/MATH.md §5.5): cells on a cubic lattice of spacing 5.
   std::array<MovingPoint, 8> corner;
   for (int i = 0; i < 8; ++i) {
     corner[static_cast<std::size_t>(i)].a = {5 * (i & 1), 5 * ((i >> 1) & 1), 5 * ((i >> 2) & 1)};

@@ -1,4 +1,4 @@
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "medusa/kinetic/trajectories.h"
 
 #include <catch2/catch.hpp>

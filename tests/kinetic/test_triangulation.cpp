@@ -1,7 +1,7 @@
 // Triangulation (the engine's combinatorial Del) keeps no table of its top simplices: presence and
 // the iteration over them are read off the facets' apices. Checked against a std::set oracle under
 // random additions and removals, as is the certificate id each facet carries.
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "triangulation.h"
 
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// The worked flip example of MATH.md Appendix B as an event stream: a = 0, b = 1, c = 2, d = 3, e = 4.
+// The worked flip example of docs/MATH.md §B as an event stream: a = 0, b = 1, c = 2, d = 3, e = 4.
 #pragma once
 
 #include "stream.h"

@@ -2,10 +2,10 @@
 // the engine's own complex at every frame, for the differential tests of libmedusa against libkinetic.
 #pragma once
 
-#include "medusa/complex/medusa.h"
-#include "medusa/complex/medusa_builder.h"
-#include "medusa/complex/store_writer.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "medusa/medusa/medusa.h"
+#include "medusa/medusa/medusa_builder.h"
+#include "medusa/medusa/store_writer.h"
 #include "stream.h"
 
 #include <map>
@@ -64,7 +64,7 @@ private:
 };
 
 struct KineticRun {
-  complex::Medusa collected; // what the builder sent to the in-memory collector
+  medusa::Medusa collected; // what the builder sent to the in-memory collector
   EngineRecord engine;
   kinetic::KineticStatistics statistics;
 };
@@ -78,17 +78,17 @@ inline KineticRun run_into_store(const kinetic::Trajectories& input, const std::
   options.rho2 = rho2;
   options.audit = true;
   options.audit_stride = audit_stride;
-  complex::RunInfo info;
+  medusa::RunInfo info;
   info.radius_text = radius_text;
   info.command_line = "test_medusa_from_kinetic";
   info.software_version = "test";
   KineticRun out;
   kinetic::KineticAlphaComplex engine(input, options);
-  complex::MedusaCollector collector;
+  medusa::MedusaCollector collector;
   {
-    complex::StoreWriter writer(store_path);
-    complex::TeeSink tee({&writer, &collector});
-    complex::MedusaBuilder builder(tee);
+    medusa::StoreWriter writer(store_path);
+    medusa::TeeSink tee({&writer, &collector});
+    medusa::MedusaBuilder builder(tee);
     builder.set_run(info, input);
     RecordingObserver observer(engine, builder, out.engine);
     engine.run(observer);

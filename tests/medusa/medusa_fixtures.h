@@ -1,10 +1,10 @@
 // Building medusas from recorded streams, and comparing them, for the medusa tests.
 #pragma once
 
-#include "medusa/complex/cell_sink.h"
-#include "medusa/complex/complex_index.h"
-#include "medusa/complex/medusa.h"
-#include "medusa/complex/medusa_builder.h"
+#include "medusa/medusa/cell_sink.h"
+#include "medusa/medusa/complex_index.h"
+#include "medusa/medusa/medusa.h"
+#include "medusa/medusa/medusa_builder.h"
 #include "stream.h"
 #include "support/temp_files.h"
 
@@ -16,8 +16,8 @@
 
 namespace medusa::test {
 
-inline complex::RunInfo test_run_info() {
-  complex::RunInfo info;
+inline medusa::RunInfo test_run_info() {
+  medusa::RunInfo info;
   info.radius = 1.05;
   info.radius_text = "1.05";
   info.source_files = {"run/Step_0000.vtk.gz", "run/Step_0010.vtk.gz"};
@@ -27,33 +27,33 @@ inline complex::RunInfo test_run_info() {
 }
 
 // Plays the stream into a builder feeding `sink`, with the test run metadata and a dummy input.
-inline void play_into(const Stream& stream, complex::CellSink& sink, std::size_t vertices,
+inline void play_into(const Stream& stream, medusa::CellSink& sink, std::size_t vertices,
                       std::size_t frames) {
-  complex::MedusaBuilder builder(sink);
+  medusa::MedusaBuilder builder(sink);
   builder.set_run(test_run_info(), dummy_input(vertices, frames, {}));
   stream.play(builder);
 }
 
-inline complex::Medusa collect(const Stream& stream, std::size_t vertices, std::size_t frames) {
-  complex::MedusaCollector collector;
+inline medusa::Medusa collect(const Stream& stream, std::size_t vertices, std::size_t frames) {
+  medusa::MedusaCollector collector;
   play_into(stream, collector, vertices, frames);
   return collector.take();
 }
 
-inline SimplexSet tuples(const complex::Medusa& m, const std::vector<complex::CellId>& ids) {
+inline SimplexSet tuples(const medusa::Medusa& m, const std::vector<medusa::CellId>& ids) {
   SimplexSet out;
-  for (complex::CellId id : ids)
+  for (medusa::CellId id : ids)
     out.insert(m.cell(id).vertices);
   return out;
 }
 
-inline bool same_cell(const complex::Cell& a, const complex::Cell& b) {
+inline bool same_cell(const medusa::Cell& a, const medusa::Cell& b) {
   return a.id == b.id && a.vertices == b.vertices && a.birth == b.birth && a.death == b.death &&
          a.birth.time == b.birth.time && a.death.time == b.death.time && a.kind == b.kind &&
          a.facets == b.facets;
 }
 
-inline bool same_medusa(const complex::Medusa& a, const complex::Medusa& b) {
+inline bool same_medusa(const medusa::Medusa& a, const medusa::Medusa& b) {
   if (a.cells.size() != b.cells.size() || a.batches.size() != b.batches.size() ||
       a.frames.size() != b.frames.size())
     return false;

@@ -174,7 +174,7 @@ struct Generator {
       if (!removed.count(s))
         rest.insert(s);
     // The cone over C must contain tau + p for every facet tau (not removed) of a removed simplex, so
-    // that the joins have their facets (MATH.md 6.3).
+    // that the joins have their facets (docs/MATH.md §6.3).
     std::vector<Simplex> base;
     for (const Simplex& s : removed)
       for (std::size_t i = 0; i < s.size(); ++i)
@@ -274,7 +274,7 @@ Stream random_stream(std::uint64_t seed, const RandomStreamOptions& options) {
   std::size_t batch = 1;
   for (std::size_t slab = 0; slab + 1 < options.frames; ++slab) {
     if (slab > 0) {
-      // A frame batch at t_slab: insertions and deletions happen here (MATH.md 5.6).
+      // A frame batch at t_slab: insertions and deletions happen here (docs/MATH.md §5.6).
       RecordedBatch b;
       b.time = event_time(batch++, 10.0 * static_cast<double>(slab), slab, 0.0, true);
       const int steps = std::uniform_int_distribution<int>(1, 3)(g.rng);

@@ -1,6 +1,7 @@
 // Random consistent event streams: subcomplexes of the full 3-skeleton on a few vertices evolving over
 // batches, with radius changes, 2-3 flips, insertions and deletions (with the conditions under which
-// MATH.md 6.3 guarantees the join facets) and repair groups. Used for the invariants of MATH.md 6.4.
+// docs/MATH.md §6.3 guarantees the join facets) and repair groups. Used for the invariants of docs/MATH.md
+// §6.4.
 #pragma once
 
 #include "stream.h"

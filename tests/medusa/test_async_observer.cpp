@@ -1,9 +1,9 @@
-// The asynchronous observer (medusa/complex/async_observer.h): the inner observer sees the engine's
+// The asynchronous observer (medusa/medusa/async_observer.h): the inner observer sees the engine's
 // calls unchanged and in order, from copies; a failure of the inner observer reaches the caller.
 // Oracle: the same random streams (random_stream.h) played directly into the same observer.
-#include "medusa/complex/async_observer.h"
-#include "medusa/complex/medusa.h"
-#include "medusa/complex/medusa_builder.h"
+#include "medusa/medusa/async_observer.h"
+#include "medusa/medusa/medusa.h"
+#include "medusa/medusa/medusa_builder.h"
 #include "random_stream.h"
 
 #include <catch2/catch.hpp>
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-using medusa::complex::AsyncObserver;
+using medusa::AsyncObserver;
 using medusa::test::EventTime;
 using medusa::test::Simplex;
 using medusa::test::Step;
@@ -194,13 +194,13 @@ TEST_CASE("the medusa built through an asynchronous observer equals the one buil
   for (std::uint64_t seed = 100; seed < 110; ++seed) {
     INFO("random stream seed " << seed);
     const medusa::test::Stream stream = medusa::test::random_stream(seed);
-    medusa::complex::MedusaCollector direct_sink, async_sink;
+    medusa::MedusaCollector direct_sink, async_sink;
     {
-      medusa::complex::MedusaBuilder builder(direct_sink);
+      medusa::MedusaBuilder builder(direct_sink);
       stream.play(builder);
     }
     {
-      medusa::complex::MedusaBuilder builder(async_sink);
+      medusa::MedusaBuilder builder(async_sink);
       // Small blocks, and the defaults `medusa run` uses.
       auto async = seed % 2 == 0 ? std::make_unique<AsyncObserver>(builder, 3, 2)
                                  : std::make_unique<AsyncObserver>(builder);

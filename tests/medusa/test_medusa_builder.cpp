@@ -1,17 +1,17 @@
 #include "appendix_b.h"
-#include "medusa/complex/complex_index.h"
-#include "medusa/complex/homology.h"
-#include "medusa/complex/medusa.h"
-#include "medusa/complex/medusa_builder.h"
-#include "medusa/complex/signatures.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
+#include "medusa/medusa/complex_index.h"
+#include "medusa/medusa/homology.h"
+#include "medusa/medusa/medusa.h"
+#include "medusa/medusa/medusa_builder.h"
+#include "medusa/medusa/signatures.h"
 #include "stream.h"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 
-using namespace medusa::complex;
+using namespace medusa;
 using namespace medusa::test;
 
 namespace {
@@ -145,7 +145,7 @@ TEST_CASE("a simplex that leaves and re-enters K gives two cells", "[medusa][bui
 
 namespace {
 
-// MATH.md 6.3, the 2D counterexample: x = 0, y = 1, apices q = 2 (0,-3) and s = 3 (0,10), rho = 1.05.
+// docs/MATH.md §6.3, the 2D counterexample: x = 0, y = 1, apices q = 2 (0,-3) and s = 3 (0,10), rho = 1.05.
 // Inserting p = 4 at (0,-0.2) keeps xy Delaunay but removes it from K while xp, yp enter; deleting p
 // later brings xy back.
 Stream join_stream() {
@@ -173,7 +173,7 @@ Stream join_stream() {
 
 } // namespace
 
-TEST_CASE("an insertion and a deletion give the join cells of MATH.md 6.3", "[medusa][builder]") {
+TEST_CASE("an insertion and a deletion give the join cells of docs/MATH.md §6.3", "[medusa][builder]") {
   const Medusa m = build(join_stream(), 5, 4);
   auto joins = cells_of(m, {0, 1, 4});
   REQUIRE(joins.size() == 2);

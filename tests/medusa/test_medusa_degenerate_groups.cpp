@@ -1,11 +1,11 @@
 // The medusa of runs with static repairs at cospherical (3D) or cocircular (2D) moments: the instant
-// cells of the repair's degenerate groups (MATH.md 6.3) are present, d d = 0 (6.4), and the homology
+// cells of the repair's degenerate groups (docs/MATH.md §6.3) are present, d d = 0 (6.4), and the homology
 // is that of the space-time body (6.1), derived on paper.
-#include "medusa/complex/homology.h"
-#include "medusa/complex/medusa.h"
-#include "medusa/complex/medusa_builder.h"
-#include "medusa/complex/store_reader.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "medusa/medusa/homology.h"
+#include "medusa/medusa/medusa.h"
+#include "medusa/medusa/medusa_builder.h"
+#include "medusa/medusa/store_reader.h"
 #include "support/planar_repair_run.h"
 
 #include <catch2/catch.hpp>
@@ -85,14 +85,14 @@ private:
   bool drop_;
 };
 
-complex::Medusa build(const kinetic::Trajectories& t, long rho2, bool drop_groups, std::size_t& groups) {
+medusa::Medusa build(const kinetic::Trajectories& t, long rho2, bool drop_groups, std::size_t& groups) {
   kinetic::KineticOptions options;
   options.rho2.num = rho2;
   options.audit = true;
   kinetic::KineticAlphaComplex engine(t, options);
-  complex::MedusaCollector collector;
-  complex::MedusaBuilder builder(collector);
-  complex::RunInfo info;
+  medusa::MedusaCollector collector;
+  medusa::MedusaBuilder builder(collector);
+  medusa::RunInfo info;
   info.radius_text = std::to_string(rho2) + " (squared)";
   builder.set_run(info, t);
   Forward forward(builder, drop_groups);
@@ -101,11 +101,11 @@ complex::Medusa build(const kinetic::Trajectories& t, long rho2, bool drop_group
   return collector.take();
 }
 
-void check_boundary_of_boundary(const complex::Medusa& m) {
-  for (const complex::Cell& c : m.cells) {
-    std::map<complex::CellId, int> parity;
-    for (complex::CellId f : c.facets)
-      for (complex::CellId g : m.cell(f).facets)
+void check_boundary_of_boundary(const medusa::Medusa& m) {
+  for (const medusa::Cell& c : m.cells) {
+    std::map<medusa::CellId, int> parity;
+    for (medusa::CellId f : c.facets)
+      for (medusa::CellId g : m.cell(f).facets)
         parity[g] ^= 1;
     for (const auto& [g, p] : parity) {
       CAPTURE(c.id, g);
@@ -114,13 +114,13 @@ void check_boundary_of_boundary(const complex::Medusa& m) {
   }
 }
 
-std::vector<std::size_t> betti(const complex::Medusa& m) {
-  complex::ChainComplex cc;
-  for (const complex::Cell& c : m.cells) {
+std::vector<std::size_t> betti(const medusa::Medusa& m) {
+  medusa::ChainComplex cc;
+  for (const medusa::Cell& c : m.cells) {
     cc.dims.push_back(c.dim());
     cc.facets.emplace_back(c.facets.begin(), c.facets.end());
   }
-  return complex::betti_numbers(cc);
+  return medusa::betti_numbers(cc);
 }
 
 } // namespace
@@ -129,7 +129,7 @@ TEST_CASE("the medusa of a box sheared through a cube holds the cube's instant c
           "[medusa][kinetic][groups]") {
   // rho^2 = 10^4 (rho = 100) exceeds every circumradius of the eight cells (all within distance 36):
   // K(t) is the whole Delaunay triangulation at every t, a 3-ball, the union of balls is contractible
-  // at every t and the space-time body (M is homotopy equivalent to it, MATH.md 6.1) is contractible:
+  // at every t and the space-time body (M is homotopy equivalent to it, docs/MATH.md §6.1) is contractible:
   // beta = (1, 0, 0, ...). At the cube instant the repair replaces one triangulation of the box by
   // another; the group {0..7} (R^2 = 300 <= rho^2) adds the 7-simplex and every subset of the eight
   // cells in neither triangulation as instant repair cells, which fill the 3-cycle formed by the two
@@ -138,15 +138,15 @@ TEST_CASE("the medusa of a box sheared through a cube holds the cube's instant c
       GENERATE(std::vector<std::int64_t>{-6, 6}, std::vector<std::int64_t>{-6, 0, 6});
   CAPTURE(deltas);
   std::size_t groups = 0;
-  const complex::Medusa m = build(sheared_cube(deltas), 10000, false, groups);
+  const medusa::Medusa m = build(sheared_cube(deltas), 10000, false, groups);
   REQUIRE(groups == 7); // the cube and its six square faces
-  complex::validate_medusa(m, "sheared cube");
+  medusa::validate_medusa(m, "sheared cube");
   check_boundary_of_boundary(m);
   bool seven_simplex = false;
   std::set<std::vector<kinetic::VertexId>> repaired;
-  std::optional<complex::VirtualTime> at;
-  for (const complex::Cell& c : m.cells)
-    if (c.kind == complex::CellKind::repair) {
+  std::optional<medusa::VirtualTime> at;
+  for (const medusa::Cell& c : m.cells)
+    if (c.kind == medusa::CellKind::repair) {
       REQUIRE(c.birth == c.death);
       REQUIRE((!at || *at == c.birth)); // one repair, at one rank
       at = c.birth;
@@ -157,8 +157,8 @@ TEST_CASE("the medusa of a box sheared through a cube holds the cube's instant c
   // All 2^8 - 1 subsets of the cube are cells at the repair's rank, each once: alive in K (in the old
   // or the new triangulation, whose closed lifetimes both hold that rank) or instant.
   std::set<std::vector<kinetic::VertexId>> alive;
-  for (const complex::Cell& c : m.cells)
-    if (c.kind == complex::CellKind::regular && c.birth <= *at && *at <= c.death) {
+  for (const medusa::Cell& c : m.cells)
+    if (c.kind == medusa::CellKind::regular && c.birth <= *at && *at <= c.death) {
       REQUIRE(repaired.count(c.vertices) == 0);
       alive.insert(c.vertices);
     }
@@ -173,7 +173,7 @@ TEST_CASE("the medusa of a box sheared through a cube holds the cube's instant c
   // Without the groups the two triangulations of the box, both alive at the repair's rank, are not
   // filled by any cell of dimension >= 4 (there are no flips): a spurious class.
   std::size_t dropped = 0;
-  const complex::Medusa without = build(sheared_cube(deltas), 10000, true, dropped);
+  const medusa::Medusa without = build(sheared_cube(deltas), 10000, true, dropped);
   check_boundary_of_boundary(without);
   const std::vector<std::size_t> bw = betti(without);
   CAPTURE(bw);
@@ -190,9 +190,9 @@ TEST_CASE("the medusa of a box sheared through a cube keeps d d = 0 for radii ar
   const long rho2 = GENERATE(301L, 250L, 150L);
   CAPTURE(rho2);
   std::size_t groups = 0;
-  const complex::Medusa m = build(sheared_cube({-6, 6}), rho2, false, groups);
+  const medusa::Medusa m = build(sheared_cube({-6, 6}), rho2, false, groups);
   REQUIRE(groups == (rho2 >= 300 ? 7u : rho2 >= 200 ? 6u : 0u));
-  complex::validate_medusa(m, "sheared cube");
+  medusa::validate_medusa(m, "sheared cube");
   check_boundary_of_boundary(m);
   const std::vector<std::size_t> b = betti(m);
   CAPTURE(b);
@@ -209,13 +209,13 @@ TEST_CASE("the medusa of a square pyramid through a cospherical moment holds its
   // would leave no hole: they share the cone over the base boundary, a disc, so their union is
   // contractible; the instant cells must keep it so.)
   std::size_t groups = 0;
-  const complex::Medusa m = build(pyramid(), 10000, false, groups);
+  const medusa::Medusa m = build(pyramid(), 10000, false, groups);
   REQUIRE(groups == 2);
-  complex::validate_medusa(m, "pyramid");
+  medusa::validate_medusa(m, "pyramid");
   check_boundary_of_boundary(m);
   std::vector<std::vector<kinetic::VertexId>> instants;
-  for (const complex::Cell& c : m.cells)
-    if (c.kind == complex::CellKind::repair)
+  for (const medusa::Cell& c : m.cells)
+    if (c.kind == medusa::CellKind::repair)
       instants.push_back(c.vertices);
   std::sort(instants.begin(), instants.end());
   REQUIRE(instants == std::vector<std::vector<kinetic::VertexId>>{{0, 1, 2, 3}, {0, 1, 2, 3, 4}});
@@ -231,18 +231,18 @@ TEST_CASE("the medusa of a planar repair through five cocircular cells holds the
   // rho^2 = 26 >= g = 25: the pentagon {0..4} is the repair's group. Every simplex of the pentagon that
   // is Delaunay on either side of the repair has R <= 5 < rho and is in K there (the triangles are
   // short top simplices, the edges their faces), so the instant cells are exactly the subsets of
-  // {0..4} in neither triangulation (MATH.md 6.3): the two edges p1 p4 = {0,3} and p4 e = {3,4}; of
+  // {0..4} in neither triangulation (docs/MATH.md §6.3): the two edges p1 p4 = {0,3} and p4 e = {3,4}; of
   // the ten triangles, the five other than p1 p2 p3, p2 p3 p4, p1 p3 e, e p2 p3, p1 e p2; all five
   // 3-simplices and the 4-simplex: 13 cells, all instant.
   const kinetic::Trajectories t = planar_repair_with_pentagon();
   std::size_t groups = 0;
-  const complex::Medusa m = build(t, 26, false, groups);
+  const medusa::Medusa m = build(t, 26, false, groups);
   REQUIRE(groups == 1);
-  complex::validate_medusa(m, "planar pentagon");
+  medusa::validate_medusa(m, "planar pentagon");
   check_boundary_of_boundary(m);
   std::vector<std::vector<kinetic::VertexId>> instants;
-  for (const complex::Cell& c : m.cells)
-    if (c.kind == complex::CellKind::repair) {
+  for (const medusa::Cell& c : m.cells)
+    if (c.kind == medusa::CellKind::repair) {
       REQUIRE(c.birth == c.death);
       instants.push_back(c.vertices);
     }
@@ -258,7 +258,7 @@ TEST_CASE("the medusa of a planar repair through five cocircular cells holds the
   // diagonal), both alive at the repair's rank and sharing their boundary, form a 2-sphere that no
   // cell fills: one spurious class more, in degree 2.
   std::size_t dropped = 0;
-  const complex::Medusa without = build(t, 26, true, dropped);
+  const medusa::Medusa without = build(t, 26, true, dropped);
   check_boundary_of_boundary(without);
   const std::vector<std::size_t> bw = betti(without);
   CAPTURE(bw);
@@ -277,10 +277,10 @@ TEST_CASE("the medusa of a planar repair with rho below the pentagon's radius ha
   // rho^2 = 24 < g = 25: no group, so no instant repair cell, and the medusa is still valid.
   const kinetic::Trajectories t = planar_repair_with_pentagon();
   std::size_t groups = 0;
-  const complex::Medusa m = build(t, 24, false, groups);
+  const medusa::Medusa m = build(t, 24, false, groups);
   REQUIRE(groups == 0);
-  complex::validate_medusa(m, "planar pentagon");
+  medusa::validate_medusa(m, "planar pentagon");
   check_boundary_of_boundary(m);
-  for (const complex::Cell& c : m.cells)
-    REQUIRE(c.kind != complex::CellKind::repair);
+  for (const medusa::Cell& c : m.cells)
+    REQUIRE(c.kind != medusa::CellKind::repair);
 }

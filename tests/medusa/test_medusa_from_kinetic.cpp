@@ -1,12 +1,12 @@
 // Differential tests of libmedusa against libkinetic: the audited kinetic engine feeds a medusa
 // builder writing an HDF5 store, and K_t read back from the store must equal the engine's own
-// complex at every frame (MATH.md 6.6). Random walks and real CompuCell3D runs (with mitosis).
+// complex at every frame (docs/MATH.md §6.6). Random walks and real CompuCell3D runs (with mitosis).
 #include "../kinetic/kinetic_test_support.h"
 #include "cc3d_runs.h"
 #include "kinetic_run.h"
-#include "medusa/complex/complex_index.h"
-#include "medusa/complex/store_reader.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
+#include "medusa/medusa/complex_index.h"
+#include "medusa/medusa/store_reader.h"
 #include "medusa_fixtures.h"
 
 #include <catch2/catch.hpp>
@@ -29,14 +29,14 @@ std::size_t symmetric_difference(const SimplexSet& a, const SimplexSet& b) {
 }
 
 // K_t from the store at every frame equals the engine's complex: K(t_k+) at frame k < last, K(t_end-)
-// at the last frame (ComplexIndex::at_frame, MATH.md 6.6); the store equals the collected medusa.
+// at the last frame (ComplexIndex::at_frame, docs/MATH.md §6.6); the store equals the collected medusa.
 void check_store_against_engine(const KineticRun& run, const std::string& store_path) {
-  const complex::Medusa m = complex::read_store(store_path);
+  const medusa::Medusa m = medusa::read_store(store_path);
   REQUIRE(same_medusa(m, run.collected));
   REQUIRE(run.engine.finished);
   const std::size_t frames = m.input.frames();
   REQUIRE(frames >= 2);
-  const complex::ComplexIndex index(m);
+  const medusa::ComplexIndex index(m);
   CHECK(run.engine.initial_argument == run.engine.initial_state);
   CHECK(tuples(m, index.after(0)) == run.engine.initial_state);
   // The engine reports frame 0 through initial() and the last frame through finish(); frame() is
@@ -51,7 +51,7 @@ void check_store_against_engine(const KineticRun& run, const std::string& store_
     CAPTURE(stored.size(), engine.size(), symmetric_difference(stored, engine));
     CHECK(stored == engine);
     CHECK(!engine.empty());
-    // Independent of both: the vertices of K are the cells alive then (MATH.md 5.6): K(t_k+) holds the
+    // Independent of both: the vertices of K are the cells alive then (docs/MATH.md §5.6): K(t_k+) holds the
     // cells present at t_k that do not end there, K(t_end-) those present through the last slab.
     SimplexSet alive;
     for (std::size_t v = 0; v < m.input.cells.size(); ++v) {
@@ -110,7 +110,7 @@ TEST_CASE("K_t read back from the store equals the kinetic engine's complex thro
   const kinetic::Trajectories t = read_cc3d("mitosis_3d", 10);
   REQUIRE(t.frames() == 10);
   // A trajectory starting at an inner frame is inserted there; one ending at an inner frame is deleted
-  // there, after its last position (MATH.md 5.6).
+  // there, after its last position (docs/MATH.md §5.6).
   // (Cells ending at frame 0 are counted apart: libkinetic never deletes them, see below.)
   std::size_t born = 0, died = 0;
   for (const kinetic::Trajectory& c : t.cells) {

@@ -1,5 +1,5 @@
-#include "medusa/complex/complex_index.h"
-#include "medusa/complex/signatures.h"
+#include "medusa/medusa/complex_index.h"
+#include "medusa/medusa/signatures.h"
 #include "medusa_fixtures.h"
 #include "support/gudhi_oracle.h"
 
@@ -8,7 +8,7 @@
 #include <random>
 #include <sstream>
 
-using namespace medusa::complex;
+using namespace medusa;
 using namespace medusa::test;
 
 TEST_CASE("Betti numbers of K_t agree with GUDHI's alpha complex of static point sets",

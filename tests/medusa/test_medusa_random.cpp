@@ -1,5 +1,5 @@
-#include "medusa/complex/complex_index.h"
-#include "medusa/complex/store_reader.h"
+#include "medusa/medusa/complex_index.h"
+#include "medusa/medusa/store_reader.h"
 #include "medusa_fixtures.h"
 #include "random_stream.h"
 
@@ -7,7 +7,7 @@
 
 #include <map>
 
-using namespace medusa::complex;
+using namespace medusa;
 using namespace medusa::test;
 
 namespace {

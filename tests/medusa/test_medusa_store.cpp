@@ -1,8 +1,8 @@
 #include "appendix_b.h"
-#include "medusa/complex/complex_index.h"
-#include "medusa/complex/store_reader.h"
-#include "medusa/complex/store_writer.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
+#include "medusa/medusa/complex_index.h"
+#include "medusa/medusa/store_reader.h"
+#include "medusa/medusa/store_writer.h"
 #include "medusa_fixtures.h"
 #include "random_stream.h"
 #include "support/command_output.h"
@@ -18,7 +18,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-using namespace medusa::complex;
+using namespace medusa;
 using namespace medusa::test;
 namespace fs = std::filesystem;
 

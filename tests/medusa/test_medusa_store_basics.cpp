@@ -1,7 +1,7 @@
 #include "appendix_b.h"
-#include "medusa/complex/store_reader.h"
-#include "medusa/complex/store_writer.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
+#include "medusa/medusa/store_reader.h"
+#include "medusa/medusa/store_writer.h"
 #include "medusa_fixtures.h"
 
 #include <catch2/catch.hpp>
@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 
-using namespace medusa::complex;
+using namespace medusa;
 using namespace medusa::test;
 namespace fs = std::filesystem;
 

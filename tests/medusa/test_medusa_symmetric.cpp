@@ -1,5 +1,5 @@
 // Forward against reverse on a time-symmetric run (frames A B C B A): the reverse diagram is the
-// forward diagram mirrored by t -> t_0 + t_end - t (MATH.md 7.2, 7.3).
+// forward diagram mirrored by t -> t_0 + t_end - t (docs/MATH.md §7.2, §7.3).
 //
 // Why it must hold exactly: the positions satisfy p(t) = p(t_0 + t_end - t), so every certificate of
 // slab k at parameter u is the certificate of slab K-1-k at 1-u, the exact event times are mirrored,
@@ -13,7 +13,7 @@
 // times are independent approximations of mirrored algebraic times, so they agree only up to rounding.
 #include "../kinetic/kinetic_test_support.h"
 #include "kinetic_run.h"
-#include "medusa/complex/store_reader.h"
+#include "medusa/medusa/store_reader.h"
 #include "medusa/persistence/diagram.h"
 #include "medusa/persistence/filtration.h"
 #include "medusa_fixtures.h"
@@ -78,15 +78,15 @@ TEST_CASE("the reverse diagram of a time-symmetric run is the forward diagram mi
   CAPTURE(run.statistics.flips23, run.statistics.flips32, run.statistics.radius_events);
   REQUIRE(run.statistics.flips23 + run.statistics.flips32 > 0);
   REQUIRE(run.statistics.radius_events > 0);
-  const complex::Medusa& m = run.collected;
+  const medusa::Medusa& m = run.collected;
   const std::uint64_t n_end = m.end.batch;
   const double t0 = 0, t_end = 400;
 
   // The batches themselves are mirrored: batch i <-> N - i (batch N is t_end).
   REQUIRE(m.batches.size() == n_end);
   for (std::size_t i = 1; i < m.batches.size(); ++i) {
-    const complex::BatchRecord& a = m.batches[i];
-    const complex::BatchRecord& b = m.batches[n_end - i];
+    const medusa::BatchRecord& a = m.batches[i];
+    const medusa::BatchRecord& b = m.batches[n_end - i];
     CAPTURE(i, a.time, b.time);
     CHECK(a.at_frame == b.at_frame);
     CHECK(std::abs(a.time - (t0 + t_end - b.time)) <= 1e-9 * t_end);

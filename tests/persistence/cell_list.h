@@ -2,7 +2,7 @@
 // deliberately not consecutive, facets are looked up by vertex tuple and lifetime.
 #pragma once
 
-#include "medusa/complex/cell.h"
+#include "medusa/medusa/cell.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -10,8 +10,8 @@
 
 namespace medusa::persistence::test {
 
-using complex::Cell;
-using complex::VirtualTime;
+using medusa::Cell;
+using medusa::VirtualTime;
 
 inline VirtualTime vt(std::uint64_t batch, std::uint32_t rank, double time) { return {batch, rank, time}; }
 
@@ -19,12 +19,12 @@ struct CellSpec {
   std::vector<kinetic::VertexId> vertices;
   VirtualTime birth;
   VirtualTime death;
-  complex::CellKind kind = complex::CellKind::regular;
+  medusa::CellKind kind = medusa::CellKind::regular;
 };
 
 // Ids are 1000 + 7 * (position in the list), descending order would work as well: the library maps
 // them. The facet of a cell is the cell of the facet simplex whose lifetime contains the cell's
-// (MATH.md 6.4).
+// (docs/MATH.md §6.4).
 inline std::vector<Cell> make_cells(const std::vector<CellSpec>& specs) {
   std::vector<Cell> cells;
   for (std::size_t i = 0; i < specs.size(); ++i) {

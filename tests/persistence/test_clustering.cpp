@@ -1,6 +1,6 @@
 // Distance matrices over many diagrams and hierarchical clustering, against hand derivations and
 // scipy's linkage.
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "medusa/persistence/bottleneck.h"
 #include "medusa/persistence/clustering.h"
 #include "oracle.h"

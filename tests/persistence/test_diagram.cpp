@@ -1,7 +1,7 @@
-// Diagrams of hand-derived small medusas (MATH.md 7.2-7.6): every expected pair is derived by hand in
+// Diagrams of hand-derived small medusas (docs/MATH.md §7.2-§7.6): every expected pair is derived by hand in
 // the comment above its case.
 #include "cell_list.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "medusa/persistence/degree_check.h"
 #include "medusa/persistence/diagram.h"
 #include "medusa/persistence/diagram_text.h"
@@ -161,11 +161,11 @@ TEST_CASE("Forward and reverse filtrations of a time-symmetric medusa give mirro
   CHECK(mirrored == points_of(r));
 }
 
-// MATH.md Appendix B (one 2-3 flip): a..e = 0..4, t* = 96.7774 is batch 1 rank 1, t_end = 100 is
+// docs/MATH.md §B (one 2-3 flip): a..e = 0..4, t* = 96.7774 is batch 1 rank 1, t_end = 100 is
 // batch 2. Forward: one essential H0 class at 0, all other pairs zero length; at t* de opens a loop
 // killed by ade, bde and cde open H2 classes killed by abde and acde, bcde (last in tuple order) opens
 // the H3 class of the five tetrahedra, killed by the 4-simplex. chi = 5 - 10 + 10 - 5 + 1 = 1.
-TEST_CASE("The flip of MATH.md Appendix B gives one essential class and only zero-length pairs") {
+TEST_CASE("The flip of docs/MATH.md §B gives one essential class and only zero-length pairs") {
   const double ts = 96.7774;
   const auto t0 = vt(0, 0, 0), tstar = vt(1, 1, ts), tend = vt(2, 0, 100);
   std::vector<CellSpec> s;
@@ -181,7 +181,7 @@ TEST_CASE("The flip of MATH.md Appendix B gives one essential class and only zer
   s.push_back({{0, 1, 3, 4}, tstar, tend});
   s.push_back({{1, 2, 3, 4}, tstar, tend});
   s.push_back({{0, 2, 3, 4}, tstar, tend});
-  s.push_back({{0, 1, 2, 3, 4}, tstar, tstar, complex::CellKind::flip});
+  s.push_back({{0, 1, 2, 3, 4}, tstar, tstar, medusa::CellKind::flip});
   const auto cells = make_cells(s);
   REQUIRE(cells.size() == 31);
   const Diagram f = forward_diagram(cells);
@@ -203,7 +203,7 @@ TEST_CASE("The flip of MATH.md Appendix B gives one essential class and only zer
 }
 
 // The boundary of a 5-simplex whose last 4-face comes later: that face closes a 4-sphere, an
-// essential H4 class no medusa can have (MATH.md 7.6).
+// essential H4 class no medusa can have (docs/MATH.md §7.6).
 TEST_CASE("A class of degree above 3 that is essential or of positive length fails the degree audit") {
   std::vector<CellSpec> s;
   for (int skip : {1, 2, 3, 4, 5, 0}) {

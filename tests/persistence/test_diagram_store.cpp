@@ -1,11 +1,11 @@
 // The /persistence group of a medusa store (docs/FORMAT.md): round trip, h5py, determinism and the
 // safe-write guarantees of write_diagrams.
 #include "../kinetic/kinetic_test_support.h"
-#include "medusa/complex/medusa_builder.h"
-#include "medusa/complex/store_reader.h"
-#include "medusa/complex/store_writer.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "medusa/medusa/medusa_builder.h"
+#include "medusa/medusa/store_reader.h"
+#include "medusa/medusa/store_writer.h"
 #include "medusa/persistence/diagram_store.h"
 #include "medusa/persistence/medusa_diagrams.h"
 #include "support/command_output.h"
@@ -38,16 +38,16 @@ void make_store(const std::string& path) {
   kinetic::KineticOptions options;
   options.rho2.num = 1200 * 1200;
   kinetic::KineticAlphaComplex engine(t, options);
-  complex::StoreWriter writer(path);
-  complex::MedusaBuilder builder(writer);
-  complex::RunInfo info;
+  medusa::StoreWriter writer(path);
+  medusa::MedusaBuilder builder(writer);
+  medusa::RunInfo info;
   info.radius_text = "1200";
   builder.set_run(info, t);
   engine.run(builder);
 }
 
 std::vector<Diagram> diagrams_of(const std::string& store) {
-  const complex::Medusa m = complex::read_store(store);
+  const medusa::Medusa m = medusa::read_store(store);
   std::vector<int> vertex_type;
   for (const kinetic::Trajectory& c : m.input.cells)
     vertex_type.push_back(c.type);
@@ -104,7 +104,7 @@ TEST_CASE("diagrams written into a store read back unchanged and leave the medus
   CAPTURE(store_seed);
   const std::string store = temp_path("roundtrip.h5");
   make_store(store);
-  const complex::Medusa before = complex::read_store(store);
+  const medusa::Medusa before = medusa::read_store(store);
   const std::vector<Diagram> diagrams = diagrams_of(store);
   REQUIRE(diagrams.size() == 6);
   write_diagrams(store, diagrams);
@@ -131,7 +131,7 @@ TEST_CASE("diagrams written into a store read back unchanged and leave the medus
   CHECK(diagram_group_name(diagrams[3]) == "reverse_type1");
 
   // The medusa itself is untouched, and writing again replaces the group.
-  const complex::Medusa after = complex::read_store(store);
+  const medusa::Medusa after = medusa::read_store(store);
   CHECK(after.cells.size() == before.cells.size());
   CHECK(after.batches.size() == before.batches.size());
   write_diagrams(store, {diagrams[0]});

@@ -1,6 +1,6 @@
-// Bottleneck and Wasserstein distances (MATH.md 7.7) against brute-force enumeration of matchings,
+// Bottleneck and Wasserstein distances (docs/MATH.md §7.7) against brute-force enumeration of matchings,
 // GUDHI / Hera, and a table of hand-derived cases.
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "medusa/persistence/bottleneck.h"
 #include "medusa/persistence/wasserstein.h"
 #include "oracle.h"

@@ -1,6 +1,6 @@
-// Forward and reverse filtrations and sub-medusas (MATH.md 7.2-7.4).
+// Forward and reverse filtrations and sub-medusas (docs/MATH.md §7.2-§7.4).
 #include "cell_list.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "medusa/persistence/filtration.h"
 
 #include <catch2/catch.hpp>
@@ -23,8 +23,8 @@ std::vector<Cell> small_complex() {
   });
 }
 
-std::vector<complex::CellId> ids_in_order(const std::vector<Cell>& cells, const Filtration& f) {
-  std::vector<complex::CellId> ids;
+std::vector<medusa::CellId> ids_in_order(const std::vector<Cell>& cells, const Filtration& f) {
+  std::vector<medusa::CellId> ids;
   for (std::size_t pos : f.cells)
     ids.push_back(cells[pos].id);
   return ids;
@@ -36,7 +36,7 @@ TEST_CASE("The forward filtration orders cells by birth batch, birth rank, dimen
   const auto cells = small_complex();
   const Filtration f = make_filtration(cells, Direction::forward);
   // Vertices (0,0) by tuple 0,1,2; then 01 (1,0), 12 (1,1), 02 (2,0).
-  CHECK(ids_in_order(cells, f) == std::vector<complex::CellId>{1007, 1014, 1000, 1028, 1021, 1035});
+  CHECK(ids_in_order(cells, f) == std::vector<medusa::CellId>{1007, 1014, 1000, 1028, 1021, 1035});
   CHECK(f.dims == std::vector<int>{0, 0, 0, 1, 1, 1});
   CHECK(f.columns[3] == std::vector<std::int64_t>{0, 1});
   CHECK(f.columns[4] == std::vector<std::int64_t>{1, 2});
@@ -48,7 +48,7 @@ TEST_CASE("The reverse filtration orders cells by latest death first, then dimen
   const auto cells = small_complex();
   const Filtration f = make_filtration(cells, Direction::reverse);
   // Deaths: 0,1,01 at (4,0); 2 at (3,0); 12, 02 at (2,5).
-  CHECK(ids_in_order(cells, f) == std::vector<complex::CellId>{1007, 1014, 1028, 1000, 1035, 1021});
+  CHECK(ids_in_order(cells, f) == std::vector<medusa::CellId>{1007, 1014, 1028, 1000, 1035, 1021});
   CHECK(f.columns[2] == std::vector<std::int64_t>{0, 1});
   CHECK(f.columns[4] == std::vector<std::int64_t>{0, 3});
   CHECK(f.columns[5] == std::vector<std::int64_t>{1, 3});
@@ -58,11 +58,11 @@ TEST_CASE("A sub-medusa keeps the cells whose vertices all have the type, re-ind
   const auto cells = small_complex();
   const std::vector<int> types{1, 2, 1}; // vertices 0 and 2 have type 1
   const Filtration f = make_type_filtration(cells, types, 1, Direction::forward);
-  CHECK(ids_in_order(cells, f) == std::vector<complex::CellId>{1007, 1000, 1035});
+  CHECK(ids_in_order(cells, f) == std::vector<medusa::CellId>{1007, 1000, 1035});
   CHECK(f.columns[2] == std::vector<std::int64_t>{0, 1});
   CHECK(f.cell_type == 1);
   const Filtration g = make_type_filtration(cells, types, 2, Direction::reverse);
-  CHECK(ids_in_order(cells, g) == std::vector<complex::CellId>{1014});
+  CHECK(ids_in_order(cells, g) == std::vector<medusa::CellId>{1014});
   CHECK(make_type_filtration(cells, types, 7, Direction::forward).size() == 0);
 }
 
@@ -100,7 +100,7 @@ TEST_CASE("Cells whose ids are their positions give the same filtration as arbit
   auto renumbered = cells;
   for (Cell& c : renumbered) {
     c.id = (c.id - 1000) / 7;
-    for (complex::CellId& facet : c.facets)
+    for (medusa::CellId& facet : c.facets)
       facet = (facet - 1000) / 7;
   }
   for (Direction direction : {Direction::forward, Direction::reverse}) {

@@ -1,6 +1,6 @@
 // Static check against GUDHI: a static alpha complex given as medusa cells (every cell born at the
 // rank of its filtration value, all dying together) must have GUDHI's persistence, for the whole
-// complex and for the full subcomplex of each vertex type (MATH.md 7.4).
+// complex and for the full subcomplex of each vertex type (docs/MATH.md §7.4).
 #include "cell_list.h"
 #include "medusa/persistence/diagram.h"
 #include "medusa/persistence/euler.h"

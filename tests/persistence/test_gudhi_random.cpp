@@ -1,5 +1,5 @@
 // Random medusas with arbitrary lifetimes against GUDHI: the forward diagram is the persistence of
-// the birth-time filtration, the reverse diagram that of -death (MATH.md 7.3: reverse = sublevel
+// the birth-time filtration, the reverse diagram that of -death (docs/MATH.md §7.3: reverse = sublevel
 // sets of -t). Diagram values do not depend on how ties inside a batch are ordered, so the pairs of
 // positive length must agree exactly.
 #include "cell_list.h"

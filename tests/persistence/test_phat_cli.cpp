@@ -1,6 +1,6 @@
 // The binary boundary-matrix export against PHAT's own command-line tool (/usr/bin/phat).
 #include "cell_list.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "medusa/persistence/boundary_matrix.h"
 #include "oracle.h"
 

@@ -1,6 +1,6 @@
-// Summaries (MATH.md 7.8) and the point form of diagrams (7.3, 7.7).
+// Summaries (docs/MATH.md §7.8) and the point form of diagrams (7.3, 7.7).
 #include "cell_list.h"
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "medusa/persistence/diagram.h"
 #include "medusa/persistence/points.h"
 #include "medusa/persistence/summaries.h"

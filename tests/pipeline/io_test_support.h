@@ -1,7 +1,7 @@
 // Shared helpers of the medusa::io tests.
 #pragma once
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 #include "support/temp_files.h"
 
 #include <catch2/catch.hpp>

@@ -1,6 +1,6 @@
 // GUDHI's exact alpha complex of a static point set (via /usr/bin/python3), the oracle for K_t of
 // the medusa tests: the simplices of the alpha complex pruned at rho^2 (GUDHI filtrations are
-// squared radii) and its Betti numbers over Z/2 (MATH.md 7.5).
+// squared radii) and its Betti numbers over Z/2 (docs/MATH.md §7.5).
 #pragma once
 
 #include "command_output.h"

@@ -1,4 +1,4 @@
-// The planar run that forces a static repair cutting through five cocircular cells (MATH.md 5.4,
+// The planar run that forces a static repair cutting through five cocircular cells (docs/MATH.md §5.4,
 // 6.3), shared by the kinetic and medusa tests of planar degenerate groups.
 #pragma once
 
@@ -30,7 +30,7 @@ namespace medusa::test {
 // Just before, the edge ab has the triangles abd and abc; both are flat at t = 100, so the in-circle
 // of ab changes sign there. Just after, a and b move to x = 29 - v while c and d stay on x = 29: the
 // quadrilateral a d b c is not convex (a and b on one side of cd), no 2-2 flip applies and the engine
-// repairs statically (MATH.md 5.2 step 3), removing abd and abc and creating bcd. These triangles are
+// repairs statically (docs/MATH.md §5.2 step 3), removing abd and abc and creating bcd. These triangles are
 // flat at t = 100: a flat triangle lies on no circle, so its class is skipped (no group). Four still
 // cells (9..12) fill the hull's inside.
 inline kinetic::Trajectories planar_repair_with_pentagon() {

@@ -1,8 +1,8 @@
 #include "medusa/io/cc3d_xml.h"
 
+#include "medusa/core/error.h"
 #include "medusa/io/decimal.h"
 #include "medusa/io/gzip_reader.h"
-#include "medusa/kinetic/error.h"
 
 namespace medusa::io {
 

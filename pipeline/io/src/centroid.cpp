@@ -1,6 +1,6 @@
 #include "medusa/io/centroid.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 namespace medusa::io {
 

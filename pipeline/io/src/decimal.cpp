@@ -1,6 +1,6 @@
 #include "medusa/io/decimal.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <cctype>
 #include <limits>

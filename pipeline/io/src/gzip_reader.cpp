@@ -1,6 +1,6 @@
 #include "medusa/io/gzip_reader.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <cstring>
 #include <zlib.h>

@@ -1,8 +1,8 @@
 #include "medusa/io/run_reader.h"
 
+#include "medusa/core/error.h"
 #include "medusa/io/trajectory_assembly.h"
 #include "medusa/io/vtk_reader.h"
-#include "medusa/kinetic/error.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -130,7 +130,7 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
         throw InputError(
             file + ": cell " + std::to_string(c.id) + ": its voxel centroid (" + std::to_string(c.voxels) +
             " voxels) is not on the grid of scale " + std::to_string(options.scale) +
-            "; rerun with --snap to round VTK centroids to the nearest grid point (MATH.md 1.3)");
+            "; rerun with --snap to round VTK centroids to the nearest grid point (docs/MATH.md §1.3)");
       }
       samples.push_back(s);
     }
@@ -144,7 +144,7 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
   name_types(run, {});
   if (run.snap.moved > 0)
     run.warnings.push_back("snapped " + std::to_string(run.snap.moved) +
-                           " VTK centroids to the grid (policy R, MATH.md 1.3); largest move " +
+                           " VTK centroids to the grid (policy R, docs/MATH.md §1.3); largest move " +
                            std::to_string(run.snap.max_displacement_num) + "/" +
                            std::to_string(run.snap.max_displacement_den) + " grid units");
   run.trajectories.validate();
@@ -178,7 +178,7 @@ RunData read_csv_run(const std::string& path, const RunOptions& options,
     dimension = 2;
   } else if (differing == csv.samples.end()) {
     // Every centre in one plane z = const is a planar run whatever the lattice says (a 3D alpha
-    // complex of coplanar points has no tetrahedra, MATH.md 5.7): run it in 2D, and say so.
+    // complex of coplanar points has no tetrahedra, docs/MATH.md §5.7): run it in 2D, and say so.
     dimension = 2;
     run.warnings.push_back(path + ": every z is equal but the lattice z extent is " +
                            (z_extent ? std::to_string(*z_extent) : std::string("unknown")) +

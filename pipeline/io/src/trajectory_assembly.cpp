@@ -1,6 +1,6 @@
 #include "medusa/io/trajectory_assembly.h"
 
-#include "medusa/kinetic/error.h"
+#include "medusa/core/error.h"
 
 #include <algorithm>
 #include <tuple>
@@ -65,7 +65,7 @@ AssembledRun assemble_trajectories(std::vector<CellSample> samples, const std::v
           run.warnings.push_back("cell " + std::to_string(s.cell_id) + " is missing from MCS " +
                                  std::to_string(frame_times[previous_frame + 1]) + " to " +
                                  std::to_string(frame_times[frame - 1]) +
-                                 ": split into separate trajectories (MATH.md 2.1)");
+                                 ": split into separate trajectories (docs/MATH.md §2.1)");
         kinetic::Trajectory traj;
         traj.cell_id = s.cell_id;
         traj.type = s.type;
@@ -83,7 +83,7 @@ AssembledRun assemble_trajectories(std::vector<CellSample> samples, const std::v
   }
   // Cells present at one frame only: at an earlier frame they are inserted and deleted in that frame's
   // batch; at the last frame they are outside K(t_end-), the state the run ends with, and t_end gets
-  // no instant cells (MATH.md 2.1, 5.6, 6.2), so they add nothing to the medusa. Both are said.
+  // no instant cells (docs/MATH.md §2.1, §5.6, §6.2), so they add nothing to the medusa. Both are said.
   std::vector<std::int64_t> last_frame_ids;
   const std::size_t last = frame_times.size() - 1;
   for (const kinetic::Trajectory& c : t.cells)
@@ -98,13 +98,13 @@ AssembledRun assemble_trajectories(std::vector<CellSample> samples, const std::v
   if (!single_frame_ids.empty())
     run.warnings.push_back(std::to_string(single_frame_ids.size()) +
                            " trajectories are present on a single frame (cells " + listed(single_frame_ids) +
-                           "): inserted and deleted in the same frame batch (MATH.md 2.1, 5.6)");
+                           "): inserted and deleted in the same frame batch (docs/MATH.md §2.1, §5.6)");
   if (!last_frame_ids.empty())
     run.warnings.push_back(std::to_string(last_frame_ids.size()) +
                            " trajectories are present at the last frame only (cells " +
                            listed(last_frame_ids) +
                            "): the run ends just before that frame, so they add nothing to the medusa "
-                           "(MATH.md 6.2)");
+                           "(docs/MATH.md §6.2)");
   return run;
 }
 

@@ -1,8 +1,8 @@
 #include "medusa/io/vtk_reader.h"
 
+#include "medusa/core/error.h"
 #include "medusa/io/decimal.h"
 #include "medusa/io/gzip_reader.h"
-#include "medusa/kinetic/error.h"
 
 #include <algorithm>
 #include <cstring>
@@ -295,7 +295,7 @@ private:
     }
     snap_.cells.reserve(cells.size());
     for (auto& [id, acc] : cells) {
-      // X = n * S*g + S*h * sum(i): exact integer sums (MATH.md 1.3).
+      // X = n * S*g + S*h * sum(i): exact integer sums (docs/MATH.md §1.3).
       for (int a = 0; a < 3; ++a) {
         std::int64_t base = 0, offset = 0;
         if (mul_overflows(acc.cell.voxels, snap_.origin[a], base) ||

@@ -15,7 +15,7 @@ import numpy as np
 def wasserstein_distance(x, y, p):
     # Hera (GUDHI 3.7) crashes or hangs when one side has no finite point, so it gets the finite
     # parts only when both are non-empty; otherwise every point goes to the diagonal. Essential
-    # classes are matched by sorted births (MATH.md 7.7) and combined here.
+    # classes are matched by sorted births (docs/MATH.md §7.7) and combined here.
     fx = x[np.isfinite(x[:, 1])]
     fy = y[np.isfinite(y[:, 1])]
     ex = sorted(x[~np.isfinite(x[:, 1])][:, 0])

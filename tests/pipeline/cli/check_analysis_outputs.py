@@ -71,7 +71,7 @@ def essential_counts(stdout):
 def check_compare(medusa, work, stores):
     prefix = os.path.join(work, "cmp_t1")
     # Type 1 (Condensing), H0, forward: the runs have different numbers of type-1 clusters at the end,
-    # so with essential classes counted some distances are inf (MATH.md 7.7) and equal counts are finite.
+    # so with essential classes counted some distances are inf (docs/MATH.md §7.7) and equal counts are finite.
     result = run([medusa, "compare", *stores, "--type", "1", "--dim", "0", "--filtration", "forward", "-o", prefix],
                  work)
     names, values = read_matrix(prefix + ".distances.csv")
@@ -231,7 +231,7 @@ def check_at(medusa, work, store, cells_csv):
     print("simplices by dimension:", dict(dims))
     assert dims[1] > 0 and dims[2] > 0, "expected edges and triangles at radius 3"
 
-    # --type 1 at the start: the type-1 subcomplex (MATH.md 7.4) has every type-1 cell as a vertex and
+    # --type 1 at the start: the type-1 subcomplex (docs/MATH.md §7.4) has every type-1 cell as a vertex and
     # only simplices whose vertices are all of type 1; it is the full subcomplex of K(t0+) on them.
     t0 = times[0]
     type1_path, all_path = os.path.join(work, "at_type1.csv"), os.path.join(work, "at_start.csv")

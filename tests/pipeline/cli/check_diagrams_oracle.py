@@ -4,7 +4,7 @@ usage: check_diagrams_oracle.py <medusa> <store> [<run input> <radius>]
        (with a run input, `medusa run` first writes the store from it)
 
 Reads the store with h5py alone, builds the forward and reverse filtrations of the whole medusa and of
-each cell type's sub-medusa from docs/FORMAT.md and MATH.md 7.2-7.4 (keys by batch and rank, facets
+each cell type's sub-medusa from docs/FORMAT.md and docs/MATH.md §7.2-§7.4 (keys by batch and rank, facets
 from the stored facet ids), reduces their boundary matrices over Z/2 with the standard algorithm
 (Python integers as bit columns: nothing shared with PHAT or libpersistence), and requires the
 diagrams `medusa diagrams` prints to equal them exactly: every pair of positive length, as doubles,

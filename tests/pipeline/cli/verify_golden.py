@@ -119,7 +119,7 @@ for label, t in (("all cells", "all"), ("type 1 (Condensing)", "1"), ("type 2 (N
     check(loops == sum(1 for b, d, k in forward if k == 1 and b != d), f"loops of {t}")
     check(cavities == sum(1 for b, d, k in forward if k == 2 and b != d), f"cavities of {t}")
 
-# curves_frames.csv: Euler characteristic from the f-vector and from the Betti numbers (MATH.md 7.5);
+# curves_frames.csv: Euler characteristic from the f-vector and from the Betti numbers (docs/MATH.md §7.5);
 # the two types partition the vertices; MCS 100 agrees with `medusa at --time 100`.
 with open(os.path.join(golden, "curves_frames.csv")) as f:
     curves = list(csv.DictReader(f))
@@ -148,7 +148,7 @@ check(int(re.search(r"\nPOINTS (\d+) double\n", vtk).group(1)) == counts[0] == t
 check(int(re.search(r"\nCELLS (\d+) ", vtk).group(1)) == sum(counts), "VTK cells")
 
 # compare_type1_h1: GUDHI's bottleneck distance between the finite type-1 H1 forward points of the
-# three stores on the normalised time axis t -> (t - t0) / (t_end - t0) (MATH.md 7.7).
+# three stores on the normalised time axis t -> (t - t0) / (t_end - t0) (docs/MATH.md §7.7).
 names = ["small", "nosorting_3d_3frames", "sorting_3d_seed2_3frames"]
 finite = []
 for name in names:

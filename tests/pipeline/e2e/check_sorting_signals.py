@@ -44,7 +44,7 @@ def type1_h0_forward(medusa, work, name):
 
 
 def betti0(pairs, s):
-    """Betti curve of a forward diagram (MATH.md 7.8): classes with birth <= s < death."""
+    """Betti curve of a forward diagram (docs/MATH.md §7.8): classes with birth <= s < death."""
     return sum(1 for b, d in pairs if b <= s < d)
 
 
@@ -59,7 +59,7 @@ def check_merges(medusa, work):
         print(f"{name}: {summary[name][0]} type-1 H0 classes at MCS {t0:g}, {summary[name][1]} at MCS "
               f"{t_end:g}, median death MCS {summary[name][2]:.1f}")
     # (a1) Sorting means the Condensing cells aggregate: in the forward filtration of the type-1
-    # sub-medusa (MATH.md 7.2, 7.4) the type-1 clusters present at the start have merged by the end,
+    # sub-medusa (docs/MATH.md §7.2, §7.4) the type-1 clusters present at the start have merged by the end,
     # leaving fewer H0 classes (a single one in both sorting runs). The control also merges some (the
     # filtration accumulates all contacts over time), so this alone does not distinguish sorting.
     for name in SORTING:
@@ -85,8 +85,8 @@ def check_seeds(medusa, work):
     s1, s2 = SORTING
     for metric in ("bottleneck", "wasserstein:1"):
         # (b) Two seeds of the same sorting parameters are closer to each other than a sorting run is to
-        # the control: type-1 H0 diagrams of the forward filtration on the normalised time axis (MATH.md
-        # 7.7), finite parts (the control keeps two type-1 classes to the end, the sorting runs one, so
+        # the control: type-1 H0 diagrams of the forward filtration on the normalised time axis (docs/MATH.md
+        # §7.7), finite parts (the control keeps two type-1 classes to the end, the sorting runs one, so
         # with the essential classes counted the sorting/control distances are inf: checked below).
         prefix = f"seeds_{metric.replace(':', '')}"
         run([medusa, "compare", *stores, "--type", "1", "--dim", "0", "--filtration", "forward", "--metric", metric,

@@ -1,11 +1,11 @@
 // compute_medusa_diagrams on worker threads, and its two phases, give exactly the diagrams of the
 // sequential computation (libpersistence/include/medusa/persistence/medusa_diagrams.h), on the
 // medusa of a real run: the first 3 frames of examples/sorting_3d at radius 3.
-#include "medusa/complex/medusa.h"
-#include "medusa/complex/medusa_builder.h"
+#include "medusa/core/error.h"
 #include "medusa/io/run_reader.h"
-#include "medusa/kinetic/error.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "medusa/medusa/medusa.h"
+#include "medusa/medusa/medusa_builder.h"
 #include "medusa/persistence/diagram_text.h"
 #include "medusa/persistence/medusa_diagrams.h"
 
@@ -20,7 +20,7 @@ using namespace medusa;
 namespace {
 
 struct RunMedusa {
-  complex::Medusa medusa;
+  medusa::Medusa medusa;
   std::vector<int> vertex_type;
 };
 
@@ -30,9 +30,9 @@ const RunMedusa& sorting_3frames() {
     kinetic::KineticOptions options;
     options.rho2 = kinetic::squared_radius_from_decimal("3", data.trajectories.scale);
     kinetic::KineticAlphaComplex engine(data.trajectories, options);
-    complex::MedusaCollector collector;
-    complex::MedusaBuilder builder(collector);
-    complex::RunInfo info;
+    medusa::MedusaCollector collector;
+    medusa::MedusaBuilder builder(collector);
+    medusa::RunInfo info;
     info.radius = 3;
     info.radius_text = "3";
     builder.set_run(info, data.trajectories);

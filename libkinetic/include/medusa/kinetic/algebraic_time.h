@@ -1,5 +1,5 @@
 // Exact event times inside a slab: real algebraic numbers u in [0, 1], compared exactly
-// (MATH.md 3.7), through CGAL's Algebraic_kernel_d_1 over Gmpz (Descartes isolation, MPFI).
+// (docs/MATH.md §3.7), through CGAL's Algebraic_kernel_d_1 over Gmpz (Descartes isolation, MPFI).
 // Heavy header: include it only in the few translation units that need exact times.
 #pragma once
 
@@ -32,7 +32,7 @@ Rational value_at(const Poly<mpz_class>& f, const Rational& q);
 
 // A root of a certificate polynomial isolated in doubles (root_isolation.h): exactly one root of the
 // polynomial lies in the open interval (lo, hi), and it is simple. The exact polynomial is computed
-// only when two times cannot be told apart in doubles (MATH.md 3.7: isolating intervals first,
+// only when two times cannot be told apart in doubles (docs/MATH.md §3.7: isolating intervals first,
 // refinement when they overlap, exact comparison last). Shared by every copy of the time, so a
 // refinement made once serves every later comparison.
 struct IsolatedRoot {
@@ -56,7 +56,7 @@ struct IsolatedRoot {
   // The right end of the piece that isolated the root: the polynomial has no root in (root,
   // clear_hi] and its sign there, -sign_lo, was certified at clear_hi. Certificates built on the
   // same points at this root (a flip's new interior facets) start their search for the next root
-  // there, where the enclosures still decide (MATH.md 3.8, caching).
+  // there, where the enclosures still decide (docs/MATH.md §3.8, caching).
   double clear_hi = 0.0;
   std::array<std::int32_t, 6> key{{-1, -1, -1, -1, -1, -1}}; // which polynomial (-1: unknown) ...
   std::size_t slab = 0;                   // ... in which slab: equal (key, slab), same polynomial
@@ -129,7 +129,7 @@ private:
   double lo_ = 0.0, hi_ = 0.0;               // enclosure of rational or CGAL-built times
 };
 
-// Event-time comparisons that the isolating intervals alone did not decide (MATH.md 3.7), counted
+// Event-time comparisons that the isolating intervals alone did not decide (docs/MATH.md §3.7), counted
 // per thread since it started; KineticStatistics reports the difference over a run.
 struct TimeComparisonCounts {
   std::uint64_t sharpened = 0; // isolated roots given their exact polynomial rounded to intervals
@@ -137,7 +137,7 @@ struct TimeComparisonCounts {
 };
 TimeComparisonCounts time_comparison_counts();
 
-// sign^+_u(f): the sign of f on (u, u + eps) (MATH.md 3.7); 0 iff f is identically zero.
+// sign^+_u(f): the sign of f on (u, u + eps) (docs/MATH.md §3.7); 0 iff f is identically zero.
 int sign_plus(const ExactPoly& f, const SlabTime& u);
 
 // sign^-_u(f): the sign of f on (u - eps, u); 0 iff f is identically zero. With sign_plus it tells a
@@ -145,7 +145,7 @@ int sign_plus(const ExactPoly& f, const SlabTime& u);
 int sign_minus(const ExactPoly& f, const SlabTime& u);
 
 // The roots of f (not identically zero) in the open interval (u, 1) where f changes sign (odd
-// multiplicity), in increasing order. Roots of even multiplicity are not events (MATH.md 3.9).
+// multiplicity), in increasing order. Roots of even multiplicity are not events (docs/MATH.md §3.9).
 std::vector<AlgebraicReal> sign_changes_after(const ExactPoly& f, const SlabTime& u);
 
 // A rational strictly between a < b.
@@ -167,7 +167,7 @@ int sign_at(const ExactPoly& f, const SlabTime& u);
 namespace medusa::kinetic {
 
 // All real roots of a polynomial with their multiplicities, in increasing order. Computed once per
-// polynomial and slab and cached by the engine (MATH.md 3.8, caching).
+// polynomial and slab and cached by the engine (docs/MATH.md §3.8, caching).
 struct RealRoots {
   std::vector<std::pair<AlgebraicReal, int>> roots;
 };

@@ -1,6 +1,6 @@
 // The certificates computed in plain double arithmetic, returned as interval coefficients
-// that provably enclose the exact integer ones: the cheap first filter of MATH.md 3.8, run for every
-// facet at every frame (MATH.md 2.3). An enclosure is wider than the one interval arithmetic gives,
+// that provably enclose the exact integer ones: the cheap first filter of docs/MATH.md §3.8, run for every
+// facet at every frame (docs/MATH.md §2.3). An enclosure is wider than the one interval arithmetic gives,
 // so a certificate it cannot settle is recomputed with intervals (certificate_polynomials.h).
 #pragma once
 

@@ -1,7 +1,7 @@
-// The certificate polynomials of MATH.md 3.1, written once for any number type NT (exact mpz_class
+// The certificate polynomials of docs/MATH.md §3.1, written once for any number type NT (exact mpz_class
 // or a certified interval type) and any point type (moving points, or points at one time enclosure).
-// All are translation invariant and computed from coordinates relative to the first point (MATH.md
-// 1.5), so every input difference is an exact integer.
+// All are translation invariant and computed from coordinates relative to the first point (docs/MATH.md
+// §1.5), so every input difference is an exact integer.
 #pragma once
 
 #include "medusa/kinetic/interval_filter.h"
@@ -29,7 +29,7 @@ template <class NT> Vec<NT> difference(const MovingPoint& p, const MovingPoint& 
 // A moving point at one time u of its slab, u known by an enclosure (the current event time): the
 // certificates below, given such points, are their polynomials' values on that enclosure, as
 // constant interval polynomials. This serves the tests that need a sign at one time only (Gabriel,
-// MATH.md 3.4 and 4.5): a handful of interval operations instead of the whole polynomial. The
+// docs/MATH.md §3.4 and §4.5): a handful of interval operations instead of the whole polynomial. The
 // caller holds a CGAL::Protect_FPU_rounding guard.
 struct PointAtTime {
   const MovingPoint* p;
@@ -37,7 +37,7 @@ struct PointAtTime {
 };
 
 // q(u) - p(u) = (q.a - p.a) + u (q.b - p.b) on the enclosure of u: integer differences first, as for
-// moving points (MATH.md 1.5).
+// moving points (docs/MATH.md §1.5).
 template <class NT> Vec<NT> difference(const PointAtTime& p, const PointAtTime& q) {
   static_assert(std::is_same_v<NT, Interval>, "a point at a time enclosure has interval coordinates");
   Vec<NT> r;
@@ -67,7 +67,7 @@ template <class NT, class Pt> Poly<NT> orientation(const Pt& p0, const Pt& p1, c
 }
 
 // InS(p0,p1,p2,p3; y) = det[(p_i - y, |p_i - y|^2)], degree <= 5. For O(p0..p3) > 0 it is < 0 iff y
-// is strictly inside the circumsphere (MATH.md conventions).
+// is strictly inside the circumsphere (docs/MATH.md §0).
 template <class NT, class Pt>
 Poly<NT> in_sphere(const Pt& p0, const Pt& p1, const Pt& p2, const Pt& p3, const Pt& y) {
   const Vec<NT> q[4] = {difference<NT>(y, p0), difference<NT>(y, p1), difference<NT>(y, p2),
@@ -77,14 +77,14 @@ Poly<NT> in_sphere(const Pt& p0, const Pt& p1, const Pt& p2, const Pt& p3, const
     w[i] = dot(q[i], q[i]);
   // Expansion along the last column: det = sum_i (-1)^(i+3) w_i det(minor_i), with the minors as
   // triple products sharing two cross products, det(a, b, c) = (a x b).c = a.(b x c): this runs for
-  // every facet at every frame (MATH.md 2.3).
+  // every facet at every frame (docs/MATH.md §2.3).
   const Vec<NT> c01 = cross(q[0], q[1]), c23 = cross(q[2], q[3]);
   Poly<NT> result = w[3] * dot(c01, q[2]) - w[2] * dot(c01, q[3]);
   result = result + w[1] * dot(q[0], c23);
   return result - w[0] * dot(q[1], c23);
 }
 
-// Planar certificates (MATH.md 3.2 in dimension 2): the points move in the plane z = const, so only
+// Planar certificates (docs/MATH.md §3.2 in dimension 2): the points move in the plane z = const, so only
 // x and y enter.
 
 // O2(p0,p1,p2) = det[p1-p0; p2-p0] over (x, y): the sign of CGAL::orientation for Point_2
@@ -113,7 +113,7 @@ template <class NT, class Pt> Poly<NT> edge_radius(const Pt& p, const Pt& q, con
   return Q * dot(d, d) - Poly<NT>(NT(4) * P);
 }
 
-// R2: Q|a|^2|b|^2|a-b|^2 - 4P|a x b|^2, the degree-6 form of seed 000 (MATH.md 3.3).
+// R2: Q|a|^2|b|^2|a-b|^2 - 4P|a x b|^2, the degree-6 form of seed 000 (docs/MATH.md §3.3).
 template <class NT, class Pt>
 Poly<NT> triangle_radius(const Pt& p0, const Pt& p1, const Pt& p2, const NT& P, const NT& Q) {
   Vec<NT> a = difference<NT>(p0, p1), b = difference<NT>(p0, p2), c = difference<NT>(p1, p2);

@@ -1,4 +1,4 @@
-// Two cells meeting inside a slab (MATH.md 2.5): p(u) = q(u) for some u in the open slab (0, 1).
+// Two cells meeting inside a slab (docs/MATH.md §2.5): p(u) = q(u) for some u in the open slab (0, 1).
 // The engine reports it as an input error; the lower-bound skeleton of bench/ stops on it.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Certified sign filters on interval polynomials (MATH.md 3.8). They decide "no root" or "sign at a
+// Certified sign filters on interval polynomials (docs/MATH.md §3.8). They decide "no root" or "sign at a
 // point" without exact arithmetic whenever the enclosures allow it; otherwise they answer 0 and the
 // caller falls back to exact arithmetic. Callers must hold a CGAL::Protect_FPU_rounding guard.
 #pragma once
@@ -34,7 +34,7 @@ bool bernstein_coefficients_from_doubles(const IntervalPoly& f, double lo, doubl
 int bernstein_sign(const IntervalPoly& f, double lo, double hi = 1.0);
 
 // As bernstein_sign on [lo, 1], subdividing up to `depth` times where the enclosures are too wide:
-// +1 / -1 when every piece has that sign, 0 otherwise (MATH.md 3.8, de Casteljau subdivision).
+// +1 / -1 when every piece has that sign, 0 otherwise (docs/MATH.md §3.8, de Casteljau subdivision).
 int bernstein_sign_subdivided(const IntervalPoly& f, double lo, int depth);
 
 // An enclosure of f(x) at the double x, valid for every polynomial with coefficients in f's

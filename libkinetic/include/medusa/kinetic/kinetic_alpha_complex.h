@@ -1,5 +1,5 @@
 // The kinetic Delaunay triangulation and fixed-radius alpha complex of moving cell centres
-// (MATH.md 2-5). Run it over a whole set of trajectories; it reports every change to an Observer.
+// (docs/MATH.md §2-§5). Run it over a whole set of trajectories; it reports every change to an Observer.
 #pragma once
 
 #include "medusa/kinetic/observer.h"
@@ -15,7 +15,7 @@
 
 namespace medusa::kinetic {
 
-// rho^2 in grid units as an exact rational P/Q (MATH.md 1.4).
+// rho^2 in grid units as an exact rational P/Q (docs/MATH.md §1.4).
 struct SquaredRadius {
   mpz_class num = 1;
   mpz_class den = 1;
@@ -34,20 +34,20 @@ struct KineticStatistics {
   std::size_t batches = 0, frame_batches = 0;
   std::size_t flips23 = 0, flips32 = 0, hull_flips = 0, radius_events = 0;
   // Radius touches: R = rho at an instant without a change of shortness (a root of even
-  // multiplicity, or at a frame), where a face's Gabriel test may flip (MATH.md 3.9, corrected).
+  // multiplicity, or at a frame), where a face's Gabriel test may flip (docs/MATH.md §3.9, corrected).
   std::size_t radius_touches = 0;
   std::size_t flips22 = 0; // planar runs: finite 2-2 flips (hull flips are counted in hull_flips)
   std::size_t insertions = 0, deletions = 0, static_rebuilds = 0;
   // Insertions and deletions made as local changes (Bowyer-Watson; the star of a leaving cell filled
   // with the Delaunay triangulation of its link); the others rebuilt Del statically.
   std::size_t local_insertions = 0, local_deletions = 0;
-  std::size_t repairs_at_algebraic_times = 0; // static repairs inside a slab (MATH.md 5.4)
+  std::size_t repairs_at_algebraic_times = 0; // static repairs inside a slab (docs/MATH.md §5.4)
   // Frames repaired because a top simplex flat there was not positively oriented just after it
   // (turned inside out, or flat for the whole new slab), or was next to a degenerate hull facet.
   std::size_t frames_repaired_for_flat_simplices = 0;
   std::size_t hull_ridges_folded_at_now = 0; // failed at creation: facets folded at a vanishing certificate
   // Hull certificates touching zero (a root of even multiplicity) next to a hull facet whose cells are
-  // collinear then: the batch repairs there (Engine::resolve_hull_touches; MATH.md 3.9, corrected).
+  // collinear then: the batch repairs there (Engine::resolve_hull_touches; docs/MATH.md §3.9, corrected).
   std::size_t hull_touches_repaired = 0;
   std::size_t hull_ridges_folding =
       0; // coplanar hull ridges whose facets fold inside a slab (fold tests fired)
@@ -58,7 +58,7 @@ struct KineticStatistics {
   // Top simplices a static rebuild kept that had turned inside out through a flat instant.
   std::size_t reoriented = 0;
   std::size_t certificates_built = 0; // certificates created (Delaunay and radius)
-  // The same certificates by formula (MATH.md 3.2-3.4); the four add up to certificates_built.
+  // The same certificates by formula (docs/MATH.md §3.2-§3.4); the four add up to certificates_built.
   std::size_t built_in_sphere = 0; // in-sphere (in-circle in 2D) of a facet with two finite apices
   std::size_t built_hull = 0;      // orientation of a facet at the hull (the infinite vertex involved)
   std::array<std::size_t, 3> built_radius{}; // radius of an edge, a triangle, a tetrahedron
@@ -70,7 +70,7 @@ struct KineticStatistics {
   std::size_t interval_scheduled =
       0; // failure times isolated in doubles, on intervals or on exact coefficients
   // vanish exactly at their slab start (u = 0), proven by one exact static determinant, and settled
-  // in doubles after dividing out u (CC3D's lattice at MCS 0, MATH.md 5.5)
+  // in doubles after dividing out u (CC3D's lattice at MCS 0, docs/MATH.md §5.5)
   std::size_t start_zero_settled = 0;
   std::size_t start_zero_tests = 0;     // exact static determinants evaluated for this (zero or not)
   std::size_t exact_settled = 0;        // needed the exact polynomial (GMP, root isolation)
@@ -80,7 +80,7 @@ struct KineticStatistics {
   std::size_t invalid_at_creation = 0;              // of which were invalid just after creation
   std::size_t root_cache_hits = 0; // exact certificates whose roots came from the slab's cache
   std::size_t sign_evaluations = 0, sign_evaluations_exact = 0;
-  // Event times whose isolating intervals overlapped and stayed stuck in doubles (MATH.md 3.7): roots
+  // Event times whose isolating intervals overlapped and stayed stuck in doubles (docs/MATH.md §3.7): roots
   // given their exact polynomial rounded to intervals, and comparisons left to algebraic reals.
   std::size_t times_sharpened = 0, times_compared_algebraically = 0;
   std::size_t audits = 0, audits_compared_with_cgal = 0;

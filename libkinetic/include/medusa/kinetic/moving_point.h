@@ -1,4 +1,4 @@
-// A point moving linearly on one slab: p(u) = a + u b, u in [0, 1] (MATH.md 2.2), on the grid.
+// A point moving linearly on one slab: p(u) = a + u b, u in [0, 1] (docs/MATH.md §2.2), on the grid.
 #pragma once
 
 #include <array>

@@ -1,9 +1,9 @@
-// The event stream of the kinetic alpha complex (MATH.md 5.2, 5.6, 6.2).
+// The event stream of the kinetic alpha complex (docs/MATH.md §5.2, §5.6, §6.2).
 //
 // libmedusa is built on this stream alone, so it is complete: starting from the initial complex and
 // applying, batch by batch and rank by rank, `entered` and `left` of every step reproduces the alpha
 // complex K at every moment. Inside a batch (all events at one exact time t*) the steps are the ranks
-// r = 1..m+1 of MATH.md 6.2; after step r the complex is L_r, and after the last step it is K(t*+).
+// r = 1..m+1 of docs/MATH.md §6.2; after step r the complex is L_r, and after the last step it is K(t*+).
 #pragma once
 
 #include "medusa/kinetic/simplex.h"
@@ -22,7 +22,7 @@ struct EventTime {
   std::size_t slab = 0;  // slab k: t in [t_k, t_{k+1}]
   double u = 0.0;        // double approximation of the slab parameter u* in [0, 1]
   double time = 0.0;     // double approximation of t* = t_k + u* (t_{k+1} - t_k)
-  bool at_frame = false; // u* = 0 exactly: a frame batch (MATH.md 5.6), or the final time
+  bool at_frame = false; // u* = 0 exactly: a frame batch (docs/MATH.md §5.6), or the final time
 };
 
 enum class StepKind {
@@ -32,15 +32,15 @@ enum class StepKind {
   hull_flip, // flip through the infinite vertex (never changes K in the generic case)
   insertion, // a cell appears at a frame (mitosis)
   deletion,  // a cell disappears at a frame (death)
-  repair,    // static repair of a degenerate configuration (MATH.md 5.4)
-  settle,    // the final re-evaluation of a batch (rank m+1, MATH.md 5.2 step 4)
+  repair,    // static repair of a degenerate configuration (docs/MATH.md §5.4)
+  settle,    // the final re-evaluation of a batch (rank m+1, docs/MATH.md §5.2 step 4)
   flip22     // finite 2-2 flip of a planar run (the 2D analogue of flip23 / flip32)
 };
 
 const char* to_string(StepKind kind);
 
 // The points of a finite flip: five for a 2-3 / 3-2 flip, four for a planar 2-2 flip. `in_alpha` is
-// the rule of MATH.md 6.3: R_S <= rho (the circumsphere, or circumcircle, of the group) and the old
+// the rule of docs/MATH.md §6.3: R_S <= rho (the circumsphere, or circumcircle, of the group) and the old
 // top simplices are in L_{r-1}; then the simplex of the group (a 4-simplex, or a 3-simplex in 2D) is
 // an instant medusa cell.
 struct FlipGroup {
@@ -50,7 +50,7 @@ struct FlipGroup {
 
 // A non-simplicial Delaunay face found by a static repair (>= 5 cospherical or >= 4 concyclic
 // coplanar points) with g(P) <= rho^2: every subset of its vertices in neither L_{r-1} nor L_r is an
-// instant medusa cell at this rank (MATH.md 6.3).
+// instant medusa cell at this rank (docs/MATH.md §6.3).
 struct DegenerateGroup {
   std::vector<VertexId> vertices; // sorted
 };

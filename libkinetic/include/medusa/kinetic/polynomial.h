@@ -1,5 +1,5 @@
 // Small dense univariate polynomials in the slab parameter u, with a fixed capacity (degree <= 8,
-// the largest certificate degree of MATH.md 3.1). The same template computes a certificate exactly
+// the largest certificate degree of docs/MATH.md §3.1). The same template computes a certificate exactly
 // (NT = mpz_class) and as a certified enclosure (NT = CGAL::Interval_nt_advanced), so the formula is
 // written once (certificate_polynomials.h).
 #pragma once

@@ -1,4 +1,4 @@
-// Certified root isolation in double interval arithmetic (MATH.md 3.7, 3.8): the fast path that
+// Certified root isolation in double interval arithmetic (docs/MATH.md §3.7, §3.8): the fast path that
 // finds the next failure time of a certificate without exact arithmetic. A polynomial is given by
 // an enclosure of its coefficients; every answer holds for every polynomial inside the enclosure,
 // hence for the exact one. When doubles cannot decide, the answer says so and the caller falls back

@@ -14,7 +14,7 @@
 namespace medusa::kinetic {
 
 // Index of a trajectory (a medusa vertex). A CompuCell3D cell id maps to one trajectory, or to
-// several when the cell is missing from intermediate frames (MATH.md 2.1).
+// several when the cell is missing from intermediate frames (docs/MATH.md §2.1).
 using VertexId = std::int32_t;
 
 // A finite simplex of dimension 0..3, vertices sorted ascending.
@@ -40,7 +40,7 @@ public:
   const VertexId* begin() const { return v_.data(); }
   const VertexId* end() const { return v_.data() + size_; }
   // A plain loop: std::find is not inlined here, and this runs for every incident top simplex of
-  // every face the frontier and membership rules look at (MATH.md 4.4, 4.5).
+  // every face the frontier and membership rules look at (docs/MATH.md §4.4, §4.5).
   bool contains(VertexId x) const {
     for (std::size_t i = 0; i < size_; ++i)
       if (v_[i] == x)
@@ -79,7 +79,7 @@ public:
     return ((x[0] ^ y[0]) | (x[1] ^ y[1]) | std::uint64_t(a.size_ ^ b.size_)) == 0;
   }
   friend bool operator!=(const Simplex& a, const Simplex& b) { return !(a == b); }
-  // Order by dimension, then lexicographically: the canonical order of MATH.md 5.2 and 7.2.
+  // Order by dimension, then lexicographically: the canonical order of docs/MATH.md §5.2 and §7.2.
   // Unused slots hold -1 and sizes are equal past the first test, so the four entries decide
   // (spelled out: std::array's operator< is a library loop, and the engine sorts simplices often).
   friend bool operator<(const Simplex& a, const Simplex& b) {

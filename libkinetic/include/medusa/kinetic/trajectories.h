@@ -1,4 +1,4 @@
-// Piecewise-linear trajectories of cell centres on the fixed-point grid (MATH.md 1 and 2).
+// Piecewise-linear trajectories of cell centres on the fixed-point grid (docs/MATH.md §1 and §2).
 #pragma once
 
 #include <array>
@@ -8,12 +8,12 @@
 
 namespace medusa::kinetic {
 
-// A grid point: physical coordinate x = X / scale, X an integer (MATH.md 1.1).
+// A grid point: physical coordinate x = X / scale, X an integer (docs/MATH.md §1.1).
 using GridPoint = std::array<std::int64_t, 3>;
 
 // One trajectory: a cell present on the consecutive frames first_frame .. first_frame+size-1.
 struct Trajectory {
-  std::int64_t cell_id = 0; // CompuCell3D cell id (several trajectories may share one, MATH.md 2.1)
+  std::int64_t cell_id = 0; // CompuCell3D cell id (several trajectories may share one, docs/MATH.md §2.1)
   int type = 0;             // CompuCell3D cell type (1, 2, ...; medium is never a trajectory)
   std::size_t first_frame = 0;
   std::vector<GridPoint> positions; // one per frame the cell is present
@@ -26,7 +26,7 @@ struct Trajectory {
 // A whole run: frame times shared by all cells, and the trajectories. Vertex id = index into cells.
 struct Trajectories {
   int dimension = 3;                     // 3, or 2 for planar runs (z ignored)
-  std::int64_t scale = 1000000;          // grid scale S (MATH.md 1.1)
+  std::int64_t scale = 1000000;          // grid scale S (docs/MATH.md §1.1)
   std::vector<std::int64_t> frame_times; // strictly increasing (MCS)
   std::vector<Trajectory> cells;
   std::vector<std::string> type_names; // index = type id; may be empty

@@ -1,4 +1,4 @@
-// Exact bottleneck distance (MATH.md 7.7).
+// Exact bottleneck distance (docs/MATH.md §7.7).
 #pragma once
 
 #include "medusa/persistence/distance.h"

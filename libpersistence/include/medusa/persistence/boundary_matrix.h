@@ -1,4 +1,4 @@
-// Boundary matrices of a filtration for PHAT, built in memory, and their reduction (MATH.md 7.5).
+// Boundary matrices of a filtration for PHAT, built in memory, and their reduction (docs/MATH.md §7.5).
 #pragma once
 
 #include "medusa/persistence/filtration.h"
@@ -18,7 +18,7 @@ namespace medusa::persistence {
 // A persistence pair of filtration indices: the class created by column `birth` dies at `death`.
 using IndexPair = std::pair<std::int64_t, std::int64_t>;
 
-// One column per cell in filtration order, holding its facet indices over Z/2 (MATH.md 7.5).
+// One column per cell in filtration order, holding its facet indices over Z/2 (docs/MATH.md §7.5).
 template <class Representation = phat::bit_tree_pivot_column>
 phat::boundary_matrix<Representation> make_boundary_matrix(const Filtration& filtration) {
   phat::boundary_matrix<Representation> matrix;

@@ -1,4 +1,4 @@
-// The audit of MATH.md 7.6: in a medusa, classes of positive length and essential classes occur only
+// The audit of docs/MATH.md §7.6: in a medusa, classes of positive length and essential classes occur only
 // in degrees 0..3 (the complex and its sublevel sets are homotopy equivalent to subsets of R^4).
 #pragma once
 

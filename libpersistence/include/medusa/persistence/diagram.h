@@ -1,8 +1,8 @@
 // Persistence diagrams of a time filtration: finite pairs from PHAT plus the essential classes, each
-// point with its times and the cells that created and killed it (MATH.md 7.3, 7.5).
+// point with its times and the cells that created and killed it (docs/MATH.md §7.3, §7.5).
 #pragma once
 
-#include "medusa/complex/cell.h"
+#include "medusa/medusa/cell.h"
 #include "medusa/persistence/boundary_matrix.h"
 #include "medusa/persistence/filtration.h"
 
@@ -15,26 +15,26 @@ namespace medusa::persistence {
 // One point of a diagram. Times are filtration values: the real birth time of a cell in the forward
 // filtration (t_birth <= t_death), its real death time in the reverse one (t_birth >= t_death).
 struct PersistencePair {
-  int dim = 0;      // homology degree = dimension of the birth cell (MATH.md 7.5)
+  int dim = 0;      // homology degree = dimension of the birth cell (docs/MATH.md §7.5)
   double birth = 0; // filtration value of the birth cell
   double death = 0; // filtration value of the death cell; +inf (forward) / -inf (reverse) if essential
-  complex::VirtualTime birth_time; // virtual filtration time of the birth cell
-  complex::VirtualTime death_time; // virtual filtration time of the death cell (default if essential)
-  std::int64_t birth_index = 0;    // filtration indices
-  std::int64_t death_index = -1;   // -1 if essential
-  complex::CellId birth_cell = 0;  // the cells that formed and killed the class
-  complex::CellId death_cell = 0;  // 0 if essential
+  medusa::VirtualTime birth_time; // virtual filtration time of the birth cell
+  medusa::VirtualTime death_time; // virtual filtration time of the death cell (default if essential)
+  std::int64_t birth_index = 0;   // filtration indices
+  std::int64_t death_index = -1;  // -1 if essential
+  medusa::CellId birth_cell = 0;  // the cells that formed and killed the class
+  medusa::CellId death_cell = 0;  // 0 if essential
   // Positions of those cells in the cell vector the diagram was built from (their vertices are
   // looked up there, see birth_vertices(): a diagram holds one point per cell of a large medusa, so
   // it does not copy vertex tuples). death_position is unused if essential.
   std::size_t birth_position = 0;
   std::size_t death_position = 0;
   bool essential = false;   // never killed: a class of the whole (sub-)medusa
-  bool zero_length = false; // birth and death in the same batch (MATH.md 7.5), on the diagonal
+  bool zero_length = false; // birth and death in the same batch (docs/MATH.md §7.5), on the diagonal
 };
 
 // All points of one filtration, sorted by (dim, birth_index). Degrees above 3 only hold zero-length
-// pairs for a valid medusa (MATH.md 7.6) and are kept as they come.
+// pairs for a valid medusa (docs/MATH.md §7.6) and are kept as they come.
 struct Diagram {
   Direction direction = Direction::forward;
   int cell_type = all_types;
@@ -43,12 +43,12 @@ struct Diagram {
 
 // Builds the diagram from the finite index pairs of `reduce`: adds every positive column that appears
 // in no pair as an essential class, and flags zero-length pairs by batch index (never by doubles).
-Diagram make_diagram(const std::vector<complex::Cell>& cells, const Filtration& filtration,
+Diagram make_diagram(const std::vector<medusa::Cell>& cells, const Filtration& filtration,
                      const std::vector<IndexPair>& pairs);
 
 // Reduces the filtration with PHAT and builds its diagram.
 template <class Representation = phat::bit_tree_pivot_column, class Algorithm = phat::twist_reduction>
-Diagram compute_diagram(const std::vector<complex::Cell>& cells, const Filtration& filtration) {
+Diagram compute_diagram(const std::vector<medusa::Cell>& cells, const Filtration& filtration) {
   return make_diagram(cells, filtration, reduce<Representation, Algorithm>(filtration));
 }
 
@@ -56,9 +56,9 @@ Diagram compute_diagram(const std::vector<complex::Cell>& cells, const Filtratio
 // built from; death_vertices is empty for an essential class. InternalError when the position is
 // outside `cells` (a diagram paired with another cell vector).
 const std::vector<kinetic::VertexId>& birth_vertices(const PersistencePair& p,
-                                                     const std::vector<complex::Cell>& cells);
+                                                     const std::vector<medusa::Cell>& cells);
 const std::vector<kinetic::VertexId>& death_vertices(const PersistencePair& p,
-                                                     const std::vector<complex::Cell>& cells);
+                                                     const std::vector<medusa::Cell>& cells);
 
 // The points of degree k; zero-length pairs only when asked for.
 std::vector<PersistencePair> pairs_in_dimension(const Diagram& diagram, int k, bool keep_zero_length = false);

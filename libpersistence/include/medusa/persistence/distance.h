@@ -1,4 +1,4 @@
-// The result of a distance between two diagrams of one degree (MATH.md 7.7): the finite part and the
+// The result of a distance between two diagrams of one degree (docs/MATH.md §7.7): the finite part and the
 // essential part reported separately, with the essential counts.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Pairwise distances between the diagrams of many runs (MATH.md 7.7), computed on worker threads.
+// Pairwise distances between the diagrams of many runs (docs/MATH.md §7.7), computed on worker threads.
 #pragma once
 
 #include "medusa/persistence/points.h"

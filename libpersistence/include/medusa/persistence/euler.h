@@ -1,4 +1,4 @@
-// The Euler characteristic check of MATH.md 6.4 / 7.5: sum_k (-1)^k #essential_k = chi.
+// The Euler characteristic check of docs/MATH.md §6.4 / 7.5: sum_k (-1)^k #essential_k = chi.
 #pragma once
 
 #include "medusa/persistence/diagram.h"

@@ -1,5 +1,5 @@
 // All diagrams of one run in one call: forward and reverse, for the whole medusa and for the
-// sub-medusa of each requested cell type (MATH.md 7.2-7.4), each audited (Euler characteristic,
+// sub-medusa of each requested cell type (docs/MATH.md §7.2-§7.4), each audited (Euler characteristic,
 // homology degrees).
 #pragma once
 
@@ -24,7 +24,7 @@ struct DiagramPhaseSeconds {
 // and boundary matrices are in memory at once (peak memory of `medusa run`, issue #9). When several
 // filtrations fail, the error of the first one in the order above is thrown. `phases`, when given,
 // receives the time spent per phase.
-std::vector<Diagram> compute_medusa_diagrams(const std::vector<complex::Cell>& cells,
+std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& cells,
                                              const std::vector<int>& vertex_type,
                                              const std::vector<int>& types, unsigned threads = 1,
                                              DiagramPhaseSeconds* phases = nullptr);

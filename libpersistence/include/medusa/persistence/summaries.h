@@ -1,5 +1,5 @@
-// Summaries of a diagram (MATH.md 7.8): Betti curves, total persistence, persistence images. Inputs
-// are point diagrams (b <= d; reverse diagrams already mapped to -t by to_points, MATH.md 7.3).
+// Summaries of a diagram (docs/MATH.md §7.8): Betti curves, total persistence, persistence images. Inputs
+// are point diagrams (b <= d; reverse diagrams already mapped to -t by to_points, docs/MATH.md §7.3).
 #pragma once
 
 #include "medusa/persistence/points.h"
@@ -26,7 +26,7 @@ struct PersistenceImageParams {
   std::size_t birth_pixels = 20, persistence_pixels = 20; // resolution
   double sigma = 0.1;                                     // Gaussian standard deviation
   double pi_max = 1;                                      // weight w(pi) = min(pi / pi_max, 1)
-  bool normalised_time = false; // whether the points went through normalise_time (MATH.md 7.7)
+  bool normalised_time = false; // whether the points went through normalise_time (docs/MATH.md §7.7)
 };
 
 struct PersistenceImage {

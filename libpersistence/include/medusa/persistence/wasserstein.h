@@ -1,4 +1,4 @@
-// Wasserstein distances W_p, p >= 1, ground metric L-infinity (MATH.md 7.7).
+// Wasserstein distances W_p, p >= 1, ground metric L-infinity (docs/MATH.md §7.7).
 #pragma once
 
 #include "medusa/persistence/distance.h"

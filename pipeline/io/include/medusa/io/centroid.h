@@ -1,4 +1,4 @@
-// VTK centroids X / n on the grid (MATH.md 1.3): exact when n divides X, otherwise snapped to the
+// VTK centroids X / n on the grid (docs/MATH.md §1.3): exact when n divides X, otherwise snapped to the
 // nearest grid point (policy R) only on explicit opt-in.
 #pragma once
 
@@ -9,7 +9,7 @@
 
 namespace medusa::io {
 
-// What policy R did to a run (written into output headers by the caller, MATH.md 1.1).
+// What policy R did to a run (written into output headers by the caller, docs/MATH.md §1.1).
 struct SnapReport {
   bool snapped = false;   // policy R was allowed (the caller opted in)
   std::int64_t moved = 0; // positions (cell, frame) with at least one coordinate moved

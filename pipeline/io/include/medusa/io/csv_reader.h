@@ -1,5 +1,5 @@
 // Reader of CompuCell3D cell-centre CSV files (plain or gzip): one row per cell per saved MCS
-// (MATH.md 1.2). Real header: mcs,cell_id,cluster_id,type_id,type_name,xCOM,yCOM,zCOM,volume.
+// (docs/MATH.md §1.2). Real header: mcs,cell_id,cluster_id,type_id,type_name,xCOM,yCOM,zCOM,volume.
 #pragma once
 
 #include "medusa/io/cell_sample.h"
@@ -24,7 +24,7 @@ struct CsvColumns {
 
 struct CsvOptions {
   CsvColumns columns;
-  std::int64_t scale = 1000000; // grid scale S = 10^m (MATH.md 1.1)
+  std::int64_t scale = 1000000; // grid scale S = 10^m (docs/MATH.md §1.1)
 };
 
 struct CsvContents {

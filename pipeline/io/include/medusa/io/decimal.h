@@ -1,4 +1,4 @@
-// Exact decimal -> grid integer parsing (MATH.md 1.1, 1.2): never through double.
+// Exact decimal -> grid integer parsing (docs/MATH.md §1.1, §1.2): never through double.
 #pragma once
 
 #include <cstdint>
@@ -11,7 +11,7 @@ namespace medusa::io {
 // (1, 10, ..., 10^18).
 int scale_decimals(std::int64_t scale);
 
-// Parses a decimal string "[+-]digits[.digits]" into X = x * S exactly (MATH.md 1.2):
+// Parses a decimal string "[+-]digits[.digits]" into X = x * S exactly (docs/MATH.md §1.2):
 // X = sign * (int_part * 10^m + frac_part padded right to m digits). A value with more than m
 // significant decimals is an InputError (never rounded); trailing zeros beyond m are exact and
 // accepted. NaN, infinities, exponent notation and anything non-numeric are InputErrors. Surrounding

@@ -1,4 +1,4 @@
-// Reading a whole CompuCell3D run (output folder or CSV file) into trajectories (MATH.md 1, 2).
+// Reading a whole CompuCell3D run (output folder or CSV file) into trajectories (docs/MATH.md §1, §2).
 #pragma once
 
 #include "medusa/io/cc3d_xml.h"
@@ -16,12 +16,12 @@ namespace medusa::io {
 
 enum class RunSource {
   automatic, // VTK snapshots if the folder has any, else cells.csv(.gz)
-  vtk,       // LatticeData/Step_*.vtk(.gz): exact voxel centroids (MATH.md 1.3)
-  csv        // cells.csv(.gz): CC3D's centres rounded to 6 decimals (MATH.md 1.2)
+  vtk,       // LatticeData/Step_*.vtk(.gz): exact voxel centroids (docs/MATH.md §1.3)
+  csv        // cells.csv(.gz): CC3D's centres rounded to 6 decimals (docs/MATH.md §1.2)
 };
 
 struct RunOptions {
-  std::int64_t scale = 1000000; // grid scale S = 10^m (MATH.md 1.1)
+  std::int64_t scale = 1000000; // grid scale S = 10^m (docs/MATH.md §1.1)
   RunSource source = RunSource::automatic;
   bool snap = false;                   // policy R for VTK centroids off the grid (CLI: --snap)
   bool allow_periodic_as_open = false; // read a periodic run as if its boundaries were open

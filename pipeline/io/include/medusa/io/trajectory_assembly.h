@@ -1,4 +1,4 @@
-// Grouping per-frame cell samples into trajectories (MATH.md 2.1).
+// Grouping per-frame cell samples into trajectories (docs/MATH.md §2.1).
 #pragma once
 
 #include "medusa/io/cell_sample.h"
@@ -21,7 +21,7 @@ struct AssembledRun {
 // Frame times are `frame_times` if given (they must hold every sample's MCS), else the distinct MCS of
 // the samples. The order of `samples` does not matter. A cell missing from intermediate frames is split
 // into several trajectories with a warning; cells present on a single frame are legal and warned
-// about (MATH.md 2.1). Throws InputError naming file, line and cell for a duplicate (MCS, cell) or a
+// about (docs/MATH.md §2.1). Throws InputError naming file, line and cell for a duplicate (MCS, cell) or a
 // cell whose type changes. `sources[s]` names the file of samples with source == s.
 AssembledRun assemble_trajectories(std::vector<CellSample> samples, const std::vector<std::string>& sources,
                                    std::int64_t scale, int dimension,

@@ -1,5 +1,5 @@
 // Reader of CompuCell3D lattice snapshots: legacy VTK STRUCTURED_POINTS with FIELD point data
-// CellType / CellId (/ ClusterId), ASCII or BINARY (big-endian), plain or gzip (MATH.md 1.3).
+// CellType / CellId (/ ClusterId), ASCII or BINARY (big-endian), plain or gzip (docs/MATH.md §1.3).
 #pragma once
 
 #include <array>
@@ -16,7 +16,7 @@ struct VtkCell {
   std::int64_t voxels = 0; // n = volume
   // X = sum over the voxels of S * (origin + spacing * (i, j, k)): the exact centroid is X / n in grid
   // units. Convention "voxel corner index": voxel (i,j,k) sits at origin + spacing * (i,j,k), the
-  // coordinates CompuCell3D's CenterOfMass plugin uses (MATH.md 1.3).
+  // coordinates CompuCell3D's CenterOfMass plugin uses (docs/MATH.md §1.3).
   std::array<std::int64_t, 3> scaled_sum{};
 };
 

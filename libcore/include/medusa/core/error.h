@@ -20,7 +20,7 @@ public:
 };
 
 // The input is valid but its geometry is outside what the method handles (coplanar 3D data, fewer
-// than four cells, colliding trajectories; MATH.md 2.5 and 5.7).
+// than four cells, colliding trajectories; docs/MATH.md §2.5 and §5.7).
 class GeometryError : public Error {
 public:
   using Error::Error;

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace medusa::complex {
+namespace medusa {
 
 // What produced a medusa: the parameters and provenance a reader needs to interpret it. The grid
 // scale and the dimension come with the input (kinetic::Trajectories).
@@ -16,4 +16,4 @@ struct RunInfo {
   std::string software_version;
 };
 
-} // namespace medusa::complex
+} // namespace medusa

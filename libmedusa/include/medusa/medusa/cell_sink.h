@@ -1,15 +1,15 @@
-// Where the medusa builder sends finished cells (MATH.md 6.5: a cell is output as soon as it
+// Where the medusa builder sends finished cells (docs/MATH.md §6.5: a cell is output as soon as it
 // finishes, so memory holds only the active complex).
 #pragma once
 
-#include "medusa/complex/cell.h"
-#include "medusa/complex/run_info.h"
-#include "medusa/complex/timeline.h"
 #include "medusa/kinetic/trajectories.h"
+#include "medusa/medusa/cell.h"
+#include "medusa/medusa/run_info.h"
+#include "medusa/medusa/timeline.h"
 
 #include <vector>
 
-namespace medusa::complex {
+namespace medusa {
 
 // Receives, in this order: run (optional, at most once, before finish), then interleaved batch,
 // frame and cell records, then finish once. Cells arrive in the order they finish, not by id.
@@ -20,7 +20,7 @@ public:
   virtual void batch(const BatchRecord& /*batch*/) {}
   virtual void frame(const FrameRecord& /*frame*/) {}
   virtual void cell(const Cell& cell) = 0;
-  // The run ended; every remaining cell has been sent with death `end` (MATH.md 6.2).
+  // The run ended; every remaining cell has been sent with death `end` (docs/MATH.md §6.2).
   virtual void finish(const VirtualTime& /*end*/) {}
 };
 
@@ -53,4 +53,4 @@ private:
   std::vector<CellSink*> sinks_;
 };
 
-} // namespace medusa::complex
+} // namespace medusa

@@ -2,15 +2,15 @@
 // from the builder.
 #pragma once
 
-#include "medusa/complex/cell.h"
-#include "medusa/complex/cell_sink.h"
-#include "medusa/complex/run_info.h"
-#include "medusa/complex/timeline.h"
 #include "medusa/kinetic/trajectories.h"
+#include "medusa/medusa/cell.h"
+#include "medusa/medusa/cell_sink.h"
+#include "medusa/medusa/run_info.h"
+#include "medusa/medusa/timeline.h"
 
 #include <vector>
 
-namespace medusa::complex {
+namespace medusa {
 
 struct Medusa {
   RunInfo run;
@@ -21,11 +21,11 @@ struct Medusa {
   std::vector<Cell> cells;          // cells[i].id == i
 
   const Cell& cell(CellId id) const { return cells.at(static_cast<std::size_t>(id)); }
-  // The boundary of a cell over Z/2: its facet cells, whose lifetimes contain its own (MATH.md 6.4).
+  // The boundary of a cell over Z/2: its facet cells, whose lifetimes contain its own (docs/MATH.md §6.4).
   const std::vector<CellId>& boundary(CellId id) const { return cell(id).facets; }
   // The ids of the cells of dimension k, increasing.
   std::vector<CellId> cells_of_dimension(int k) const;
-  // The type of every vertex of `c` is `type` (MATH.md 7.4); needs the input.
+  // The type of every vertex of `c` is `type` (docs/MATH.md §7.4); needs the input.
   bool has_type(const Cell& c, int type) const;
 };
 
@@ -45,4 +45,4 @@ private:
   Medusa medusa_;
 };
 
-} // namespace medusa::complex
+} // namespace medusa

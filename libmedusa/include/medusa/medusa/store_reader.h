@@ -1,11 +1,11 @@
 // Reads an HDF5 store back into memory and validates it (docs/FORMAT.md).
 #pragma once
 
-#include "medusa/complex/medusa.h"
+#include "medusa/medusa/medusa.h"
 
 #include <string>
 
-namespace medusa::complex {
+namespace medusa {
 
 // Loads the store at `path`. Throws StoreError naming the store when it cannot be opened, is not a
 // medusa store, has another format version, is incomplete (no `complete` attribute: a killed writer),
@@ -21,10 +21,10 @@ struct StoreReadOptions {
 Medusa read_store(const std::string& path, const StoreReadOptions& options = {});
 
 // Checks the structure of a medusa: ids 0..N-1; sorted vertex tuples of known vertices; one facet per
-// vertex, facet i the tuple without vertex i, whose lifetime contains the cell's (MATH.md 6.4); d d = 0
+// vertex, facet i the tuple without vertex i, whose lifetime contains the cell's (docs/MATH.md §6.4); d d = 0
 // over Z/2; instant kinds have birth == death and regular cells birth < death; cells of one simplex
 // have disjoint lifetimes; batches increase; nothing dies after the end. Throws StoreError("store
 // <name>: ...") at the first violation.
 void validate_medusa(const Medusa& medusa, const std::string& name);
 
-} // namespace medusa::complex
+} // namespace medusa

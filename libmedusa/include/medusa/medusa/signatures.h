@@ -1,16 +1,16 @@
-// Signatures of K_t over time (MATH.md 6.6, seed 004): simplex counts, Euler characteristic and Betti
+// Signatures of K_t over time (docs/MATH.md §6.6, seed 004): simplex counts, Euler characteristic and Betti
 // numbers, for the whole complex and per cell type.
 #pragma once
 
-#include "medusa/complex/complex_index.h"
-#include "medusa/complex/medusa.h"
+#include "medusa/medusa/complex_index.h"
+#include "medusa/medusa/medusa.h"
 
 #include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
 
-namespace medusa::complex {
+namespace medusa {
 
 struct Signature {
   std::array<std::size_t, 4> f{};     // simplices of dimension 0..3
@@ -35,4 +35,4 @@ struct SignatureSample {
 // all its values; every frame maps to one sample.
 std::vector<SignatureSample> signatures_over_time(const ComplexIndex& index);
 
-} // namespace medusa::complex
+} // namespace medusa

@@ -27,7 +27,7 @@
 #include <thread>
 #include <vector>
 
-namespace medusa::complex {
+namespace medusa {
 
 class AsyncObserver : public kinetic::Observer {
 public:
@@ -71,4 +71,4 @@ private:
   std::thread worker_;
 };
 
-} // namespace medusa::complex
+} // namespace medusa

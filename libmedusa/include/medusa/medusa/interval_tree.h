@@ -1,11 +1,11 @@
-// A static centred interval tree for stabbing queries (MATH.md 6.6): O(n) space, O(n log n) build,
+// A static centred interval tree for stabbing queries (docs/MATH.md §6.6): O(n) space, O(n log n) build,
 // O(log n + k) query.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-namespace medusa::complex {
+namespace medusa {
 
 class IntervalTree {
 public:
@@ -38,4 +38,4 @@ private:
   std::size_t size_ = 0;
 };
 
-} // namespace medusa::complex
+} // namespace medusa

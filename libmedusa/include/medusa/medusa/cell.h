@@ -1,5 +1,5 @@
 // A medusa cell: one maximal lifetime interval of an alpha simplex, or an instant cell
-// (MATH.md 6.1-6.3).
+// (docs/MATH.md §6.1-§6.3).
 #pragma once
 
 #include "medusa/kinetic/simplex.h"
@@ -8,12 +8,12 @@
 #include <tuple>
 #include <vector>
 
-namespace medusa::complex {
+namespace medusa {
 
 using kinetic::VertexId;
 using CellId = std::uint64_t;
 
-// Virtual time (MATH.md 6.2): the batch index orders exact event times (equal times are one batch),
+// Virtual time (docs/MATH.md §6.2): the batch index orders exact event times (equal times are one batch),
 // the rank orders the steps inside a batch. `time` is a double approximation, for output only.
 struct VirtualTime {
   std::uint64_t batch = 0;
@@ -39,7 +39,7 @@ enum class CellKind : std::uint8_t {
 
 struct Cell {
   CellId id = 0;
-  std::vector<VertexId> vertices; // sorted; dimension = vertices.size() - 1 (MATH.md 6.1)
+  std::vector<VertexId> vertices; // sorted; dimension = vertices.size() - 1 (docs/MATH.md §6.1)
   VirtualTime birth;
   VirtualTime death; // closed lifetime [birth, death]; birth == death for instant cells
   CellKind kind = CellKind::regular;
@@ -48,4 +48,4 @@ struct Cell {
   int dim() const { return static_cast<int>(vertices.size()) - 1; }
 };
 
-} // namespace medusa::complex
+} // namespace medusa

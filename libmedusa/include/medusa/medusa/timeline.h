@@ -1,10 +1,10 @@
-// The batches and frames of a run as the medusa records them (MATH.md 5.2, 5.6, 6.2).
+// The batches and frames of a run as the medusa records them (docs/MATH.md §5.2, §5.6, §6.2).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 
-namespace medusa::complex {
+namespace medusa {
 
 // One batch of the event stream: every event at one exact time. Batch 0 is t_0.
 struct BatchRecord {
@@ -12,7 +12,7 @@ struct BatchRecord {
   std::uint64_t slab = 0;  // slab k: t in [t_k, t_{k+1}]
   double u = 0.0;          // double approximation of the slab parameter
   double time = 0.0;       // double approximation of the exact time
-  bool at_frame = false;   // u = 0 exactly: a frame batch (MATH.md 5.6)
+  bool at_frame = false;   // u = 0 exactly: a frame batch (docs/MATH.md §5.6)
   std::uint32_t ranks = 0; // number of steps (highest rank); 0 for batch 0
 };
 
@@ -23,4 +23,4 @@ struct FrameRecord {
   double time = 0.0;
 };
 
-} // namespace medusa::complex
+} // namespace medusa

@@ -1,20 +1,20 @@
-// Builds the alpha medusa from the kinetic event stream (MATH.md 6.2-6.5).
+// Builds the alpha medusa from the kinetic event stream (docs/MATH.md §6.2-§6.5).
 #pragma once
 
-#include "medusa/complex/cell.h"
-#include "medusa/complex/cell_sink.h"
 #include "medusa/kinetic/observer.h"
+#include "medusa/medusa/cell.h"
+#include "medusa/medusa/cell_sink.h"
 
 #include <cstdint>
 #include <map>
 #include <unordered_map>
 #include <vector>
 
-namespace medusa::complex {
+namespace medusa {
 
 // Turns the event stream into medusa cells and sends each cell to the sink as soon as it finishes.
 // Memory holds only the active complex (one entry per simplex of the current K) and the instant
-// cells of the current step (MATH.md 6.5). An inconsistent stream (a facet that is not present, a
+// cells of the current step (docs/MATH.md §6.5). An inconsistent stream (a facet that is not present, a
 // simplex entering twice, a face leaving before its coface) throws InternalError: the stream comes
 // from libkinetic, so this is a bug there.
 class MedusaBuilder : public kinetic::Observer {
@@ -56,4 +56,4 @@ private:
   std::uint64_t last_batch_ = 0;
 };
 
-} // namespace medusa::complex
+} // namespace medusa

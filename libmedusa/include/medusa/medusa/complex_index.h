@@ -1,17 +1,17 @@
-// K_t from a medusa: stabbing queries over the cell lifetimes (MATH.md 6.6).
+// K_t from a medusa: stabbing queries over the cell lifetimes (docs/MATH.md §6.6).
 #pragma once
 
-#include "medusa/complex/interval_tree.h"
-#include "medusa/complex/medusa.h"
+#include "medusa/medusa/interval_tree.h"
+#include "medusa/medusa/medusa.h"
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
-namespace medusa::complex {
+namespace medusa {
 
 // Answers "which cells form K at this time" for a whole medusa or for the sub-medusa of one cell type
-// (MATH.md 7.4). Conventions of MATH.md 6.6: at batch b, K(b+) = cells with birth <= (b, +inf) <
+// (docs/MATH.md §7.4). Conventions of docs/MATH.md §6.6: at batch b, K(b+) = cells with birth <= (b, +inf) <
 // death, i.e. birth batch <= b < death batch; K(b-) = cells with birth < (b, 0) <= death, i.e. birth
 // batch < b <= death batch. Instant cells belong to neither. The medusa must outlive the index.
 class ComplexIndex {
@@ -21,7 +21,7 @@ public:
   // Cell ids, increasing.
   std::vector<CellId> after(std::uint64_t batch) const;  // K(b+)
   std::vector<CellId> before(std::uint64_t batch) const; // K(b-)
-  // The state reported at frame k (MATH.md conventions): K(t_k+) for k before the last frame, and
+  // The state reported at frame k (docs/MATH.md §0): K(t_k+) for k before the last frame, and
   // K(t_end-) at the last frame. Needs the input's frame count; throws InputError when out of range.
   std::vector<CellId> at_frame(std::size_t k) const;
   // The batch after which frame k is reached: its frame batch, or the last batch before it.
@@ -40,4 +40,4 @@ private:
   IntervalTree before_;
 };
 
-} // namespace medusa::complex
+} // namespace medusa

@@ -1,13 +1,13 @@
-// Streams a medusa into an HDF5 store (docs/FORMAT.md) while the builder runs (MATH.md 6.5).
+// Streams a medusa into an HDF5 store (docs/FORMAT.md) while the builder runs (docs/MATH.md §6.5).
 #pragma once
 
-#include "medusa/complex/cell_sink.h"
-#include "medusa/complex/medusa.h"
+#include "medusa/medusa/cell_sink.h"
+#include "medusa/medusa/medusa.h"
 
 #include <memory>
 #include <string>
 
-namespace medusa::complex {
+namespace medusa {
 
 // The version written into every store; read_store accepts exactly this version.
 inline constexpr std::int64_t store_format_version = 1;
@@ -47,4 +47,4 @@ void write_store(const std::string& path, const Medusa& medusa);
 // program calls this first, before any other use of HDF5 (later it has no effect).
 void skip_hdf5_cleanup_at_exit();
 
-} // namespace medusa::complex
+} // namespace medusa
