@@ -46,7 +46,7 @@ struct RunArguments {
   std::string source;
   std::string timings;
   unsigned threads = 0; // 0: one per hardware thread
-  bool audit = false, snap = false, periodic_as_open = false, quiet = false, progress = false;
+  bool audit = false, snap = false, periodic_as_open = false, quiet = false, progress = false, force = false;
 };
 
 // Forwards the event stream to the builder; reports progress and polls for interrupts. It also
@@ -111,15 +111,19 @@ private:
   std::vector<std::int64_t> peak_rss_at_frame_;
 };
 
-// `<input-name>` of a folder or a cells.csv[.gz] file, for the default store name.
+// `<input-name>` of a folder or a name.csv[.gz] file, for the default store name. CC3D writes
+// cells.csv.gz into the run's folder, so that file is named after its folder (dir/cells.csv.gz ->
+// dir), as the folder itself would be.
 std::string input_stem(const std::string& input) {
-  fs::path p = fs::path(input).lexically_normal();
+  fs::path p = fs::absolute(fs::path(input)).lexically_normal();
   if (p.filename().empty())
     p = p.parent_path();
   std::string name = p.filename().string();
   for (const std::string suffix : {".gz", ".csv"})
     if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
       name.erase(name.size() - suffix.size());
+  if (name == "cells" && !p.parent_path().filename().empty())
+    name = p.parent_path().filename().string();
   return name.empty() || name == "." ? "run" : name;
 }
 
@@ -285,6 +289,10 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   if (!fs::exists(input, ec))
     throw InputError("input " + input + " does not exist");
   const unsigned threads = worker_threads(args.threads);
+  // A store holds a run's whole analysis: replacing one is asked for, never a side effect.
+  const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
+  if (!args.force && fs::exists(output, ec))
+    throw CLI::ParseError("store " + output + " exists; pass --force to replace it", 2);
 
   ProgressMeter meter(std::cerr,
                       ProgressMeter::choose(args.progress, args.quiet, ::isatty(STDERR_FILENO) != 0));
@@ -308,7 +316,6 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   kinetic_options.rho2 = kinetic::squared_radius_from_decimal(radius, data.trajectories.scale);
   kinetic_options.audit = args.audit;
 
-  const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
   medusa::RunInfo info;
   info.radius = std::stod(radius);
   info.radius_text = radius;
@@ -372,7 +379,11 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
       "run", "Compute the alpha medusa of a CompuCell3D run, store it, and write its persistence diagrams");
   run->add_option("input", args->input,
                   "CC3D output folder or cells.csv[.gz] (default: the bundled examples/sorting_3d)");
-  run->add_option("-o,--output", args->output, "HDF5 store to write (default: <input-name>.h5 here)");
+  run->add_option("-o,--output", args->output,
+                  "HDF5 store to write (default: <input-name>.h5 here; a cells.csv[.gz] is named after its "
+                  "folder)");
+  run->add_flag("--force", args->force,
+                "replace the store if it exists (otherwise an existing store is an error)");
   run->add_option("--radius", args->radius,
                   "alpha radius rho in lattice units (decimal), or 'auto' = "
                   "equivalent-sphere radius of the median cell volume")
