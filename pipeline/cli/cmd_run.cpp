@@ -166,13 +166,12 @@ struct StoreFacts {
 // Diagrams from the stored cells, so that what later commands see is what the summary describes.
 StoreFacts write_diagrams_and_summary(const std::string& output, const std::string& stem,
                                       const kinetic::KineticStatistics& stats, const std::string& radius,
-                                      unsigned threads, ProgressMeter& meter, StageTimings& timings) {
+                                      unsigned threads, bool quiet, ProgressMeter& meter,
+                                      StageTimings& timings) {
   meter.stage("medusa store: reading back " + output);
   StageClock clock;
-  // The diagrams need only the cells: the batch records (one per event time) stay on disk.
-  medusa::StoreReadOptions cells_only;
-  cells_only.events = false;
-  const medusa::Medusa medusa = medusa::read_store(output, cells_only);
+  // The summary's counts at the first frame need the batch records (which batch reaches it).
+  const medusa::Medusa medusa = medusa::read_store(output);
   timings.add("medusa_store", clock);
   check_interrupted();
 
@@ -223,7 +222,10 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   });
   check_interrupted();
 
-  write_run_summary(std::cout, medusa, stats, diagrams, radius);
+  const std::vector<std::string> warnings = write_run_summary(std::cout, medusa, stats, diagrams, radius);
+  if (!quiet)
+    for (const std::string& w : warnings)
+      std::cerr << "medusa: warning: " << w << "\n";
   std::cout << "wrote " << output << ", " << stem << ".diagrams.csv, " << stem << ".barcode.svg\n";
   timings.add("exports", clock);
   return {medusa.cells.size(), diagrams.size()};
@@ -360,7 +362,8 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   const std::vector<std::string> outputs = {output, stem + ".diagrams.csv", stem + ".barcode.svg"};
   try {
     check_interrupted();
-    const StoreFacts facts = write_diagrams_and_summary(output, stem, stats, radius, threads, meter, timings);
+    const StoreFacts facts =
+        write_diagrams_and_summary(output, stem, stats, radius, threads, args.quiet, meter, timings);
     if (!args.timings.empty())
       write_timings(args.timings, resolved, data, radius, output, timings, stats, peak_rss_at_frame, facts,
                     threads);
