@@ -72,8 +72,8 @@ def check_compare(medusa, work, stores):
     prefix = os.path.join(work, "cmp_t1")
     # Type 1 (Condensing), H0, forward: the runs have different numbers of type-1 clusters at the end,
     # so with essential classes counted some distances are inf (docs/MATH.md §7.7) and equal counts are finite.
-    result = run([medusa, "compare", *stores, "--type", "1", "--dim", "0", "--filtration", "forward", "-o", prefix],
-                 work)
+    result = run([medusa, "compare", *stores, "--type", "1", "--dim", "0", "--filtration", "forward", "--essential",
+                  "-o", prefix], work)
     names, values = read_matrix(prefix + ".distances.csv")
     check_matrix(names, values, stores)
     counts = essential_counts(result.stdout)

@@ -82,7 +82,7 @@ medusa_golden_test(at_vtk_type1 ARGS at small.h5 --time 50.5 --type 1 -o at_type
 
 set(stores small.h5 nosorting_3d_3frames.h5 sorting_3d_seed2_3frames.h5)
 set(compared REQUIRES golden_small_store golden_compare_stores)
-medusa_golden_test(compare_h0 ARGS compare ${stores} -o compare_h0 STDOUT compare_h0.txt
+medusa_golden_test(compare_h0 ARGS compare ${stores} --type all --dim 0 --essential -o compare_h0 STDOUT compare_h0.txt
                    FILES compare_h0.distances.csv=compare_h0.distances.csv
                          compare_h0.heatmap.svg=compare_h0.heatmap.svg
                          compare_h0.dendrogram.svg=compare_h0.dendrogram.svg ${compared})
