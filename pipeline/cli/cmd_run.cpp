@@ -32,7 +32,9 @@
 #include <memory>
 #include <optional>
 #include <thread>
+#include <tuple>
 #include <unistd.h>
+#include <utility>
 
 namespace medusa::cli {
 namespace {
@@ -150,11 +152,16 @@ io::RunSource choose_source(const RunArguments& args) {
   return io::RunSource::automatic;
 }
 
-std::string radius_from_volumes(const io::RunData& data) {
+// --radius auto (docs/MATH.md §7.9): the decimal radius, and how it was chosen for the summary.
+std::pair<std::string, std::string> radius_from_volumes(const io::RunData& data) {
   const double volume = io::median_cell_volume(data.volumes);
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.6f", io::equivalent_radius(volume, data.trajectories.dimension));
-  return buffer;
+  char note[160];
+  std::snprintf(note, sizeof note, "auto: the radius of a %s of the median cell volume, %g %s",
+                data.trajectories.dimension == 2 ? "disc" : "ball", volume,
+                data.trajectories.dimension == 2 ? "pixels" : "voxels");
+  return {buffer, note};
 }
 
 // What the summary and --timings report about the stages after the kinetic one.
@@ -166,8 +173,8 @@ struct StoreFacts {
 // Diagrams from the stored cells, so that what later commands see is what the summary describes.
 StoreFacts write_diagrams_and_summary(const std::string& output, const std::string& stem,
                                       const kinetic::KineticStatistics& stats, const std::string& radius,
-                                      unsigned threads, bool quiet, ProgressMeter& meter,
-                                      StageTimings& timings) {
+                                      const std::string& radius_note, unsigned threads, bool quiet,
+                                      ProgressMeter& meter, StageTimings& timings) {
   meter.stage("medusa store: reading back " + output);
   StageClock clock;
   // The summary's counts at the first frame need the batch records (which batch reaches it).
@@ -222,7 +229,8 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   });
   check_interrupted();
 
-  const std::vector<std::string> warnings = write_run_summary(std::cout, medusa, stats, diagrams, radius);
+  const std::vector<std::string> warnings =
+      write_run_summary(std::cout, medusa, stats, diagrams, radius, radius_note);
   if (!quiet)
     for (const std::string& w : warnings)
       std::cerr << "medusa: warning: " << w << "\n";
@@ -313,7 +321,9 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     for (const std::string& w : data.warnings)
       std::cerr << "medusa: warning: " << w << "\n";
 
-  const std::string radius = args.radius == "auto" ? radius_from_volumes(data) : args.radius;
+  std::string radius = args.radius, radius_note;
+  if (args.radius == "auto")
+    std::tie(radius, radius_note) = radius_from_volumes(data);
   kinetic::KineticOptions kinetic_options;
   kinetic_options.rho2 = kinetic::squared_radius_from_decimal(radius, data.trajectories.scale);
   kinetic_options.audit = args.audit;
@@ -362,8 +372,8 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   const std::vector<std::string> outputs = {output, stem + ".diagrams.csv", stem + ".barcode.svg"};
   try {
     check_interrupted();
-    const StoreFacts facts =
-        write_diagrams_and_summary(output, stem, stats, radius, threads, args.quiet, meter, timings);
+    const StoreFacts facts = write_diagrams_and_summary(output, stem, stats, radius, radius_note, threads,
+                                                        args.quiet, meter, timings);
     if (!args.timings.empty())
       write_timings(args.timings, resolved, data, radius, output, timings, stats, peak_rss_at_frame, facts,
                     threads);
@@ -387,9 +397,12 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
                   "folder)");
   run->add_flag("--force", args->force,
                 "replace the store if it exists (otherwise an existing store is an error)");
-  run->add_option("--radius", args->radius,
-                  "alpha radius rho in lattice units (decimal), or 'auto' = "
-                  "equivalent-sphere radius of the median cell volume")
+  run->add_option(
+         "--radius", args->radius,
+         "alpha radius rho in lattice units (decimal): cells are balls of radius rho around their "
+         "centres, and two cells touch when their centres are closer than 2 rho. 'auto': the radius "
+         "of a ball (a disc in 2D) of the median cell volume over all cells and frames (docs/MATH.md "
+         "§7.9)")
       ->capture_default_str();
   run->add_option("--source", args->source,
                   "positions from 'csv' (cells.csv.gz, CC3D centres; default for a folder that has it) or "

@@ -86,14 +86,15 @@ void describe_planar_bubbles(std::ostream& out, const persistence::Diagram& forw
 std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
                                            const kinetic::KineticStatistics& stats,
                                            const std::vector<persistence::Diagram>& diagrams,
-                                           const std::string& radius_text) {
+                                           const std::string& radius_text, const std::string& radius_note) {
   const kinetic::Trajectories& input = medusa.input;
   const double t0 = input.frame_times.empty() ? 0.0 : static_cast<double>(input.frame_times.front());
   const double t_end = input.frame_times.empty() ? 0.0 : static_cast<double>(input.frame_times.back());
   out << "cells: " << input.cells.size() << " trajectories, frames: " << input.frames() << " (MCS " << mcs(t0)
       << " to " << mcs(t_end) << "), dimension " << input.dimension << "\n"
-      << "radius: " << radius_text << " lattice units (two cells touch when their centres are closer than "
-      << "twice that)\n"
+      << "radius: " << radius_text << " lattice units"
+      << (radius_note.empty() ? "" : " (" + radius_note + ")")
+      << "; two cells touch when their centres are closer than twice that\n"
       << "events: " << stats.flips() << " flips (";
   // A planar run flips 2-2, a 3D run 2-3 and 3-2 (the hull flips of either are counted apart).
   if (input.dimension == 2)

@@ -13,6 +13,7 @@
 
 namespace medusa::cli {
 
+// `radius_note` says how the radius was chosen (--radius auto), if it was.
 // `medusa` must hold its batches (read_store with events); `diagrams` are those of
 // compute_medusa_diagrams (forward and reverse, whole medusa and each type). Returns the warnings the
 // run's radius calls for (no contact at any time; a type that is one cluster from the first frame with
@@ -20,6 +21,7 @@ namespace medusa::cli {
 std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
                                            const kinetic::KineticStatistics& stats,
                                            const std::vector<persistence::Diagram>& diagrams,
-                                           const std::string& radius_text);
+                                           const std::string& radius_text,
+                                           const std::string& radius_note = "");
 
 } // namespace medusa::cli
