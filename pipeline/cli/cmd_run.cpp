@@ -203,8 +203,8 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   timings.add("reduction", (1 - share) * wall, (1 - share) * cpu);
   check_interrupted();
 
-  meter.stage("exports: diagrams into the store, " + stem + ".diagrams.csv, " + stem +
-              ".barcode.svg, summary");
+  meter.stage("exports: diagrams into the store, " + stem + ".diagrams.csv, " + stem + ".barcode.svg, " +
+              stem + ".diagram.svg, summary");
   clock = StageClock{};
   // The diagrams go into the store too (group /persistence, docs/FORMAT.md), written atomically.
   persistence::write_diagrams(output, diagrams);
@@ -227,6 +227,8 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   write_file_atomically(stem + ".barcode.svg", [&](std::ostream& out) {
     write_barcode_svg(out, shown, t0, t_end, default_max_bars);
   });
+  write_file_atomically(stem + ".diagram.svg",
+                        [&](std::ostream& out) { write_diagram_svg(out, shown, t0, t_end); });
   check_interrupted();
 
   const std::vector<std::string> warnings =
@@ -234,7 +236,8 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   if (!quiet)
     for (const std::string& w : warnings)
       std::cerr << "medusa: warning: " << w << "\n";
-  std::cout << "wrote " << output << ", " << stem << ".diagrams.csv, " << stem << ".barcode.svg\n";
+  std::cout << "wrote " << output << ", " << stem << ".diagrams.csv, " << stem << ".barcode.svg, " << stem
+            << ".diagram.svg\n";
   timings.add("exports", clock);
   return {medusa.cells.size(), diagrams.size()};
 }
@@ -369,7 +372,8 @@ void run_command(const RunArguments& args, const std::string& command_line) {
 
   // README: an interrupted run leaves no output behind, including a store already completed.
   const std::string stem = output_stem(output);
-  const std::vector<std::string> outputs = {output, stem + ".diagrams.csv", stem + ".barcode.svg"};
+  const std::vector<std::string> outputs = {output, stem + ".diagrams.csv", stem + ".barcode.svg",
+                                            stem + ".diagram.svg"};
   try {
     check_interrupted();
     const StoreFacts facts = write_diagrams_and_summary(output, stem, stats, radius, radius_note, threads,
