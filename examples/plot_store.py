@@ -194,7 +194,8 @@ def plot_diagrams(rows, info, path):
             lo, hi = panel_range(finite, info)
             ax.plot([lo, hi], [lo, hi], linestyle="--", color="#888", linewidth=0.8)
             if finite:
-                ax.scatter([b for b, d in finite], [d for b, d in finite], s=6, color=COLOURS[k], alpha=0.55)
+                ax.scatter([b for b, d in finite], [d for b, d in finite], s=6, color=COLOURS[k], alpha=0.55,
+                           clip_on=False)
             ax.set_xlim(lo, hi)
             ax.set_ylim(lo, hi)
             ax.set_aspect("equal")
