@@ -61,7 +61,7 @@ def write_subset(source, target, count):
 def run_medusa(args, name, data, work):
     store = os.path.join(work, name + ".h5")
     timings = os.path.join(work, name + ".timings.json")
-    command = [args.medusa, "run", data, "-o", store, "--timings", timings, "--quiet", "--radius", args.radius,
+    command = [args.medusa, "run", "--force", data, "-o", store, "--timings", timings, "--quiet", "--radius", args.radius,
                "--threads", str(args.threads)]
     print(f"[{name}] {' '.join(command)}", file=sys.stderr, flush=True)
     start = time.monotonic()

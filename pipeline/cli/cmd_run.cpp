@@ -32,7 +32,9 @@
 #include <memory>
 #include <optional>
 #include <thread>
+#include <tuple>
 #include <unistd.h>
+#include <utility>
 
 namespace medusa::cli {
 namespace {
@@ -46,7 +48,7 @@ struct RunArguments {
   std::string source;
   std::string timings;
   unsigned threads = 0; // 0: one per hardware thread
-  bool audit = false, snap = false, periodic_as_open = false, quiet = false, progress = false;
+  bool audit = false, snap = false, periodic_as_open = false, quiet = false, progress = false, force = false;
 };
 
 // Forwards the event stream to the builder; reports progress and polls for interrupts. It also
@@ -111,15 +113,19 @@ private:
   std::vector<std::int64_t> peak_rss_at_frame_;
 };
 
-// `<input-name>` of a folder or a cells.csv[.gz] file, for the default store name.
+// `<input-name>` of a folder or a name.csv[.gz] file, for the default store name. CC3D writes
+// cells.csv.gz into the run's folder, so that file is named after its folder (dir/cells.csv.gz ->
+// dir), as the folder itself would be.
 std::string input_stem(const std::string& input) {
-  fs::path p = fs::path(input).lexically_normal();
+  fs::path p = fs::absolute(fs::path(input)).lexically_normal();
   if (p.filename().empty())
     p = p.parent_path();
   std::string name = p.filename().string();
   for (const std::string suffix : {".gz", ".csv"})
     if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
       name.erase(name.size() - suffix.size());
+  if (name == "cells" && !p.parent_path().filename().empty())
+    name = p.parent_path().filename().string();
   return name.empty() || name == "." ? "run" : name;
 }
 
@@ -146,11 +152,16 @@ io::RunSource choose_source(const RunArguments& args) {
   return io::RunSource::automatic;
 }
 
-std::string radius_from_volumes(const io::RunData& data) {
+// --radius auto (docs/MATH.md §7.10): the decimal radius, and how it was chosen for the summary.
+std::pair<std::string, std::string> radius_from_volumes(const io::RunData& data) {
   const double volume = io::median_cell_volume(data.volumes);
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.6f", io::equivalent_radius(volume, data.trajectories.dimension));
-  return buffer;
+  char note[160];
+  std::snprintf(note, sizeof note, "auto: the radius of a %s of the median cell volume, %g %s",
+                data.trajectories.dimension == 2 ? "disc" : "ball", volume,
+                data.trajectories.dimension == 2 ? "pixels" : "voxels");
+  return {buffer, note};
 }
 
 // What the summary and --timings report about the stages after the kinetic one.
@@ -162,13 +173,12 @@ struct StoreFacts {
 // Diagrams from the stored cells, so that what later commands see is what the summary describes.
 StoreFacts write_diagrams_and_summary(const std::string& output, const std::string& stem,
                                       const kinetic::KineticStatistics& stats, const std::string& radius,
-                                      unsigned threads, ProgressMeter& meter, StageTimings& timings) {
+                                      const std::string& radius_note, unsigned threads, bool quiet,
+                                      ProgressMeter& meter, StageTimings& timings) {
   meter.stage("medusa store: reading back " + output);
   StageClock clock;
-  // The diagrams need only the cells: the batch records (one per event time) stay on disk.
-  medusa::StoreReadOptions cells_only;
-  cells_only.events = false;
-  const medusa::Medusa medusa = medusa::read_store(output, cells_only);
+  // The summary's counts at the first frame need the batch records (which batch reaches it).
+  const medusa::Medusa medusa = medusa::read_store(output);
   timings.add("medusa_store", clock);
   check_interrupted();
 
@@ -193,8 +203,8 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   timings.add("reduction", (1 - share) * wall, (1 - share) * cpu);
   check_interrupted();
 
-  meter.stage("exports: diagrams into the store, " + stem + ".diagrams.csv, " + stem +
-              ".barcode.svg, summary");
+  meter.stage("exports: diagrams into the store, " + stem + ".diagrams.csv, " + stem + ".barcode.svg, " +
+              stem + ".diagram.svg, summary");
   clock = StageClock{};
   // The diagrams go into the store too (group /persistence, docs/FORMAT.md), written atomically.
   persistence::write_diagrams(output, diagrams);
@@ -217,10 +227,17 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   write_file_atomically(stem + ".barcode.svg", [&](std::ostream& out) {
     write_barcode_svg(out, shown, t0, t_end, default_max_bars);
   });
+  write_file_atomically(stem + ".diagram.svg",
+                        [&](std::ostream& out) { write_diagram_svg(out, shown, t0, t_end); });
   check_interrupted();
 
-  write_run_summary(std::cout, medusa, stats, diagrams, radius);
-  std::cout << "wrote " << output << ", " << stem << ".diagrams.csv, " << stem << ".barcode.svg\n";
+  const std::vector<std::string> warnings =
+      write_run_summary(std::cout, medusa, stats, diagrams, radius, radius_note);
+  if (!quiet)
+    for (const std::string& w : warnings)
+      std::cerr << "medusa: warning: " << w << "\n";
+  std::cout << "wrote " << output << ", " << stem << ".diagrams.csv, " << stem << ".barcode.svg, " << stem
+            << ".diagram.svg\n";
   timings.add("exports", clock);
   return {medusa.cells.size(), diagrams.size()};
 }
@@ -285,6 +302,10 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   if (!fs::exists(input, ec))
     throw InputError("input " + input + " does not exist");
   const unsigned threads = worker_threads(args.threads);
+  // A store holds a run's whole analysis: replacing one is asked for, never a side effect.
+  const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
+  if (!args.force && fs::exists(output, ec))
+    throw CLI::ParseError("store " + output + " exists; pass --force to replace it", 2);
 
   ProgressMeter meter(std::cerr,
                       ProgressMeter::choose(args.progress, args.quiet, ::isatty(STDERR_FILENO) != 0));
@@ -303,12 +324,13 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     for (const std::string& w : data.warnings)
       std::cerr << "medusa: warning: " << w << "\n";
 
-  const std::string radius = args.radius == "auto" ? radius_from_volumes(data) : args.radius;
+  std::string radius = args.radius, radius_note;
+  if (args.radius == "auto")
+    std::tie(radius, radius_note) = radius_from_volumes(data);
   kinetic::KineticOptions kinetic_options;
   kinetic_options.rho2 = kinetic::squared_radius_from_decimal(radius, data.trajectories.scale);
   kinetic_options.audit = args.audit;
 
-  const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
   medusa::RunInfo info;
   info.radius = std::stod(radius);
   info.radius_text = radius;
@@ -350,10 +372,12 @@ void run_command(const RunArguments& args, const std::string& command_line) {
 
   // README: an interrupted run leaves no output behind, including a store already completed.
   const std::string stem = output_stem(output);
-  const std::vector<std::string> outputs = {output, stem + ".diagrams.csv", stem + ".barcode.svg"};
+  const std::vector<std::string> outputs = {output, stem + ".diagrams.csv", stem + ".barcode.svg",
+                                            stem + ".diagram.svg"};
   try {
     check_interrupted();
-    const StoreFacts facts = write_diagrams_and_summary(output, stem, stats, radius, threads, meter, timings);
+    const StoreFacts facts = write_diagrams_and_summary(output, stem, stats, radius, radius_note, threads,
+                                                        args.quiet, meter, timings);
     if (!args.timings.empty())
       write_timings(args.timings, resolved, data, radius, output, timings, stats, peak_rss_at_frame, facts,
                     threads);
@@ -372,10 +396,17 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
       "run", "Compute the alpha medusa of a CompuCell3D run, store it, and write its persistence diagrams");
   run->add_option("input", args->input,
                   "CC3D output folder or cells.csv[.gz] (default: the bundled examples/sorting_3d)");
-  run->add_option("-o,--output", args->output, "HDF5 store to write (default: <input-name>.h5 here)");
-  run->add_option("--radius", args->radius,
-                  "alpha radius rho in lattice units (decimal), or 'auto' = "
-                  "equivalent-sphere radius of the median cell volume")
+  run->add_option("-o,--output", args->output,
+                  "HDF5 store to write (default: <input-name>.h5 here; a cells.csv[.gz] is named after its "
+                  "folder)");
+  run->add_flag("--force", args->force,
+                "replace the store if it exists (otherwise an existing store is an error)");
+  run->add_option(
+         "--radius", args->radius,
+         "alpha radius rho in lattice units (decimal): cells are balls of radius rho around their "
+         "centres, and two cells touch when their centres are closer than 2 rho. 'auto': the radius "
+         "of a ball (a disc in 2D) of the median cell volume over all cells and frames (docs/MATH.md "
+         "§7.10)")
       ->capture_default_str();
   run->add_option("--source", args->source,
                   "positions from 'csv' (cells.csv.gz, CC3D centres; default for a folder that has it) or "

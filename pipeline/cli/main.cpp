@@ -54,6 +54,12 @@ int main(int argc, char** argv) {
   // added a third to the peak memory of `medusa run` (the kinetic stage runs no slower).
   mallopt(M_MMAP_THRESHOLD, 128 * 1024);
 #endif
+  // `medusa` alone asks what the tool does: the help on stdout, exit 0 (README, Exit codes).
+  if (argc <= 1) {
+    app.name(argc == 1 ? argv[0] : "medusa");
+    std::cout << app.help();
+    return 0;
+  }
   try {
     app.parse(argc, argv);
     return 0;
