@@ -94,7 +94,7 @@ medusa_golden_test(compare_type1_h1_finite
                          compare_type1_h1.dendrogram.svg=compare_type1_h1.dendrogram.svg ${compared})
 
 medusa_golden_test(help ARGS --help STDOUT help.txt)
-foreach(sub run info diagrams barcode compare curves at)
+foreach(sub run info diagrams barcode compare curves at report sweep)
   medusa_golden_test(${sub}_help ARGS ${sub} --help STDOUT help_${sub}.txt)
 endforeach()
 
