@@ -285,7 +285,8 @@ void sweep_command(const SweepArguments& args) {
   std::ostringstream summary;
   summary << "sweep of " << args.input << ": " << data.trajectories.cells.size() << " trajectories, "
           << data.trajectories.frames() << " frames, " << radii.size()
-          << " radii; forward diagrams (docs/MATH.md §7.6): clusters at the first frame -> at the end, loops "
+          << (radii.size() == 1 ? " radius;" : " radii;")
+          << " forward diagrams (docs/MATH.md §7.6): clusters at the first frame -> at the end, loops "
              "and cavities that appeared\n";
   std::vector<std::string> warnings;
   for (const RadiusResult& r : results) {

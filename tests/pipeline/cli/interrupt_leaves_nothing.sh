@@ -1,13 +1,19 @@
 #!/bin/sh
-# SIGINT during `medusa run` (README): exit code 130, one line on stderr, and no output file or
-# temporary file left in the working folder. Usage: interrupt_leaves_nothing.sh <medusa> <run> <workdir>
+# SIGINT during `medusa run` or `medusa sweep` (README): exit code 130, one line on stderr, and no
+# output file or temporary file left in the working folder.
+# Usage: interrupt_leaves_nothing.sh <medusa> <run> <workdir> [run|sweep]
 set -u
 medusa=$1
 input=$2
 work=$3
+command=${4:-run}
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 # The large run (4,945 cells) takes far longer than the delay, so the signal arrives mid-run.
-"$medusa" run "$input" -o interrupted.h5 --radius 3 --quiet 2>stderr.txt &
+if [ "$command" = sweep ]; then
+  "$medusa" sweep "$input" -o interrupted --radii 2.5:3:0.5 --threads 2 --quiet 2>stderr.txt &
+else
+  "$medusa" run "$input" -o interrupted.h5 --radius 3 --quiet 2>stderr.txt &
+fi
 pid=$!
 sleep 2
 kill -INT "$pid"
