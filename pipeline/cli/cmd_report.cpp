@@ -57,17 +57,65 @@ std::vector<std::string> scale_lines(const std::vector<CrockerRow>& rows) {
     if (type == "all")
       continue;
     auto smallest = [&](double t) -> std::string {
-      const CrockerRow* best = nullptr;
-      for (const CrockerRow& r : rows)
-        if (r.type == type && r.time == t && r.betti[0] == 1 &&
-            (best == nullptr || std::stod(r.radius) < std::stod(best->radius)))
+      const CrockerRow *best = nullptr, *largest = nullptr;
+      for (const CrockerRow& r : rows) {
+        if (r.type != type || r.time != t)
+          continue;
+        if (r.betti[0] == 1 && (best == nullptr || std::stod(r.radius) < std::stod(best->radius)))
           best = &r;
-      return best == nullptr ? "at no swept radius" : "from radius " + best->radius + " on";
+        if (largest == nullptr || std::stod(r.radius) > std::stod(largest->radius))
+          largest = &r;
+      }
+      if (best != nullptr)
+        return "one cluster from radius " + best->radius + " on";
+      return largest == nullptr ? "not swept"
+                                : "still " + std::to_string(largest->betti[0]) + " clusters at radius " +
+                                      largest->radius + ", the largest swept";
     };
-    lines.push_back("radius sweep, type " + type + ": one cluster at MCS " + number(t1) + " " + smallest(t1) +
+    lines.push_back("radius sweep, type " + type + ": at MCS " + number(t1) + " " + smallest(t1) +
                     "; at MCS " + number(t0) + " " + smallest(t0));
   }
   return lines;
+}
+
+// b0 of each type at the first and last frames against the radius, for the page's chart.
+nlohmann::ordered_json sweep_json(const std::string& name, const std::vector<CrockerRow>& rows) {
+  std::vector<std::string> radii, types;
+  double t0 = rows.front().time, t1 = rows.front().time;
+  for (const CrockerRow& r : rows) {
+    if (std::find(radii.begin(), radii.end(), r.radius) == radii.end())
+      radii.push_back(r.radius);
+    if (std::find(types.begin(), types.end(), r.type) == types.end())
+      types.push_back(r.type);
+    t0 = std::min(t0, r.time);
+    t1 = std::max(t1, r.time);
+  }
+  std::sort(radii.begin(), radii.end(),
+            [](const std::string& a, const std::string& b) { return std::stod(a) < std::stod(b); });
+  nlohmann::ordered_json j = {{"name", name},
+                              {"t0", t0},
+                              {"t_end", t1},
+                              {"radii", nlohmann::ordered_json::array()},
+                              {"types", nlohmann::ordered_json::array()}};
+  for (const std::string& r : radii)
+    j["radii"].push_back(std::stod(r));
+  for (const std::string& type : types) {
+    nlohmann::ordered_json first = nlohmann::ordered_json::array(), last = nlohmann::ordered_json::array();
+    for (const std::string& radius : radii) {
+      nlohmann::ordered_json a = nullptr, b = nullptr;
+      for (const CrockerRow& r : rows)
+        if (r.type == type && r.radius == radius) {
+          if (r.time == t0)
+            a = r.betti[0];
+          if (r.time == t1)
+            b = r.betti[0];
+        }
+      first.push_back(a);
+      last.push_back(b);
+    }
+    j["types"].push_back({{"label", type}, {"first", first}, {"last", last}});
+  }
+  return j;
 }
 
 std::string stem_of(const std::string& path, const std::string& suffix) {
@@ -78,7 +126,7 @@ std::string stem_of(const std::string& path, const std::string& suffix) {
 // The sweeps in the stores' folders, each with its plot; a sweep named like a store (`medusa sweep RUN`
 // writes <run-name>.crocker.csv, `medusa run RUN` <run-name>.h5) adds its scale lines to that run.
 std::vector<ReportFigure> crocker_figures(const std::vector<std::string>& stores,
-                                          std::vector<ReportRun>& runs) {
+                                          std::vector<ReportRun>& runs, nlohmann::ordered_json& sweeps) {
   std::set<fs::path> folders;
   for (const std::string& s : stores)
     folders.insert(fs::absolute(fs::path(s)).parent_path());
@@ -93,7 +141,17 @@ std::vector<ReportFigure> crocker_figures(const std::vector<std::string>& stores
         files.push_back(e.path().string());
     }
   }
-  std::sort(files.begin(), files.end());
+  // Sweeps of the given runs first, in the runs' order, then the others by name.
+  auto rank = [&](const std::string& file) {
+    const std::string stem = stem_of(file, ".crocker.csv");
+    for (std::size_t i = 0; i < stores.size(); ++i)
+      if (stem_of(stores[i], ".h5") == stem)
+        return i;
+    return stores.size();
+  };
+  std::sort(files.begin(), files.end(), [&](const std::string& a, const std::string& b) {
+    return std::make_pair(rank(a), a) < std::make_pair(rank(b), b);
+  });
   std::vector<ReportFigure> figures;
   for (const std::string& file : files) {
     check_interrupted();
@@ -105,6 +163,7 @@ std::vector<ReportFigure> crocker_figures(const std::vector<std::string>& stores
     std::ostringstream svg;
     write_crocker_svg(svg, rows, stem + ": Betti numbers of K_t over time and radius");
     f.svgs.push_back(svg.str());
+    sweeps.push_back(sweep_json(stem, rows));
     for (std::size_t i = 0; i < runs.size(); ++i)
       if (stem_of(stores[i], ".h5") == stem)
         for (const std::string& line : f.notes)
@@ -165,11 +224,12 @@ void report_command(const ReportArguments& args) {
     check_interrupted();
     runs.push_back(report_run(args.stores[i], names[i], args.max_bars, threads));
   }
-  const std::vector<ReportFigure> crocker = crocker_figures(args.stores, runs);
+  nlohmann::ordered_json sweeps = nlohmann::ordered_json::array();
+  const std::vector<ReportFigure> crocker = crocker_figures(args.stores, runs, sweeps);
   const std::vector<ReportFigure> comparison = comparison_figures(runs);
   check_interrupted();
-  write_file_atomically(args.output,
-                        [&](std::ostream& out) { write_report_html(out, runs, comparison, crocker); });
+  write_file_atomically(
+      args.output, [&](std::ostream& out) { write_report_html(out, runs, comparison, crocker, sweeps); });
   std::cout << "wrote " << args.output << " (" << runs.size() << (runs.size() == 1 ? " run" : " runs");
   if (!crocker.empty())
     std::cout << ", " << crocker.size() << (crocker.size() == 1 ? " radius sweep" : " radius sweeps");

@@ -43,12 +43,13 @@ void write_figures(std::ostream& out, const std::vector<ReportFigure>& figures, 
 } // namespace
 
 void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
-                       const std::vector<ReportFigure>& comparison,
-                       const std::vector<ReportFigure>& crocker) {
+                       const std::vector<ReportFigure>& comparison, const std::vector<ReportFigure>& crocker,
+                       const nlohmann::ordered_json& sweeps) {
   std::string names;
   nlohmann::ordered_json data;
   data["version"] = medusa::version;
   data["runs"] = nlohmann::ordered_json::array();
+  data["sweeps"] = sweeps;
   for (const ReportRun& r : runs) {
     names += (names.empty() ? "" : ", ") + r.name;
     data["runs"].push_back(r.data);
@@ -58,7 +59,9 @@ void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
       << report_css << "</style>\n</head>\n<body>\n"
       << "<h1>medusa report</h1>\n<p class=\"sub\">" << xml_escape(names) << " · medusa " << medusa::version
       << "</p>\n"
-      << "<section id=\"glance\">\n<h2>Did the cells sort, and when?</h2>\n"
+      << "<section id=\"glance\">\n<h2>"
+      << (sweeps.empty() ? "Did the cells sort, and when?" : "Did the cells sort, when, and at which scale?")
+      << "</h2>\n"
       << "<p class=\"note\">A cluster is a group of cells of one type linked to each other: two cells are "
          "linked "
          "when their balls of the radius overlap inside their Voronoi regions (about: centres at most twice "
@@ -74,7 +77,11 @@ void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
         << "<p class=\"note\">Each panel shows a Betti number of K_t (colour, log scale) over time (x) and "
            "radius (y), from <code>medusa sweep</code> (Topaz, Ziegelmeier &amp; Halverson 2015). Sorting "
            "shows in b0 of the engulfed type as one cluster reached over time at radii where it was "
-           "split at the start. Hover a cell for its value.</p>\n";
+           "split at the start. Hover a cell for its value. The charts of the clusters against the radius on "
+           "the "
+           "first screen read off the scale: the clusters of each type at the first frame (dashed) and at "
+           "the "
+           "last frame (solid).</p>\n";
     write_figures(out, crocker, "crocker-figure");
     out << "</section>\n";
   }

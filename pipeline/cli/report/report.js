@@ -63,16 +63,19 @@
     return out;
   }
   // Axes of a plot area: x from x0..x1 (MCS), y from y0..y1.
-  function axes(svg, box, xr, yr, xlabel, ylabel, integerY, noYTicks) {
+  // With logY the y range is of positive values and the axis is logarithmic.
+  function axes(svg, box, xr, yr, xlabel, ylabel, integerY, noYTicks, logY) {
     const [left, top, w, h] = box;
     const sx = (v) => left + ((v - xr[0]) / (xr[1] - xr[0] || 1)) * w;
-    const sy = (v) => top + h - ((v - yr[0]) / (yr[1] - yr[0] || 1)) * h;
+    const ly = (v) => (logY ? Math.log10(v) : v);
+    const sy = (v) => top + h - ((ly(v) - ly(yr[0])) / (ly(yr[1]) - ly(yr[0]) || 1)) * h;
     el("rect", { x: left, y: top, width: w, height: h, fill: "none", stroke: "#999" }, svg);
     for (const t of ticks(xr[0], xr[1], 5)) {
       el("line", { x1: sx(t), x2: sx(t), y1: top + h, y2: top + h + 4, stroke: "#999" }, svg);
       el("text", { x: sx(t), y: top + h + 15, "text-anchor": "middle" }, svg, fmt(t));
     }
-    for (const t of noYTicks ? [] : ticks(yr[0], yr[1], 4)) {
+    const logTicks = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 10000].filter((v) => v >= yr[0] && v <= yr[1]);
+    for (const t of noYTicks ? [] : logY ? logTicks : ticks(yr[0], yr[1], 4)) {
       if (integerY && t !== Math.round(t)) continue;
       el("line", { x1: left - 4, x2: left, y1: sy(t), y2: sy(t), stroke: "#999" }, svg);
       el("text", { x: left - 6, y: sy(t) + 4, "text-anchor": "end" }, svg, fmt(t));
@@ -83,22 +86,30 @@
     return [sx, sy];
   }
 
-  // A line chart of values at the frames; series: [{name, colour, xs, ys}].
-  function lineChart(parent, title, series, ylabel, width, height) {
+  // A line chart; series: [{name, colour, xs, ys, dashed}] (null values are left out).
+  function lineChart(parent, title, series, ylabel, width, height, xlabel, logY) {
     const svg = el("svg", { class: "chart", width: width, height: height, viewBox: "0 0 " + width + " " + height }, parent);
     el("text", { class: "title", x: 50, y: 16 }, svg, title);
-    const xs = series.flatMap((s) => s.xs), ys = series.flatMap((s) => s.ys);
-    const xr = [Math.min(...xs), Math.max(...xs)], yr = [0, Math.max(1, ...ys)];
-    const [sx, sy] = axes(svg, [50, 26, width - 70, height - 84], xr, yr, "MCS", ylabel, true);
+    const xs = series.flatMap((s) => s.xs), ys = series.flatMap((s) => s.ys).filter((y) => y !== null);
+    const xr = [Math.min(...xs), Math.max(...xs)], yr = [logY ? 1 : 0, Math.max(logY ? 2 : 1, ...ys)];
+    const columns = series.length > 3 ? 2 : 3, rows = Math.ceil(series.length / columns);
+    const [sx, sy] = axes(svg, [50, 26, width - 70, height - 70 - 14 * rows], xr, yr, xlabel || "MCS", ylabel, true, false, logY);
     series.forEach((s, i) => {
-      const d = s.xs.map((x, j) => (j ? "L" : "M") + sx(x).toFixed(1) + "," + sy(s.ys[j]).toFixed(1)).join("");
-      el("path", { d: d, fill: "none", stroke: s.colour, "stroke-width": 2 }, svg);
+      let d = "", pen = "M";
       s.xs.forEach((x, j) => {
-        const c = el("circle", { cx: sx(x), cy: sy(s.ys[j]), r: 3, fill: s.colour }, svg);
-        hover(c, s.name + "\nMCS " + fmt(x) + ": " + s.ys[j]);
+        if (s.ys[j] === null) { pen = "M"; return; }
+        d += pen + sx(x).toFixed(1) + "," + sy(s.ys[j]).toFixed(1);
+        pen = "L";
       });
-      const lx = 60 + (i % 3) * ((width - 80) / 3), ly = height - 8 - 14 * Math.floor(i / 3) + 0;
-      el("line", { x1: lx, x2: lx + 16, y1: ly - 4, y2: ly - 4, stroke: s.colour, "stroke-width": 3 }, svg);
+      const dash = s.dashed ? { "stroke-dasharray": "5,3" } : {};
+      el("path", Object.assign({ d: d, fill: "none", stroke: s.colour, "stroke-width": 2 }, dash), svg);
+      s.xs.forEach((x, j) => {
+        if (s.ys[j] === null) return;
+        const c = el("circle", { cx: sx(x), cy: sy(s.ys[j]), r: 3, fill: s.colour }, svg);
+        hover(c, s.name + "\n" + (xlabel || "MCS") + " " + fmt(x) + ": " + s.ys[j]);
+      });
+      const lx = 60 + (i % columns) * ((width - 80) / columns), ly = height - 8 - 14 * (rows - 1 - Math.floor(i / columns));
+      el("line", Object.assign({ x1: lx, x2: lx + 16, y1: ly - 4, y2: ly - 4, stroke: s.colour, "stroke-width": 3 }, dash), svg);
       el("text", { x: lx + 20, y: ly }, svg, s.name);
     });
     return svg;
@@ -175,8 +186,9 @@
     // Clusters of each type over time, all runs in one chart per type.
     const charts = document.getElementById("glance-charts");
     const labels = [];
-    data.runs.forEach((r) => r.slices.forEach((s) => { if (!labels.includes(s.label)) labels.push(s.label); }));
-    labels.sort((a, b) => (a === "all") - (b === "all") || Number(a) - Number(b));
+    // The cell types only: the whole tissue's clusters are in each run's details.
+    data.runs.forEach((r) => r.slices.forEach((s) => { if (s.label !== "all" && !labels.includes(s.label)) labels.push(s.label); }));
+    labels.sort((a, b) => Number(a) - Number(b));
     for (const label of labels) {
       const series = [];
       let name = "";
@@ -186,7 +198,7 @@
         name = s.name;
         series.push({ name: run.name, colour: runColours[ri % runColours.length], xs: run.frame_times, ys: s.b0 });
       });
-      lineChart(charts, typeTitle(label, name) + ": clusters of K_t (b0)", series, "clusters", 420, 250);
+      lineChart(charts, typeTitle(label, name) + ": clusters of K_t (b0)", series, "clusters", 420, 270);
     }
   }
 
@@ -240,6 +252,29 @@
     });
   }
 
+  // Per type, the clusters at the first and last frames against the radius, one colour per sweep.
+  function sweepCharts() {
+    // Beside the clusters over time on the first screen: they answer "at which scale".
+    const root = document.getElementById("glance-charts");
+    if (!data.sweeps.length) return;
+    const labels = [];
+    data.sweeps.forEach((w) => w.types.forEach((t) => { if (t.label !== "all" && !labels.includes(t.label)) labels.push(t.label); }));
+    for (const label of labels) {
+      const series = [];
+      data.sweeps.forEach((w, i) => {
+        const t = w.types.find((x) => x.label === label);
+        if (!t) return;
+        // A sweep named like a run has that run's colour.
+        const ri = data.runs.findIndex((r) => r.name === w.name);
+        const colour = runColours[(ri >= 0 ? ri : data.runs.length + i) % runColours.length];
+        series.push({ name: w.name + " MCS " + fmt(w.t_end), colour: colour, xs: w.radii, ys: t.last });
+        series.push({ name: w.name + " MCS " + fmt(w.t0), colour: colour, xs: w.radii, ys: t.first, dashed: true });
+      });
+      lineChart(root, "type " + label + ": clusters of K_t (b0) against the radius", series, "clusters (log scale)", 420, 270, "radius", true);
+    }
+  }
+
   headlines();
+  sweepCharts();
   details();
 })();

@@ -26,7 +26,7 @@ from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 
 medusa, source, work = sys.argv[1:4]
-screenshot_copy = sys.argv[4] if len(sys.argv) > 4 else None
+screenshot_copy = os.path.abspath(sys.argv[4]) if len(sys.argv) > 4 else None
 MAX_BARS = 300
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
@@ -43,8 +43,9 @@ def call(*args):
 runs = {"sorting_3d": f"{source}/examples/sorting_3d", "nosorting_3d": f"{source}/tests/data/cc3d/nosorting_3d"}
 for name, folder in runs.items():
     call("run", folder, "--radius", "3", "-o", f"{name}.h5", "--quiet")
-# A sweep named like the first store: the report shows its CROCKER plot.
-call("sweep", runs["sorting_3d"], "--radii", "2.5:3:0.5", "-o", "sorting_3d", "--quiet")
+# Sweeps named like the stores: the report shows their CROCKER plots.
+for name, folder in runs.items():
+    call("sweep", folder, "--radii", "2:4:0.5", "-o", name, "--quiet")
 call("report", "sorting_3d.h5", "-o", "one.html", "--max-bars", str(MAX_BARS))
 call("report", "sorting_3d.h5", "nosorting_3d.h5", "-o", "two.html", "--max-bars", str(MAX_BARS))
 
