@@ -19,7 +19,6 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <set>
 #include <sstream>
 
 namespace medusa::cli {
@@ -29,6 +28,7 @@ namespace fs = std::filesystem;
 
 struct ReportArguments {
   std::vector<std::string> stores;
+  std::vector<std::string> sweeps; // more CROCKER CSVs of `medusa sweep`
   std::string output = "report.html";
   std::size_t max_bars = 1000;
   unsigned threads = 0;
@@ -123,35 +123,23 @@ std::string stem_of(const std::string& path, const std::string& suffix) {
   return name.size() > suffix.size() ? name.substr(0, name.size() - suffix.size()) : name;
 }
 
-// The sweeps in the stores' folders, each with its plot; a sweep named like a store (`medusa sweep RUN`
-// writes <run-name>.crocker.csv, `medusa run RUN` <run-name>.h5) adds its scale lines to that run.
+// The sweeps named like the stores (`medusa sweep RUN` writes <run-name>.crocker.csv, `medusa run RUN`
+// <run-name>.h5, both in the working folder) and those given, each with its plot; a store's own sweep
+// adds its scale lines to that run.
 std::vector<ReportFigure> crocker_figures(const std::vector<std::string>& stores,
-                                          std::vector<ReportRun>& runs, nlohmann::ordered_json& sweeps) {
-  std::set<fs::path> folders;
-  for (const std::string& s : stores)
-    folders.insert(fs::absolute(fs::path(s)).parent_path());
+                                          const std::vector<std::string>& given, std::vector<ReportRun>& runs,
+                                          nlohmann::ordered_json& sweeps) {
+  // A store's own sweep first (in the stores' order), then those given with --sweep.
   std::vector<std::string> files;
-  for (const fs::path& folder : folders) {
+  for (const std::string& store : stores) {
+    const fs::path own = fs::path(store).parent_path() / (stem_of(store, ".h5") + ".crocker.csv");
     std::error_code ec;
-    for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
-      const std::string name = e.path().filename().string();
-      const std::string suffix = ".crocker.csv";
-      if (e.is_regular_file() && name.size() > suffix.size() &&
-          name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
-        files.push_back(e.path().string());
-    }
+    if (fs::is_regular_file(own, ec) && std::find(files.begin(), files.end(), own.string()) == files.end())
+      files.push_back(own.string());
   }
-  // Sweeps of the given runs first, in the runs' order, then the others by name.
-  auto rank = [&](const std::string& file) {
-    const std::string stem = stem_of(file, ".crocker.csv");
-    for (std::size_t i = 0; i < stores.size(); ++i)
-      if (stem_of(stores[i], ".h5") == stem)
-        return i;
-    return stores.size();
-  };
-  std::sort(files.begin(), files.end(), [&](const std::string& a, const std::string& b) {
-    return std::make_pair(rank(a), a) < std::make_pair(rank(b), b);
-  });
+  for (const std::string& file : given)
+    if (std::find(files.begin(), files.end(), file) == files.end())
+      files.push_back(file);
   std::vector<ReportFigure> figures;
   for (const std::string& file : files) {
     check_interrupted();
@@ -225,7 +213,7 @@ void report_command(const ReportArguments& args) {
     runs.push_back(report_run(args.stores[i], names[i], args.max_bars, threads));
   }
   nlohmann::ordered_json sweeps = nlohmann::ordered_json::array();
-  const std::vector<ReportFigure> crocker = crocker_figures(args.stores, runs, sweeps);
+  const std::vector<ReportFigure> crocker = crocker_figures(args.stores, args.sweeps, runs, sweeps);
   const std::vector<ReportFigure> comparison = comparison_figures(runs);
   check_interrupted();
   write_file_atomically(
@@ -244,6 +232,12 @@ void add_report_command(CLI::App& app) {
                                                   "stores: did the cells sort, when, at which scale");
   report->add_option("stores", args->stores, "HDF5 stores written by `medusa run`")->required();
   report->add_option("-o,--output", args->output, "HTML file to write")->capture_default_str();
+  report
+      ->add_option(
+          "--sweep", args->sweeps,
+          "the <prefix>.crocker.csv of a `medusa sweep` to show; a store's own sweep (<name>.crocker.csv "
+          "next to <name>.h5) is shown without it")
+      ->check(CLI::ExistingFile);
   report
       ->add_option("--max-bars", args->max_bars,
                    "draw the N longest bars of each barcode (essential classes first; 0: all)")

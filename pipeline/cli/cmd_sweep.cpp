@@ -251,7 +251,7 @@ std::string radius_warning(const RadiusResult& r) {
 void sweep_command(const SweepArguments& args) {
   const std::vector<std::string> radii = all_radii(args);
   if (radii.empty())
-    throw InputError("medusa sweep: no radius given (use --radii A:B:STEP or --radius R)");
+    throw CLI::RequiredError("--radii A:B:STEP or --radius R");
   std::error_code ec;
   if (!fs::exists(args.input, ec))
     throw InputError("input " + args.input + " does not exist");
