@@ -92,7 +92,10 @@
     el("text", { class: "title", x: 50, y: 16 }, svg, title);
     const xs = series.flatMap((s) => s.xs), ys = series.flatMap((s) => s.ys).filter((y) => y !== null);
     const xr = [Math.min(...xs), Math.max(...xs)], yr = [logY ? 1 : 0, Math.max(logY ? 2 : 1, ...ys)];
-    const columns = series.length > 3 ? 2 : 3, rows = Math.ceil(series.length / columns);
+    // Legend columns as wide as the longest name (about 6.5 px a character at 11 px).
+    const longest = Math.max(...series.map((s) => s.name.length));
+    const columns = Math.max(1, Math.min(3, Math.floor((width - 80) / (longest * 6.5 + 30))));
+    const rows = Math.ceil(series.length / columns);
     const [sx, sy] = axes(svg, [50, 26, width - 70, height - 70 - 14 * rows], xr, yr, xlabel || "MCS", ylabel, true, false, logY);
     series.forEach((s, i) => {
       let d = "", pen = "M";
@@ -123,8 +126,10 @@
     const lines = ["H" + panel.dim + " " + names[0] + " · " + typeTitle(panel.label, panel.name) + " · forward filtration",
       "birth: MCS " + fmt(birth) + " (medusa cell " + bcell + ", " + cellWords(bids) + ")"];
     if (death === null) {
-      lines.push("death: never (an essential class, alive to the end)");
-      lines.push("lifetime: at least " + fmt(run.facts.t_end - birth) + " MCS (to the end of the run)");
+      // An essential loop or cavity was never filled; it need not be open at the end (README, Reading the summary).
+      lines.push(panel.dim === 0 ? "death: never (an essential class: this cluster never merged into an older one)"
+        : "death: never (an essential class: never filled by cells; it may have broken open instead)");
+      lines.push("lifetime: " + fmt(run.facts.t_end - birth) + " MCS or more (to the end of the run)");
     } else {
       lines.push("death: MCS " + fmt(death) + " (medusa cell " + dcell + ", " + cellWords(dids) + ")");
       lines.push("lifetime: " + fmt(death - birth) + " MCS");
