@@ -141,9 +141,9 @@ void write_crocker_svg(std::ostream& out, const std::vector<CrockerRow>& rows, c
       for (const CrockerRow& r : rows)
         if (r.type == types[ti])
           max = std::max(max, r.betti[static_cast<std::size_t>(k)]);
-      out << "<g class=\"crocker-panel\" data-type=\"" << xml_escape(types[ti]) << "\" data-degree=\"" << k
-          << "\">\n<text x=\"" << x0 << "\" y=\"" << y0 - 8 << "\" font-weight=\"bold\">type "
-          << xml_escape(types[ti]) << ": " << names[k] << "</text>\n";
+      out << "<g class=\"crocker-panel\" shape-rendering=\"crispEdges\" data-type=\"" << xml_escape(types[ti])
+          << "\" data-degree=\"" << k << "\">\n<text x=\"" << x0 << "\" y=\"" << y0 - 8
+          << "\" font-weight=\"bold\">type " << xml_escape(types[ti]) << ": " << names[k] << "</text>\n";
       const double row_h = panel_h / std::max<std::size_t>(1, radii.size());
       for (std::size_t ri = 0; ri < radii.size(); ++ri) {
         // Largest radius on top, like a y axis.

@@ -91,7 +91,8 @@ void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
     out << "</section>\n";
   }
   out << "<div id=\"details\"></div>\n<div id=\"tooltip\" role=\"tooltip\"></div>\n"
-      << "<script type=\"application/json\" id=\"report-data\">" << script_safe(data.dump(-1, ' ', true))
+      << "<script type=\"application/json\" id=\"report-data\">"
+      << script_safe(data.dump(-1, ' ', true, nlohmann::ordered_json::error_handler_t::replace))
       << "</script>\n<script>\n"
       << report_js << "</script>\n</body>\n</html>\n";
 }

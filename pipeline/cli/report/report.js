@@ -180,8 +180,7 @@
       html("span", { class: "muted" }, h, "radius " + run.facts.radius + " · " + run.facts.cc3d_cells + " cells · " +
         run.facts.frames + " frames, MCS " + run.facts.t0 + "–" + run.facts.t_end);
       const ul = html("ul", {}, card);
-      const ordered = run.headlines.filter((x) => x.label !== "all").concat(run.headlines.filter((x) => x.label === "all"));
-      for (const x of ordered) {
+      for (const x of typesFirst(run.headlines)) {
         const li = html("li", { class: "headline", "data-type": x.label }, ul);
         html("b", {}, li, typeTitle(x.label, x.name) + ": ");
         li.appendChild(document.createTextNode(x.text));
@@ -205,6 +204,11 @@
       });
       lineChart(charts, typeTitle(label, name) + ": clusters of K_t (b0)", series, "clusters", 420, 270);
     }
+  }
+
+  // Cell types first, the whole tissue last: the types are what sorts.
+  function typesFirst(items) {
+    return items.filter((x) => x.label !== "all").concat(items.filter((x) => x.label === "all"));
   }
 
   function factsTable(parent, run) {
@@ -233,7 +237,7 @@
       html("p", { class: "note" }, sec, "K_t is the alpha complex of the cell centres at time t: b0 counts its clusters, " +
         "b1 its loops (rings, tunnels), b2 its cavities (closed shells), for the whole tissue and for each cell type alone.");
       const charts = html("div", { class: "charts" }, sec);
-      for (const s of run.slices) {
+      for (const s of typesFirst(run.slices)) {
         const names = run.facts.dimension === 2 ? ["b0 clusters", "b1 loops"] : ["b0 clusters", "b1 loops", "b2 cavities"];
         lineChart(charts, typeTitle(s.label, s.name), names.map((n, k) => ({ name: n, colour: degreeColours[k], xs: run.frame_times, ys: s["b" + k] })),
           "Betti number", 420, 250);
@@ -243,7 +247,8 @@
         "merges into an older cluster or is filled; pale bars never end (essential classes, drawn to the end of the run). Hover a bar or a point for its " +
         "times and the CC3D cells that formed and killed it. Zero-length classes are not drawn.");
       const grid = html("div", { class: "panels" }, sec);
-      run.panels.forEach((panel, pi) => {
+      typesFirst(run.panels).forEach((panel) => {
+        const pi = run.panels.indexOf(panel);
         const div = html("div", { class: "panel", "data-run": ri, "data-type": panel.label, "data-dim": panel.dim,
           "data-total": panel.total, "data-drawn": panel.pairs.length }, grid);
         const names = degreeName(run, panel.dim);
