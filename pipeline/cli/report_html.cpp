@@ -70,8 +70,13 @@ void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
          "one body early in the run. The counts at the first and last frames are those of the complex K_t at "
          "that time; the merges are those of the forward filtration (docs/MATH.md §7.6): a merge is when two "
          "clusters first touched.</p>\n"
-      << "<div id=\"headlines\" class=\"cards\"></div>\n<div id=\"glance-charts\" class=\"charts\"></div>\n"
-      << "</section>\n";
+      << "<div id=\"headlines\" class=\"cards\"></div>\n<div id=\"glance-charts\" class=\"charts\"></div>\n";
+  if (sweeps.empty())
+    out << "<p class=\"note\">At which scale? These counts are at one radius. <code>medusa sweep RUN --radii "
+           "2:4:0.5</code> in the folder of the store (it writes &lt;run-name&gt;.crocker.csv) and this "
+           "report "
+           "again add the radii at which each type is one cluster, at the start and at the end.</p>\n";
+  out << "</section>\n";
   if (!crocker.empty()) {
     out << "<section id=\"crocker\">\n<h2>At which scale? CROCKER plots of the radius sweeps</h2>\n"
         << "<p class=\"note\">Each panel shows a Betti number of K_t (colour, log scale) over time (x) and "
