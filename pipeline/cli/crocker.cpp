@@ -46,6 +46,23 @@ double scaled(std::size_t value, std::size_t max) {
   return max == 0 ? 0.0 : std::log1p(static_cast<double>(value)) / std::log1p(static_cast<double>(max));
 }
 
+// About five ticks at round values (1, 2 or 5 times a power of ten apart) from t0 to t1.
+std::vector<double> round_ticks(double t0, double t1) {
+  if (!(t1 > t0))
+    return {t0};
+  const double raw = (t1 - t0) / 5, magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = 10 * magnitude;
+  for (const double m : {1.0, 2.0, 5.0})
+    if (m * magnitude >= raw) {
+      step = m * magnitude;
+      break;
+    }
+  std::vector<double> ticks;
+  for (double k = std::ceil(t0 / step); k * step <= t1 + 1e-9 * step; k += 1)
+    ticks.push_back(k * step);
+  return ticks;
+}
+
 } // namespace
 
 void write_crocker_csv(std::ostream& out, const std::vector<CrockerRow>& rows) {
@@ -143,7 +160,9 @@ void write_crocker_svg(std::ostream& out, const std::vector<CrockerRow>& rows, c
           max = std::max(max, r.betti[static_cast<std::size_t>(k)]);
       out << "<g class=\"crocker-panel\" shape-rendering=\"crispEdges\" data-type=\"" << xml_escape(types[ti])
           << "\" data-degree=\"" << k << "\">\n<text x=\"" << x0 << "\" y=\"" << y0 - 8
-          << "\" font-weight=\"bold\">type " << xml_escape(types[ti]) << ": " << names[k] << "</text>\n";
+          << "\" font-weight=\"bold\">"
+          << (types[ti] == "all" ? "all cells" : "type " + xml_escape(types[ti])) << ": " << names[k]
+          << "</text>\n";
       const double row_h = panel_h / std::max<std::size_t>(1, radii.size());
       for (std::size_t ri = 0; ri < radii.size(); ++ri) {
         // Largest radius on top, like a y axis.
@@ -171,8 +190,7 @@ void write_crocker_svg(std::ostream& out, const std::vector<CrockerRow>& rows, c
       }
       out << "<rect x=\"" << x0 << "\" y=\"" << y0 << "\" width=\"" << panel_w << "\" height=\"" << panel_h
           << "\" fill=\"none\" stroke=\"#333\"/>\n";
-      for (int tick = 0; tick <= 4; ++tick) {
-        const double t = t0 + (t1 - t0) * tick / 4.0;
+      for (const double t : round_ticks(t0, t1)) {
         const double x = x0 + (t - t0) / span * panel_w;
         out << "<line x1=\"" << x << "\" x2=\"" << x << "\" y1=\"" << y0 + panel_h << "\" y2=\""
             << y0 + panel_h + 4 << "\" stroke=\"#333\"/><text x=\"" << x << "\" y=\"" << y0 + panel_h + 16
