@@ -147,7 +147,7 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
               std::to_string(types.size()) + " cell types, forward and reverse, " +
               std::to_string(medusa.cells.size()) + " cells, PHAT)" + on);
   // Each task builds one filtration, reduces it and frees it (at most `threads` in memory: the peak
-  // stays below the kinetic stage's, issue #9). The two stages overlap on the threads, so their wall
+  // stays below the kinetic stage's). The two stages overlap on the threads, so their wall
   // and CPU seconds are the measured totals split in proportion to the tasks' time in each phase.
   clock = StageClock{};
   persistence::DiagramPhaseSeconds phases;

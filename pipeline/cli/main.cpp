@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
   // Blocks of 128 KiB and more are mapped and unmapped one by one. glibc otherwise raises this
   // threshold after the first such block is freed and serves later large temporaries (store columns,
   // rehashed tables) from the heap, where they stay resident after they are freed: on large_3d that
-  // added a third to the peak memory of `medusa run` (issue #9; the kinetic stage runs no slower).
+  // added a third to the peak memory of `medusa run` (the kinetic stage runs no slower).
   mallopt(M_MMAP_THRESHOLD, 128 * 1024);
 #endif
   try {

@@ -1,6 +1,6 @@
 """Cross-checks the golden files of tests/data/cli/golden against each other and against GUDHI, so
 that a regenerated golden file that is internally inconsistent or disagrees with the oracle fails even
-before anyone reviews its diff (tests/data/cli/golden/README.txt lists what each check covers).
+before its diff is read (tests/data/cli/golden/README.txt lists what each check covers).
 
 usage: verify_golden.py <golden dir> <medusa binary> <work dir with the three golden stores>
 """
