@@ -6,6 +6,7 @@
 #include "diagram_selection.h"
 #include "interrupt.h"
 #include "progress_meter.h"
+#include "run_input.h"
 #include "run_summary.h"
 #include "stage_timings.h"
 #include "svg_plot.h"
@@ -113,55 +114,12 @@ private:
   std::vector<std::int64_t> peak_rss_at_frame_;
 };
 
-// `<input-name>` of a folder or a name.csv[.gz] file, for the default store name. CC3D writes
-// cells.csv.gz into the run's folder, so that file is named after its folder (dir/cells.csv.gz ->
-// dir), as the folder itself would be.
-std::string input_stem(const std::string& input) {
-  fs::path p = fs::absolute(fs::path(input)).lexically_normal();
-  if (p.filename().empty())
-    p = p.parent_path();
-  std::string name = p.filename().string();
-  for (const std::string suffix : {".gz", ".csv"})
-    if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
-      name.erase(name.size() - suffix.size());
-  if (name == "cells" && !p.parent_path().filename().empty())
-    name = p.parent_path().filename().string();
-  return name.empty() || name == "." ? "run" : name;
-}
-
 std::string output_stem(const std::string& output) {
   const std::string suffix = ".h5";
   if (output.size() > suffix.size() &&
       output.compare(output.size() - suffix.size(), suffix.size(), suffix) == 0)
     return output.substr(0, output.size() - suffix.size());
   return output;
-}
-
-io::RunSource choose_source(const RunArguments& args) {
-  if (args.source == "vtk")
-    return io::RunSource::vtk;
-  if (args.source == "csv")
-    return io::RunSource::csv;
-  // Default for a CC3D folder: CC3D's own centres (cells.csv.gz) are on the 10^-6 grid, while the
-  // VTK voxel centroids are not and would need --snap (docs/MATH.md §1.2, §1.3).
-  const fs::path folder(args.input);
-  std::error_code ec;
-  if (fs::is_directory(folder, ec) &&
-      (fs::exists(folder / "cells.csv.gz", ec) || fs::exists(folder / "cells.csv", ec)))
-    return io::RunSource::csv;
-  return io::RunSource::automatic;
-}
-
-// --radius auto (docs/MATH.md §7.10): the decimal radius, and how it was chosen for the summary.
-std::pair<std::string, std::string> radius_from_volumes(const io::RunData& data) {
-  const double volume = io::median_cell_volume(data.volumes);
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.6f", io::equivalent_radius(volume, data.trajectories.dimension));
-  char note[160];
-  std::snprintf(note, sizeof note, "auto: the radius of a %s of the median cell volume, %g %s",
-                data.trajectories.dimension == 2 ? "disc" : "ball", volume,
-                data.trajectories.dimension == 2 ? "pixels" : "voxels");
-  return {buffer, note};
 }
 
 // What the summary and --timings report about the stages after the kinetic one.
@@ -313,7 +271,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   RunArguments resolved = args;
   resolved.input = input;
   io::RunOptions options;
-  options.source = choose_source(resolved);
+  options.source = choose_source(input, args.source);
   options.snap = args.snap;
   options.allow_periodic_as_open = args.periodic_as_open;
   meter.stage("reading " + input);

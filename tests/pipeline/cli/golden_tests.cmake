@@ -96,7 +96,7 @@ medusa_golden_test(compare_type1_h1_finite
 medusa_golden_test(help ARGS --help STDOUT help.txt)
 # `medusa` alone prints the same help, exit 0.
 medusa_golden_test(no_subcommand STDOUT help.txt)
-foreach(sub run info diagrams barcode compare curves at)
+foreach(sub run info diagrams barcode compare curves at report sweep)
   medusa_golden_test(${sub}_help ARGS ${sub} --help STDOUT help_${sub}.txt)
 endforeach()
 
