@@ -46,7 +46,8 @@ struct RunArguments {
   std::string source;
   std::string timings;
   unsigned threads = 0; // 0: one per hardware thread
-  bool audit = false, snap = false, periodic_as_open = false, quiet = false, progress = false;
+  bool audit = false, snap = false, exact_vtk = false, periodic_as_open = false, quiet = false,
+       progress = false;
 };
 
 // Forwards the event stream to the builder; reports progress and polls for interrupts. It also
@@ -137,7 +138,7 @@ io::RunSource choose_source(const RunArguments& args) {
   if (args.source == "csv")
     return io::RunSource::csv;
   // Default for a CC3D folder: CC3D's own centres (cells.csv.gz) are on the 10^-6 grid, while the
-  // VTK voxel centroids are not and would need --snap (docs/MATH.md §1.2, §1.3).
+  // VTK voxel centroids are not and are snapped to it (docs/MATH.md §1.2, §1.3).
   const fs::path folder(args.input);
   std::error_code ec;
   if (fs::is_directory(folder, ec) &&
@@ -293,15 +294,18 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   resolved.input = input;
   io::RunOptions options;
   options.source = choose_source(resolved);
-  options.snap = args.snap;
+  options.snap = !args.exact_vtk;
   options.allow_periodic_as_open = args.periodic_as_open;
   meter.stage("reading " + input);
   StageClock clock;
   const io::RunData data = io::read_run(input, options);
   timings.add("reading", clock);
-  if (!args.quiet)
+  if (!args.quiet) {
     for (const std::string& w : data.warnings)
       std::cerr << "medusa: warning: " << w << "\n";
+    for (const std::string& n : data.notes)
+      std::cerr << "medusa: " << n << "\n";
+  }
 
   const std::string radius = args.radius == "auto" ? radius_from_volumes(data) : args.radius;
   kinetic::KineticOptions kinetic_options;
@@ -315,6 +319,10 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   info.source_files = data.sources;
   info.command_line = command_line;
   info.software_version = medusa::version;
+  info.position_source = data.position_convention;
+  info.snap_policy = data.used == io::RunSource::vtk && data.snap.snapped ? "nearest-ties-to-even" : "exact";
+  info.snapped_positions = static_cast<std::uint64_t>(data.snap.moved);
+  info.snap_max_displacement = data.snap.max_displacement();
 
   kinetic::KineticStatistics stats;
   std::vector<std::int64_t> peak_rss_at_frame;
@@ -379,9 +387,13 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
       ->capture_default_str();
   run->add_option("--source", args->source,
                   "positions from 'csv' (cells.csv.gz, CC3D centres; default for a folder that has it) or "
-                  "'vtk' (exact voxel centroids; these lie off the 10^-6 grid, so they need --snap)")
+                  "'vtk' (voxel centroids, snapped to the 10^-6 grid as CC3D's centres are rounded; the "
+                  "snap is recorded in the store, docs/MATH.md §1.3)")
       ->check(CLI::IsMember({"csv", "vtk"}));
-  run->add_flag("--snap", args->snap, "snap VTK centroids to the 10^-6 grid (recorded in the store)");
+  run->add_flag("--exact-vtk", args->exact_vtk,
+                "refuse VTK centroids off the 10^-6 grid instead of snapping them");
+  run->add_flag("--snap", args->snap,
+                "snap VTK centroids to the 10^-6 grid (the default; accepted for older scripts)");
   run->add_flag("--periodic-as-open", args->periodic_as_open,
                 "read a periodic run as if its boundaries were open");
   run->add_flag("--audit", args->audit,
@@ -399,7 +411,11 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
       "--timings", args->timings,
       "write wall and CPU seconds per stage (reading, kinetic, medusa_store, filtrations, reduction, "
       "exports), peak RSS, kinetic events and store size to this JSON file");
-  run->callback([args, command_line] { run_command(*args, command_line); });
+  run->callback([args, command_line] {
+    if (args->snap && args->exact_vtk)
+      throw CLI::ValidationError("--exact-vtk", "contradicts --snap: give one of them");
+    run_command(*args, command_line);
+  });
 }
 
 } // namespace medusa::cli

@@ -2,6 +2,7 @@
 
 #include "diagram_export.h"
 #include "diagram_selection.h"
+#include "position_source.h"
 
 #include <cmath>
 #include <cstdio>
@@ -93,8 +94,10 @@ void write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
   const double t_end = input.frame_times.empty() ? 0.0 : static_cast<double>(input.frame_times.back());
   out << "cells: " << input.cells.size() << " trajectories, frames: " << input.frames() << " (MCS " << mcs(t0)
       << " to " << mcs(t_end) << "), dimension " << input.dimension << "\n"
-      << "radius: " << radius_text << " lattice units\n"
-      << "events: " << stats.flips() << " flips (";
+      << "radius: " << radius_text << " lattice units\n";
+  if (positions_from_vtk(medusa.run))
+    out << "positions: " << describe_positions(medusa.run) << "\n";
+  out << "events: " << stats.flips() << " flips (";
   // A planar run flips 2-2, a 3D run 2-3 and 3-2 (the hull flips of either are counted apart).
   if (input.dimension == 2)
     out << stats.flips22 << " 2-2, ";
