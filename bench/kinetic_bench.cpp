@@ -15,12 +15,12 @@
 // dimension only. --step sets how far the random walks move per frame: the kinetic cost grows with
 // the events per frame, the static rebuild's does not. --turnover makes cells appear and vanish at
 // every frame, as in a run where cells divide and die.
+#include "certificate_enclosure.h"
 #include "delaunay_skeleton.h"
+#include "interval_filter.h"
 #include "medusa/io/run_reader.h"
-#include "medusa/kinetic/certificate_enclosure.h"
-#include "medusa/kinetic/interval_filter.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
-#include "medusa/kinetic/root_isolation.h"
+#include "root_isolation.h"
 
 #include <CGAL/Alpha_shape_2.h>
 #include <CGAL/Alpha_shape_face_base_2.h>

@@ -27,9 +27,9 @@
 // numbers): the remaining 7 u cover both with room to spare (checked independently in review).
 // The radius certificates Q G - 4 P H (edges Q G - 4 P) then combine the two enclosures with the interval P
 // and Q in interval arithmetic, which needs the rounding mode upward (CGAL::Protect_FPU_rounding).
-#include "medusa/kinetic/certificate_enclosure.h"
+#include "certificate_enclosure.h"
 
-#include "medusa/kinetic/fixed_polynomial.h"
+#include "fixed_polynomial.h"
 
 #include <algorithm>
 #include <cmath>

@@ -56,7 +56,7 @@
 // 3D (tests/kinetic/test_kinetic_degenerate_groups_2d.cpp has an example derived on paper).
 #include "engine.h"
 
-#include "medusa/kinetic/certificate_polynomials.h"
+#include "certificate_polynomials.h"
 
 #include <algorithm>
 #include <map>
