@@ -33,6 +33,7 @@
 #include <optional>
 #include <thread>
 #include <unistd.h>
+#include <vector>
 
 namespace medusa::cli {
 namespace {
@@ -145,6 +146,24 @@ io::RunSource choose_source(const RunArguments& args) {
       (fs::exists(folder / "cells.csv.gz", ec) || fs::exists(folder / "cells.csv", ec)))
     return io::RunSource::csv;
   return io::RunSource::automatic;
+}
+
+// The bundled run `medusa run` processes without an argument: the installed copy beside the binary
+// (<prefix>/share/medusa/examples/sorting_3d for <prefix>/bin/medusa), else the source tree's (a
+// binary in the build tree).
+std::string bundled_example() {
+  std::vector<fs::path> places;
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec)
+    places.push_back((self.parent_path() / MEDUSA_EXAMPLES_FROM_BINDIR / "sorting_3d").lexically_normal());
+  places.push_back(fs::path(MEDUSA_SOURCE_DIR) / "examples" / "sorting_3d");
+  for (const fs::path& p : places)
+    if (fs::is_directory(p, ec))
+      return p.string();
+  throw InputError("no input given and the bundled example is in neither " + places.front().string() +
+                   (places.size() > 1 ? " nor " + places.back().string() : std::string()) +
+                   "; give a CC3D output folder or cells.csv[.gz]");
 }
 
 std::string radius_from_volumes(const io::RunData& data) {
@@ -280,8 +299,7 @@ void write_timings(const std::string& path, const RunArguments& args, const io::
 }
 
 void run_command(const RunArguments& args, const std::string& command_line) {
-  const std::string input =
-      args.input.empty() ? std::string(MEDUSA_SOURCE_DIR) + "/examples/sorting_3d" : args.input;
+  const std::string input = args.input.empty() ? bundled_example() : args.input;
   std::error_code ec;
   if (!fs::exists(input, ec))
     throw InputError("input " + input + " does not exist");
