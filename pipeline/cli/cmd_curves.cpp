@@ -9,6 +9,7 @@
 
 #include "medusa/medusa/signatures.h"
 #include "medusa/medusa/store_reader.h"
+#include "medusa/persistence/slice_signatures.h"
 
 #include <algorithm>
 #include <iostream>
@@ -22,6 +23,7 @@ struct CurvesArguments {
   std::string store;
   std::string prefix;
   bool frames_only = false;
+  std::string method = "reduction";
 };
 
 struct TypeCurves {
@@ -98,8 +100,13 @@ void curves_command(const CurvesArguments& args) {
     types.emplace_back(t);
   for (const std::optional<int>& type : types) {
     check_interrupted();
-    const medusa::ComplexIndex index(medusa, type);
-    std::vector<medusa::SignatureSample> samples = medusa::signatures_over_time(index);
+    std::vector<medusa::SignatureSample> samples;
+    if (args.method == "reference") {
+      const medusa::ComplexIndex index(medusa, type);
+      samples = medusa::signatures_over_time(index);
+    } else {
+      samples = persistence::signatures_by_reduction(medusa, type, check_interrupted);
+    }
     if (args.frames_only)
       samples = frame_samples(samples, medusa.input);
     all.push_back({type ? std::to_string(*type) : "all", std::move(samples)});
@@ -142,6 +149,11 @@ void add_curves_command(CLI::App& app) {
       "--frames-only", args->frames_only,
       "one row per input frame (the state reported at the frame, docs/MATH.md §6.6) instead of one per "
       "event batch");
+  // Not in the help: the per-batch recomputation of docs/MATH.md §6.6, kept as the oracle of the
+  // single-reduction method of §6.7.
+  curves->add_option("--method", args->method, "")
+      ->check(CLI::IsMember({"reduction", "reference"}))
+      ->group("");
   curves->callback([args] { curves_command(*args); });
 }
 
