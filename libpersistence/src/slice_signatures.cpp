@@ -150,9 +150,9 @@ std::vector<Signature> slice_signatures(const std::vector<Cell>& cells, const st
   // Prefix lengths of the slices: B = the first u forward cells, K^ u w*D = the first v indices.
   std::vector<std::size_t> u(S), v(S);
   for (std::size_t s = 0; s < S; ++s) {
-    u[s] = static_cast<std::size_t>(std::lower_bound(coned.births.begin(), coned.births.end(),
-                                                     slices[s].born_before) -
-                                    coned.births.begin());
+    u[s] = static_cast<std::size_t>(
+        std::lower_bound(coned.births.begin(), coned.births.end(), slices[s].born_before) -
+        coned.births.begin());
     const std::size_t alive = static_cast<std::size_t>(
         std::partition_point(coned.deaths.begin(), coned.deaths.end(),
                              [&](std::uint64_t d) { return d >= slices[s].dies_from; }) -
@@ -178,8 +178,7 @@ std::vector<Signature> slice_signatures(const std::vector<Cell>& cells, const st
     if (dim > 3)
       throw InternalError("slice signatures: cell " + std::to_string(coned.filtration.cells[j]) +
                           " of dimension " + std::to_string(dim) + " lies in a time slice");
-    add_range(f_diff[static_cast<std::size_t>(dim)], first_u_above(j),
-              end_v_above(coned.cone_of[j]));
+    add_range(f_diff[static_cast<std::size_t>(dim)], first_u_above(j), end_v_above(coned.cone_of[j]));
   }
   call(poll);
 
