@@ -1,7 +1,8 @@
 #!/bin/sh
 # `medusa curves` by one coned reduction (docs/MATH.md §6.7) writes the same CSV, byte for byte, as the
 # per-batch recomputation of docs/MATH.md §6.6 (hidden `--method reference`), with and without
-# --frames-only. Usage: curves_methods_agree.sh <medusa> <workdir> <store.h5> | <input> <run options...>
+# --frames-only (FRAMES_TOO=no: every batch only, the frames being a subset of those rows).
+# Usage: curves_methods_agree.sh <medusa> <workdir> <store.h5> | <input> <run options...>
 set -u
 medusa=$1
 work=$2
@@ -16,7 +17,10 @@ case "$input" in
     ;;
 esac
 name=$(basename "$store" .h5)
-for frames in "" --frames-only; do
+modes='"" --frames-only'
+[ "${FRAMES_TOO:-yes}" = no ] && modes='""'
+eval "set -- $modes"
+for frames in "$@"; do
   "$medusa" curves "$store" -o "$name.fast" $frames >/dev/null || { echo "curves failed"; exit 1; }
   "$medusa" curves "$store" -o "$name.reference" --method reference $frames >/dev/null ||
     { echo "curves --method reference failed"; exit 1; }
