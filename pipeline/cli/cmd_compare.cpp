@@ -104,7 +104,13 @@ void compare_command(const CompareArguments& args) {
   }
   check_interrupted();
   const persistence::DistanceMatrix distances = persistence::distance_matrix(
-      points, [&metric](const auto& a, const auto& b) { return metric(a, b); }, 2);
+      points,
+      [&metric](const auto& a, const auto& b) {
+        // Both workers poll before each pair, so an interrupt stops the whole matrix at the next pair.
+        check_interrupted();
+        return metric(a, b);
+      },
+      2);
   check_interrupted();
   const persistence::Dendrogram dendrogram = persistence::average_linkage(distances);
 

@@ -65,6 +65,8 @@ void write_curves_csv(std::ostream& out, const std::vector<TypeCurves>& all) {
       times.push_back(format_time(s.time));
   for (const TypeCurves& c : all)
     for (std::size_t i = 0; i < c.samples.size(); ++i) {
+      if (i % 4096 == 0)
+        check_interrupted();
       const medusa::SignatureSample& s = c.samples[i];
       const medusa::Signature& g = s.signature;
       out << (i < times.size() && s.time == all.front().samples[i].time ? times[i] : format_time(s.time))
@@ -114,6 +116,7 @@ std::string share(double x) {
 
 void curves_command(const CurvesArguments& args) {
   const medusa::Medusa medusa = medusa::read_store(args.store);
+  check_interrupted();
   std::vector<TypeCurves> all;
   std::vector<std::optional<int>> types{std::nullopt};
   for (int t : distinct_types(vertex_types(medusa)))

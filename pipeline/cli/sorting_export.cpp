@@ -1,6 +1,7 @@
 #include "sorting_export.h"
 
 #include "diagram_export.h"
+#include "interrupt.h"
 
 #include <charconv>
 #include <cmath>
@@ -40,6 +41,8 @@ void write_sorting_csv(std::ostream& out, const std::vector<medusa::SortingSampl
   for (std::size_t g = 0; g < samples.front().measures.size(); ++g) {
     const std::string label = label_of(samples.front().measures[g]);
     for (std::size_t i = 0; i < samples.size(); ++i) {
+      if (i % 4096 == 0)
+        check_interrupted();
       const medusa::SortingMeasures& m = samples[i].measures.at(g);
       out << times[i] << ',' << label << ',' << m.cells << ',' << m.edges << ',' << m.heterotypic_edges
           << ',';
