@@ -172,6 +172,55 @@ Wide lcm_up_to(std::size_t n, bool& overflow) {
   return l;
 }
 
+// Sums of same/deg over the cells of each type. Exact while L = lcm(1..max degree) keeps every sum an
+// integer multiple of 1/L below 2^124: then nothing is rounded until the mean. Beyond that (a cell
+// with more than about 75 neighbours), a histogram of (deg, same) per type, summed at each sample, so
+// each mean is a sum of at most (max degree)^2 rounded terms and no rounding accumulates over time.
+class FractionSums {
+public:
+  FractionSums(std::size_t types, std::size_t max_degree, std::size_t cells)
+      : exact_(types, 0), histogram_(types) {
+    bool overflow = false;
+    L_ = lcm_up_to(max_degree, overflow);
+    use_exact_ = !overflow && L_ <= (~Wide{0} >> 4) / (static_cast<Wide>(cells + 1) * (max_degree + 1));
+  }
+  void change(std::size_t type, std::size_t same, std::size_t deg, int sign) {
+    if (use_exact_) {
+      const Wide part = static_cast<Wide>(same) * (L_ / deg);
+      exact_[type] = sign > 0 ? exact_[type] + part : exact_[type] - part;
+      return;
+    }
+    auto& bins = histogram_[type];
+    const std::uint64_t key = (static_cast<std::uint64_t>(deg) << 32) | same;
+    const long long count = (bins[key] += sign);
+    if (count == 0)
+      bins.erase(key);
+  }
+  // The mean of same/deg over the cells of the given types, `count` of them (NaN when 0).
+  double mean(std::size_t first_type, std::size_t end_type, std::size_t count) const {
+    if (count == 0)
+      return std::numeric_limits<double>::quiet_NaN();
+    if (use_exact_) {
+      Wide sum = 0;
+      for (std::size_t t = first_type; t < end_type; ++t)
+        sum += exact_[t];
+      return static_cast<double>(static_cast<long double>(sum) / (static_cast<long double>(L_) * count));
+    }
+    long double sum = 0;
+    for (std::size_t t = first_type; t < end_type; ++t)
+      for (const auto& [key, n] : histogram_[t])
+        sum += static_cast<long double>(n) * static_cast<long double>(key & 0xffffffffu) /
+               static_cast<long double>(key >> 32);
+    return static_cast<double>(sum / count);
+  }
+
+private:
+  Wide L_ = 1;
+  bool use_exact_ = true;
+  std::vector<Wide> exact_;
+  std::vector<std::unordered_map<std::uint64_t, long long>> histogram_;
+};
+
 } // namespace
 
 double SortingMeasures::heterotypic_fraction() const {
@@ -241,29 +290,18 @@ std::vector<SortingSample> sorting_over_time(const Medusa& medusa, const std::fu
         for (VertexId v : c->vertices)
           max_degree = std::max(max_degree, ++deg[static_cast<std::size_t>(v)]);
   }
-  bool overflow = false;
-  const Wide L = lcm_up_to(max_degree, overflow);
-  if (overflow || (V > 0 && L > (~Wide{0} >> 4) / (static_cast<Wide>(V) * (max_degree + 1))))
-    throw InternalError("sorting measures: a cell with " + std::to_string(max_degree) +
-                        " neighbours is beyond the exact same-type fraction");
+  FractionSums sums(T, max_degree, V);
   std::fill(deg.begin(), deg.end(), 0);
 
   std::vector<SortingSample> out(S);
   std::size_t all_edges = 0, all_hetero = 0;
   std::vector<std::size_t> cells(T, 0), with(T, 0), touch(T, 0), hetero(T, 0);
-  std::vector<Wide> ratio_sum(T, 0);
   auto contribution = [&](std::size_t v, int sign) {
     if (deg[v] == 0)
       return;
     const std::size_t t = type_of[v];
-    const Wide part = static_cast<Wide>(same[v]) * (L / deg[v]);
-    if (sign > 0) {
-      ++with[t];
-      ratio_sum[t] += part;
-    } else {
-      --with[t];
-      ratio_sum[t] -= part;
-    }
+    with[t] = sign > 0 ? with[t] + 1 : with[t] - 1;
+    sums.change(t, same[v], deg[v], sign);
   };
   auto change_edge = [&](const Cell& c, int sign) {
     const std::size_t a = static_cast<std::size_t>(c.vertices[0]),
@@ -306,7 +344,6 @@ std::vector<SortingSample> sorting_over_time(const Medusa& medusa, const std::fu
     SortingMeasures& whole = sample.measures[0];
     whole.edges = all_edges;
     whole.heterotypic_edges = all_hetero;
-    Wide whole_sum = 0;
     for (std::size_t t = 0; t < T; ++t) {
       SortingMeasures& m = sample.measures[t + 1];
       m.type = types[t];
@@ -314,18 +351,11 @@ std::vector<SortingSample> sorting_over_time(const Medusa& medusa, const std::fu
       m.edges = touch[t];
       m.heterotypic_edges = hetero[t];
       m.cells_with_neighbours = with[t];
-      m.same_type_fraction = with[t] == 0 ? std::numeric_limits<double>::quiet_NaN()
-                                          : static_cast<double>(static_cast<long double>(ratio_sum[t]) /
-                                                                (static_cast<long double>(L) * with[t]));
+      m.same_type_fraction = sums.mean(t, t + 1, with[t]);
       whole.cells += cells[t];
       whole.cells_with_neighbours += with[t];
-      whole_sum += ratio_sum[t];
     }
-    whole.same_type_fraction =
-        whole.cells_with_neighbours == 0
-            ? std::numeric_limits<double>::quiet_NaN()
-            : static_cast<double>(static_cast<long double>(whole_sum) /
-                                  (static_cast<long double>(L) * whole.cells_with_neighbours));
+    whole.same_type_fraction = sums.mean(0, T, whole.cells_with_neighbours);
     if (s % poll_every == 0)
       call(poll);
   }

@@ -4,8 +4,8 @@
 #include "medusa/persistence/boundary_matrix.h"
 
 #include <algorithm>
-#include <numeric>
 #include <string>
+#include <tuple>
 
 namespace medusa::persistence {
 namespace {
@@ -107,7 +107,7 @@ Coned coned_filtration(const std::vector<Cell>& cells, std::vector<std::size_t> 
       col.push_back(apex);
     for (CellId facet : c.facets) {
       const std::int64_t row = cone_index[facet];
-      if (row >= static_cast<std::int64_t>(at))
+      if (row == absent || row >= static_cast<std::int64_t>(at))
         throw InternalError("slice signatures: the cone of facet " + std::to_string(facet) + " of cell " +
                             std::to_string(c.id) + " does not precede it");
       col.push_back(row);
