@@ -77,8 +77,14 @@ def expected_at_frame(f, k):
         last = first[v] + offset[v + 1] - offset[v] - 1
         # The state reported at frame k < K is K(t_k+): cells deleted at t_k (last frame k) are gone,
         # cells inserted at t_k are there; at the last frame it is K(t_K-), the cells of slab K-1
-        # (docs/MATH.md §0, §2.4).
-        if (k < last_frame and first[v] <= k < last) or (k == last_frame and first[v] < k <= last):
+        # (docs/MATH.md §0, §2.4); a run of one frame has only its cells at t_0.
+        if last_frame == 0:
+            here = first[v] == 0
+        elif k < last_frame:
+            here = first[v] <= k < last
+        else:
+            here = first[v] < k <= last
+        if here:
             present.append(v)
             p = positions[offset[v] + k - first[v]]
             points.append([float(x) for x in p[:dimension]])
