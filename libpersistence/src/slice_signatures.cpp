@@ -18,7 +18,7 @@ void call(const std::function<void()>& poll) {
 }
 
 // The cells of the union complex: members that lie in some slice K(b+) or K(b-), i.e. whose birth
-// batch is before their death batch (docs/MATH.md §6.7). Instant cells and cells living inside one
+// batch is before their death batch (docs/MATH.md §6.8). Instant cells and cells living inside one
 // batch lie in no slice; the kept set is closed under facets because facet lifetimes contain
 // their cofaces' (docs/MATH.md §6.4).
 std::vector<std::size_t> union_cells(const std::vector<Cell>& cells, const std::vector<char>& member) {
@@ -34,7 +34,7 @@ std::vector<std::size_t> union_cells(const std::vector<Cell>& cells, const std::
   return kept;
 }
 
-// The coned filtration of docs/MATH.md §6.7: the union complex in birth order, the apex w, then the
+// The coned filtration of docs/MATH.md §6.8: the union complex in birth order, the apex w, then the
 // cone w*c of every cell c in order of decreasing death. Returns the filtration and, per kept cell in
 // birth order, its birth and (for the cone part) death batches.
 struct Coned {
@@ -189,7 +189,7 @@ std::vector<Signature> slice_signatures(const std::vector<Cell>& cells, const st
                         std::to_string(coned.filtration.size() - 2 * pairs.size()) +
                         " essential classes instead of one");
 
-  // docs/MATH.md §6.7: the reduced Betti number of slice s in degree k counts the pairs of degree k
+  // docs/MATH.md §6.8: the reduced Betti number of slice s in degree k counts the pairs of degree k
   // with b < u <= d < v and the pairs of degree k+1 with u <= b < v <= d.
   std::array<std::vector<long long>, 5> b_diff;
   for (auto& d : b_diff)

@@ -1,6 +1,6 @@
 // `medusa curves`: simplex counts, Euler characteristic and Betti numbers of the time slices K_t
-// (docs/MATH.md §6.6, §6.7), for the whole complex and for each cell type's subcomplex (7.4), and the
-// classical sorting measures of the same slices (§6.8), as CSV and SVG.
+// (docs/MATH.md §6.6, §6.8), for the whole complex and for each cell type's subcomplex (7.4), and the
+// classical sorting measures of the same slices (§6.9), as CSV and SVG.
 #include "atomic_file.h"
 #include "commands.h"
 #include "curve_plot.h"
@@ -209,7 +209,7 @@ void add_curves_command(CLI::App& app) {
       "one row per input frame (the state reported at the frame, docs/MATH.md §6.6) instead of one per "
       "event batch");
   // Not in the help: the per-batch recomputation of docs/MATH.md §6.6, kept as the oracle of the
-  // single-reduction method of §6.7.
+  // single-reduction method of §6.8.
   curves->add_option("--method", args->method, "")
       ->check(CLI::IsMember({"reduction", "reference"}))
       ->group("");

@@ -6,6 +6,7 @@
 #include "diagram_selection.h"
 #include "interrupt.h"
 #include "progress_meter.h"
+#include "run_input.h"
 #include "run_summary.h"
 #include "stage_timings.h"
 #include "svg_plot.h"
@@ -32,7 +33,10 @@
 #include <memory>
 #include <optional>
 #include <thread>
+#include <tuple>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 namespace medusa::cli {
 namespace {
@@ -46,7 +50,8 @@ struct RunArguments {
   std::string source;
   std::string timings;
   unsigned threads = 0; // 0: one per hardware thread
-  bool audit = false, snap = false, periodic_as_open = false, quiet = false, progress = false;
+  bool audit = false, snap = false, exact_vtk = false, periodic_as_open = false, quiet = false,
+       progress = false, force = false;
 };
 
 // Forwards the event stream to the builder; reports progress and polls for interrupts. It also
@@ -111,18 +116,6 @@ private:
   std::vector<std::int64_t> peak_rss_at_frame_;
 };
 
-// `<input-name>` of a folder or a cells.csv[.gz] file, for the default store name.
-std::string input_stem(const std::string& input) {
-  fs::path p = fs::path(input).lexically_normal();
-  if (p.filename().empty())
-    p = p.parent_path();
-  std::string name = p.filename().string();
-  for (const std::string suffix : {".gz", ".csv"})
-    if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
-      name.erase(name.size() - suffix.size());
-  return name.empty() || name == "." ? "run" : name;
-}
-
 std::string output_stem(const std::string& output) {
   const std::string suffix = ".h5";
   if (output.size() > suffix.size() &&
@@ -131,26 +124,22 @@ std::string output_stem(const std::string& output) {
   return output;
 }
 
-io::RunSource choose_source(const RunArguments& args) {
-  if (args.source == "vtk")
-    return io::RunSource::vtk;
-  if (args.source == "csv")
-    return io::RunSource::csv;
-  // Default for a CC3D folder: CC3D's own centres (cells.csv.gz) are on the 10^-6 grid, while the
-  // VTK voxel centroids are not and would need --snap (docs/MATH.md §1.2, §1.3).
-  const fs::path folder(args.input);
+// The bundled run `medusa run` processes without an argument: the installed copy beside the binary
+// (<prefix>/share/medusa/examples/sorting_3d for <prefix>/bin/medusa), else the source tree's (a
+// binary in the build tree).
+std::string bundled_example() {
+  std::vector<fs::path> places;
   std::error_code ec;
-  if (fs::is_directory(folder, ec) &&
-      (fs::exists(folder / "cells.csv.gz", ec) || fs::exists(folder / "cells.csv", ec)))
-    return io::RunSource::csv;
-  return io::RunSource::automatic;
-}
-
-std::string radius_from_volumes(const io::RunData& data) {
-  const double volume = io::median_cell_volume(data.volumes);
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.6f", io::equivalent_radius(volume, data.trajectories.dimension));
-  return buffer;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec)
+    places.push_back((self.parent_path() / MEDUSA_EXAMPLES_FROM_BINDIR / "sorting_3d").lexically_normal());
+  places.push_back(fs::path(MEDUSA_SOURCE_DIR) / "examples" / "sorting_3d");
+  for (const fs::path& p : places)
+    if (fs::is_directory(p, ec))
+      return p.string();
+  throw InputError("no input given and the bundled example is in neither " + places.front().string() +
+                   (places.size() > 1 ? " nor " + places.back().string() : std::string()) +
+                   "; give a CC3D output folder or cells.csv[.gz]");
 }
 
 // What the summary and --timings report about the stages after the kinetic one.
@@ -162,13 +151,12 @@ struct StoreFacts {
 // Diagrams from the stored cells, so that what later commands see is what the summary describes.
 StoreFacts write_diagrams_and_summary(const std::string& output, const std::string& stem,
                                       const kinetic::KineticStatistics& stats, const std::string& radius,
-                                      unsigned threads, ProgressMeter& meter, StageTimings& timings) {
+                                      const std::string& radius_note, unsigned threads, bool quiet,
+                                      ProgressMeter& meter, StageTimings& timings) {
   meter.stage("medusa store: reading back " + output);
   StageClock clock;
-  // The diagrams need only the cells: the batch records (one per event time) stay on disk.
-  medusa::StoreReadOptions cells_only;
-  cells_only.events = false;
-  const medusa::Medusa medusa = medusa::read_store(output, cells_only);
+  // The summary's counts at the first frame need the batch records (which batch reaches it).
+  const medusa::Medusa medusa = medusa::read_store(output);
   timings.add("medusa_store", clock);
   check_interrupted();
 
@@ -180,7 +168,7 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
               std::to_string(types.size()) + " cell types, forward and reverse, " +
               std::to_string(medusa.cells.size()) + " cells, PHAT)" + on);
   // Each task builds one filtration, reduces it and frees it (at most `threads` in memory: the peak
-  // stays below the kinetic stage's, issue #9). The two stages overlap on the threads, so their wall
+  // stays below the kinetic stage's). The two stages overlap on the threads, so their wall
   // and CPU seconds are the measured totals split in proportion to the tasks' time in each phase.
   clock = StageClock{};
   persistence::DiagramPhaseSeconds phases;
@@ -193,8 +181,8 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   timings.add("reduction", (1 - share) * wall, (1 - share) * cpu);
   check_interrupted();
 
-  meter.stage("exports: diagrams into the store, " + stem + ".diagrams.csv, " + stem +
-              ".barcode.svg, summary");
+  meter.stage("exports: diagrams into the store, " + stem + ".diagrams.csv, " + stem + ".barcode.svg, " +
+              stem + ".diagram.svg, summary");
   clock = StageClock{};
   // The diagrams go into the store too (group /persistence, docs/FORMAT.md), written atomically.
   persistence::write_diagrams(output, diagrams);
@@ -217,10 +205,17 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   write_file_atomically(stem + ".barcode.svg", [&](std::ostream& out) {
     write_barcode_svg(out, shown, t0, t_end, default_max_bars);
   });
+  write_file_atomically(stem + ".diagram.svg",
+                        [&](std::ostream& out) { write_diagram_svg(out, shown, t0, t_end); });
   check_interrupted();
 
-  write_run_summary(std::cout, medusa, stats, diagrams, radius);
-  std::cout << "wrote " << output << ", " << stem << ".diagrams.csv, " << stem << ".barcode.svg\n";
+  const std::vector<std::string> warnings =
+      write_run_summary(std::cout, medusa, stats, diagrams, radius, radius_note);
+  if (!quiet)
+    for (const std::string& w : warnings)
+      std::cerr << "medusa: warning: " << w << "\n";
+  std::cout << "wrote " << output << ", " << stem << ".diagrams.csv, " << stem << ".barcode.svg, " << stem
+            << ".diagram.svg\n";
   timings.add("exports", clock);
   return {medusa.cells.size(), diagrams.size()};
 }
@@ -279,12 +274,15 @@ void write_timings(const std::string& path, const RunArguments& args, const io::
 }
 
 void run_command(const RunArguments& args, const std::string& command_line) {
-  const std::string input =
-      args.input.empty() ? std::string(MEDUSA_SOURCE_DIR) + "/examples/sorting_3d" : args.input;
+  const std::string input = args.input.empty() ? bundled_example() : args.input;
   std::error_code ec;
   if (!fs::exists(input, ec))
     throw InputError("input " + input + " does not exist");
   const unsigned threads = worker_threads(args.threads);
+  // A store holds a run's whole analysis: replacing one is asked for, never a side effect.
+  const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
+  if (!args.force && fs::exists(output, ec))
+    throw CLI::ParseError("store " + output + " exists; pass --force to replace it", 2);
 
   ProgressMeter meter(std::cerr,
                       ProgressMeter::choose(args.progress, args.quiet, ::isatty(STDERR_FILENO) != 0));
@@ -292,29 +290,37 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   RunArguments resolved = args;
   resolved.input = input;
   io::RunOptions options;
-  options.source = choose_source(resolved);
-  options.snap = args.snap;
+  options.source = choose_source(input, args.source);
+  options.snap = !args.exact_vtk;
   options.allow_periodic_as_open = args.periodic_as_open;
   meter.stage("reading " + input);
   StageClock clock;
   const io::RunData data = io::read_run(input, options);
   timings.add("reading", clock);
-  if (!args.quiet)
+  if (!args.quiet) {
     for (const std::string& w : data.warnings)
       std::cerr << "medusa: warning: " << w << "\n";
+    for (const std::string& n : data.notes)
+      std::cerr << "medusa: " << n << "\n";
+  }
 
-  const std::string radius = args.radius == "auto" ? radius_from_volumes(data) : args.radius;
+  std::string radius = args.radius, radius_note;
+  if (args.radius == "auto")
+    std::tie(radius, radius_note) = radius_from_volumes(data);
   kinetic::KineticOptions kinetic_options;
   kinetic_options.rho2 = kinetic::squared_radius_from_decimal(radius, data.trajectories.scale);
   kinetic_options.audit = args.audit;
 
-  const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
   medusa::RunInfo info;
   info.radius = std::stod(radius);
   info.radius_text = radius;
   info.source_files = data.sources;
   info.command_line = command_line;
   info.software_version = medusa::version;
+  info.position_source = data.position_convention;
+  info.snap_policy = data.used == io::RunSource::vtk && data.snap.snapped ? "nearest-ties-to-even" : "exact";
+  info.snapped_positions = static_cast<std::uint64_t>(data.snap.moved);
+  info.snap_max_displacement = data.snap.max_displacement();
 
   kinetic::KineticStatistics stats;
   std::vector<std::int64_t> peak_rss_at_frame;
@@ -350,10 +356,12 @@ void run_command(const RunArguments& args, const std::string& command_line) {
 
   // README: an interrupted run leaves no output behind, including a store already completed.
   const std::string stem = output_stem(output);
-  const std::vector<std::string> outputs = {output, stem + ".diagrams.csv", stem + ".barcode.svg"};
+  const std::vector<std::string> outputs = {output, stem + ".diagrams.csv", stem + ".barcode.svg",
+                                            stem + ".diagram.svg"};
   try {
     check_interrupted();
-    const StoreFacts facts = write_diagrams_and_summary(output, stem, stats, radius, threads, meter, timings);
+    const StoreFacts facts = write_diagrams_and_summary(output, stem, stats, radius, radius_note, threads,
+                                                        args.quiet, meter, timings);
     if (!args.timings.empty())
       write_timings(args.timings, resolved, data, radius, output, timings, stats, peak_rss_at_frame, facts,
                     threads);
@@ -372,16 +380,27 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
       "run", "Compute the alpha medusa of a CompuCell3D run, store it, and write its persistence diagrams");
   run->add_option("input", args->input,
                   "CC3D output folder or cells.csv[.gz] (default: the bundled examples/sorting_3d)");
-  run->add_option("-o,--output", args->output, "HDF5 store to write (default: <input-name>.h5 here)");
-  run->add_option("--radius", args->radius,
-                  "alpha radius rho in lattice units (decimal), or 'auto' = "
-                  "equivalent-sphere radius of the median cell volume")
+  run->add_option("-o,--output", args->output,
+                  "HDF5 store to write (default: <input-name>.h5 here; a cells.csv[.gz] is named after its "
+                  "folder)");
+  run->add_flag("--force", args->force,
+                "replace the store if it exists (otherwise an existing store is an error)");
+  run->add_option(
+         "--radius", args->radius,
+         "alpha radius rho in lattice units (decimal): cells are balls of radius rho around their "
+         "centres, and two cells touch when their centres are closer than 2 rho. 'auto': the radius "
+         "of a ball (a disc in 2D) of the median cell volume over all cells and frames (docs/MATH.md "
+         "§7.10)")
       ->capture_default_str();
   run->add_option("--source", args->source,
                   "positions from 'csv' (cells.csv.gz, CC3D centres; default for a folder that has it) or "
-                  "'vtk' (exact voxel centroids; these lie off the 10^-6 grid, so they need --snap)")
+                  "'vtk' (voxel centroids, snapped to the 10^-6 grid as CC3D's centres are rounded; the "
+                  "snap is recorded in the store, docs/MATH.md §1.3)")
       ->check(CLI::IsMember({"csv", "vtk"}));
-  run->add_flag("--snap", args->snap, "snap VTK centroids to the 10^-6 grid (recorded in the store)");
+  run->add_flag("--exact-vtk", args->exact_vtk,
+                "refuse VTK centroids off the 10^-6 grid instead of snapping them");
+  run->add_flag("--snap", args->snap,
+                "snap VTK centroids to the 10^-6 grid (the default; accepted for older scripts)");
   run->add_flag("--periodic-as-open", args->periodic_as_open,
                 "read a periodic run as if its boundaries were open");
   run->add_flag("--audit", args->audit,
@@ -399,7 +418,11 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
       "--timings", args->timings,
       "write wall and CPU seconds per stage (reading, kinetic, medusa_store, filtrations, reduction, "
       "exports), peak RSS, kinetic events and store size to this JSON file");
-  run->callback([args, command_line] { run_command(*args, command_line); });
+  run->callback([args, command_line] {
+    if (args->snap && args->exact_vtk)
+      throw CLI::ValidationError("--exact-vtk", "contradicts --snap: give one of them");
+    run_command(*args, command_line);
+  });
 }
 
 } // namespace medusa::cli

@@ -1,4 +1,4 @@
-// The classical sorting measures of `medusa curves` (docs/MATH.md §6.8) as CSV and as SVG panels.
+// The classical sorting measures of `medusa curves` (docs/MATH.md §6.9) as CSV and as SVG panels.
 #pragma once
 
 #include "curve_plot.h"

@@ -1,4 +1,4 @@
-// The sorting measures of docs/MATH.md §6.8 on a hand-made medusa whose values are worked out below.
+// The sorting measures of docs/MATH.md §6.9 on a hand-made medusa whose values are worked out below.
 #include "medusa/medusa/sorting_measures.h"
 
 #include <catch2/catch.hpp>
@@ -100,7 +100,7 @@ TEST_CASE("sorting measures without contacts have no fractions", "[medusa][sorti
   m.batches = {{0, 0, 0.0, 0.0, true, 0}};
   m.end = {1, 0, 1.0};
   Cell v;
-  v.vertices = {0};
+  v.vertices.push_back(0);
   v.death = m.end;
   m.cells = {v};
   const std::vector<SortingSample> s = sorting_over_time(m);
@@ -123,14 +123,15 @@ TEST_CASE("the same-type fraction stays accurate with a cell of a hundred neighb
     m.input.cells.push_back(t);
     Cell c;
     c.id = m.cells.size();
-    c.vertices = {v};
+    c.vertices.push_back(v);
     c.death = m.end;
     m.cells.push_back(c);
   }
   for (VertexId v = 1; v <= 100; ++v) {
     Cell c;
     c.id = m.cells.size();
-    c.vertices = {0, v};
+    c.vertices.push_back(0);
+    c.vertices.push_back(v);
     c.facets = {static_cast<CellId>(v), 0};
     c.death = m.end;
     m.cells.push_back(c);

@@ -1,4 +1,4 @@
-// Signatures of every time slice by one coned reduction (docs/MATH.md §6.7) against the per-slice
+// Signatures of every time slice by one coned reduction (docs/MATH.md §6.8) against the per-slice
 // recomputation of docs/MATH.md §6.6 (libmedusa's signature_of: union-find and matrix ranks).
 #include "medusa/core/error.h"
 #include "medusa/medusa/complex_index.h"
@@ -159,7 +159,7 @@ TEST_CASE("one coned reduction gives the signature of every slice of a random zi
 TEST_CASE("slices out of time order are refused", "[persistence][slice]") {
   Medusa m;
   Cell v;
-  v.vertices = {0};
+  v.vertices.push_back(0);
   v.death = {2, 0, 2.0};
   m.cells.push_back(v);
   const std::vector<persistence::SliceBounds> backwards{{2, 2}, {1, 1}};

@@ -1,5 +1,5 @@
 #!/bin/sh
-# `medusa curves` by one coned reduction (docs/MATH.md §6.7) writes the same CSV, byte for byte, as the
+# `medusa curves` by one coned reduction (docs/MATH.md §6.8) writes the same CSV, byte for byte, as the
 # per-batch recomputation of docs/MATH.md §6.6 (hidden `--method reference`), with and without
 # --frames-only (FRAMES_TOO=no: every batch only, the frames being a subset of those rows).
 # Usage: curves_methods_agree.sh <medusa> <workdir> <store.h5> | <input> <run options...>

@@ -1,4 +1,4 @@
-// Classical cell-sorting measures of every time slice K_t (docs/MATH.md §6.8): contacts between types,
+// Classical cell-sorting measures of every time slice K_t (docs/MATH.md §6.9): contacts between types,
 // same-type neighbour fractions and clusters, from the edges and vertices of the exact complexes.
 #pragma once
 

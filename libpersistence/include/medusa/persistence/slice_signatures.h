@@ -1,5 +1,5 @@
 // Betti numbers of every time slice K_t of a medusa from one persistence reduction of a coned
-// filtration (docs/MATH.md §6.7): the signatures of docs/MATH.md §6.6 in O(reduction of 2N+1 columns)
+// filtration (docs/MATH.md §6.8): the signatures of docs/MATH.md §6.6 in O(reduction of 2N+1 columns)
 // instead of one reduction per batch.
 #pragma once
 
