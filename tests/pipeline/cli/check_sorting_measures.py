@@ -128,7 +128,7 @@ def main():
     os.makedirs(work, exist_ok=True)
     if not store.endswith(".h5"):
         name = os.path.basename(store.rstrip("/")).split(".")[0] + "_oracle.h5"
-        result = subprocess.run([medusa, "run", store, "-o", name, "--quiet"] + sys.argv[4:], cwd=work)
+        result = subprocess.run([medusa, "run", "--force", store, "-o", name, "--quiet"] + sys.argv[4:], cwd=work)
         assert result.returncode == 0, f"medusa run exit code {result.returncode}"
         store = name
     prefix = os.path.join(work, os.path.splitext(os.path.basename(store))[0] + ".oracle")

@@ -13,7 +13,7 @@ case "$input" in
   *.h5) store=$input ;;
   *)
     store=$(basename "$input" | sed 's/[.].*//')_agree.h5
-    "$medusa" run "$input" -o "$store" --quiet "$@" >/dev/null || { echo "medusa run failed"; exit 1; }
+    "$medusa" run --force "$input" -o "$store" --quiet "$@" >/dev/null || { echo "medusa run failed"; exit 1; }
     ;;
 esac
 name=$(basename "$store" .h5)
