@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "complex_export.h"
 #include "diagram_export.h"
+#include "interrupt.h"
 
 #include "medusa/core/error.h"
 #include "medusa/medusa/complex_index.h"
@@ -30,6 +31,7 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 
 void at_command(const AtArguments& args) {
   const medusa::Medusa medusa = medusa::read_store(args.store);
+  check_interrupted();
   if (args.type) {
     const auto& cells = medusa.input.cells;
     if (std::none_of(cells.begin(), cells.end(),
