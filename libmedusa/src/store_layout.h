@@ -16,6 +16,7 @@ inline constexpr const char* dimension = "dimension";
 inline constexpr const char* source_files = "source_files";
 inline constexpr const char* command_line = "command_line";
 inline constexpr const char* software_version = "software_version";
+inline constexpr const char* run_id = "run_id";
 inline constexpr const char* cell_count = "cell_count";
 inline constexpr const char* batch_count = "batch_count";
 inline constexpr const char* frame_count = "frame_count";

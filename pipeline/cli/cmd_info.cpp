@@ -1,6 +1,7 @@
 // `medusa info`: what a store holds (docs/FORMAT.md).
 #include "commands.h"
 #include "diagram_selection.h"
+#include "side_outputs.h"
 
 #include "medusa/medusa/store_reader.h"
 
@@ -12,8 +13,10 @@ namespace {
 
 void info_command(const std::string& path) {
   const medusa::Medusa medusa = medusa::read_store(path);
+  check_side_outputs(path, medusa.run.run_id);
   const kinetic::Trajectories& input = medusa.input;
   std::cout << "store: " << path << "\n"
+            << "run id: " << (medusa.run.run_id.empty() ? "none" : medusa.run.run_id) << "\n"
             << "software version: " << medusa.run.software_version << "\n"
             << "command line: " << medusa.run.command_line << "\n"
             << "radius: " << medusa.run.radius_text << "\n"

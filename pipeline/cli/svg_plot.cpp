@@ -60,7 +60,7 @@ std::vector<std::size_t> shown_bars(const persistence::Diagram& d, std::size_t m
 } // namespace
 
 void write_barcode_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams, double t0,
-                       double t_end, std::size_t max_bars) {
+                       double t_end, std::size_t max_bars, const std::string& run_id) {
   const double span = t_end > t0 ? t_end - t0 : 1.0;
   const double plot = width - left - right;
   auto x_of = [&](double t) {
@@ -77,7 +77,8 @@ void write_barcode_svg(std::ostream& out, const std::vector<persistence::Diagram
 
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(width) << "\" height=\""
-      << number(height) << "\" font-family=\"sans-serif\" font-size=\"11\">\n"
+      << number(height) << "\" font-family=\"sans-serif\" font-size=\"11\""
+      << (run_id.empty() ? std::string() : " data-medusa-run=\"" + run_id + "\"") << ">\n"
       << "<defs><marker id=\"arrow\" markerWidth=\"6\" markerHeight=\"6\" refX=\"3\" refY=\"3\" "
          "orient=\"auto-start-reverse\"><path d=\"M0,0 L6,3 L0,6 z\"/></marker></defs>\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";

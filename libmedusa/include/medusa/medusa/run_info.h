@@ -14,6 +14,10 @@ struct RunInfo {
   std::vector<std::string> source_files; // the CompuCell3D files read
   std::string command_line;
   std::string software_version;
+  // 32 lowercase hex digits (128 random bits) naming this run; `medusa run` writes it into the store
+  // and into every side output, so that files of two runs are never taken for one (docs/FORMAT.md).
+  // Empty in stores written before it existed.
+  std::string run_id;
 };
 
 } // namespace medusa
