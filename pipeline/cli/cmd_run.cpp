@@ -5,6 +5,7 @@
 #include "diagram_selection.h"
 #include "interrupt.h"
 #include "progress_meter.h"
+#include "run_input.h"
 #include "run_outputs.h"
 #include "run_summary.h"
 #include "side_outputs.h"
@@ -49,7 +50,7 @@ struct RunArguments {
   std::string source;
   std::string timings;
   unsigned threads = 0; // 0: one per hardware thread
-  bool audit = false, snap = false, periodic_as_open = false, quiet = false, progress = false;
+  bool audit = false, snap = false, periodic_as_open = false, quiet = false, progress = false, force = false;
   bool skip_unreadable_frames = false;
 };
 
@@ -131,43 +132,6 @@ private:
   std::vector<std::int64_t> peak_rss_at_frame_;
 };
 
-// `<input-name>` of a folder or a cells.csv[.gz] file, for the default store name.
-std::string input_stem(const std::string& input) {
-  fs::path p = fs::path(input).lexically_normal();
-  if (p.filename().empty())
-    p = p.parent_path();
-  std::string name = p.filename().string();
-  for (const std::string suffix : {".gz", ".csv"})
-    if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
-      name.erase(name.size() - suffix.size());
-  return name.empty() || name == "." ? "run" : name;
-}
-
-io::RunSource choose_source(const RunArguments& args) {
-  if (args.source == "vtk")
-    return io::RunSource::vtk;
-  if (args.source == "csv")
-    return io::RunSource::csv;
-  // Default for a CC3D folder: CC3D's own centres (cells.csv.gz) are on the 10^-6 grid, while the
-  // VTK voxel centroids are not and would need --snap (docs/MATH.md §1.2, §1.3).
-  const fs::path folder(args.input);
-  std::error_code ec;
-  if (fs::is_directory(folder, ec) &&
-      (fs::exists(folder / "cells.csv.gz", ec) || fs::exists(folder / "cells.csv", ec)))
-    return io::RunSource::csv;
-  return io::RunSource::automatic;
-}
-
-std::string radius_from_volumes(const io::RunData& data, const std::string& input) {
-  const double volume = io::median_cell_volume(data.volumes);
-  if (!(volume > 0))
-    throw InputError(input + ": the median cell volume is " + std::to_string(volume) +
-                     ", so no radius can be chosen from it; give one with --radius");
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.6f", io::equivalent_radius(volume, data.trajectories.dimension));
-  return buffer;
-}
-
 // What the summary and --timings report about the stages after the kinetic one.
 struct StoreFacts {
   std::size_t cells = 0;
@@ -203,11 +167,9 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   const std::string& store = outputs.store_temporary();
   meter.stage("medusa store: reading back " + outputs.final_name(0));
   StageClock clock;
-  // The diagrams need only the cells: the batch records (one per event time) stay on disk.
-  medusa::StoreReadOptions cells_only;
-  cells_only.events = false;
+  // The summary's counts at the first frame need the batch records (which batch reaches it).
   RunResult result;
-  result.medusa = medusa::read_store(store, cells_only);
+  result.medusa = medusa::read_store(store);
   const medusa::Medusa& medusa = result.medusa;
   timings.add("medusa_store", clock);
   check_interrupted();
@@ -235,7 +197,8 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
 
   const std::string& csv = outputs.final_name(1);
   const std::string& svg = outputs.final_name(2);
-  meter.stage("exports: diagrams into the store, " + csv + ", " + svg + ", summary");
+  const std::string& diagram_svg = outputs.final_name(3);
+  meter.stage("exports: diagrams into the store, " + csv + ", " + svg + ", " + diagram_svg + ", summary");
   clock = StageClock{};
   // The diagrams go into the store too (group /persistence, docs/FORMAT.md).
   persistence::write_diagrams_in_place(store, diagrams);
@@ -257,6 +220,8 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   write_temporary(outputs.temporary(2), svg, [&](std::ostream& out) {
     write_barcode_svg(out, diagrams, t0, t_end, default_max_bars, run_id);
   });
+  write_temporary(outputs.temporary(3), diagram_svg,
+                  [&](std::ostream& out) { write_diagram_svg(out, diagrams, t0, t_end, run_id); });
   check_interrupted();
   timings.add("exports", clock);
   result.facts = {medusa.cells.size(), diagrams.size()};
@@ -314,7 +279,7 @@ void write_timings(const RunOutputs& outputs, const std::string& run_id, const R
                 {"bytes", ec ? -1 : static_cast<std::int64_t>(bytes)},
                 {"cells", facts.cells},
                 {"diagrams", facts.diagrams}};
-  write_temporary(outputs.temporary(3), outputs.final_name(3),
+  write_temporary(outputs.temporary(4), outputs.final_name(4),
                   [&](std::ostream& out) { out << j.dump(2) << "\n"; });
 }
 
@@ -344,8 +309,11 @@ void run_command(const RunArguments& args, const std::string& command_line) {
 
   // Every output is checked and the store's lock taken before anything is read or written.
   const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
+  // A store holds a run's whole analysis: replacing one is asked for, never a side effect.
+  if (!args.force && fs::exists(output, ec))
+    throw CLI::ParseError("store " + output + " exists; pass --force to replace it", 2);
   const std::string stem = output_stem(output);
-  std::vector<std::string> side = {stem + ".diagrams.csv", stem + ".barcode.svg"};
+  std::vector<std::string> side = {stem + ".diagrams.csv", stem + ".barcode.svg", stem + ".diagram.svg"};
   if (!args.timings.empty())
     side.push_back(args.timings);
   RunOutputs outputs(output, side, input);
@@ -357,7 +325,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   RunArguments resolved = args;
   resolved.input = input;
   io::RunOptions options;
-  options.source = choose_source(resolved);
+  options.source = choose_source(input, args.source);
   options.snap = args.snap;
   options.allow_periodic_as_open = args.periodic_as_open;
   options.skip_unreadable_frames = args.skip_unreadable_frames;
@@ -376,7 +344,9 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     for (const std::string& w : data.warnings)
       std::cerr << "medusa: warning: " << w << "\n";
 
-  const std::string radius = args.radius == "auto" ? radius_from_volumes(data, input) : args.radius;
+  std::string radius = args.radius, radius_note;
+  if (args.radius == "auto")
+    std::tie(radius, radius_note) = radius_from_volumes(data);
   kinetic::KineticOptions kinetic_options;
   kinetic_options.rho2 = kinetic::squared_radius_from_decimal(radius, data.trajectories.scale);
   kinetic_options.audit = args.audit;
@@ -430,9 +400,13 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   // The last moment an interrupt undoes the run: after it, the outputs replace the previous ones.
   check_interrupted();
   outputs.publish();
-  write_run_summary(std::cout, result.medusa, stats, result.diagrams, radius);
+  const std::vector<std::string> warnings =
+      write_run_summary(std::cout, result.medusa, stats, result.diagrams, radius, radius_note);
+  if (!args.quiet)
+    for (const std::string& w : warnings)
+      std::cerr << "medusa: warning: " << w << "\n";
   std::cout << "wrote " << outputs.final_name(0) << ", " << outputs.final_name(1) << ", "
-            << outputs.final_name(2) << "\n";
+            << outputs.final_name(2) << ", " << outputs.final_name(3) << "\n";
 }
 
 } // namespace
@@ -443,10 +417,17 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
       "run", "Compute the alpha medusa of a CompuCell3D run, store it, and write its persistence diagrams");
   run->add_option("input", args->input,
                   "CC3D output folder or cells.csv[.gz] (default: the bundled examples/sorting_3d)");
-  run->add_option("-o,--output", args->output, "HDF5 store to write (default: <input-name>.h5 here)");
-  run->add_option("--radius", args->radius,
-                  "alpha radius rho in lattice units (decimal), or 'auto' = "
-                  "equivalent-sphere radius of the median cell volume")
+  run->add_option("-o,--output", args->output,
+                  "HDF5 store to write (default: <input-name>.h5 here; a cells.csv[.gz] is named after its "
+                  "folder)");
+  run->add_flag("--force", args->force,
+                "replace the store if it exists (otherwise an existing store is an error)");
+  run->add_option(
+         "--radius", args->radius,
+         "alpha radius rho in lattice units (decimal): cells are balls of radius rho around their "
+         "centres, and two cells touch when their centres are closer than 2 rho. 'auto': the radius "
+         "of a ball (a disc in 2D) of the median cell volume over all cells and frames (docs/MATH.md "
+         "§7.10)")
       ->capture_default_str()
       ->check(CLI::Validator([](std::string& value) { return radius_problem(value); }, "RADIUS"));
   run->add_option("--source", args->source,

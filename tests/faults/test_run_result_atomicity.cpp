@@ -107,8 +107,8 @@ fs::path folder_with_previous_result(const std::string& tag) {
   return dir;
 }
 
-const std::vector<std::string> large_run = {"run", MEDUSA_LONG_RUN, "-o",        "prev.h5", "--radius",
-                                            "3",   "--progress",    "--threads", "1"};
+const std::vector<std::string> large_run = {
+    "run", MEDUSA_LONG_RUN, "-o", "prev.h5", "--force", "--radius", "3", "--progress", "--threads", "1"};
 
 // The run id a side output names (first line of the CSV), or "".
 std::string csv_run_id(const std::string& csv) {
@@ -186,7 +186,7 @@ TEST_CASE("medusa run killed at each stage leaves the previous result whole and 
   // A killed run's lock file is no obstacle: the next run completes and its three outputs agree.
   bool signalled = false;
   const pid_t next =
-      start_medusa(dir, {"run", MEDUSA_SMALL_RUN, "-o", "prev.h5", "--radius", "3", "-q"}, "next");
+      start_medusa(dir, {"run", MEDUSA_SMALL_RUN, "-o", "prev.h5", "--force", "--radius", "3", "-q"}, "next");
   REQUIRE(wait_exit(next, signalled) == 0);
   const std::map<std::string, std::string> after = outputs_in(dir);
   const std::string new_id = csv_run_id(after.at("prev.diagrams.csv"));
@@ -202,8 +202,8 @@ TEST_CASE("A second medusa run onto a store being written is refused and the fir
   const fs::path dir = folder_with_previous_result("concurrent");
   const pid_t first = start_medusa(dir, large_run, "first");
   REQUIRE(wait_for_stage(first, dir / "first.stderr", "kinetic"));
-  const pid_t second =
-      start_medusa(dir, {"run", MEDUSA_SMALL_RUN, "-o", "prev.h5", "--radius", "2", "-q"}, "second");
+  const pid_t second = start_medusa(
+      dir, {"run", MEDUSA_SMALL_RUN, "-o", "prev.h5", "--force", "--radius", "2", "-q"}, "second");
   bool signalled = false;
   const int second_code = wait_exit(second, signalled);
   const int first_code = wait_exit(first, signalled);

@@ -72,7 +72,8 @@ def check_unsafe(medusa, csv, work):
     os.mkfifo(os.path.join(work, "side.diagrams.csv"))
     names = listing(work)
     for args, fragment in cases:
-        refused(run([medusa, "run", *args, "--radius", "3", "-q"], work), fragment)
+        # --force: an existing output is replaced only if it is safe to (the refusals come after it).
+        refused(run([medusa, "run", *args, "--force", "--radius", "3", "-q"], work), fragment)
         assert listing(work) == names, f"files changed: {listing(work)} (was {names})"
         assert {p: digest(os.path.join(work, p)) for p in before} == before, "an input changed"
         assert stat.S_ISFIFO(os.lstat(os.path.join(work, "fifo.h5")).st_mode)
@@ -83,7 +84,7 @@ def check_unsafe(medusa, csv, work):
     with open(os.path.join(work, "target.h5"), "w") as f:
         f.write("old\n")
     os.symlink("target.h5", os.path.join(work, "link.h5"))
-    result = run([medusa, "run", "in.csv.gz", "-o", "link.h5", "--radius", "3", "-q"], work)
+    result = run([medusa, "run", "in.csv.gz", "-o", "link.h5", "--force", "--radius", "3", "-q"], work)
     assert result.returncode == 0, result.stderr
     assert os.path.islink(os.path.join(work, "link.h5"))
     assert run([medusa, "info", "target.h5"], work).returncode == 0
