@@ -37,7 +37,8 @@ void check_side_outputs(const std::string& store, const std::string& run_id) {
     return;
   const std::string stem = output_stem(store);
   for (const auto& [path, csv] :
-       {std::pair{stem + ".diagrams.csv", true}, std::pair{stem + ".barcode.svg", false}}) {
+       {std::pair{stem + ".diagrams.csv", true}, std::pair{stem + ".barcode.svg", false},
+        std::pair{stem + ".diagram.svg", false}}) {
     std::ifstream probe(path);
     if (!probe)
       continue;

@@ -1,4 +1,5 @@
-// The side outputs `medusa run` writes next to a store (<stem>.diagrams.csv, <stem>.barcode.svg)
+// The side outputs `medusa run` writes next to a store (<stem>.diagrams.csv, <stem>.barcode.svg,
+// <stem>.diagram.svg)
 // carry the store's run id (docs/FORMAT.md, "One result per run"); a reader checks it.
 #pragma once
 

@@ -92,7 +92,7 @@ std::vector<std::string> names_of(const std::map<std::string, std::string>& file
 }
 
 // A fresh folder holding the result of a small run written as prev.h5, prev.diagrams.csv and
-// prev.barcode.svg (the first 3 frames of examples/sorting_3d at radius 2.5).
+// prev.barcode.svg, prev.diagram.svg (the first 3 frames of examples/sorting_3d at radius 2.5).
 fs::path folder_with_previous_result(const std::string& tag) {
   const fs::path dir = fs::temp_directory_path() /
                        ("medusa-atomic-" + tag + "-" + std::to_string(static_cast<long long>(::getpid())));
@@ -132,7 +132,8 @@ TEST_CASE("medusa run interrupted at each stage exits 130 and leaves the previou
           "[faults]") {
   const fs::path dir = folder_with_previous_result("interrupt");
   const std::map<std::string, std::string> before = outputs_in(dir);
-  REQUIRE(names_of(before) == std::vector<std::string>{"prev.barcode.svg", "prev.diagrams.csv", "prev.h5"});
+  REQUIRE(names_of(before) ==
+          std::vector<std::string>{"prev.barcode.svg", "prev.diagram.svg", "prev.diagrams.csv", "prev.h5"});
   int reached = 0;
   for (std::size_t k = 0; k < stages.size(); ++k) {
     const int signal = k % 2 == 0 ? SIGINT : SIGTERM;
@@ -213,10 +214,12 @@ TEST_CASE("A second medusa run onto a store being written is refused and the fir
   CHECK(second_err.find("another medusa run is writing it") != std::string::npos);
   CHECK(first_code == 0);
   const std::map<std::string, std::string> after = outputs_in(dir);
-  CHECK(names_of(after) == std::vector<std::string>{"prev.barcode.svg", "prev.diagrams.csv", "prev.h5"});
+  CHECK(names_of(after) ==
+        std::vector<std::string>{"prev.barcode.svg", "prev.diagram.svg", "prev.diagrams.csv", "prev.h5"});
   const std::string id = csv_run_id(after.at("prev.diagrams.csv"));
   CHECK(id.size() == 32);
   CHECK(after.at("prev.barcode.svg").find("data-medusa-run=\"" + id + "\"") != std::string::npos);
+  CHECK(after.at("prev.diagram.svg").find("data-medusa-run=\"" + id + "\"") != std::string::npos);
   CHECK(info_status(dir, "prev.h5") == 0);
   // The store is the first run's (radius 3), not the refused one's (radius 2).
   const std::string command = "cd '" + dir.string() + "' && " + MEDUSA_BINARY + " info prev.h5 > info.stdout";

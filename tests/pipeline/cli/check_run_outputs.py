@@ -95,10 +95,10 @@ def check_mixed(medusa, csv, plot_store, work):
     for name, radius in [("a.h5", "3"), ("b.h5", "2.5")]:
         assert run([medusa, "run", csv, "-o", name, "--radius", radius, "-q"], work).returncode == 0
     assert run([medusa, "info", "a.h5"], work).returncode == 0
-    for side in ["diagrams.csv", "barcode.svg"]:
+    for side in ["diagrams.csv", "barcode.svg", "diagram.svg"]:
         folder = os.path.join(work, "mix_" + side)
         os.makedirs(folder)
-        for suffix in ["h5", "diagrams.csv", "barcode.svg"]:
+        for suffix in ["h5", "diagrams.csv", "barcode.svg", "diagram.svg"]:
             shutil.copyfile(os.path.join(work, "a." + suffix), os.path.join(folder, "a." + suffix))
         shutil.copyfile(os.path.join(work, "b." + side), os.path.join(folder, "a." + side))
         result = run([medusa, "info", "a.h5"], folder)
