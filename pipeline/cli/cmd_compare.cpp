@@ -282,7 +282,8 @@ void add_compare_command(CLI::App& app) {
   CLI::App* compare = app.add_subcommand(
       "compare", "Distances between the persistence diagrams of several runs, with a clustering");
   compare->add_option("stores", args->stores, "HDF5 stores written by `medusa run` (two or more)")
-      ->required();
+      ->required()
+      ->expected(2, CLI::detail::expected_max_vector_size);
   compare
       ->add_option(
           "--metric", args->metric,

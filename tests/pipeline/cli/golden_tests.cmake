@@ -39,12 +39,12 @@ endfunction()
 # The stores: the first 3 frames of examples/sorting_3d, of the non-sorting control and of the second
 # sorting seed (tests/data/cli/README.txt), radius 3. The run writes the CSV of all diagrams too.
 medusa_golden_test(run_small ARGS run --force ${DATA}/cells_3frames.csv.gz -o small.h5 --radius 3 --quiet
-                   STDOUT run_small.txt FILES small.diagrams.csv=barcode_all.csv SETUP golden_small_store)
+                   STDOUT run_small.txt FILES small.diagrams.csv=run_small.diagrams.csv SETUP golden_small_store)
 # The store side runs on the engine's thread with --threads 1 and on a thread of its own otherwise
 # (AsyncObserver): both give the same diagrams.
 foreach(threads 1 2)
   medusa_golden_test(run_small_on_${threads}_threads ARGS run --force ${DATA}/cells_3frames.csv.gz -o small_${threads}_threads.h5
-                     --radius 3 --quiet --threads ${threads} FILES small_${threads}_threads.diagrams.csv=barcode_all.csv
+                     --radius 3 --quiet --threads ${threads} FILES small_${threads}_threads.diagrams.csv=run_small.diagrams.csv
                      IGNORE_STDOUT)
 endforeach()
 foreach(run nosorting_3d sorting_3d_seed2)
@@ -115,7 +115,7 @@ medusa_golden_test(error_unknown_type ARGS diagrams small.h5 --type 9 CODE 3 STD
                    ${small})
 medusa_golden_test(error_time_outside_run ARGS at small.h5 --time 250 -o late.csv CODE 3
                    STDERR error_time_outside_run.txt ${small})
-medusa_golden_test(error_compare_one_store ARGS compare small.h5 CODE 3 STDERR error_compare_one_store.txt
+medusa_golden_test(error_compare_one_store ARGS compare small.h5 CODE 2 STDERR error_compare_one_store.txt
                    ${small})
 
 # The golden files against each other and against GUDHI (pers reader, bottleneck distance).

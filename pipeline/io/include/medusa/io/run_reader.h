@@ -27,6 +27,9 @@ struct RunOptions {
   // as CC3D's own centres in cells.csv are rounded; false refuses them (CLI: --exact-vtk).
   bool snap = true;
   bool allow_periodic_as_open = false; // read a periodic run as if its boundaries were open
+  // Leave out LatticeData snapshots that cannot be read, and go on past snapshots missing from the
+  // series, with a warning each (CLI: --skip-unreadable-frames); otherwise each is an InputError.
+  bool skip_unreadable_frames = false;
   CsvColumns csv_columns;
   // Lattice z extent if the caller knows it; otherwise taken from Simulation/*.xml or the VTK header.
   // z extent 1 makes the run planar (dimension 2; z kept).
