@@ -19,7 +19,7 @@ else
   "$medusa" run "$input" -o interrupted.h5 --radius 3 --quiet 2>stderr.txt &
 fi
 pid=$!
-if [ "$command" = report ]; then sleep 1; else sleep 2; fi
+if [ "$command" = report ]; then sleep 0.3; else sleep 2; fi
 kill -INT "$pid"
 wait "$pid"
 code=$?

@@ -10,7 +10,7 @@ work=$3
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 "$medusa" run "$input" -o large.h5 --quiet >/dev/null || { echo "medusa run failed"; exit 1; }
 mkdir out
-for case in "INT 1" "TERM 1" "INT 3"; do
+for case in "INT 0.5" "TERM 1" "INT 1.5"; do
   set -- $case
   signal=$1
   delay=$2
