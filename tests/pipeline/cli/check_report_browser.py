@@ -105,6 +105,21 @@ try:
             failures.append(f"{page}: no CROCKER plot although sorting_3d.crocker.csv is next to the store")
         if len(stores) > 1 and not driver.find_elements("css selector", ".comparison-figure svg"):
             failures.append(f"{page}: no distance heat map for two stores")
+        # The heat maps and dendrograms are scaled down to fit the page: every label (run names
+        # under the dendrogram included) must stay inside its drawing, not be cut off at its edge.
+        clipped = driver.execute_script("""
+            const out = [];
+            for (const svg of document.querySelectorAll('.comparison-figure svg')) {
+              const box = svg.getBoundingClientRect();
+              for (const t of svg.querySelectorAll('text')) {
+                const r = t.getBoundingClientRect();
+                if (r.left < box.left - 1 || r.right > box.right + 1 || r.top < box.top - 1 || r.bottom > box.bottom + 1)
+                  out.push(t.textContent);
+              }
+            }
+            return out;""")
+        if clipped:
+            failures.append(f"{page}: comparison labels cut off at the edge of their drawing: {clipped}")
         for ri, name in enumerate(stores):
             expected = expected_counts(f"{name}.h5")
             store = Store(f"{name}.h5")
