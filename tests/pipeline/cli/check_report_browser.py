@@ -105,11 +105,11 @@ try:
             failures.append(f"{page}: no CROCKER plot although sorting_3d.crocker.csv is next to the store")
         if len(stores) > 1 and not driver.find_elements("css selector", ".comparison-figure svg"):
             failures.append(f"{page}: no distance heat map for two stores")
-        # The heat maps and dendrograms are scaled down to fit the page: every label (run names
-        # under the dendrogram included) must stay inside its drawing, not be cut off at its edge.
+        # Every label of a drawing (tick labels at the ends of the axes, run names under the
+        # dendrogram, which the page scales down) must stay inside it, not be cut off at its edge.
         clipped = driver.execute_script("""
             const out = [];
-            for (const svg of document.querySelectorAll('.comparison-figure svg')) {
+            for (const svg of document.querySelectorAll('.comparison-figure svg, .panel svg, svg.chart')) {
               const box = svg.getBoundingClientRect();
               for (const t of svg.querySelectorAll('text')) {
                 const r = t.getBoundingClientRect();
@@ -119,7 +119,7 @@ try:
             }
             return out;""")
         if clipped:
-            failures.append(f"{page}: comparison labels cut off at the edge of their drawing: {clipped}")
+            failures.append(f"{page}: labels cut off at the edge of their drawing: {sorted(set(clipped))}")
         for ri, name in enumerate(stores):
             expected = expected_counts(f"{name}.h5")
             store = Store(f"{name}.h5")
