@@ -188,8 +188,10 @@ void compare_command(const CompareArguments& args) {
       if (!single)
         std::cout << (c % 3 == 0 ? "\n    type " + selections[c].type + ":" : ",") << " H"
                   << selections[c].dim;
-      std::cout << (single ? ", " : " ") << d[c].points.finite.size() << " finite points"
-                << (single ? ", " : " + ") << d[c].points.essential.size() << " essential classes";
+      const std::size_t finite = d[c].points.finite.size(), essential = d[c].points.essential.size();
+      std::cout << (single ? ", " : " ") << finite << (finite == 1 ? " finite point" : " finite points")
+                << (single ? ", " : " + ") << essential
+                << (essential == 1 ? " essential class" : " essential classes");
       comparisons[c].points.push_back(std::move(d[c].points));
     }
     std::cout << "\n";

@@ -220,9 +220,15 @@ std::string summary_line(const RadiusResult& r, int dimension) {
   out << "radius " << r.radius << ":";
   bool first = true;
   for (const auto& [label, c] : r.counts) {
-    out << (first ? " " : "; ") << (label == "all" ? "all cells" : "type " + label) << " "
-        << c.clusters_at_start << " -> " << c.clusters_at_end
-        << (c.clusters_at_end == 1 ? " cluster" : " clusters") << ", " << c.loops
+    // The clusters are those of K_t at the first and last frames, as `medusa run` and `medusa report`
+    // count them (the essential H0 classes would also drop the clusters that touched and separated).
+    const auto slice = std::find_if(r.slices.begin(), r.slices.end(),
+                                    [&label = label](const TypeSlices& s) { return s.label == label; });
+    if (slice == r.slices.end() || slice->at_frame.empty())
+      throw InternalError("sweep: no Betti numbers at the frames for " + label);
+    const std::size_t start = slice->at_frame.front().betti[0], end = slice->at_frame.back().betti[0];
+    out << (first ? " " : "; ") << (label == "all" ? "all cells" : "type " + label) << " " << start << " -> "
+        << end << (end == 1 ? " cluster" : " clusters") << ", " << c.loops
         << (c.loops == 1 ? " loop (" : " loops (") << c.loops_filled << " filled), " << c.cavities
         << (dimension == 2 ? (c.cavities == 1 ? " space-time bubble" : " space-time bubbles")
                            : (c.cavities == 1 ? " cavity (" : " cavities (") +
@@ -286,8 +292,8 @@ void sweep_command(const SweepArguments& args) {
   summary << "sweep of " << args.input << ": " << data.trajectories.cells.size() << " trajectories, "
           << data.trajectories.frames() << " frames, " << radii.size()
           << (radii.size() == 1 ? " radius;" : " radii;")
-          << " forward diagrams (docs/MATH.md §7.6): clusters at the first frame -> at the end, loops "
-             "and cavities that appeared\n";
+          << " clusters of K_t at the first -> the last frame; loops and cavities that appeared, from the "
+             "forward diagrams (docs/MATH.md §7.6)\n";
   std::vector<std::string> warnings;
   for (const RadiusResult& r : results) {
     summary << summary_line(r, data.trajectories.dimension) << "\n";

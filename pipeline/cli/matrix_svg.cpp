@@ -36,10 +36,12 @@ std::string colour(double fraction) {
 // font size 11).
 double title_width(const std::string& title) { return 8 + 6.2 * static_cast<double>(title.size()); }
 
+// The viewBox lets a page that shrinks the picture (the report does) scale it instead of cutting it off.
 void svg_header(std::ostream& out, double width, double height) {
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(width) << "\" height=\""
-      << number(height) << "\" font-family=\"sans-serif\" font-size=\"11\">\n"
+      << number(height) << "\" viewBox=\"0 0 " << number(width) << " " << number(height)
+      << "\" font-family=\"sans-serif\" font-size=\"11\">\n"
       << "<defs><pattern id=\"hatch\" width=\"6\" height=\"6\" patternUnits=\"userSpaceOnUse\">"
          "<rect width=\"6\" height=\"6\" fill=\"#d0d0d0\"/><path d=\"M0,6 L6,0\" stroke=\"#808080\"/>"
          "</pattern></defs>\n"

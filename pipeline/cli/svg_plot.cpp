@@ -13,7 +13,7 @@ namespace medusa::cli {
 namespace {
 
 constexpr double page_width = 1200, margin = 20, column_gap = 40, title_height = 50, axis_height = 34,
-                 legend_height = 44, row_gap = 16, inset = 46;
+                 legend_height = 58, row_gap = 16, inset = 46;
 const char* const colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
 const char* const degree_names[] = {"H0 clusters", "H1 loops", "H2 cavities", "H3 4D bubbles"};
 
@@ -181,9 +181,11 @@ std::string counts_text(const Panel& p, std::size_t max_bars, bool bars) {
 
 void write_header(std::ostream& out, double height, const std::vector<int>& degrees, std::string what,
                   std::size_t beyond, const std::string& run_id) {
-  if (beyond > 0)
-    what += " Other degrees (H3, 4D bubbles): no finite class; " + std::to_string(beyond) +
-            " essential in all (not drawn).";
+  // The classes of other degrees get a line of their own: the caption alone fills most of the
+  // page's width.
+  const std::string beyond_text = beyond == 0 ? std::string()
+                                              : "Other degrees (H3, 4D bubbles): no finite class; " +
+                                                    std::to_string(beyond) + " essential in all (not drawn).";
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(page_width) << "\" height=\""
       << number(height) << "\" font-family=\"sans-serif\" font-size=\"11\""
@@ -199,6 +201,9 @@ void write_header(std::ostream& out, double height, const std::vector<int>& degr
   }
   out << "<text x=\"" << number(margin) << "\" y=\"" << number(margin + 28) << "\" fill=\"#444\">" << what
       << "</text>\n";
+  if (!beyond_text.empty())
+    out << "<text x=\"" << number(margin) << "\" y=\"" << number(margin + 42) << "\" fill=\"#444\">"
+        << beyond_text << "</text>\n";
 }
 
 // A horizontal time axis from x0 to x1 at height y, with ticks of [t0, t1].

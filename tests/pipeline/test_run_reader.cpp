@@ -60,7 +60,8 @@ TEST_CASE("A CSV run becomes trajectories and a cell missing from a middle frame
   CHECK(r.volumes == CellVolumes{{125, 126, 124}, {120, 119, 121}, {130}, {131}, {20}});
   CHECK(t.type_names == std::vector<std::string>{"", "Condensing", "NonCondensing"});
   CHECK(has_warning(r, "cell 3 is missing from MCS 100 to 100"));
-  CHECK(has_warning(r, "1 trajectories are present on a single frame (cells 3)"));
+  CHECK(has_warning(
+      r, "1 trajectory is present on a single frame (cells 3): each joins and leaves the complex"));
   CHECK(has_warning(r, "2 trajectories are present at the last frame only (cells 3, 4)"));
 }
 

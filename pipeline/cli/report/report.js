@@ -155,10 +155,10 @@
   }
 
   function diagram(parent, run, panel, ri, pi) {
-    const size = 260, pad = 44;
+    const size = 260, pad = 48;
     const svg = el("svg", { class: "diagram", width: size, height: size, viewBox: "0 0 " + size + " " + size }, parent);
     const t0 = run.facts.t0, t1 = run.facts.t_end;
-    const [sx, sy] = axes(svg, [pad, 18, size - pad - 12, size - pad - 18], [t0, t1], [t0, t1], "birth (MCS)", "death (MCS)", false);
+    const [sx, sy] = axes(svg, [pad, 18, size - pad - 20, size - pad - 20], [t0, t1], [t0, t1], "birth (MCS)", "death (MCS)", false);
     el("line", { x1: sx(t0), y1: sy(t0), x2: sx(t1), y2: sy(t1), stroke: "#bbb" }, svg);
     el("text", { x: pad - 6, y: 14, "text-anchor": "end" }, svg, "never");
     el("line", { x1: sx(t0), x2: sx(t1), y1: 10, y2: 10, stroke: "#ddd", "stroke-dasharray": "3,3" }, svg);

@@ -97,12 +97,13 @@ AssembledRun assemble_trajectories(std::vector<CellSample> samples, const std::v
   };
   if (!single_frame_ids.empty())
     run.warnings.push_back(std::to_string(single_frame_ids.size()) +
-                           " trajectories are present on a single frame (cells " + listed(single_frame_ids) +
-                           "): inserted and deleted in the same frame batch (docs/MATH.md §2.1, §5.6)");
+                           (single_frame_ids.size() == 1 ? " trajectory is" : " trajectories are") +
+                           " present on a single frame (cells " + listed(single_frame_ids) +
+                           "): each joins and leaves the complex at that frame (docs/MATH.md §2.1, §5.6)");
   if (!last_frame_ids.empty())
     run.warnings.push_back(std::to_string(last_frame_ids.size()) +
-                           " trajectories are present at the last frame only (cells " +
-                           listed(last_frame_ids) +
+                           (last_frame_ids.size() == 1 ? " trajectory is" : " trajectories are") +
+                           " present at the last frame only (cells " + listed(last_frame_ids) +
                            "): the run ends just before that frame, so they add nothing to the medusa "
                            "(docs/MATH.md §6.2)");
   return run;

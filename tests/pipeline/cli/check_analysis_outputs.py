@@ -65,7 +65,7 @@ def check_matrix(names, values, stores):
 def essential_counts(stdout):
     """Run name -> number of essential classes, from the per-run lines of `medusa compare`."""
     return {m.group(1): int(m.group(2))
-            for m in re.finditer(r"^  (\S+): MCS .* finite points, (\d+) essential classes$", stdout, re.M)}
+            for m in re.finditer(r"^  (\S+): MCS .* finite points?, (\d+) essential class(?:es)?$", stdout, re.M)}
 
 
 def check_compare(medusa, work, stores):

@@ -105,6 +105,21 @@ try:
             failures.append(f"{page}: no CROCKER plot although sorting_3d.crocker.csv is next to the store")
         if len(stores) > 1 and not driver.find_elements("css selector", ".comparison-figure svg"):
             failures.append(f"{page}: no distance heat map for two stores")
+        # Every label of a drawing (tick labels at the ends of the axes, run names under the
+        # dendrogram, which the page scales down) must stay inside it, not be cut off at its edge.
+        clipped = driver.execute_script("""
+            const out = [];
+            for (const svg of document.querySelectorAll('.comparison-figure svg, .panel svg, svg.chart')) {
+              const box = svg.getBoundingClientRect();
+              for (const t of svg.querySelectorAll('text')) {
+                const r = t.getBoundingClientRect();
+                if (r.left < box.left - 1 || r.right > box.right + 1 || r.top < box.top - 1 || r.bottom > box.bottom + 1)
+                  out.push(t.textContent);
+              }
+            }
+            return out;""")
+        if clipped:
+            failures.append(f"{page}: labels cut off at the edge of their drawing: {sorted(set(clipped))}")
         for ri, name in enumerate(stores):
             expected = expected_counts(f"{name}.h5")
             store = Store(f"{name}.h5")
@@ -162,6 +177,23 @@ try:
             failures.append(f"{page}: screenshot looks blank ({colours} colours, {ink:.3f} of pixels drawn)")
         if screenshot_copy and page == "two.html":
             Image.open(png).convert("RGB").quantize(colors=128).save(screenshot_copy, optimize=True)
+    # The drawings `medusa run` writes next to the store: no text runs past the edge of the page. At
+    # the default radius sorting_3d has essential H3 classes, which the captions mention.
+    call("run", runs["sorting_3d"], "-o", "default_radius.h5", "--quiet")
+    for picture in ["default_radius.barcode.svg", "default_radius.diagram.svg", "sorting_3d.crocker.svg"]:
+        driver.get("file://" + os.path.abspath(picture))
+        outside = driver.execute_script("""
+            const svg = document.documentElement, w = svg.width.baseVal.value, h = svg.height.baseVal.value;
+            return [...svg.querySelectorAll('text')].filter((t) => {
+              const b = t.getBBox();
+              const m = t.getCTM();
+              const x0 = m.a * b.x + m.c * b.y + m.e, y0 = m.b * b.x + m.d * b.y + m.f;
+              const x1 = m.a * (b.x + b.width) + m.c * (b.y + b.height) + m.e;
+              const y1 = m.b * (b.x + b.width) + m.d * (b.y + b.height) + m.f;
+              return Math.min(x0, x1) < -1 || Math.max(x0, x1) > w + 1 || Math.min(y0, y1) < -1 || Math.max(y0, y1) > h + 1;
+            }).map((t) => t.textContent);""")
+        if outside:
+            failures.append(f"{picture}: text past the edge of the page: {outside}")
 finally:
     driver.quit()
 

@@ -49,20 +49,20 @@ for radius in radii:
     for key, value in expected.items():
         assert got[key] == value, f"radius {radius}, MCS {key[0]}, type {key[1]}: sweep {got[key]}, run+curves {value}"
         checked += 1
-    # The summary line of this radius counts what the forward diagrams of the stored run hold: H0
-    # classes born at the first frame and essential ones, H1 and H2 classes and the finite ones.
+    # The summary line of this radius gives the clusters as `medusa run` and `medusa report` do, b0
+    # of K_t at the first and last frames (from the run's curves), and counts what the forward
+    # diagrams of the stored run hold: H1 and H2 classes and the finite ones.
     line = next(l for l in summary if l.startswith(f"radius {radius}:"))
     pairs = list(csv.DictReader(io.StringIO(call("barcode", f"r{radius}.h5", "--format", "csv", "--filtration",
                                                  "forward").stdout)))
-    t0 = min(number(r["time"]) for r in rows)
     for label, words in [("all", "all cells"), ("1", "type 1"), ("2", "type 2")]:
         mine = [p for p in pairs if p["type"] == label]
         essential = lambda p: p["death"] == "inf"
-        start = sum(1 for p in mine if p["dimension"] == "0" and number(p["birth"]) == t0)
-        end = sum(1 for p in mine if p["dimension"] == "0" and essential(p))
+        times = sorted(t for t, kind in expected if kind == label)
+        start, end = expected[(times[0], label)][0], expected[(times[-1], label)][0]
         loops = [p for p in mine if p["dimension"] == "1"]
         cavities = [p for p in mine if p["dimension"] == "2"]
-        want = (f"{words} {start} -> {end} cluster{'' if end == 1 else 's'}, {len(loops)} "
+        want = (f"{words} {start} -> {end} cluster{'' if end == '1' else 's'}, {len(loops)} "
                 f"loop{'' if len(loops) == 1 else 's'} ({sum(not essential(p) for p in loops)} filled), "
                 f"{len(cavities)} {'cavity' if len(cavities) == 1 else 'cavities'} "
                 f"({sum(not essential(p) for p in cavities)} filled)")
