@@ -184,8 +184,10 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   // and CPU seconds are the measured totals split in proportion to the tasks' time in each phase.
   clock = StageClock{};
   persistence::DiagramPhaseSeconds phases;
+  // The forward diagrams are the summary's: their classes get representatives (docs/MATH.md §7.9).
+  std::vector<persistence::ClassRepresentatives> classes;
   std::vector<persistence::Diagram> diagrams =
-      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, threads, &phases);
+      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, threads, &phases, &classes);
   const double both = phases.filtrations + phases.reduction;
   const double share = both > 0 ? phases.filtrations / both : 0.5;
   const double wall = clock.wall_seconds(), cpu = clock.cpu_seconds();
@@ -197,7 +199,13 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
               ".barcode.svg, summary");
   clock = StageClock{};
   // The diagrams go into the store too (group /persistence, docs/FORMAT.md), written atomically.
-  persistence::write_diagrams(output, diagrams);
+  std::vector<const persistence::ClassRepresentatives*> stored_classes;
+  for (std::size_t i = 0; i < diagrams.size(); ++i)
+    stored_classes.push_back(diagrams[i].direction == persistence::Direction::forward ? &classes[i]
+                                                                                      : nullptr);
+  persistence::write_diagrams(output, diagrams, stored_classes);
+  classes.clear();
+  classes.shrink_to_fit();
   check_interrupted();
   // From here on only positive-length pairs are shown (the summary skips zero-length ones too), so
   // they are dropped in place rather than copied: the diagrams are the largest structure of this stage.

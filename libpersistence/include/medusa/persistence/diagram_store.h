@@ -3,6 +3,7 @@
 #pragma once
 
 #include "medusa/persistence/diagram.h"
+#include "medusa/persistence/representatives.h"
 
 #include <string>
 #include <vector>
@@ -18,6 +19,11 @@ std::string diagram_group_name(const Diagram& diagram);
 // StoreError naming the store when it cannot be read or written, is not a complete medusa store, or
 // two diagrams have the same group name.
 void write_diagrams(const std::string& store_path, const std::vector<Diagram>& diagrams);
+
+// The same, with the class representatives of diagram i in `*classes[i]` (subgroup `classes` of its
+// group; class_store.h reads them). A null entry, or a diagram beyond the end of `classes`, gets none.
+void write_diagrams(const std::string& store_path, const std::vector<Diagram>& diagrams,
+                    const std::vector<const ClassRepresentatives*>& classes);
 
 // Reads `/persistence` back, in the stored order. Each pair has dim, birth, death, birth_cell,
 // death_cell, essential and zero_length; the other fields of PersistencePair (virtual times,
