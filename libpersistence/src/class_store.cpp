@@ -169,8 +169,9 @@ std::optional<ClassRepresentatives> read_classes(const std::string& store_path,
   Handle file(H5Fopen(store_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
   check(file.valid(), store_path, "cannot open as HDF5");
   const std::string where = "/persistence/" + diagram_name;
-  check(H5Lexists(file.get(), "persistence", H5P_DEFAULT) > 0, store_path, "no group /persistence");
-  check(H5Lexists(file.get(), where.c_str(), H5P_DEFAULT) > 0, store_path, "no group " + where);
+  if (H5Lexists(file.get(), "persistence", H5P_DEFAULT) <= 0 ||
+      H5Lexists(file.get(), where.c_str(), H5P_DEFAULT) <= 0)
+    return std::nullopt;
   Handle diagram(H5Gopen2(file.get(), where.c_str(), H5P_DEFAULT), H5Gclose);
   check(diagram.valid(), store_path, "cannot open group " + where);
   if (H5Lexists(diagram.get(), classes_name, H5P_DEFAULT) <= 0)

@@ -14,5 +14,6 @@ void add_barcode_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
 void add_curves_command(CLI::App& app);
 void add_at_command(CLI::App& app);
+void add_classes_command(CLI::App& app);
 
 } // namespace medusa::cli

@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   medusa::cli::add_compare_command(app);
   medusa::cli::add_curves_command(app);
   medusa::cli::add_at_command(app);
+  medusa::cli::add_classes_command(app);
   medusa::cli::install_interrupt_handlers();
   // A store whose final flush failed would otherwise crash HDF5's exit handler (store_writer.h).
   medusa::skip_hdf5_cleanup_at_exit();

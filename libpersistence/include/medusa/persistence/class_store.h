@@ -10,8 +10,8 @@
 namespace medusa::persistence {
 
 // The representatives stored with the diagram `/persistence/<diagram_name>`, or nothing when the
-// diagram has none. Throws StoreError when the store or the diagram is missing, or the subgroup is
-// malformed (wrong version, lengths, rows outside the diagram).
+// store has no such diagram or the diagram has none. Throws StoreError when the file cannot be read
+// as HDF5 or the subgroup is malformed (wrong version, lengths, rows outside the diagram).
 std::optional<ClassRepresentatives> read_classes(const std::string& store_path,
                                                  const std::string& diagram_name);
 
