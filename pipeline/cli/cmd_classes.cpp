@@ -69,12 +69,12 @@ void sort_records(std::vector<persistence::ClassRecord>& records, const std::str
 }
 
 void write_table(std::ostream& out, const std::vector<persistence::ClassRecord>& records) {
-  out << "id\tdim\tbirth\tdeath\tlifetime\tbirth cells\tdeath cells\tcells\trepresentative\n";
+  out << "id\tdim\tbirth\tdeath\tlifetime\tbirth cells\tdeath cells\tsimplices\tcells\trepresentative\n";
   for (const persistence::ClassRecord& r : records)
     out << r.id << '\t' << r.dim << '\t' << short_time(r.birth) << '\t' << short_time(r.death) << '\t'
         << short_time(r.lifetime()) << '\t' << joined(r.birth_cells, " ") << '\t'
-        << (r.essential ? "-" : joined(r.death_cells, " ")) << '\t' << r.cells.size() << '\t'
-        << joined(r.cells, " ", table_list_limit) << '\n';
+        << (r.essential ? "-" : joined(r.death_cells, " ")) << '\t' << r.simplices.size() << '\t'
+        << r.cells.size() << '\t' << joined(r.cells, " ", table_list_limit) << '\n';
 }
 
 void write_classes_csv(std::ostream& out, const std::vector<persistence::ClassRecord>& records) {
@@ -191,9 +191,11 @@ void add_classes_command(CLI::App& app) {
       ->check(CLI::IsMember({"lifetime", "birth", "death"}))
       ->capture_default_str();
   classes
-      ->add_option("--format", args->format,
-                   "table (tab-separated, long lists cut), csv or json (with every cell and the "
-                   "representative's simplices as CompuCell3D cell ids)")
+      ->add_option(
+          "--format", args->format,
+          "table (tab-separated: the counts of simplices and of CC3D cells of the representative, long lists "
+          "cut), csv or json (with every cell and the "
+          "representative's simplices as CompuCell3D cell ids)")
       ->check(CLI::IsMember({"table", "csv", "json"}))
       ->capture_default_str();
   classes->add_option("-o,--output", args->output, "output file (default: stdout)");
