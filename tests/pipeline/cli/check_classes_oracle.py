@@ -1,6 +1,7 @@
 """Independent check of the class representatives stored by `medusa run` (run with /usr/bin/python3).
 
-usage: check_classes_oracle.py [<medusa>] <store>
+usage: check_classes_oracle.py [<medusa>] <store> | <medusa> <store> <run input> <radius>
+       (with a run input, `medusa run` first writes the store from it)
 
 Reads the store with h5py alone (docs/FORMAT.md) and, for every diagram with a `classes` subgroup and
 every represented class of degree k (docs/MATH.md §7.9), requires:
@@ -163,8 +164,12 @@ def listed_classes(medusa, store, *options):
 
 
 def main():
-    store = sys.argv[-1]
     medusa = sys.argv[1] if len(sys.argv) > 2 else None
+    store = sys.argv[2] if medusa else sys.argv[1]
+    if len(sys.argv) > 3:
+        made = subprocess.run([medusa, "run", sys.argv[3], "--radius", sys.argv[4], "--quiet", "-o", store],
+                              capture_output=True, text=True)
+        assert made.returncode == 0, made.stderr
     tested = 0
     with h5py.File(store, "r") as f:
         s = Store(f)
