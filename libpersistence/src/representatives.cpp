@@ -35,7 +35,7 @@ Chain reduced_column(const Matrix& matrix, Index j) {
 
 Chain boundary_of(const Filtration& f, Index j) { return f.columns[static_cast<std::size_t>(j)]; }
 
-// Cycles of essential classes (docs/MATH.md §7.9). The twist reduction keeps R but not V (R = D V):
+// Cycles of essential classes (docs/MATH.md §7.11). The twist reduction keeps R but not V (R = D V):
 // V is rebuilt only where an essential class needs it. A reduced column R[i] is the boundary of i
 // plus reduced columns R[j], j < i, of the same degree; those j are recovered by eliminating the
 // lowest entry of R[i] + ∂i against the column holding that entry as its pivot (pivots are unique, so
@@ -115,7 +115,7 @@ private:
   std::unordered_map<Index, Chain> memo_;
 };
 
-// Union-find over the vertices in filtration order (docs/MATH.md §7.9): the components with their
+// Union-find over the vertices in filtration order (docs/MATH.md §7.11): the components with their
 // members (linked lists, concatenated in O(1)) and their oldest vertex.
 class Components {
 public:
@@ -255,7 +255,7 @@ DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>&
     if (p.dim == 0)
       continue;
     cycles[i] = p.essential ? essential.cycle_of(p.birth_index) : reduced_column(matrix, p.death_index);
-    // The defining properties that are cheap to check (docs/MATH.md §7.9): a cycle whose last cell is
+    // The defining properties that are cheap to check (docs/MATH.md §7.11): a cycle whose last cell is
     // the birth cell. Not being a boundary before the death follows from the pivots.
     if (cycles[i].empty() || cycles[i].back() != p.birth_index || !is_cycle(filtration, cycles[i]))
       throw InternalError("representatives: the cycle of the class born at filtration index " +

@@ -1,6 +1,6 @@
 // `medusa at`: the alpha complex K(T+) at one time T (docs/MATH.md §6.6), for ParaView (VTK) or as a list
 // of simplices (CSV); with --class, persistence classes' representatives drawn in it (docs/MATH.md
-// §7.9); with --times, a series of VTK files and a ParaView collection.
+// §7.11); with --times, a series of VTK files and a ParaView collection.
 #include "atomic_file.h"
 #include "commands.h"
 #include "complex_export.h"

@@ -1,5 +1,5 @@
 // `medusa classes`: every persistence class of one diagram with the CompuCell3D cells that make it
-// (docs/MATH.md §7.9).
+// (docs/MATH.md §7.11).
 #include "atomic_file.h"
 #include "commands.h"
 #include "diagram_export.h"
@@ -201,7 +201,7 @@ void add_classes_command(CLI::App& app) {
   classes->add_option("-o,--output", args->output, "output file (default: stdout)");
   classes->add_flag("--zero-length", args->zero_length,
                     "also the zero-length classes (birth and death in the same batch)");
-  classes->footer("A class's representative is a cycle of medusa cells born with it (docs/MATH.md §7.9): "
+  classes->footer("A class's representative is a cycle of medusa cells born with it (docs/MATH.md §7.11): "
                   "for degree 0 the cells of the cluster that merged, for degrees 1 and 2 the cells on the "
                   "loop or the shell. Stored by `medusa run` for the forward diagrams (degrees 0-2); "
                   "computed on demand for the others.");

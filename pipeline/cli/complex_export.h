@@ -19,7 +19,7 @@ namespace medusa::cli {
 std::vector<std::optional<std::array<double, 3>>> positions_at_time(const kinetic::Trajectories& input,
                                                                     double t);
 
-// Which exported cells and vertices belong to a persistence class's representative (docs/MATH.md §7.9):
+// Which exported cells and vertices belong to a persistence class's representative (docs/MATH.md §7.11):
 // the class id (its row in the diagram, as `medusa classes` lists it) or -1 for context.
 struct ClassMarks {
   std::vector<std::int64_t> cell_class;                   // one per entry of the exported cells

@@ -1,5 +1,5 @@
 // The Python module `medusa`: open a store, read its persistence diagrams as numpy arrays (GUDHI's
-// and giotto-tda's layouts), its classes with the CompuCell3D cells that make them (docs/MATH.md §7.9),
+// and giotto-tda's layouts), its classes with the CompuCell3D cells that make them (docs/MATH.md §7.11),
 // the complexes K(t) and the Betti curves; run the pipeline in-process (pipeline/python/README.md).
 #include "python_run.h"
 #include "python_store.h"
@@ -144,7 +144,7 @@ std::shared_ptr<StoreView> open_store(const std::string& path) {
 }
 
 std::shared_ptr<StoreView> run(const std::string& input, const py::object& radius, const std::string& output,
-                               const std::string& source, bool snap, unsigned threads) {
+                               const std::string& source, bool snap, unsigned threads, bool force) {
   RunRequest request;
   request.input = input;
   request.radius =
@@ -153,6 +153,7 @@ std::shared_ptr<StoreView> run(const std::string& input, const py::object& radiu
   request.source = source;
   request.snap = snap;
   request.threads = threads;
+  request.force = force;
   std::string path;
   {
     py::gil_scoped_release release;
@@ -185,7 +186,7 @@ PYBIND11_MODULE(medusa, m) {
            "death inf (forward) or -inf (reverse, whose births are >= deaths: docs/MATH.md §7.3).")
       .def("classes", &classes, py::arg("type") = py::none(), py::arg("dim") = py::none(),
            py::arg("filtration") = "forward", py::arg("zero_length") = false,
-           "The classes with their representatives (docs/MATH.md §7.9), one dict each, in diagram order; "
+           "The classes with their representatives (docs/MATH.md §7.11), one dict each, in diagram order; "
            "the keys of `medusa classes --format json`.")
       .def(
           "K_at",
@@ -202,7 +203,8 @@ PYBIND11_MODULE(medusa, m) {
 
   m.def("open", &open_store, py::arg("path"), "Open a store written by `medusa run` or medusa.run");
   m.def("run", &run, py::arg("input"), py::arg("radius") = "auto", py::arg("output") = "",
-        py::arg("source") = "", py::arg("snap") = false, py::arg("threads") = 0,
+        py::arg("source") = "", py::arg("snap") = false, py::arg("threads") = 0, py::arg("force") = false,
         "Run the pipeline of `medusa run` in this process (the GIL is released) on a CC3D output folder "
-        "or cells.csv[.gz], write the store (default <input name>.h5) and return it opened");
+        "or cells.csv[.gz], write the store (default <input name>.h5; an existing one only with force=True) "
+        "and return it opened");
 }

@@ -94,6 +94,8 @@ std::string run_pipeline(const RunRequest& request, const std::string& command_l
   kinetic::KineticOptions kinetic_options;
   kinetic_options.rho2 = kinetic::squared_radius_from_decimal(radius, data.trajectories.scale);
   const std::string output = request.output.empty() ? default_output(request.input) : request.output;
+  if (!request.force && fs::exists(output, ec))
+    throw InputError("store " + output + " exists; pass force=True to replace it");
 
   medusa::RunInfo info;
   info.radius = std::stod(radius);

@@ -14,10 +14,12 @@ struct RunRequest {
   std::string source;          // "", "csv" or "vtk", as `medusa run --source`
   bool snap = false;           // as `medusa run --snap`
   unsigned threads = 0;        // 0: one per hardware thread
+  bool force = false;          // replace an existing store (as `medusa run --force`)
 };
 
-// Runs the pipeline and returns the path of the complete store. Throws medusa::Error (a killed or
-// failed run leaves no store: StoreWriter deletes its temporary file).
+// Runs the pipeline and returns the path of the complete store. An existing store is an InputError
+// unless `force`. Throws medusa::Error (a failed run leaves no store: StoreWriter deletes its
+// temporary file).
 std::string run_pipeline(const RunRequest& request, const std::string& command_line);
 
 } // namespace medusa::python

@@ -1,4 +1,4 @@
-// Representatives of persistence classes on hand-built medusas (docs/MATH.md §7.9): each expected cycle
+// Representatives of persistence classes on hand-built medusas (docs/MATH.md §7.11): each expected cycle
 // and cluster is derived by hand in the comment above its case.
 #include "cell_list.h"
 #include "medusa/persistence/representatives.h"

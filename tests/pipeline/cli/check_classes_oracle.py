@@ -4,7 +4,7 @@ usage: check_classes_oracle.py [<medusa>] <store> | <medusa> <store> <run input>
        (with a run input, `medusa run` first writes the store from it)
 
 Reads the store with h5py alone (docs/FORMAT.md) and, for every diagram with a `classes` subgroup and
-every represented class of degree k (docs/MATH.md §7.9), requires:
+every represented class of degree k (docs/MATH.md §7.11), requires:
 * the cycle is a Z/2 cycle (its boundary from the stored facets is zero; every 0-chain is one),
 * its cells belong to the diagram's (sub-)medusa and enter no later than the birth cell, which is in it,
 * a finite class's cycle is not a boundary of the (k+1)-cells entered before the death cell, and is one
@@ -167,7 +167,7 @@ def main():
     medusa = sys.argv[1] if len(sys.argv) > 2 else None
     store = sys.argv[2] if medusa else sys.argv[1]
     if len(sys.argv) > 3:
-        made = subprocess.run([medusa, "run", sys.argv[3], "--radius", sys.argv[4], "--quiet", "-o", store],
+        made = subprocess.run([medusa, "run", "--force", sys.argv[3], "--radius", sys.argv[4], "--quiet", "-o", store],
                               capture_output=True, text=True)
         assert made.returncode == 0, made.stderr
     tested = 0

@@ -118,7 +118,7 @@ def main():
         raise AssertionError("K_at before the run did not raise")
     except medusa.Error as e:
         assert "outside the run" in str(e), e
-    ran = medusa.run(run_input, radius=radius, output=os.path.join(work, "run.h5"))
+    ran = medusa.run(run_input, radius=radius, output=os.path.join(work, "run.h5"), force=True)
     for direction in ("forward", "reverse"):
         for t in [None] + list(s.types):
             a, b = ran.diagrams(type=t, filtration=direction, layout="giotto"), s.diagrams(type=t, filtration=direction, layout="giotto")

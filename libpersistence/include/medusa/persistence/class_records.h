@@ -1,5 +1,5 @@
 // The classes of one diagram as records a user reads: times, the CompuCell3D cells of the birth and
-// death cells, and of the representative (docs/MATH.md §7.9), from a store.
+// death cells, and of the representative (docs/MATH.md §7.11), from a store.
 #pragma once
 
 #include "medusa/medusa/medusa.h"

@@ -1,6 +1,6 @@
 // Representatives of persistence classes: for each point of a diagram, a Z/2 cycle of medusa cells
 // that the class is born with, and for H0 the cluster of cells that forms the component
-// (docs/MATH.md §7.9).
+// (docs/MATH.md §7.11).
 #pragma once
 
 #include "medusa/medusa/cell.h"
@@ -45,7 +45,7 @@ struct DiagramWithClasses {
 // Reduces the filtration (PHAT, twist reduction) and builds the diagram, as compute_diagram does, and
 // the representatives of its points selected by `options`. Finite pairs of degree >= 1 take the
 // reduced column of the death cell; essential classes of degree >= 1 a cycle found from the reduced
-// columns (docs/MATH.md §7.9); degree 0 comes from a union-find pass in filtration order. Throws
+// columns (docs/MATH.md §7.11); degree 0 comes from a union-find pass in filtration order. Throws
 // InternalError when a derived representative fails its defining property (a bug).
 DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>& cells,
                                                 const Filtration& filtration,
