@@ -206,6 +206,7 @@ void at_command(const AtArguments& args) {
     throw CLI::ValidationError("--output",
                                "--class draws classes in a .vtk file, not in '" + args.output + "'");
   const medusa::Medusa medusa = medusa::read_store(args.store);
+  check_interrupted();
   if (args.type) {
     const auto& cells = medusa.input.cells;
     if (std::none_of(cells.begin(), cells.end(),

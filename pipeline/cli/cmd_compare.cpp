@@ -197,7 +197,13 @@ void compare_command(const CompareArguments& args) {
   for (Comparison& c : comparisons) {
     check_interrupted();
     c.distances = persistence::distance_matrix(
-        c.points, [&metric](const auto& a, const auto& b) { return metric(a, b); }, 2);
+        c.points,
+        [&metric](const auto& a, const auto& b) {
+          // Both workers poll before each pair, so an interrupt stops the whole matrix at the next pair.
+          check_interrupted();
+          return metric(a, b);
+        },
+        2);
     c.dendrogram = persistence::average_linkage(c.distances);
   }
   check_interrupted();

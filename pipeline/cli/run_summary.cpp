@@ -2,6 +2,7 @@
 
 #include "class_fates.h"
 #include "diagram_selection.h"
+#include "position_source.h"
 
 #include "medusa/core/error.h"
 
@@ -117,8 +118,10 @@ std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medu
       << " to " << mcs(t_end) << "), dimension " << input.dimension << "\n"
       << "radius: " << radius_text << " lattice units"
       << (radius_note.empty() ? "" : " (" + radius_note + ")")
-      << "; two cells touch when their centres are closer than twice that\n"
-      << "events: " << stats.flips() << " flips (";
+      << "; two cells touch when their centres are closer than twice that\n";
+  if (positions_from_vtk(medusa.run))
+    out << "positions: " << describe_positions(medusa.run) << "\n";
+  out << "events: " << stats.flips() << " flips (";
   // A planar run flips 2-2, a 3D run 2-3 and 3-2 (the hull flips of either are counted apart).
   if (input.dimension == 2)
     out << stats.flips22 << " 2-2, ";

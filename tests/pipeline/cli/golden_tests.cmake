@@ -74,7 +74,9 @@ medusa_golden_test(barcode_json_type2 ARGS barcode small.h5 --format json --type
 medusa_golden_test(barcode_svg_h2 ARGS barcode small.h5 --format svg --dim 2 -o barcode_h2.svg
                    FILES barcode_h2.svg=barcode_h2.svg ${small})
 medusa_golden_test(curves_frames ARGS curves small.h5 --frames-only -o curves STDOUT curves_frames.txt
-                   FILES curves.curves.csv=curves_frames.csv curves.curves.svg=curves_frames.svg ${small})
+                   FILES curves.curves.csv=curves_frames.csv curves.curves.svg=curves_frames.svg
+                         curves.sorting.csv=curves_frames_sorting.csv
+                         curves.sorting.svg=curves_frames_sorting.svg ${small})
 medusa_golden_test(at_csv ARGS at small.h5 --time 100 -o at_100.csv STDOUT at_100.txt FILES at_100.csv=at_100.csv
                    ${small})
 medusa_golden_test(at_vtk_type1 ARGS at small.h5 --time 50.5 --type 1 -o at_type1_50.5.vtk

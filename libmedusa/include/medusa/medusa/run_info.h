@@ -1,6 +1,7 @@
 // Run metadata recorded in the store next to the medusa (docs/FORMAT.md).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,12 @@ struct RunInfo {
   std::vector<std::string> source_files; // the CompuCell3D files read
   std::string command_line;
   std::string software_version;
+  // Where the positions came from and whether they were moved onto the grid (docs/MATH.md §1.1,
+  // §1.3): every exact answer is exact for the recorded positions.
+  std::string position_source;         // e.g. "csv-centres", "vtk-centroids-voxel-corner"; "" unknown
+  std::string snap_policy;             // "exact" (never moved) or "nearest-ties-to-even" (policy R)
+  std::uint64_t snapped_positions = 0; // positions (cell, frame) moved by snapping
+  double snap_max_displacement = 0.0;  // largest move of one coordinate, grid units (<= 1/2)
 };
 
 } // namespace medusa
