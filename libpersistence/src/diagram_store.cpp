@@ -1,5 +1,7 @@
 #include "medusa/persistence/diagram_store.h"
 
+#include "class_store.h"
+
 #include "medusa/core/error.h"
 
 #include <hdf5.h>
@@ -171,7 +173,8 @@ Id create_group(hid_t parent, const std::string& name, const std::string& path) 
   return group;
 }
 
-void write_diagram(hid_t parent, const Diagram& d, const std::string& path) {
+void write_diagram(hid_t parent, const Diagram& d, const ClassRepresentatives* classes,
+                   const std::string& path) {
   const std::string name = diagram_group_name(d);
   Id group = create_group(parent, name, path);
   write_string_attribute(group.get(), "direction", d.direction == Direction::forward ? "forward" : "reverse",
@@ -197,11 +200,14 @@ void write_diagram(hid_t parent, const Diagram& d, const std::string& path) {
   write_column(group.get(), "death_cell", H5T_STD_U64LE, H5T_NATIVE_UINT64, death_cell, path);
   write_column(group.get(), "essential", H5T_STD_U8LE, H5T_NATIVE_UINT8, essential, path);
   write_column(group.get(), "zero_length", H5T_STD_U8LE, H5T_NATIVE_UINT8, zero_length, path);
+  if (classes != nullptr)
+    detail::write_classes(group.get(), *classes, d.pairs.size(), path);
   check(group.close(), path, "cannot close group " + name);
 }
 
 // Every diagram into `/persistence` of the open file (replacing an older group).
-void write_group(hid_t file, const std::vector<Diagram>& diagrams, const std::string& path) {
+void write_group(hid_t file, const std::vector<Diagram>& diagrams,
+                 const std::vector<const ClassRepresentatives*>& classes, const std::string& path) {
   check(H5Aexists(file, "complete") > 0, path, "not a complete medusa store (no attribute complete)");
   check(H5Aexists(file, "format") > 0 && read_string_attribute(file, "format", path) == "medusa-store", path,
         "not a medusa store");
@@ -216,8 +222,8 @@ void write_group(hid_t file, const std::vector<Diagram>& diagrams, const std::st
   for (const Diagram& d : diagrams)
     order += (order.empty() ? "" : ",") + diagram_group_name(d);
   write_string_attribute(group.get(), "diagram_order", order, path);
-  for (const Diagram& d : diagrams)
-    write_diagram(group.get(), d, path);
+  for (std::size_t i = 0; i < diagrams.size(); ++i)
+    write_diagram(group.get(), diagrams[i], i < classes.size() ? classes[i] : nullptr, path);
   check(group.close(), path, "cannot close group /persistence");
 }
 
@@ -240,16 +246,18 @@ void check_names(const std::string& store_path, const std::vector<Diagram>& diag
 
 } // namespace
 
-void write_diagrams_in_place(const std::string& store_path, const std::vector<Diagram>& diagrams) {
+void write_diagrams_in_place(const std::string& store_path, const std::vector<Diagram>& diagrams,
+                             const std::vector<const ClassRepresentatives*>& classes) {
   check_names(store_path, diagrams);
   const Quiet quiet;
   Id file = open_file(store_path, H5F_ACC_RDWR);
-  write_group(file.get(), diagrams, store_path);
+  write_group(file.get(), diagrams, classes, store_path);
   check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL) >= 0 && file.close(), store_path,
         "cannot write the diagrams (disk full?)");
 }
 
-void write_diagrams(const std::string& store_path, const std::vector<Diagram>& diagrams) {
+void write_diagrams(const std::string& store_path, const std::vector<Diagram>& diagrams,
+                    const std::vector<const ClassRepresentatives*>& classes) {
   check_names(store_path, diagrams);
   const std::string temporary = store_path + ".tmp-" + std::to_string(static_cast<long long>(::getpid()));
   std::error_code ec;
@@ -258,7 +266,7 @@ void write_diagrams(const std::string& store_path, const std::vector<Diagram>& d
   try {
     const Quiet quiet;
     Id file = open_file(temporary, H5F_ACC_RDWR);
-    write_group(file.get(), diagrams, store_path);
+    write_group(file.get(), diagrams, classes, store_path);
     check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL) >= 0 && file.close(), store_path,
           "cannot write " + temporary + " (disk full?)");
   } catch (...) {

@@ -55,8 +55,16 @@ Filtration make_job_filtration(const std::vector<medusa::Cell>& cells, const std
                                 : make_type_filtration(cells, vertex_type, job.first, job.second);
 }
 
-Diagram audited_diagram(const std::vector<medusa::Cell>& cells, const Filtration& f) {
-  Diagram d = compute_diagram(cells, f);
+Diagram audited_diagram(const std::vector<medusa::Cell>& cells, const Filtration& f,
+                        ClassRepresentatives* classes, const RepresentativeOptions& options) {
+  Diagram d;
+  if (classes != nullptr) {
+    DiagramWithClasses both = compute_diagram_with_classes(cells, f, options);
+    d = std::move(both.diagram);
+    *classes = std::move(both.classes);
+  } else {
+    d = compute_diagram(cells, f);
+  }
   check_euler(d, f);
   check_homology_degrees(d);
   return d;
@@ -67,9 +75,13 @@ Diagram audited_diagram(const std::vector<medusa::Cell>& cells, const Filtration
 std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& cells,
                                              const std::vector<int>& vertex_type,
                                              const std::vector<int>& types, unsigned threads,
-                                             DiagramPhaseSeconds* phases) {
+                                             DiagramPhaseSeconds* phases,
+                                             std::vector<ClassRepresentatives>* forward_classes,
+                                             const RepresentativeOptions& options) {
   const auto jobs = medusa_jobs(types);
   std::vector<Diagram> diagrams(jobs.size());
+  if (forward_classes != nullptr)
+    forward_classes->assign(jobs.size(), ClassRepresentatives{});
   std::vector<DiagramPhaseSeconds> seconds(jobs.size());
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
@@ -78,7 +90,9 @@ std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& ce
     const Filtration filtration = make_job_filtration(cells, vertex_type, jobs[i]);
     seconds[i].filtrations = since(start);
     start = Clock::now();
-    diagrams[i] = audited_diagram(cells, filtration);
+    ClassRepresentatives* classes =
+        forward_classes != nullptr && jobs[i].second == Direction::forward ? &(*forward_classes)[i] : nullptr;
+    diagrams[i] = audited_diagram(cells, filtration, classes, options);
     seconds[i].reduction = since(start);
   });
   if (phases != nullptr)

@@ -207,7 +207,10 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   // seconds are the measured totals split in proportion to the tasks' time in each phase.
   clock = StageClock{};
   persistence::DiagramPhaseSeconds phases;
-  result.diagrams = persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, threads, &phases);
+  // The forward diagrams are the summary's: their classes get representatives (docs/MATH.md §7.11).
+  std::vector<persistence::ClassRepresentatives> classes;
+  result.diagrams =
+      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, threads, &phases, &classes);
   std::vector<persistence::Diagram>& diagrams = result.diagrams;
   const double both = phases.filtrations + phases.reduction;
   const double share = both > 0 ? phases.filtrations / both : 0.5;
@@ -222,7 +225,11 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   meter.stage("exports: diagrams into the store, " + csv + ", " + svg + ", " + diagram_svg + ", summary");
   clock = StageClock{};
   // The diagrams go into the store too (group /persistence, docs/FORMAT.md).
-  persistence::write_diagrams_in_place(store, diagrams);
+  std::vector<const persistence::ClassRepresentatives*> stored_classes;
+  for (std::size_t i = 0; i < diagrams.size(); ++i)
+    stored_classes.push_back(diagrams[i].direction == persistence::Direction::forward ? &classes[i]
+                                                                                      : nullptr);
+  persistence::write_diagrams_in_place(store, diagrams, stored_classes);
   check_interrupted();
   // From here on only positive-length pairs are shown (the summary skips zero-length ones too), so
   // they are dropped in place rather than copied: the diagrams are the largest structure of this stage.

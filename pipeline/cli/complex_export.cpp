@@ -64,7 +64,7 @@ std::vector<std::optional<std::array<double, 3>>> positions_at_time(const kineti
 void write_complex_vtk(std::ostream& out, const medusa::Medusa& medusa,
                        const std::vector<medusa::CellId>& cells,
                        const std::vector<std::optional<std::array<double, 3>>>& positions,
-                       const std::string& title) {
+                       const std::string& title, const ClassMarks* marks) {
   const kinetic::Trajectories& input = medusa.input;
   // Points: the vertices of the complex in increasing vertex id, numbered from 0.
   std::map<kinetic::VertexId, std::size_t> point_of;
@@ -113,12 +113,30 @@ void write_complex_vtk(std::ostream& out, const medusa::Medusa& medusa,
   out << "SCALARS dimension int 1\nLOOKUP_TABLE default\n";
   for (medusa::CellId id : cells)
     out << medusa.cell(id).dim() << '\n';
+  if (marks != nullptr) {
+    out << "SCALARS in_class int 1\nLOOKUP_TABLE default\n";
+    for (std::int64_t c : marks->cell_class)
+      out << (c >= 0 ? 1 : 0) << '\n';
+    out << "SCALARS class_id long 1\nLOOKUP_TABLE default\n";
+    for (std::int64_t c : marks->cell_class)
+      out << c << '\n';
+  }
   out << "POINT_DATA " << point_of.size() << "\nSCALARS cell_id long 1\nLOOKUP_TABLE default\n";
   for (const auto& entry : point_of)
     out << input.cells[static_cast<std::size_t>(entry.first)].cell_id << '\n';
   out << "SCALARS cell_type int 1\nLOOKUP_TABLE default\n";
   for (const auto& entry : point_of)
     out << input.cells[static_cast<std::size_t>(entry.first)].type << '\n';
+  if (marks != nullptr) {
+    out << "SCALARS in_class int 1\nLOOKUP_TABLE default\n";
+    for (const auto& entry : point_of)
+      out << (marks->vertex_class.count(entry.first) != 0 ? 1 : 0) << '\n';
+    out << "SCALARS class_id long 1\nLOOKUP_TABLE default\n";
+    for (const auto& entry : point_of) {
+      const auto it = marks->vertex_class.find(entry.first);
+      out << (it == marks->vertex_class.end() ? -1 : it->second) << '\n';
+    }
+  }
 }
 
 void write_complex_csv(std::ostream& out, const medusa::Medusa& medusa,

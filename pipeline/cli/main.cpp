@@ -55,6 +55,7 @@ int main(int argc, char** argv) {
   medusa::cli::add_compare_command(app);
   medusa::cli::add_curves_command(app);
   medusa::cli::add_at_command(app);
+  medusa::cli::add_classes_command(app);
   medusa::cli::add_report_command(app);
   medusa::cli::add_sweep_command(app);
   // CLI11 reports an unknown first word as a missing subcommand; name it instead.

@@ -95,10 +95,14 @@ medusa_golden_test(compare_type1_h1_finite
                          compare_type1_h1.heatmap.svg=compare_type1_h1.heatmap.svg
                          compare_type1_h1.dendrogram.svg=compare_type1_h1.dendrogram.svg ${compared})
 
+# The ten longest type-1 classes with their cells (stored by the run); checked by check_classes_oracle.py.
+medusa_golden_test(classes_type1_top10 ARGS classes small.h5 --type 1 --top 10 STDOUT classes_type1_top10.txt
+                   ${small})
+
 medusa_golden_test(help ARGS --help STDOUT help.txt)
 # `medusa` alone prints the same help, exit 0.
 medusa_golden_test(no_subcommand STDOUT help.txt)
-foreach(sub run info diagrams barcode compare curves at report sweep)
+foreach(sub run info diagrams barcode compare curves at classes report sweep)
   medusa_golden_test(${sub}_help ARGS ${sub} --help STDOUT help_${sub}.txt)
 endforeach()
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "medusa/persistence/diagram.h"
+#include "medusa/persistence/representatives.h"
 
 #include <string>
 #include <vector>
@@ -16,12 +17,16 @@ std::string diagram_group_name(const Diagram& diagram);
 // subgroup per diagram. Written safely: the store is copied to `<store_path>.tmp-<pid>`, the copy is
 // changed and closed, then renamed over the original, so a crash leaves the original intact. Throws
 // StoreError naming the store when it cannot be read or written, is not a complete medusa store, or
-// two diagrams have the same group name.
-void write_diagrams(const std::string& store_path, const std::vector<Diagram>& diagrams);
+// two diagrams have the same group name. The class representatives of diagram i, if any, are in
+// `*classes[i]` (subgroup `classes` of its group; class_store.h reads them); a null entry, or a
+// diagram beyond the end of `classes`, gets none.
+void write_diagrams(const std::string& store_path, const std::vector<Diagram>& diagrams,
+                    const std::vector<const ClassRepresentatives*>& classes = {});
 
 // The same, written into the file itself: for a store nobody else can see yet (`medusa run` writes
 // its store under a temporary name and publishes it with the run's other outputs at the end).
-void write_diagrams_in_place(const std::string& store_path, const std::vector<Diagram>& diagrams);
+void write_diagrams_in_place(const std::string& store_path, const std::vector<Diagram>& diagrams,
+                             const std::vector<const ClassRepresentatives*>& classes = {});
 
 // Reads `/persistence` back, in the stored order. Each pair has dim, birth, death, birth_cell,
 // death_cell, essential and zero_length; the other fields of PersistencePair (virtual times,

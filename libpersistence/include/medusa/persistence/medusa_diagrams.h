@@ -4,6 +4,7 @@
 #pragma once
 
 #include "medusa/persistence/diagram.h"
+#include "medusa/persistence/representatives.h"
 
 #include <vector>
 
@@ -23,10 +24,14 @@ struct DiagramPhaseSeconds {
 // count. Each task builds one filtration, reduces it and frees it, so at most `threads` filtrations
 // and boundary matrices are in memory at once (this bounds the peak memory of `medusa run`). When several
 // filtrations fail, the error of the first one in the order above is thrown. `phases`, when given,
-// receives the time spent per phase.
+// receives the time spent per phase. `forward_classes`, when given, receives for each diagram the
+// representatives of its classes (representatives.h) selected by `options`, computed for the forward
+// diagrams only (the reverse ones get an empty entry).
 std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& cells,
                                              const std::vector<int>& vertex_type,
                                              const std::vector<int>& types, unsigned threads = 1,
-                                             DiagramPhaseSeconds* phases = nullptr);
+                                             DiagramPhaseSeconds* phases = nullptr,
+                                             std::vector<ClassRepresentatives>* forward_classes = nullptr,
+                                             const RepresentativeOptions& options = {});
 
 } // namespace medusa::persistence

@@ -1,0 +1,275 @@
+#include "medusa/persistence/representatives.h"
+
+#include "medusa/core/error.h"
+#include "medusa/persistence/boundary_matrix.h"
+
+#include <phat/algorithms/twist_reduction.h>
+
+#include <algorithm>
+#include <iterator>
+#include <string>
+#include <unordered_map>
+#include <utility>
+
+namespace medusa::persistence {
+namespace {
+
+using Index = std::int64_t;
+using Chain = std::vector<Index>; // filtration indices, ascending
+using Matrix = phat::boundary_matrix<phat::bit_tree_pivot_column>;
+
+Chain sum(const Chain& a, const Chain& b) {
+  Chain out;
+  out.reserve(a.size() + b.size());
+  std::set_symmetric_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
+  return out;
+}
+
+Chain reduced_column(const Matrix& matrix, Index j) {
+  std::vector<phat::index> column;
+  matrix.get_col(j, column);
+  Chain out(column.begin(), column.end());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+Chain boundary_of(const Filtration& f, Index j) { return f.columns[static_cast<std::size_t>(j)]; }
+
+// Cycles of essential classes (docs/MATH.md §7.11). The twist reduction keeps R but not V (R = D V):
+// V is rebuilt only where an essential class needs it. A reduced column R[i] is the boundary of i
+// plus reduced columns R[j], j < i, of the same degree; those j are recovered by eliminating the
+// lowest entry of R[i] + ∂i against the column holding that entry as its pivot (pivots are unique, so
+// the expression is). Then W(i) = i + sum of W(j) has boundary R[i], and for an essential cell b,
+// ∂b = sum of R[j] over the j found the same way, so b + sum of W(j) is a cycle whose last cell is b.
+class EssentialCycles {
+public:
+  EssentialCycles(const Matrix& matrix, const Filtration& f, const std::vector<IndexPair>& pairs)
+      : matrix_(matrix), filtration_(f), pivot_column_(f.size(), -1) {
+    for (const auto& [b, d] : pairs)
+      pivot_column_[static_cast<std::size_t>(b)] = d;
+  }
+
+  Chain cycle_of(Index b) {
+    const std::vector<Index> used = express(boundary_of(filtration_, b), b);
+    Chain z{b};
+    for (Index j : used)
+      z = sum(z, preimage(j));
+    return z;
+  }
+
+private:
+  // The columns whose reduced forms sum to `chain`, each before `before`.
+  std::vector<Index> express(Chain chain, Index before) const {
+    std::vector<Index> used;
+    while (!chain.empty()) {
+      const Index low = chain.back();
+      const Index j = pivot_column_[static_cast<std::size_t>(low)];
+      if (j < 0 || j >= before)
+        throw InternalError("representatives: filtration index " + std::to_string(low) +
+                            " is no pivot of an earlier reduced column");
+      chain = sum(chain, reduced_column(matrix_, j));
+      used.push_back(j);
+    }
+    return used;
+  }
+
+  // W(i) with boundary R[i], memoised; built bottom-up with an explicit stack (chains of
+  // dependencies can be long).
+  const Chain& preimage(Index root) {
+    if (const auto it = memo_.find(root); it != memo_.end())
+      return it->second;
+    std::unordered_map<Index, std::vector<Index>> pending;
+    std::vector<Index> stack{root};
+    while (!stack.empty()) {
+      const Index i = stack.back();
+      if (memo_.count(i) != 0) {
+        stack.pop_back();
+        continue;
+      }
+      auto at = pending.find(i);
+      if (at == pending.end()) {
+        at = pending.emplace(i, express(sum(reduced_column(matrix_, i), boundary_of(filtration_, i)), i))
+                 .first;
+        bool ready = true;
+        for (Index j : at->second)
+          if (memo_.count(j) == 0) {
+            stack.push_back(j);
+            ready = false;
+          }
+        if (!ready)
+          continue;
+      }
+      Chain w{i};
+      for (Index j : at->second)
+        w = sum(w, memo_.at(j));
+      memo_.emplace(i, std::move(w));
+      pending.erase(at);
+      stack.pop_back();
+    }
+    return memo_.at(root);
+  }
+
+  const Matrix& matrix_;
+  const Filtration& filtration_;
+  std::vector<Index> pivot_column_; // by birth index: the column that kills it, -1 if none
+  std::unordered_map<Index, Chain> memo_;
+};
+
+// Union-find over the vertices in filtration order (docs/MATH.md §7.11): the components with their
+// members (linked lists, concatenated in O(1)) and their oldest vertex.
+class Components {
+public:
+  explicit Components(std::size_t n) : parent_(n), oldest_(n), next_(n, -1), tail_(n) {}
+
+  void add_vertex(Index v) {
+    parent_[static_cast<std::size_t>(v)] = v;
+    oldest_[static_cast<std::size_t>(v)] = v;
+    tail_[static_cast<std::size_t>(v)] = v;
+  }
+  Index find(Index v) {
+    while (parent_[static_cast<std::size_t>(v)] != v) {
+      auto& p = parent_[static_cast<std::size_t>(v)];
+      p = parent_[static_cast<std::size_t>(p)];
+      v = p;
+    }
+    return v;
+  }
+  Index oldest(Index root) const { return oldest_[static_cast<std::size_t>(root)]; }
+  Chain members(Index root) const {
+    Chain out;
+    for (Index v = root; v >= 0; v = next_[static_cast<std::size_t>(v)])
+      out.push_back(v);
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+  // Merges the component of root `b` into that of root `a` (a keeps its oldest vertex).
+  void merge_into(Index a, Index b) {
+    parent_[static_cast<std::size_t>(b)] = a;
+    next_[static_cast<std::size_t>(tail_[static_cast<std::size_t>(a)])] = b;
+    tail_[static_cast<std::size_t>(a)] = tail_[static_cast<std::size_t>(b)];
+  }
+
+private:
+  std::vector<Index> parent_, oldest_, next_, tail_;
+};
+
+// The degree-0 representatives: cycle and cluster by row.
+void degree_zero(const Filtration& f, const Diagram& diagram, const std::vector<std::size_t>& rows,
+                 std::vector<Chain>& cycles, std::vector<Chain>& clusters) {
+  // Rows wanted, by the death column (finite) or the birth vertex (essential).
+  std::unordered_map<Index, std::size_t> by_death, by_birth;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const PersistencePair& p = diagram.pairs[rows[i]];
+    if (p.dim != 0)
+      continue;
+    (p.essential ? by_birth[p.birth_index] : by_death[p.death_index]) = i;
+  }
+  if (by_death.empty() && by_birth.empty())
+    return;
+  Components components(f.size());
+  for (std::size_t j = 0; j < f.size(); ++j) {
+    const auto index = static_cast<Index>(j);
+    if (f.dims[j] == 0) {
+      components.add_vertex(index);
+      continue;
+    }
+    if (f.dims[j] != 1)
+      continue;
+    const Index u = components.find(f.columns[j][0]), v = components.find(f.columns[j][1]);
+    if (u == v)
+      continue;
+    // Elder rule: the component with the younger oldest vertex dies (docs/MATH.md §7.5).
+    const bool u_older = components.oldest(u) < components.oldest(v);
+    const Index older = u_older ? u : v, younger = u_older ? v : u;
+    if (const auto it = by_death.find(index); it != by_death.end()) {
+      const PersistencePair& p = diagram.pairs[rows[it->second]];
+      if (p.birth_index != components.oldest(younger))
+        throw InternalError("representatives: H0 pair (" + std::to_string(p.birth_index) + ", " +
+                            std::to_string(p.death_index) + ") does not follow the elder rule");
+      cycles[it->second] = {components.oldest(older), components.oldest(younger)};
+      clusters[it->second] = components.members(younger);
+    }
+    components.merge_into(older, younger);
+  }
+  for (const auto& [birth, i] : by_birth) {
+    const Index root = components.find(birth);
+    if (components.oldest(root) != birth)
+      throw InternalError("representatives: essential H0 class born at " + std::to_string(birth) +
+                          " is not the oldest vertex of its component");
+    cycles[i] = {birth};
+    clusters[i] = components.members(root);
+  }
+}
+
+// The boundary of a chain over Z/2 is zero.
+bool is_cycle(const Filtration& f, const Chain& z) {
+  std::vector<Index> faces;
+  for (Index j : z)
+    faces.insert(faces.end(), f.columns[static_cast<std::size_t>(j)].begin(),
+                 f.columns[static_cast<std::size_t>(j)].end());
+  std::sort(faces.begin(), faces.end());
+  for (std::size_t k = 0; k < faces.size(); k += 2)
+    if (k + 1 >= faces.size() || faces[k] != faces[k + 1])
+      return false;
+  return true;
+}
+
+std::vector<medusa::CellId> cell_ids(const std::vector<medusa::Cell>& cells, const Filtration& f,
+                                     const Chain& z) {
+  std::vector<medusa::CellId> ids;
+  ids.reserve(z.size());
+  for (Index j : z)
+    ids.push_back(cells[f.cells[static_cast<std::size_t>(j)]].id);
+  return ids;
+}
+
+} // namespace
+
+DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>& cells,
+                                                const Filtration& filtration,
+                                                const RepresentativeOptions& options) {
+  Matrix matrix = make_boundary_matrix(filtration);
+  phat::persistence_pairs phat_pairs;
+  phat::compute_persistence_pairs<phat::twist_reduction>(phat_pairs, matrix);
+  phat_pairs.sort();
+  std::vector<IndexPair> pairs;
+  pairs.reserve(static_cast<std::size_t>(phat_pairs.get_num_pairs()));
+  for (phat::index i = 0; i < phat_pairs.get_num_pairs(); ++i)
+    pairs.emplace_back(phat_pairs.get_pair(i).first, phat_pairs.get_pair(i).second);
+
+  DiagramWithClasses out;
+  out.diagram = make_diagram(cells, filtration, pairs);
+  const Diagram& diagram = out.diagram;
+  ClassRepresentatives& classes = out.classes;
+  classes.options = options;
+  for (std::size_t r = 0; r < diagram.pairs.size(); ++r) {
+    const PersistencePair& p = diagram.pairs[r];
+    if (p.dim <= options.max_dim && (options.zero_length || !p.zero_length))
+      classes.rows.push_back(r);
+  }
+  std::vector<Chain> cycles(classes.rows.size()), clusters(classes.rows.size());
+  degree_zero(filtration, diagram, classes.rows, cycles, clusters);
+  EssentialCycles essential(matrix, filtration, pairs);
+  for (std::size_t i = 0; i < classes.rows.size(); ++i) {
+    const PersistencePair& p = diagram.pairs[classes.rows[i]];
+    if (p.dim == 0)
+      continue;
+    cycles[i] = p.essential ? essential.cycle_of(p.birth_index) : reduced_column(matrix, p.death_index);
+    // The defining properties that are cheap to check (docs/MATH.md §7.11): a cycle whose last cell is
+    // the birth cell. Not being a boundary before the death follows from the pivots.
+    if (cycles[i].empty() || cycles[i].back() != p.birth_index || !is_cycle(filtration, cycles[i]))
+      throw InternalError("representatives: the cycle of the class born at filtration index " +
+                          std::to_string(p.birth_index) + " is not a cycle ending at its birth cell");
+  }
+  classes.cycles.reserve(cycles.size());
+  classes.clusters.reserve(cycles.size());
+  for (std::size_t i = 0; i < cycles.size(); ++i) {
+    classes.cycles.push_back(cell_ids(cells, filtration, cycles[i]));
+    classes.clusters.push_back(cell_ids(cells, filtration, clusters[i]));
+    Chain().swap(cycles[i]);
+    Chain().swap(clusters[i]);
+  }
+  return out;
+}
+
+} // namespace medusa::persistence

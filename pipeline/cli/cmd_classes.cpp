@@ -1,0 +1,211 @@
+// `medusa classes`: every persistence class of one diagram with the CompuCell3D cells that make it
+// (docs/MATH.md §7.11).
+#include "atomic_file.h"
+#include "commands.h"
+#include "diagram_export.h"
+#include "diagram_selection.h"
+
+#include "medusa/core/error.h"
+#include "medusa/medusa/store_reader.h"
+#include "medusa/persistence/class_records.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace medusa::cli {
+namespace {
+
+struct ClassesArguments {
+  std::string store;
+  std::string type = "all";
+  std::optional<int> dim;
+  std::string filtration = "forward";
+  std::size_t top = 0;
+  std::string sort = "lifetime";
+  std::string format = "table";
+  std::string output;
+  bool zero_length = false;
+};
+
+// Cells shown per list in the table before "...".
+constexpr std::size_t table_list_limit = 12;
+
+std::string joined(const std::vector<std::int64_t>& ids, const char* separator, std::size_t limit = 0) {
+  std::ostringstream out;
+  const std::size_t shown = limit > 0 ? std::min(limit, ids.size()) : ids.size();
+  for (std::size_t i = 0; i < shown; ++i)
+    out << (i > 0 ? separator : "") << ids[i];
+  if (shown < ids.size())
+    out << separator << "...(+" << ids.size() - shown << ")";
+  return out.str();
+}
+
+std::string short_time(double t) {
+  if (std::isinf(t))
+    return t > 0 ? "inf" : "-inf";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", t);
+  return buffer;
+}
+
+void sort_records(std::vector<persistence::ClassRecord>& records, const std::string& key, bool forward) {
+  // Birth and death in filtration order: increasing time forward, decreasing in reverse; an essential
+  // class's death comes last.
+  const double sign = forward ? 1.0 : -1.0;
+  std::stable_sort(records.begin(), records.end(),
+                   [&](const persistence::ClassRecord& a, const persistence::ClassRecord& b) {
+                     if (key == "lifetime")
+                       return a.lifetime() > b.lifetime();
+                     if (key == "birth")
+                       return sign * a.birth < sign * b.birth;
+                     return sign * a.death < sign * b.death;
+                   });
+}
+
+void write_table(std::ostream& out, const std::vector<persistence::ClassRecord>& records) {
+  out << "id\tdim\tbirth\tdeath\tlifetime\tbirth cells\tdeath cells\tsimplices\tcells\trepresentative\n";
+  for (const persistence::ClassRecord& r : records)
+    out << r.id << '\t' << r.dim << '\t' << short_time(r.birth) << '\t' << short_time(r.death) << '\t'
+        << short_time(r.lifetime()) << '\t' << joined(r.birth_cells, " ") << '\t'
+        << (r.essential ? "-" : joined(r.death_cells, " ")) << '\t' << r.simplices.size() << '\t'
+        << r.cells.size() << '\t' << joined(r.cells, " ", table_list_limit) << '\n';
+}
+
+void write_classes_csv(std::ostream& out, const std::vector<persistence::ClassRecord>& records) {
+  out << "id,dimension,birth,death,lifetime,birth_kind,death_kind,birth_cells,death_cells,cell_count,cells,"
+         "simplex_count,simplices\n";
+  for (const persistence::ClassRecord& r : records) {
+    std::string simplices;
+    for (const auto& s : r.simplices)
+      simplices += (simplices.empty() ? "" : ";") + joined(s, " ");
+    out << r.id << ',' << r.dim << ',' << format_time(r.birth) << ',' << format_time(r.death) << ','
+        << format_time(r.lifetime()) << ',' << persistence::cell_kind_name(r.birth_kind) << ','
+        << (r.essential ? "" : persistence::cell_kind_name(r.death_kind)) << ',' << joined(r.birth_cells, " ")
+        << ',' << joined(r.death_cells, " ") << ',' << r.cells.size() << ',' << joined(r.cells, " ") << ','
+        << r.simplices.size() << ',' << simplices << '\n';
+  }
+}
+
+nlohmann::json time_json(double t) {
+  return std::isinf(t) ? nlohmann::json(format_time(t)) : nlohmann::json(t);
+}
+
+void write_classes_json(std::ostream& out, const std::vector<persistence::ClassRecord>& records,
+                        int cell_type, persistence::Direction direction) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const persistence::ClassRecord& r : records) {
+    nlohmann::json death_kind =
+        r.essential ? nlohmann::json(nullptr) : nlohmann::json(persistence::cell_kind_name(r.death_kind));
+    list.push_back(
+        {{"id", r.id},
+         {"dimension", r.dim},
+         {"birth", time_json(r.birth)},
+         {"death", time_json(r.death)},
+         {"lifetime", time_json(r.lifetime())},
+         {"essential", r.essential},
+         {"birth_kind", persistence::cell_kind_name(r.birth_kind)},
+         {"death_kind", death_kind},
+         {"birth_cells", r.birth_cells},
+         {"death_cells", r.death_cells},
+         {"cells", r.cells},
+         {"medusa_birth_cell", r.birth_cell},
+         {"medusa_death_cell", r.essential ? nlohmann::json(nullptr) : nlohmann::json(r.death_cell)},
+         {"medusa_cycle", r.cycle},
+         {"simplices", r.simplices}});
+  }
+  out << nlohmann::json{{"type", type_label(cell_type)},
+                        {"direction", direction_name(direction)},
+                        {"classes", list}}
+             .dump(1)
+      << '\n';
+}
+
+void classes_command(const ClassesArguments& args) {
+  medusa::StoreReadOptions cells_only;
+  cells_only.events = false;
+  const medusa::Medusa medusa = medusa::read_store(args.store, cells_only);
+  const int cell_type = args.type == "all" ? persistence::all_types : std::stoi(args.type);
+  const auto direction =
+      args.filtration == "forward" ? persistence::Direction::forward : persistence::Direction::reverse;
+  persistence::RepresentativeOptions options;
+  options.max_dim = args.dim ? *args.dim : 2;
+  options.zero_length = args.zero_length;
+  const persistence::DiagramWithClasses classes =
+      persistence::diagram_with_classes(args.store, medusa, direction, cell_type, options);
+  std::vector<persistence::ClassRecord> records;
+  for (persistence::ClassRecord& r : persistence::class_records(medusa, classes))
+    if (!args.dim || r.dim == *args.dim)
+      records.push_back(std::move(r));
+  sort_records(records, args.sort, direction == persistence::Direction::forward);
+  if (args.top > 0 && records.size() > args.top)
+    records.resize(args.top);
+  auto write = [&](std::ostream& out) {
+    if (args.format == "csv")
+      write_classes_csv(out, records);
+    else if (args.format == "json")
+      write_classes_json(out, records, cell_type, direction);
+    else
+      write_table(out, records);
+  };
+  if (args.output.empty() || args.output == "-")
+    write(std::cout);
+  else
+    write_file_atomically(args.output, write);
+}
+
+} // namespace
+
+void add_classes_command(CLI::App& app) {
+  auto args = std::make_shared<ClassesArguments>();
+  CLI::App* classes = app.add_subcommand(
+      "classes", "List the persistence classes of one diagram with the CompuCell3D cells that make each one");
+  classes->add_option("store", args->store, "HDF5 store written by `medusa run`")->required();
+  classes
+      ->add_option("--type", args->type,
+                   "the sub-medusa of this cell type id (docs/MATH.md §7.4), or 'all' for the whole medusa")
+      ->check(CLI::Validator(
+          [](std::string& value) {
+            return value == "all" || (!value.empty() && value.size() <= 9 &&
+                                      value.find_first_not_of("0123456789") == std::string::npos)
+                       ? std::string()
+                       : "'" + value + "' is not a type id or 'all'";
+          },
+          "TYPE"))
+      ->capture_default_str();
+  classes->add_option("--dim", args->dim, "only this homology degree (default: 0, 1 and 2)")
+      ->check(CLI::Range(0, 3));
+  classes->add_option("--filtration", args->filtration, "forward or reverse (docs/MATH.md §7.2, §7.3)")
+      ->check(CLI::IsMember({"forward", "reverse"}))
+      ->capture_default_str();
+  classes->add_option("--top", args->top, "only the first N classes in the sort order (0: all)")
+      ->capture_default_str();
+  classes
+      ->add_option("--sort", args->sort,
+                   "lifetime (longest first, essential classes first), birth or death (in filtration order)")
+      ->check(CLI::IsMember({"lifetime", "birth", "death"}))
+      ->capture_default_str();
+  classes
+      ->add_option(
+          "--format", args->format,
+          "table (tab-separated: the counts of simplices and of CC3D cells of the representative, long lists "
+          "cut), csv or json (with every cell and the "
+          "representative's simplices as CompuCell3D cell ids)")
+      ->check(CLI::IsMember({"table", "csv", "json"}))
+      ->capture_default_str();
+  classes->add_option("-o,--output", args->output, "output file (default: stdout)");
+  classes->add_flag("--zero-length", args->zero_length,
+                    "also the zero-length classes (birth and death in the same batch)");
+  classes->footer("A class's representative is a cycle of medusa cells born with it (docs/MATH.md §7.11): "
+                  "for degree 0 the cells of the cluster that merged, for degrees 1 and 2 the cells on the "
+                  "loop or the shell. Stored by `medusa run` for the forward diagrams (degrees 0-2); "
+                  "computed on demand for the others.");
+  classes->callback([args] { classes_command(*args); });
+}
+
+} // namespace medusa::cli

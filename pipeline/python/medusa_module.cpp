@@ -1,0 +1,210 @@
+// The Python module `medusa`: open a store, read its persistence diagrams as numpy arrays (GUDHI's
+// and giotto-tda's layouts), its classes with the CompuCell3D cells that make them (docs/MATH.md §7.11),
+// the complexes K(t) and the Betti curves; run the pipeline in-process (pipeline/python/README.md).
+#include "python_run.h"
+#include "python_store.h"
+
+#include "medusa/core/error.h"
+#include "medusa/persistence/points.h"
+#include "medusa/persistence/summaries.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+namespace py = pybind11;
+
+namespace medusa::python {
+namespace {
+
+persistence::Direction direction_of(const std::string& filtration) {
+  if (filtration == "forward")
+    return persistence::Direction::forward;
+  if (filtration == "reverse")
+    return persistence::Direction::reverse;
+  throw InputError("filtration '" + filtration + "' is neither 'forward' nor 'reverse'");
+}
+
+// type=None or "all": the whole medusa; an int (or its decimal text): that cell type.
+int type_of(const py::object& type) {
+  if (type.is_none())
+    return persistence::all_types;
+  if (py::isinstance<py::str>(type)) {
+    const std::string text = type.cast<std::string>();
+    if (text == "all")
+      return persistence::all_types;
+    if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos || text.size() > 9)
+      throw InputError("type '" + text + "' is not a cell type id or 'all'");
+    return std::stoi(text);
+  }
+  return type.cast<int>();
+}
+
+py::array_t<double> rows_array(const std::vector<std::array<double, 3>>& rows, std::size_t columns) {
+  py::array_t<double> out({rows.size(), columns});
+  auto view = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (std::size_t j = 0; j < columns; ++j)
+      view(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(j)) = rows[i][j];
+  return out;
+}
+
+// Points in the stored order (degree, then birth filtration index): (birth, death, degree).
+std::vector<std::array<double, 3>> points_of(const persistence::Diagram& d, std::optional<int> dim,
+                                             bool zero_length) {
+  std::vector<std::array<double, 3>> rows;
+  for (const persistence::PersistencePair& p : d.pairs)
+    if ((!dim || p.dim == *dim) && (zero_length || !p.zero_length))
+      rows.push_back({p.birth, p.death, static_cast<double>(p.dim)});
+  return rows;
+}
+
+py::object diagrams(StoreView& store, const py::object& type, std::optional<int> dim,
+                    const std::string& filtration, bool zero_length, const std::string& layout) {
+  const persistence::Diagram& d = store.diagram(direction_of(filtration), type_of(type));
+  if (layout == "giotto")
+    return rows_array(points_of(d, dim, zero_length), 3);
+  if (layout != "gudhi")
+    throw InputError("layout '" + layout + "' is neither 'gudhi' nor 'giotto'");
+  if (dim)
+    return rows_array(points_of(d, dim, zero_length), 2);
+  py::dict by_degree;
+  int top = -1;
+  for (const persistence::PersistencePair& p : d.pairs)
+    top = std::max(top, p.dim);
+  for (int k = 0; k <= std::min(top, 3); ++k)
+    by_degree[py::int_(k)] = rows_array(points_of(d, k, zero_length), 2);
+  return std::move(by_degree);
+}
+
+py::object time_value(double t) { return py::float_(t); }
+
+py::list classes(StoreView& store, const py::object& type, std::optional<int> dim,
+                 const std::string& filtration, bool zero_length) {
+  const auto records = store.classes(direction_of(filtration), type_of(type), dim, zero_length);
+  py::list out;
+  for (const persistence::ClassRecord& r : records) {
+    py::dict c;
+    c["id"] = r.id;
+    c["dimension"] = r.dim;
+    c["birth"] = time_value(r.birth);
+    c["death"] = time_value(r.death);
+    c["lifetime"] = time_value(r.lifetime());
+    c["essential"] = r.essential;
+    c["birth_kind"] = persistence::cell_kind_name(r.birth_kind);
+    c["death_kind"] =
+        r.essential ? py::object(py::none()) : py::object(py::str(persistence::cell_kind_name(r.death_kind)));
+    c["birth_cells"] = r.birth_cells;
+    c["death_cells"] = r.death_cells;
+    c["cells"] = r.cells;
+    c["medusa_birth_cell"] = r.birth_cell;
+    c["medusa_death_cell"] = r.essential ? py::object(py::none()) : py::object(py::int_(r.death_cell));
+    c["medusa_cycle"] = r.cycle;
+    c["simplices"] = r.simplices;
+    out.append(std::move(c));
+  }
+  return out;
+}
+
+// beta_k(s) = #{(b, d) : b <= s < d} of the filtration's diagram (docs/MATH.md §7.8), at the frame times
+// by default; a reverse diagram is read on its -t axis, so beta_k(t) counts the classes of M_{>= t}.
+py::tuple betti_curves(StoreView& store, const py::object& type, const std::string& filtration,
+                       std::optional<std::vector<double>> times) {
+  const persistence::Direction direction = direction_of(filtration);
+  const persistence::Diagram& d = store.diagram(direction, type_of(type));
+  std::vector<double> at;
+  if (times)
+    at = *times;
+  else
+    for (std::int64_t t : store.medusa().input.frame_times)
+      at.push_back(static_cast<double>(t));
+  std::vector<double> axis = at;
+  if (direction == persistence::Direction::reverse)
+    for (double& s : axis)
+      s = -s;
+  constexpr std::size_t degrees = 4;
+  py::array_t<std::int64_t> curves({degrees, at.size()});
+  auto view = curves.mutable_unchecked<2>();
+  for (std::size_t k = 0; k < degrees; ++k) {
+    const std::vector<std::size_t> beta =
+        persistence::betti_curve(persistence::to_points(d, static_cast<int>(k)), axis);
+    for (std::size_t i = 0; i < at.size(); ++i)
+      view(static_cast<py::ssize_t>(k), static_cast<py::ssize_t>(i)) = static_cast<std::int64_t>(beta[i]);
+  }
+  return py::make_tuple(py::array_t<double>(at.size(), at.data()), curves);
+}
+
+std::shared_ptr<StoreView> open_store(const std::string& path) {
+  py::gil_scoped_release release;
+  return std::make_shared<StoreView>(path);
+}
+
+std::shared_ptr<StoreView> run(const std::string& input, const py::object& radius, const std::string& output,
+                               const std::string& source, bool snap, unsigned threads, bool force) {
+  RunRequest request;
+  request.input = input;
+  request.radius =
+      py::isinstance<py::str>(radius) ? radius.cast<std::string>() : py::str(radius).cast<std::string>();
+  request.output = output;
+  request.source = source;
+  request.snap = snap;
+  request.threads = threads;
+  request.force = force;
+  std::string path;
+  {
+    py::gil_scoped_release release;
+    path = run_pipeline(request, "medusa.run(" + input + ", radius=" + request.radius + ") [python]");
+    return std::make_shared<StoreView>(path);
+  }
+}
+
+} // namespace
+} // namespace medusa::python
+
+PYBIND11_MODULE(medusa, m) {
+  using namespace medusa::python;
+  m.doc() =
+      "medusa: exact topology of CompuCell3D cell-sorting runs (docs/MATH.md); see pipeline/python/README.md";
+  auto error = py::register_exception<medusa::Error>(m, "Error", PyExc_RuntimeError);
+  (void)error;
+
+  py::class_<StoreView, std::shared_ptr<StoreView>>(m, "Store", "A medusa store (run.h5) read into memory")
+      .def_property_readonly("path", &StoreView::path)
+      .def_property_readonly("types", &StoreView::types, "the cell types of the run")
+      .def_property_readonly(
+          "frame_times", [](const StoreView& s) { return s.medusa().input.frame_times; },
+          "the frame times (MCS)")
+      .def("diagrams", &diagrams, py::arg("type") = py::none(), py::arg("dim") = py::none(),
+           py::arg("filtration") = "forward", py::arg("zero_length") = false, py::arg("layout") = "gudhi",
+           "Persistence diagram of the whole medusa (type None or 'all') or of one cell type.\n"
+           "layout='gudhi': with dim, an (n, 2) array of (birth, death); without, a dict degree -> such "
+           "an array. layout='giotto': an (n, 3) array of (birth, death, degree). Essential classes have "
+           "death inf (forward) or -inf (reverse, whose births are >= deaths: docs/MATH.md §7.3).")
+      .def("classes", &classes, py::arg("type") = py::none(), py::arg("dim") = py::none(),
+           py::arg("filtration") = "forward", py::arg("zero_length") = false,
+           "The classes with their representatives (docs/MATH.md §7.11), one dict each, in diagram order; "
+           "the keys of `medusa classes --format json`.")
+      .def(
+          "K_at",
+          [](const StoreView& s, double t, std::optional<int> type) {
+            py::gil_scoped_release release;
+            return s.complex_at(t, type);
+          },
+          py::arg("t"), py::arg("type") = py::none(),
+          "The alpha complex K(t+) as a list of simplices, each a sorted list of CC3D cell ids")
+      .def("betti_curves", &betti_curves, py::arg("type") = py::none(), py::arg("filtration") = "forward",
+           py::arg("times") = py::none(),
+           "(times, curves): curves[k][i] = number of degree-k classes alive at times[i] in the filtration "
+           "(docs/MATH.md §7.8), at the frame times by default");
+
+  m.def("open", &open_store, py::arg("path"), "Open a store written by `medusa run` or medusa.run");
+  m.def("run", &run, py::arg("input"), py::arg("radius") = "auto", py::arg("output") = "",
+        py::arg("source") = "", py::arg("snap") = false, py::arg("threads") = 0, py::arg("force") = false,
+        "Run the pipeline of `medusa run` in this process (the GIL is released) on a CC3D output folder "
+        "or cells.csv[.gz], write the store (default <input name>.h5; an existing one only with force=True) "
+        "and return it opened");
+}

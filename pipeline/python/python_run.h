@@ -1,0 +1,25 @@
+// `medusa.run`: the pipeline of `medusa run` in the calling process, without the CLI's progress,
+// summary and exports: CC3D run -> kinetic alpha complex -> store -> diagrams and class
+// representatives in its /persistence group (docs/MATH.md §1-§7).
+#pragma once
+
+#include <string>
+
+namespace medusa::python {
+
+struct RunRequest {
+  std::string input;           // CC3D output folder or cells.csv[.gz]
+  std::string radius = "auto"; // decimal, or "auto": the equivalent radius of the median cell volume
+  std::string output;          // the store to write (default: <input name>.h5 in the working folder)
+  std::string source;          // "", "csv" or "vtk", as `medusa run --source`
+  bool snap = false;           // as `medusa run --snap`
+  unsigned threads = 0;        // 0: one per hardware thread
+  bool force = false;          // replace an existing store (as `medusa run --force`)
+};
+
+// Runs the pipeline and returns the path of the complete store. An existing store is an InputError
+// unless `force`. Throws medusa::Error (a failed run leaves no store: StoreWriter deletes its
+// temporary file).
+std::string run_pipeline(const RunRequest& request, const std::string& command_line);
+
+} // namespace medusa::python

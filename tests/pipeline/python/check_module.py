@@ -1,0 +1,131 @@
+"""The Python module `medusa` against the `medusa` command line (run with /usr/bin/python3).
+
+usage: check_module.py <medusa> <store> <run input> <radius> <work dir>
+       (PYTHONPATH must hold <build dir>/python)
+
+* store.diagrams(...) equals `medusa barcode --format csv` exactly (every double, in order), for every
+  filtration and type, in giotto-tda's layout and in GUDHI's (per degree), and GUDHI reads it;
+* store.classes(...) equals `medusa classes --format json` (stored forward classes, and reverse ones
+  computed on demand);
+* store.K_at(t) equals `medusa at --time t -o x.csv`;
+* store.betti_curves() equals counting the diagram's points alive at each frame time;
+* medusa.run(input, radius) writes a store whose diagrams and classes equal those of <store>, which
+  `medusa run` wrote from the same input and radius.
+Exit 1 names the first difference.
+"""
+import csv
+import io
+import json
+import math
+import os
+import subprocess
+import sys
+
+import gudhi
+import numpy as np
+
+import medusa
+
+if not __debug__:
+    sys.exit("these checks are assert statements: run without -O and without PYTHONOPTIMIZE")
+
+
+def cli(binary, *args):
+    out = subprocess.run([binary, *args], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    return out.stdout
+
+
+def barcode_rows(binary, store):
+    rows = {}
+    for r in csv.DictReader(io.StringIO(cli(binary, "barcode", store, "--format", "csv"))):
+        rows.setdefault((r["direction"], r["type"]), []).append(
+            (float(r["birth"]), float(r["death"]), float(r["dimension"])))
+    return rows
+
+
+def normalised(c):
+    return {k: (float(v) if k in ("birth", "death", "lifetime") else v) for k, v in c.items()}
+
+
+def check_diagrams(binary, store, s):
+    expected = barcode_rows(binary, store)
+    assert len(expected) == 2 * (len(s.types) + 1), sorted(expected)
+    count = 0
+    for (direction, type_name), rows in expected.items():
+        got = s.diagrams(type=type_name, filtration=direction, layout="giotto")
+        assert got.shape == (len(rows), 3), (direction, type_name, got.shape, len(rows))
+        assert [tuple(r) for r in got.tolist()] == rows, f"{direction} {type_name}: diagrams differ"
+        per_degree = s.diagrams(type=type_name, filtration=direction)
+        for k, points in per_degree.items():
+            assert points.tolist() == [[b, d] for b, d, dim in rows if dim == k], (direction, type_name, k)
+            assert np.array_equal(points, s.diagrams(type=type_name, dim=k, filtration=direction))
+        count += len(rows)
+    h1 = s.diagrams(dim=1)
+    finite = h1[np.isfinite(h1[:, 1])]
+    shifted = finite + np.array([0.0, 1.0])  # every death one MCS later: distance 1 (or half a bar)
+    assert finite.size > 0 and 0 < gudhi.bottleneck_distance(finite, shifted) <= 1.0 + 1e-9
+    print(f"diagrams: {count} points equal `medusa barcode --format csv`")
+
+
+def check_classes(binary, store, s):
+    total = 0
+    for options, kwargs in ((["--type", "all"], {}), (["--type", "1"], {"type": 1}),
+                            (["--type", "2", "--filtration", "reverse"], {"type": 2, "filtration": "reverse"}),
+                            (["--dim", "0"], {"dim": 0})):
+        listed = json.loads(cli(binary, "classes", store, "--format", "json", *options))["classes"]
+        got = s.classes(**kwargs)
+        assert len(got) == len(listed) > 0, (options, len(got), len(listed))
+        by_id = {c["id"]: normalised(c) for c in listed}
+        for c in got:
+            assert normalised(c) == by_id[c["id"]], (options, c["id"])
+        total += len(got)
+    print(f"classes: {total} equal `medusa classes --format json`")
+
+
+def check_complex(binary, store, s, work):
+    t = s.frame_times[1]
+    target = os.path.join(work, "at.csv")
+    cli(binary, "at", store, "--time", str(t), "-o", target)
+    with open(target) as f:
+        rows = [[int(x) for x in r[1:] if x] for r in list(csv.reader(f))[1:]]
+    got = s.K_at(t)
+    assert got == rows, f"K_at({t}) differs from `medusa at`: {len(got)} against {len(rows)} simplices"
+    print(f"K_at({t}): {len(got)} simplices equal `medusa at`")
+
+
+def check_betti(s):
+    times, curves = s.betti_curves(type=1)
+    assert list(times) == [float(t) for t in s.frame_times]
+    d = s.diagrams(type=1, layout="giotto")
+    for k in range(4):
+        expected = [int(np.sum((d[:, 2] == k) & (d[:, 0] <= t) & (t < d[:, 1]))) for t in times]
+        assert list(curves[k]) == expected, k
+    assert curves[0][0] > 0
+    print(f"betti_curves: {curves.shape}")
+
+
+def main():
+    binary, store, run_input, radius, work = sys.argv[1:6]
+    os.makedirs(work, exist_ok=True)
+    s = medusa.open(store)
+    check_diagrams(binary, store, s)
+    check_classes(binary, store, s)
+    check_complex(binary, store, s, work)
+    check_betti(s)
+    try:
+        s.K_at(-1.0)
+        raise AssertionError("K_at before the run did not raise")
+    except medusa.Error as e:
+        assert "outside the run" in str(e), e
+    ran = medusa.run(run_input, radius=radius, output=os.path.join(work, "run.h5"), force=True)
+    for direction in ("forward", "reverse"):
+        for t in [None] + list(s.types):
+            a, b = ran.diagrams(type=t, filtration=direction, layout="giotto"), s.diagrams(type=t, filtration=direction, layout="giotto")
+            assert np.array_equal(a, b), f"medusa.run: {direction} {t} differs from medusa run"
+    assert [normalised(c) for c in ran.classes()] == [normalised(c) for c in s.classes()]
+    print("medusa.run: the same diagrams and classes as `medusa run`")
+
+
+if __name__ == "__main__":
+    main()
