@@ -18,6 +18,8 @@
 #include "medusa/medusa/medusa_builder.h"
 #include "medusa/medusa/store_reader.h"
 #include "medusa/medusa/store_writer.h"
+#include "medusa/periodic/canonical_filter.h"
+#include "medusa/periodic/periodic_cover.h"
 #include "medusa/persistence/diagram_store.h"
 #include "medusa/persistence/medusa_diagrams.h"
 
@@ -295,6 +297,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   options.source = choose_source(resolved);
   options.snap = args.snap;
   options.allow_periodic_as_open = args.periodic_as_open;
+  options.read_periodic = !args.periodic_as_open;
   meter.stage("reading " + input);
   StageClock clock;
   const io::RunData data = io::read_run(input, options);
@@ -307,6 +310,14 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   kinetic::KineticOptions kinetic_options;
   kinetic_options.rho2 = kinetic::squared_radius_from_decimal(radius, data.trajectories.scale);
   kinetic_options.audit = args.audit;
+  // A periodic run goes through the covering space: the cells and their copies near the seams, with
+  // the canonical filter in front of the builder (docs/MATH.md §8). Refused before any output exists.
+  std::optional<periodic::PeriodicCover> cover;
+  if (data.domain.any() && !args.periodic_as_open) {
+    periodic::check_periodic_radius(data.domain, kinetic_options.rho2, radius);
+    cover = periodic::cover_trajectories(data.trajectories, data.domain, kinetic_options.rho2);
+    cover->trajectories.validate();
+  }
 
   const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
   medusa::RunInfo info;
@@ -315,12 +326,16 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   info.source_files = data.sources;
   info.command_line = command_line;
   info.software_version = medusa::version;
+  if (cover) {
+    info.periodic_axes = data.domain.axes();
+    info.periodic_lengths = data.domain.period;
+  }
 
   kinetic::KineticStatistics stats;
   std::vector<std::int64_t> peak_rss_at_frame;
   {
     clock = StageClock{};
-    kinetic::KineticAlphaComplex engine(data.trajectories, kinetic_options);
+    kinetic::KineticAlphaComplex engine(cover ? cover->trajectories : data.trajectories, kinetic_options);
     medusa::StoreWriter writer(output);
     medusa::MedusaBuilder builder(writer);
     builder.set_run(info, data.trajectories);
@@ -333,7 +348,10 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     kinetic::Observer& store_side = beside ? static_cast<kinetic::Observer&>(*beside) : builder;
     meter.start_kinetic(data.trajectories.frames());
     ProgressObserver observer(store_side, engine, meter, data.trajectories.frames());
-    engine.run(observer);
+    std::optional<periodic::CanonicalFilter> torus;
+    if (cover)
+      torus.emplace(*cover, observer);
+    engine.run(torus ? static_cast<kinetic::Observer&>(*torus) : observer);
     // The engine's wall time includes the time spent in the store side's callbacks (with a thread of
     // its own: queueing the calls, and waiting for it at the end), which belongs to the store stage;
     // their CPU time is not measured apart (see ProgressObserver::timed) and stays in the kinetic

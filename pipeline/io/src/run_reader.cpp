@@ -47,7 +47,7 @@ void check_periodic(const std::optional<Cc3dSimulation>& sim, const RunOptions& 
   if (!sim)
     return;
   const std::string axes = periodic_axes(*sim);
-  if (axes.empty())
+  if (axes.empty() || options.read_periodic)
     return;
   if (!options.allow_periodic_as_open)
     throw InputError(sim->path + ": the run is periodic along " + axes +

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""`medusa run --periodic-as-open` on hand-built periodic runs that medusa must refuse: each refusal is
-one line on stderr naming the file and cell, exit 3, and no store (nor temporary file) is left behind.
+"""`medusa run` on hand-built periodic runs that medusa must refuse: each refusal is one line on stderr
+naming the file and cell (exit 3) or the radius and period (exit 4), and no store (nor temporary file)
+is left behind.
 
 usage: check_periodic_errors.py MEDUSA WORKDIR
 """
@@ -42,11 +43,11 @@ def write(path, text):
         f.write(text)
 
 
-def check(medusa, work, name, run, pattern):
+def check(medusa, work, name, run, pattern, code=3, radius="1", options=("--periodic-as-open",)):
     out = os.path.join(work, name + ".h5")
-    p = subprocess.run([medusa, "run", run, "--periodic-as-open", "--snap", "--radius", "1", "-o", out],
+    p = subprocess.run([medusa, "run", run, *options, "--snap", "--radius", radius, "-o", out],
                        capture_output=True, text=True)
-    assert p.returncode == 3, "%s: exit %d, expected 3; stderr: %s" % (name, p.returncode, p.stderr)
+    assert p.returncode == code, "%s: exit %d, expected %d; stderr: %s" % (name, p.returncode, code, p.stderr)
     lines = p.stderr.splitlines()
     assert len(lines) == 1 and lines[0].startswith("medusa: "), "%s: stderr is not one line: %r" % (name, p.stderr)
     assert re.search(pattern, lines[0]), "%s: %r does not match %r" % (name, lines[0], pattern)
@@ -73,6 +74,15 @@ def main():
     write(os.path.join(wide, "LatticeData", "Step_100.vtk"), snapshot(cells))
     write(os.path.join(wide, "Simulation", "run.xml"), XML.replace('y="10" z="10"', 'y="4" z="4"'))
     check(medusa, work, "wide", wide, r"Step_000\.vtk: cell 4: its voxels span 6 of the 10 lattice sites along x")
+    # The same VTK run read as periodic refuses it too.
+    check(medusa, work, "wide_periodic", wide, r"Step_000\.vtk: cell 4: its voxels span", options=())
+
+    # Radius 2.5 on a period of 10: 4 rho = 10 is not below the period (docs/MATH.md §8.3).
+    radius = os.path.join(work, "radius_run")
+    write(os.path.join(radius, "cells.csv"), AMBIGUOUS.replace("100,7,1,6,5,5", "100,7,1,2,5,5"))
+    write(os.path.join(radius, "Simulation", "run.xml"), XML)
+    check(medusa, work, "radius", radius, r"radius 2\.5 is too large for the periodic lattice: .* period 10 along x",
+          code=4, radius="2.5", options=())
 
 
 if __name__ == "__main__":

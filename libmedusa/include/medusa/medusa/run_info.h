@@ -1,6 +1,8 @@
 // Run metadata recorded in the store next to the medusa (docs/FORMAT.md).
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,10 @@ struct RunInfo {
   std::vector<std::string> source_files; // the CompuCell3D files read
   std::string command_line;
   std::string software_version;
+  // Periodic lattice axes ("x,y"; empty for an open run) and their periods in grid units (0 on open
+  // axes): the medusa is then the one on the torus, its positions unwrapped (docs/MATH.md §8).
+  std::string periodic_axes;
+  std::array<std::int64_t, 3> periodic_lengths{};
 };
 
 } // namespace medusa

@@ -26,6 +26,9 @@ struct RunOptions {
   RunSource source = RunSource::automatic;
   bool snap = false;                   // policy R for VTK centroids off the grid (CLI: --snap)
   bool allow_periodic_as_open = false; // read a periodic run as if its boundaries were open
+  // Read a periodic run as periodic (docs/MATH.md §8): no refusal and no warning; RunData::domain holds
+  // its periodic axes for the caller to run it on the torus.
+  bool read_periodic = false;
   CsvColumns csv_columns;
   // Lattice z extent if the caller knows it; otherwise taken from Simulation/*.xml or the VTK header.
   // z extent 1 makes the run planar (dimension 2; z kept).
