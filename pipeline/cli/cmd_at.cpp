@@ -10,6 +10,7 @@
 #include "medusa/medusa/store_reader.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -37,7 +38,21 @@ void at_command(const AtArguments& args) {
       throw InputError("cell type " + std::to_string(*args.type) + " does not occur in " + args.store);
   }
   // Validates T against the frames before the (batch-approximate) index query.
-  const auto positions = positions_at_time(medusa.input, args.time);
+  auto positions = positions_at_time(medusa.input, args.time);
+  // A periodic run's positions are unwrapped (docs/MATH.md §8.2): shown wrapped into [0, L) on its
+  // periodic axes, where CompuCell3D draws the cells.
+  for (std::size_t a = 0; a < 3; ++a) {
+    if (medusa.run.periodic_lengths[a] <= 0)
+      continue;
+    const double length =
+        static_cast<double>(medusa.run.periodic_lengths[a]) / static_cast<double>(medusa.input.scale);
+    for (auto& x : positions)
+      if (x) {
+        (*x)[a] = std::fmod((*x)[a], length);
+        if ((*x)[a] < 0)
+          (*x)[a] += length;
+      }
+  }
   const medusa::ComplexIndex index(medusa, args.type);
   const std::vector<medusa::CellId> cells = index.at_time(args.time);
 

@@ -111,6 +111,19 @@ def hand(medusa, work):
     assert pairs(rows, 0) == [("0", "inf")] * 3, pairs(rows, 0)
     print("ok: a touching pair crossing the seam mid-slab: no event")
 
+    # `medusa at` shows the positions wrapped into the lattice: at MCS 200 the pair is at x = 0.6 and
+    # 1.4 (unwrapped 10.6 and 11.4).
+    vtk = os.path.join(work, "cross_at.vtk")
+    p = subprocess.run([medusa, "at", os.path.join(work, "cross.h5"), "--time", "200", "-o", vtk],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    lines = open(vtk).read().split("\n")
+    start = next(i for i, line in enumerate(lines) if line.startswith("POINTS"))
+    count = int(lines[start].split()[1])
+    xs = sorted(round(float(lines[start + 1 + i].split()[0]), 9) for i in range(count))
+    assert xs == [0.6, 1.4, 4.0, 4.0], xs
+    print("ok: medusa at writes positions wrapped into the periodic lattice")
+
 
 def cells_of(path):
     """Every medusa cell as (vertex tuple, kind, birth (batch, rank), death (batch, rank)): the exact
