@@ -317,6 +317,10 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     periodic::check_periodic_radius(data.domain, kinetic_options.rho2, radius);
     cover = periodic::cover_trajectories(data.trajectories, data.domain, kinetic_options.rho2);
     cover->trajectories.validate();
+    if (!args.quiet)
+      std::cerr << "medusa: periodic along " << data.domain.axes() << ": the complex on the torus, with "
+                << cover->ghosts()
+                << " trajectories of periodic copies of cells near them (docs/MATH.md §8)\n";
   }
 
   const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
