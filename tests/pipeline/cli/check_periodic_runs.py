@@ -111,6 +111,25 @@ def hand(medusa, work):
     assert pairs(rows, 0) == [("0", "inf")] * 3, pairs(rows, 0)
     print("ok: a touching pair crossing the seam mid-slab: no event")
 
+    # A cell born next to the seam (radius 1.05): A at x = 0.5 and B at 8.5 touch across the seam
+    # (2 apart); N appears at MCS 100 at (9.5, 5.3), between them across the seam, where the edge AB
+    # leaves K (N lies in its diametral disc, and the triangle ABN has circumradius (1 + 0.09) / 0.6 >
+    # 1.05): the join ABN (docs/MATH.md §6.3) fills the loop A-N-B. The same cells translated by 3 lie
+    # away from the seam; read as open they must give the same medusa as the periodic run.
+    birth = [(m, c, x, y) for m in (0, 100, 200) for c, x, y in ((1, "0.5", "5"), (2, "8.5", "5"),
+                                                                 (3, "4", "1"), (4, "4", "9"))]
+    birth += [(m, 5, "9.5", "5.3") for m in (100, 200)]
+    folder = make_run(os.path.join(work, "birth"), birth)
+    text, rows = run(medusa, folder, os.path.join(work, "birth.h5"), "1.05")
+    assert pairs(rows, 1) == [], pairs(rows, 1)
+    away = [(m, c, str((Decimal(x) + 3) % 10), y) for m, c, x, y in birth]
+    folder = make_run(os.path.join(work, "birth_away"), away)
+    away_text, _ = run(medusa, folder, os.path.join(work, "birth_away.h5"), "1.05", "--periodic-as-open")
+    same_medusa(os.path.join(work, "birth.h5"), os.path.join(work, "birth_away.h5"), text, away_text)
+    with h5py.File(os.path.join(work, "birth.h5"), "r") as f:
+        assert 2 in list(f["cells/kind"][:]), "no join cell"
+    print("ok: a cell born across the seam: the same medusa as the open run away from the seam")
+
     # `medusa at` shows the positions wrapped into the lattice: at MCS 200 the pair is at x = 0.6 and
     # 1.4 (unwrapped 10.6 and 11.4).
     vtk = os.path.join(work, "cross_at.vtk")
