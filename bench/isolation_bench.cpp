@@ -2,9 +2,10 @@
 // (libkinetic root_isolation.h: the in-sphere polynomial enclosed from doubles, Bernstein-Descartes
 // isolation, narrowing to 2^-24 as when a failure time is scheduled) against CGAL's
 // Algebraic_kernel_d_1 over Gmpz with MPFI (the exact integer polynomial, solve_1, the first root in
-// (0, 1) approximated to 2^-24), on the same certificates. Issue #3 leaves the choice between the two
-// to us, "but measure it": this is the measurement. Every root isolated in doubles is checked to lie
-// in the interval that CGAL's exact root gives; a disagreement stops the program with exit code 1.
+// (0, 1) approximated to 2^-24), on the same certificates: the measurement behind isolating in
+// doubles first and calling CGAL's kernel only for times that stay close. Every root isolated in doubles is
+// checked to lie in the interval that CGAL's exact root gives; a disagreement stops the program with exit
+// code 1.
 //
 // The certificates are the in-sphere certificates of every finite facet with two finite apices in
 // the Delaunay triangulation of n random points at the cells' spacing, over one slab of a random

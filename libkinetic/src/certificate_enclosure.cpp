@@ -1,32 +1,11 @@
 // Certified enclosures of the certificate polynomials from one pass in plain doubles.
 //
-// Why the bound holds. Every input coordinate x(u) = a + b u has integer a, b below 2^42 in
-// magnitude, exact in double. Let A and B bound |a| and |b| over all inputs, so each input is
-// bounded coefficientwise by M(u) = A + B u. Each operation on polynomials rounds each coefficient
-// with relative error at most u = 2^-52 (any IEEE rounding mode). By induction over the expression
-// (Higham, Accuracy and Stability, lemma 3.3): if the computed coefficients of f and g are within
-// gamma_df * fbar and gamma_dg * gbar of the exact ones, where fbar and gbar are the coefficients of
-// the same expression with every input replaced by M and every minus by a plus, then
-//   f +- g is within gamma_(max(df, dg) + 1) * (fbar + gbar),
-//   f * g, whose coefficients are sums of at most m products, is within gamma_(df + dg + m) * fbar*gbar,
-// with gamma_n = n u / (1 - n u). For the expressions below (the formulas of
-// certificate_polynomials.h, evaluated in the same order) the depth D and the absolute polynomial
-// are, coefficientwise:
-//   |q|^2 for a difference q: depth 4, bound 3 M^2 (2 M^2 over x, y: depth 3);
-//   a cross product or a 2x2 minor: depth 3, bound 2 M^2; a triple product: depth 7, bound 6 M^3;
-//   in-sphere: four terms |q_i|^2 * triple (depth 14, 18 M^5), their signed sum (17, 72 M^5);
-//   in-circle: three terms |q_i|^2 * minor (9, 4 M^4), their signed sum (11, 12 M^4);
-//   edge radius: G = |q|^2, H = 1;
-//   triangle radius: G = |a|^2 |b|^2 |c|^2 (18, 27 M^6), H = |a x b|^2 (11, 12 M^4);
-//   tetrahedron radius: N_i = sum |a|^2 (b x c)_i (12, 18 M^4), G = |N|^2 (31, 972 M^8),
-//     D = det(a, b, c) (7, 6 M^3), H = D^2 (18, 36 M^6).
-// So coefficient k of a degree-n result is within gamma_D * S * C(n, k) A^(n-k) B^k of the exact one
-// (S the constant above). We widen by (D + 8) u * S * C(n, k) A^(n-k) B^k: gamma_D <= (D + 1) u, and
-// rounding the endpoints c -+ e moves each by at most u (|c| + e), about u S C(n, k) A^(n-k) B^k, and
-// computing e itself loses at most a relative (1 - u)^8 (at most 8 rounded products of positive
-// numbers): the remaining 7 u cover both with room to spare (checked independently in review).
-// The radius certificates Q G - 4 P H (edges Q G - 4 P) then combine the two enclosures with the interval P
-// and Q in interval arithmetic, which needs the rounding mode upward (CGAL::Protect_FPU_rounding).
+// Each coefficient is widened by an a-priori bound on its rounding error, (D + 8) u S C(n, k)
+// A^(n-k) B^k with u = 2^-52, D the depth of the expression and S the constant of its absolute
+// polynomial; the bound and the depths and constants of every certificate formula (evaluated in the
+// order of certificate_polynomials.h) are derived in docs/MATH.md §3.10. The radius certificates
+// Q G - 4 P H (edges Q G - 4 P) then combine the two enclosures with the interval P and Q in interval
+// arithmetic, which needs the rounding mode upward (CGAL::Protect_FPU_rounding).
 #include "medusa/kinetic/certificate_enclosure.h"
 
 #include "medusa/kinetic/fixed_polynomial.h"

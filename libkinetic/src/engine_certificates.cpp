@@ -104,23 +104,12 @@ int Engine::sign_after_own_orientation_root(const Simplex& t) const {
   return sign_after_own_root(orientation_poly<Interval>(t), key);
 }
 
-// A finite top simplex flat at now inside a slab whose orientation only touches zero there: it has
-// one sign just before and just after now. A hull flip (docs/MATH.md §3.2 case B) adds the top simplex
-// abcd at the root of its ridge's certificate O(a, b, c, d); a ridge that turns reflex at now makes
-// that root a sign change. One that only touches zero was reflex just before now too: an earlier flip
-// of the batch made it so, and pasting the sliver abcd onto it can leave the top simplices wrapped
-// once more round an edge of abcd than they should be, with every certificate holding (their signs
-// do not see angles modulo 2 pi). Stress seed 11018: three cells met on one line and a fourth passed
-// through a hull face at u = 1/2, and the tetrahedra round a hull edge summed to 2.07 pi just after.
-// At a frame the sign just before now belongs to the previous slab's motion
-// (Engine::orientation_sign_before_frame): the same test, across the bend. A simplex flat through
-// the whole previous slab opens at the frame (0 before, a sign after), as one whose own root is now
-// does inside a slab, and is not refused. Nor is one with a cell born at the frame (no sign before):
-// an insertion leaves Del(now+) (engine_local_updates.cpp), so no failure of its batch flips it.
-// At frames this is a guard, not a known case: in some 16,000 runs built to reach it (flat hull regions
-// at a frame, seed 11018 cut and bent there) it never fired. A case-A flip at a frame is preceded by
-// the frame's own repair (Engine::top_simplex_turns_at_frame), and a ridge whose facets both sit on a
-// simplex flat at the frame is not flipped (Engine::flippable, "below" rule) before this test is read.
+// A finite top simplex flat at now whose orientation only touches zero there (one sign just before and
+// just after now). A hull flip that adds it can leave the top simplices wrapped once more round one of
+// its edges than they should be, with every certificate holding, so such a flip is refused and the
+// batch repairs (docs/MATH.md §5.10). At a frame the sign before now is read along the previous slab
+// (Engine::orientation_sign_before_frame); a simplex with no sign before (flat through the previous
+// slab, or with a cell born at the frame) is not refused.
 bool Engine::flat_without_turning_at_now(const Simplex& t) {
   const bool at_frame = now.is_rational() && now.rational() == 0;
   if (at_frame && slab == 0)
@@ -235,19 +224,11 @@ void Engine::count_built(const Certificate& c, bool enclosed) {
     ++stats.built_radius.at(c.key.size() - 2);
 }
 
-// A hull ridge whose certificate vanishes at now has its two facets in one plane (line) at now. Side
-// by side, the sign just after now says, as always, whether the hull is convex there. Folded onto
-// each other, the angle between the facets is 0 modulo 2 pi at now, and a valid sign just after now
-// reads a knife edge. But the top simplices around the ridge, positively oriented, fill the angle
-// from one facet to the other: in an embedded triangulation their angles sum to the knife's, so
-// every one of them has angle 0 at the ridge at now: it is flat at now, with its two vertices off the
-// ridge on one side of it (folded, as the hull facets are). One that is not flat at now, or flat
-// with its two vertices on either side of the ridge (angle pi), makes the sum 2 pi or more: the
-// simplices wrap round the ridge and the triangulation is not embedded just after now, though every
-// certificate may hold. Stress seed 31284: a hull flip at the instant a hull cell passed through the
-// plane of its four hull neighbours left two pairs of facets folded, at ridges whose certificates
-// touch zero there. (Where a vertex lies on the ridge's line at now the angle is undefined, and
-// nothing is concluded.)
+// A hull ridge whose certificate vanishes at now has its two facets in one plane (line) then. Folded
+// onto each other, a valid sign just after now reads a knife edge, which an embedded triangulation
+// has only if every top simplex round the ridge is flat at now and folded too; otherwise they wrap
+// round the ridge though every certificate may hold, and the ridge fails (docs/MATH.md §5.9). Where a
+// vertex lies on the ridge's line at now the angle is undefined, and nothing is concluded.
 bool Engine::hull_ridge_folded_at_now(const Simplex& facet) {
   const Simplex ridge = facet.facet(0);
   {
@@ -343,41 +324,23 @@ void Engine::settle_certificate(int id, bool counted, Interval* at_now) {
   }
   ExactPoly f = to_exact_poly(exact);
   if (CGAL::is_zero(f)) {
-    // Identically zero: valid, never scheduled (docs/MATH.md §3.9); but a radius polynomial f == 0 means
-    // R = rho throughout, which is short, so a face still flagged long fails now (e.g. two cells
-    // moving rigidly at distance exactly 2 rho from a frame on). Nor is every identically-zero hull
-    // ridge (case B of docs/MATH.md §3.2: an infinite facet) valid: its two hull facets lie in one plane
-    // (line) for the whole slab, which is a convex hull only while they lie side by side, not once
-    // they fold onto each other (stress seed 6304: a hull flip at an instant when five hull cells
-    // were coplanar left two facets folded; hull-box seed 146: a cell crossed the ridge line of
-    // coplanar facets inside the slab). So the certificate becomes the fold test (Substitute::hull_fold),
-    // installed in its place: failing now when folded just after now, scheduled when they fold
-    // later. The third exception, a case-A certificate (the orientation of the finite top simplex
-    // under a hull facet) that vanishes for the whole slab, needs no test here: such a flat simplex
-    // can only appear at a frame, and the frame repairs it before resolving any certificate
-    // (Engine::top_simplex_turns_at_frame). A fold test that vanishes identically too means a
-    // hull facet is flat for the whole slab, and so is the top simplex below it: the same case.
+    // Identically zero: valid, never scheduled (docs/MATH.md §3.9), with the exceptions of docs/MATH.md
+    // §5.8. A radius polynomial f == 0 means R = rho throughout, short, so a face still flagged long
+    // fails now. An identically-zero hull ridge (an infinite facet) is convex only while its two hull
+    // facets lie side by side, so it carries the fold test instead (Substitute::hull_fold). A case-A
+    // certificate vanishing for the whole slab needs nothing here: the frame repairs it first
+    // (Engine::top_simplex_turns_at_frame, docs/MATH.md §5.11).
     if (c.kind == CertKind::delaunay && !is_finite(c.key) && c.substitute == Substitute::none) {
       c.substitute = Substitute::hull_fold;
       settle_certificate(id, false);
       return;
     }
     // Likewise a finite facet whose five (four) points stay cospherical (cocircular): every
-    // triangulation of them is Delaunay, and what can still go wrong is a top simplex flattening and
-    // turning inside out with no in-sphere event (hull-box seed 910: [3 6 10 17], orientation
-    // u (4u - 3), cospherical with its neighbours 4 and 16 through slab 1, inside out after u = 3/4).
-    // So the certificate becomes the orientations of its two top simplices (Substitute::cell_orientations).
-    // Their product misses an instant when both turn at once, which happens: the cells reach one
-    // circle (or one plane) together. Every top simplex on four of them then turns, the ones on their
-    // convex hull too, and the certificate of each hull facet of the group, against an apex x off their
-    // sphere, is such an orientation times the power of x with respect to the limit sphere: it fails
-    // there, and the batch repairs ("five cospherical cells reaching one circle ...",
-    // test_kinetic_engine.cpp; at the hull of the run, the case-A certificate is the orientation itself).
-    // In the plane neither substitute ever fails, but they cost nothing there and keep one rule: two
-    // collinear hull edges fold only through a collision of their cells, and four cocircular points
-    // are collinear only all together, when both triangles flatten and the product only touches
-    // zero; the line is then a hull line, whose hull certificate fails instead ("planar: an
-    // isosceles trapezoid ...", test_kinetic_engine_2d.cpp).
+    // triangulation of them is Delaunay, but a top simplex among them can flatten and turn inside out
+    // with no in-sphere event, so it carries the product of its two top simplices' orientations
+    // (Substitute::cell_orientations, docs/MATH.md §5.8; tests "five cospherical cells reaching one
+    // circle ..." in test_kinetic_engine.cpp and "planar: an isosceles trapezoid ..." in
+    // test_kinetic_engine_2d.cpp).
     if (c.kind == CertKind::delaunay && is_finite(c.key) && c.substitute == Substitute::none) {
       const detail::Triangulation::Apices* ap = tri.apices(c.key);
       if (ap->v[0] != infinite_vertex && ap->v[1] != infinite_vertex) {

@@ -1,59 +1,11 @@
 // The degenerate groups of a static repair (docs/MATH.md §6.3, second bullet): the non-simplicial faces of
-// the Delaunay subdivision at t* in the repaired region, with g(P) <= rho^2. One routine serves both
-// dimensions d of the run (3, or 2 for planar runs): the top simplices ("tets") have d + 1 vertices,
-// their facets d, and the cocircularity test across a facet is the in-sphere (in-circle in 2D).
-//
-// Construction. At a repair at t* both the old triangulation (valid on (t*-e, t*)) and the new one
-// (Del(t*+), 5.4) are Delaunay at t* itself (closed conditions), so both refine the Delaunay
-// subdivision D(t*); the subdivision is their common coarsening. Its d-dimensional cells are the
-// maximal sets of points on a common empty sphere (circle in 2D). Two top simplices of the new
-// triangulation sharing a facet lie in the same cell of D(t*) iff their d + 2 points are cospherical
-// (cocircular) at t* (in-sphere, in-circle, exactly 0 at t*): if they are, the circumsphere of one
-// (empty at t*) passes through the apex of the other; if they are not, the two spheres differ and the
-// facet is a facet of D(t*). So a union-find over the top simplices of Del(t*+), joining across facets
-// whose in-sphere vanishes *at* t* (exact sign, never doubles), starting from the top simplices
-// created by the repair, yields exactly the cells of D(t*) that meet the repaired region (a
-// triangulation of a convex cell has a connected dual graph, so the search also reaches the
-// unchanged part of a cell the repair cut through). Cells with >= d + 2 points are the d-dimensional
-// groups; g = R^2 of their sphere (circle), decided by the radius certificate of any top simplex of
-// the cell that is not flat at t* (its circumsphere is the cell's).
-//
-// 3D. A tetrahedron that is flat at t* (orientation exactly 0) has four concyclic points when it is
-// Delaunay at t* between two finite cells, and then its in-sphere with every fifth point vanishes: it
-// merges with both sides. The 2-dimensional non-simplicial faces (>= 4 concyclic coplanar points)
-// are faces of the 3-dimensional cells: every Delaunay cell containing such a face P contains P's
-// circle, so it has >= 5 cospherical points (unless the whole point set is planar, which is reported
-// as an error elsewhere, 5.7). They are found on the boundary of each cell: boundary triangles of the
-// cell sharing an edge lie in one facet of the convex cell iff their four points are coplanar at t*
-// (orientation exactly 0). For such a face P, g(P) = R(P)^2 if P is Gabriel, else min over its
-// Delaunay cofaces, which are the (one or two) finite cells on either side of P. P is Gabriel iff no
-// apex of a triangle of P (in Del(t*+)) lies strictly inside the ball of P's circle (Lemma 4.2
-// extended to the subdivision: these apices are the vertices of the cells around P; by the cap lemma
-// 4.4 the other points of a cell containing P are inside B_P all together or not at all, so the
-// apices next to P decide). The remaining 2-dimensional case is a flat tetrahedron at t* on the hull
-// (an infinite cell on both sides): the four points form a hull face with no finite coface, g =
-// R(P)^2 if P is Gabriel against every point, else P contributes nothing. Edges and triangles are
-// always simplicial, so there is nothing else.
-//
-// 2D. The groups are the 2-dimensional cells alone (>= 4 cocircular points, g = R^2 of the circle).
-// A triangle flat at t* (three points momentarily collinear) lies on no circle: its in-circle with a
-// fourth point vanishes only if that point is on the same line, so a flat triangle joins only flat
-// triangles, and a class of triangles all flat at t* spans no circle, is no cell of D(t*), and is
-// skipped. There are no lower-dimensional non-simplicial faces: a 1-dimensional face of D(t*) holding
-// three points would hold them on a segment a..m..b, and three collinear points are never concyclic;
-// worse, for every point z of the bisector of ab, |z - m|^2 = h^2 + d^2 < h^2 + |ab|^2/4 = |z - a|^2
-// (h the distance from z to the line, d < |ab|/2 that from m to the midpoint), so the Voronoi regions
-// of a and b do not even meet and ab is no edge at all. The same holds for three collinear points on
-// the hull (the planar analogue of the flat hull tetrahedron above): they form no face. So every
-// edge and vertex of D(t*) is simplicial.
-//
-// Where planar groups come from: a cocircular moment of generic motion is always resolved by 2-2 flips
-// (four points on a circle at t* form a strictly convex quadrilateral), so a planar repair is forced
-// by momentarily collinear points, and the cells it meets are sets that stay cocircular through the
-// new slab (identically-zero in-circles, 5.3) whose triangulation the global rebuild re-chooses.
-// The triangles flat at t* of such a repair are where "Delaunay at t*" holds only in the limit; they
-// lie on no circle and are skipped as above, and the cocircular cells away from them are found as in
-// 3D (tests/kinetic/test_kinetic_degenerate_groups_2d.cpp has an example derived on paper).
+// the Delaunay subdivision D(t*) in the repaired region, with g(P) <= rho^2. One routine serves 3D and
+// planar runs: a union-find over the top simplices of Del(t*+), joined across facets whose in-sphere
+// (in-circle) vanishes exactly at t*, starting from the top simplices the repair created, yields the
+// cells of D(t*) that meet the repair; in 3D the coplanar faces on their boundaries are the
+// 2-dimensional groups, and classes of top simplices flat at t* span no sphere and are skipped.
+// Why this finds exactly the groups, and g(P) for each: docs/MATH.md §6.7
+// (tests/kinetic/test_kinetic_degenerate_groups_2d.cpp has a planar example derived on paper).
 #include "engine.h"
 
 #include "medusa/kinetic/certificate_polynomials.h"

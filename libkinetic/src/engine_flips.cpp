@@ -94,10 +94,10 @@ bool Engine::flippable(const Simplex& facet, FlipChange& change) {
   // A finite flip replaces top simplices that cover a region at now+ by others covering it. A top
   // simplex flat at now may be inside out just after it: the triangulation around it is then not
   // embedded at now+, the local tests below can pass a flip that leaves it so, and later certificates,
-  // read against the orientations recorded, miss the inversion (stress seed 5142: four cells on one
-  // line at u = 1/2). Only a static repair decides such a neighbourhood. Hull flips are exempt: their
-  // certificates are orientations (docs/MATH.md §3.2), so the top simplex a hull flip removes (case A) or
-  // adds (case B) is flat at now by definition.
+  // read against the orientations recorded, miss the inversion (e.g. four cells on one line at an
+  // instant; docs/MATH.md §5.10). Only a static repair decides such a neighbourhood. Hull flips are exempt:
+  // their certificates are orientations (docs/MATH.md §3.2), so the top simplex a hull flip removes (case A)
+  // or adds (case B) is flat at now by definition.
   if (is_finite(facet) && p != infinite_vertex && q != infinite_vertex)
     for (const Simplex& t : change.removed)
       if (flat_at_now(t))
@@ -119,7 +119,7 @@ bool Engine::flippable(const Simplex& facet, FlipChange& change) {
   // triangle z p q). A triangulation embedded at now+ never has one, but one with top simplices flat
   // at now may not be embedded: at a frame, new velocities can turn a flat tetrahedron inside out,
   // and on a flat hull (a lattice) simultaneous failures set this up too. The local tests below do
-  // not see it (stress seeds 1019 and 4018, tests/kinetic/test_kinetic_dense_lattice.cpp).
+  // not see it (tests/kinetic/test_kinetic_dense_lattice.cpp).
   if (dim == 3 &&
       (change.three_two ? tri.apices(Simplex{change.z, p, q}) != nullptr : tri.contains_face(Simplex{p, q})))
     return false;
@@ -156,8 +156,8 @@ bool Engine::flippable(const Simplex& facet, FlipChange& change) {
   // and leave it so: the batch repairs at once (Engine::repair_pending).
   // Nor may it take away a hull facet whose top simplex below is flat at now: that simplex may be
   // inside out just after now, its own hull certificate (pending in this batch) is what tells, and
-  // once the facet is interior every certificate reads the stale orientation (hull-box seed 14053:
-  // three hull cells on one line at u = 1/2; the frame analogue is stress seed 6265).
+  // once the facet is interior every certificate reads the stale orientation (docs/MATH.md §5.10;
+  // e.g. three hull cells on one line at an instant).
   for (const Simplex& t : change.removed) {
     if (is_finite(t))
       continue;
@@ -227,21 +227,11 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
 }
 
 // Radius touches: a frontier simplex whose radius reaches rho at now without crossing it (a root of
-// even multiplicity of its certificate, or a root at a frame). Its shortness stays, but a face whose
-// own radius is rho at now may change membership there: the face is short, and a link vertex on its
-// smallest circumsphere, moving out of it or into it, makes it Gabriel or not, while the one coface
-// that would carry it (the frontier simplex, of radius rho at now only) is in K at no time around now.
-// So the faces of the touching simplex are settled again at now+ (the final re-evaluation of docs/MATH.md
-// §5.2 step 4), and its certificate is installed again for its next root. docs/MATH.md §3.9 drops roots of
-// even multiplicity as non-events; that misses this case (tests/kinetic/test_kinetic_dense_lattice.cpp).
-// The face that changes need not be a face of the touching simplex: a short face t with R(t) = rho
-// whose link vertex x crosses its smallest circumsphere S makes t + x inscribed in S at now, so R(t +
-// x) touches rho; t + x may carry no certificate (long with a long facet, docs/MATH.md §4.4), but then
-// that facet is inscribed in S too and touches rho, and so on down to a frontier simplex, whose
-// certificate reports the touch. Every such t is a face of a top simplex containing the simplex that
-// touches, so the faces of all of those are settled again (hull-box seed 8: x = 8 entered the
-// sphere of the right triangle [10 12 14], R = rho throughout, while the frontier triangle [8 10 14]
-// touched rho).
+// even multiplicity, or a root at a frame). Its shortness stays, but a face with R = rho at now whose
+// link vertex crosses its smallest circumsphere changes membership then (docs/MATH.md §4.7). So the
+// faces of every top simplex containing the touching simplex are settled again at now+ (the final
+// re-evaluation of docs/MATH.md §5.2 step 4), and its certificate is installed again for its next
+// root (tests/kinetic/test_kinetic_dense_lattice.cpp).
 void Engine::resolve_touches(OldMembership& old_k) {
   std::vector<std::pair<int, std::uint32_t>> touches;
   touches.swap(pending_touch);

@@ -91,22 +91,12 @@ void Engine::frame(Observer& observer, std::size_t k) {
     audit();
 }
 
-// Whether some finite top simplex flat at this frame is inside out (or still flat) just after it.
-// Within a slab a top simplex never flattens while it is Delaunay: a point enters its growing
-// circumsphere first, or, at the hull, its case-A certificate fails. At a frame the velocities change,
-// and cells that reach one plane (line) exactly there, typically on the hull, can carry their top
-// simplex through it. Every certificate that reads its recorded orientation then means nothing, and
-// elementary flips chosen on them can leave it inside out (stress seed 6265: the hull flip at one
-// ridge took away the hull facet whose certificate reported it). So Del(now+) is rebuilt (docs/MATH.md
-// §5.4), which also sets the orientations of the top simplices it keeps (Engine::reorient_kept).
-// One flat at the frame next to a degenerate hull facet (three cells collinear) is rebuilt too, even
-// if it keeps its orientation: the facet may turn over and fold onto a neighbour at that instant, two
-// sign changes that cancel in every certificate (the frame analogue of Engine::resolve_hull_touches:
-// hull-box seed 18304 with a frame cut into the middle of slab 1).
-// Now is the slab start, where every cell sits at its grid position: CGAL's exact static predicate
-// on those positions (start_determinants.h) finds the flat ones at a fraction of the cost of an
-// interval evaluation. A top simplex that is not flat at the frame has its recorded sign there: it
-// could only have turned by flattening inside the slab that ended here.
+// Whether some finite top simplex flat at this frame is inside out (or still flat) just after it, or
+// lies next to a hull facet whose three cells are collinear at the frame: then Del(now+) is rebuilt
+// (docs/MATH.md §5.11, §5.4), since certificates reading its recorded orientation mean nothing and
+// flips chosen on them can leave it inverted. Now is the slab start, where every cell sits at its
+// grid position: CGAL's exact static predicate on those positions (start_determinants.h) finds the
+// flat ones at a fraction of the cost of an interval evaluation.
 bool Engine::top_simplex_turns_at_frame() {
   if (!now.is_rational() || now.rational() != 0)
     throw InternalError("the frame test of flat top simplices runs at a slab start only");

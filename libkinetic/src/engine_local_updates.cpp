@@ -1,16 +1,11 @@
-// Insertions and deletions at frames as local changes of Del(now+) (docs/MATH.md §5.6): a new cell replaces
-// the top simplices whose circumsphere it lies in (Bowyer-Watson), a leaving cell's star is filled
-// with the Delaunay triangulation of its link. A static rebuild of the whole triangulation costs a
-// CGAL triangulation of every cell per change; a growing CompuCell3D tissue divides a few percent of
-// its cells per frame, so at thousands of cells that was a hundred rebuilds per frame.
-//
-// Both decide with the predicates just after now (sign^+, docs/MATH.md §3.7). Where one they evaluate
-// vanishes for the whole slab (the new cell cospherical with a top simplex around it, or coplanar with
-// a hull facet it sees, throughout), or a check of the result fails, they return false and change
-// nothing, and the caller rebuilds statically as before, which settles such ties as the initial
-// triangulation does (docs/MATH.md §5.5). Ties the predicates do not meet are kept as they are (docs/MATH.md
-// §5.3): a local change can also create one, such as two new hull facets in one plane when the new
-// cell sees two hull edges of three collinear cells; the triangulation is Delaunay either way.
+// Insertions and deletions at frames as local changes of Del(now+) (docs/MATH.md §4.5, §5.6): a new
+// cell replaces the top simplices whose circumsphere it lies in (Bowyer-Watson), a leaving cell's
+// star is filled with the Delaunay triangulation of its link. A static rebuild costs a CGAL
+// triangulation of every cell per change, and a growing CompuCell3D tissue divides a few percent of
+// its cells per frame. Both decide with the predicates just after now (sign^+, docs/MATH.md §3.7,
+// §5.5). Where one of them vanishes for the whole slab, or a check of the result fails, they return
+// false and change nothing, and the caller rebuilds statically. Ties the predicates do not meet are
+// kept as they are (docs/MATH.md §5.3): the triangulation is Delaunay either way.
 #include "engine.h"
 
 #include <algorithm>

@@ -73,11 +73,9 @@ void Engine::rebuild_static(OldMembership& old_k) {
 // new simplex below lie on the inner side of the hull facet just after now, so the orientation is
 // the same. A static change may replace one whose recorded orientation had turned stale (flat at
 // now, inside out just after, which is why the frame or the batch repairs), and the certificate
-// built on it keeps the wrong sign (hull-box seed 15582: at frame 2, [4 10 13 18] under hull facet
-// [4 10 18] inside out, replaced by [4 8 10 18]; the certificate of ridge [-1 4 18] still read the
-// old orientation and failed after every repair). So the certificates of the hull ridges over
-// every hull facet of an added top simplex are built again, unless the change built them already
-// (infinite facets of changed top simplices).
+// built on it keeps the wrong sign and fails after every repair (docs/MATH.md §5.10). So the certificates of
+// the hull ridges over every hull facet of an added top simplex are built again, unless the change built them
+// already (infinite facets of changed top simplices).
 void Engine::reinstall_hull_ridges_over(const std::vector<Simplex>& added,
                                         const std::vector<Simplex>& removed) {
   std::unordered_set<Simplex, SimplexHash> built;
@@ -106,10 +104,8 @@ void Engine::reinstall_hull_ridges_over(const std::vector<Simplex>& added,
 // hull ridges) has at q the sign it has just after now. q starts before the next queued event, but
 // that bounds the events of the old triangulation only. A top simplex of the new one passing through
 // flat in (now, q] would lie folded over its neighbours just after now with every local certificate
-// valid, at the hull too (stress seed 20232: 25 crossed the line of 19 and 32 at u ~ 0.71 after a
-// repair at u = 2/3 took Del at 3/4, leaving triangle [19 25 32] outside the hull edge [19 32]).
-// An in-sphere failing in (now, q] would be flipped at now+, but the flips would depend on q, which
-// depends on how the queue's times were rounded (a similarity of the input changed them, seed 11060).
+// valid, at the hull too (docs/MATH.md §5.5). An in-sphere failing in (now, q] would be flipped at
+// now+, but the flips would depend on q, which depends on how the queue's times were rounded.
 // Each retry at least quarters q - now (rational_closer_after), so the loop ends once q - now is
 // below the distance from now to the first root after it of the result's certificates; the cap,
 // 2^-2048 of the first gap, only guards that, as in delaunay_just_after.
@@ -156,7 +152,7 @@ std::vector<Simplex> Engine::delaunay_after_algebraic_now(const std::vector<Vert
 // vertices: four cells alone in a slab passing through one plane, or every cell of the run passing
 // through one plane (mirrored, Del keeps its combinatorics). No flip changes it, and its recorded
 // orientation turns stale, so every certificate that reads it would fail at now+ again and again
-// (stress seed 4195, tests/kinetic/test_kinetic_engine.cpp). The orientation is set anew and
+// (tests/kinetic/test_kinetic_engine.cpp, docs/MATH.md §5.10). The orientation is set anew and
 // those certificates are built again: the facets of the top simplex and, for each of its facets on
 // the hull, the infinite facets over that facet's own facets (docs/MATH.md §3.2 case B).
 void Engine::reorient_kept(const std::vector<Simplex>& kept) {

@@ -58,19 +58,9 @@ Interval horner(const IntervalPoly& f, int n, const Interval& u) {
 
 // The Bernstein coefficients of bernstein_coefficients from plain doubles: true when every one of
 // them has a certified sign (beta then holds enclosures), false when the caller must use intervals.
-// Proof: for 0 <= lo < hi the map from the coefficients a_i of f to beta_j is linear with
-// non-negative weights (Taylor shift by lo >= 0, scaling by (hi - lo)^i > 0, binomial sums). Three
-// copies of it run side by side, on
-//  * c_i = mid(f_i): beta_j(c) in floating point. Every term reaches beta_j through a chain of at
-//    most k = n^2 + 3n + 4 roundings (the whole Taylor shift has n(n + 1) operations, the scaling
-//    adds n + 2 counting the powers of (hi - lo), the binomial sum n + 2), so the result is off by at
-//    most gamma_k times the same map on |c_i| (Higham, 3.5);
-//  * |c_i|, m_j: that map on absolute values, every operation on non-negative numbers rounded
-//    upward, so an upper bound;
-//  * r_i = max(sup - c_i, c_i - inf) rounded up, every true a_i lies in c_i +- r_i, and the map on
-//    r_i bounds how far beta_j(a) is from beta_j(c).
-// Underflow adds at most 2^-1074 per operation, scaled by weights below 2^15: 2^-1000 covers it
-// (a normal number: subnormal arithmetic costs microcode assists).
+// The map from coefficients to beta is linear with non-negative weights, so it runs on the midpoints,
+// on their absolute values (rounded upward) and on the radii side by side, and the enclosure is
+// beta(c) +- (gamma_k m + map(r) + 2^-1000), k = n^2 + 3n + 4 roundings: docs/MATH.md §3.11.
 bool bernstein_from_doubles(const IntervalPoly& f, int n, double lo, double hi,
                             std::array<Interval, IntervalPoly::max_degree + 1>& beta) {
   if (!(lo >= 0.0 && lo < hi))

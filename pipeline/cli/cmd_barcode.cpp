@@ -35,8 +35,10 @@ void barcode_command(const BarcodeArguments& args) {
       write_csv(out, diagrams);
     else if (args.format == "json")
       write_json(out, diagrams);
-    else
+    else if (args.format == "svg")
       write_barcode_svg(out, diagrams, t0, t_end, args.max_bars);
+    else
+      write_diagram_svg(out, diagrams, t0, t_end);
   };
   if (args.output.empty() || args.output == "-")
     write(std::cout);
@@ -48,18 +50,20 @@ void barcode_command(const BarcodeArguments& args) {
 
 void add_barcode_command(CLI::App& app) {
   auto args = std::make_shared<BarcodeArguments>();
-  CLI::App* barcode =
-      app.add_subcommand("barcode", "Export persistence diagrams (pers, csv, json) or an SVG barcode");
+  CLI::App* barcode = app.add_subcommand(
+      "barcode", "Export persistence diagrams (pers, csv, json) or draw them (SVG barcodes or "
+                 "persistence diagrams)");
   barcode->add_option("store", args->store, "HDF5 store written by `medusa run`")->required();
   barcode
       ->add_option("--format", args->format,
-                   "pers (GUDHI: dim birth death), csv (birth,death,dimension,type,direction), json, svg")
-      ->check(CLI::IsMember({"pers", "csv", "json", "svg"}))
+                   "pers (GUDHI: dim birth death), csv (birth,death,dimension,type,direction), json, svg "
+                   "(barcodes: one panel per diagram and degree) or diagram-svg (birth-death scatter plots)")
+      ->check(CLI::IsMember({"pers", "csv", "json", "svg", "diagram-svg"}))
       ->capture_default_str();
   barcode->add_option("-o,--output", args->output, "output file (default: stdout)");
   barcode
       ->add_option("--max-bars", args->max_bars,
-                   "svg: draw only the N longest bars of each degree of each diagram (0: all)")
+                   "svg: draw only the N longest finite bars of each panel (0: all)")
       ->capture_default_str();
   add_selection_options(*barcode, args->selection);
   barcode->callback([args] { barcode_command(*args); });

@@ -14,8 +14,11 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <iterator>
+#include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace medusa::cli {
@@ -25,9 +28,42 @@ struct CompareArguments {
   std::vector<std::string> stores;
   std::string metric = "bottleneck";
   ComparisonSelection selection;
-  bool ignore_essential = false;
+  bool type_given = false, dim_given = false; // either: one comparison; neither: every type, H0-H2
+  bool ignore_essential = false;              // accepted for scripts; finite parts are the default
+  bool essential = false;
   std::string prefix = "compare";
 };
+
+// One comparison: a cell type, a homology degree and its distance matrix.
+struct Comparison {
+  ComparisonSelection selection;
+  std::vector<persistence::PointDiagram> points;
+  persistence::DistanceMatrix distances;
+  persistence::Dendrogram dendrogram;
+};
+
+std::string what_of(const ComparisonSelection& s) {
+  return "type " + s.type + ", H" + std::to_string(s.dim) + ", " + s.filtration + " filtration";
+}
+
+// Largest and smallest distance between two different runs.
+std::pair<double, double> off_diagonal_range(const persistence::DistanceMatrix& d) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0;
+  for (std::size_t i = 0; i < d.size; ++i)
+    for (std::size_t j = i + 1; j < d.size; ++j) {
+      lo = std::min(lo, d.at(i, j));
+      hi = std::max(hi, d.at(i, j));
+    }
+  return {lo, hi};
+}
+
+// All distances zero because no diagram has a point to compare: nothing separates the runs.
+bool trivially_zero(const Comparison& c, bool essential) {
+  for (const persistence::PointDiagram& p : c.points)
+    if (!p.finite.empty() || (essential && !p.essential.empty()))
+      return false;
+  return true;
+}
 
 std::string short_number(double d) {
   if (std::isinf(d))
@@ -84,50 +120,153 @@ void print_matrix(std::ostream& out, const persistence::DistanceMatrix& d,
   }
 }
 
+void write_outputs(const Comparison& c, const std::vector<std::string>& names, const std::string& prefix,
+                   const std::string& metric_text) {
+  const std::string title = what_of(c.selection) + ", " + metric_text + ", normalised time";
+  const std::string csv = prefix + ".distances.csv", heatmap = prefix + ".heatmap.svg",
+                    dendrogram_svg = prefix + ".dendrogram.svg";
+  write_file_atomically(csv, [&](std::ostream& out) { write_matrix_csv(out, c.distances, names); });
+  write_file_atomically(heatmap,
+                        [&](std::ostream& out) { write_heatmap_svg(out, c.distances, names, title); });
+  write_file_atomically(dendrogram_svg,
+                        [&](std::ostream& out) { write_dendrogram_svg(out, c.dendrogram, names, title); });
+}
+
+void print_clustering(std::ostream& out, const persistence::Dendrogram& dendrogram,
+                      const std::vector<std::string>& names, const std::string& indent) {
+  for (const persistence::Merge& m : dendrogram.merges)
+    out << indent << cluster_name(m.first, dendrogram, names) << " + "
+        << cluster_name(m.second, dendrogram, names) << " at " << short_number(m.height) << "\n";
+}
+
 void compare_command(const CompareArguments& args) {
   if (args.stores.size() < 2)
     throw InputError("medusa compare needs at least two stores, got " + std::to_string(args.stores.size()));
-  const ComparisonMetric metric(args.metric, args.ignore_essential);
+  if (args.essential && args.ignore_essential)
+    throw CLI::ParseError("--essential and --ignore-essential exclude each other", 2);
+  const ComparisonMetric metric(args.metric, !args.essential);
   const std::vector<std::string> names = run_names(args.stores);
-  std::vector<persistence::PointDiagram> points;
-  const std::string what = "type " + args.selection.type + ", H" + std::to_string(args.selection.dim) + ", " +
-                           args.selection.filtration + " filtration";
-  std::cout << "comparing " << args.stores.size() << " runs: " << what << ", " << metric.description()
-            << ", time normalised t -> (t - t0) / (t_end - t0)\n";
+  const bool single = args.type_given || args.dim_given;
+
+  // What to compare: the one (type, degree) asked for, or every cell type of the runs in H0-H2.
+  std::vector<ComparisonSelection> selections;
+  if (single) {
+    selections.push_back(args.selection);
+  } else {
+    std::vector<int> types = store_types(args.stores.front());
+    for (std::size_t i = 1; i < args.stores.size(); ++i) {
+      const std::vector<int> other = store_types(args.stores[i]);
+      std::vector<int> common;
+      std::set_intersection(types.begin(), types.end(), other.begin(), other.end(),
+                            std::back_inserter(common));
+      types = common;
+    }
+    if (types.empty())
+      throw InputError("medusa compare: the runs share no cell type; compare them with --type all");
+    for (int type : types)
+      for (int k = 0; k <= 2; ++k) {
+        ComparisonSelection s = args.selection;
+        s.type = std::to_string(type);
+        s.dim = k;
+        selections.push_back(s);
+      }
+  }
+  std::vector<Comparison> comparisons(selections.size());
+  for (std::size_t c = 0; c < selections.size(); ++c)
+    comparisons[c].selection = selections[c];
+
+  std::cout << "comparing " << args.stores.size() << " runs: "
+            << (single ? what_of(selections.front())
+                       : "each cell type, H0, H1 and H2, " + args.selection.filtration + " filtration")
+            << ", " << metric.description() << ", time normalised t -> (t - t0) / (t_end - t0)\n";
   for (std::size_t i = 0; i < args.stores.size(); ++i) {
     check_interrupted();
-    ComparedDiagram d = compared_diagram(args.stores[i], args.selection);
-    std::cout << "  " << names[i] << ": MCS " << short_number(d.t0) << " to " << short_number(d.t_end) << ", "
-              << d.points.finite.size() << " finite points, " << d.points.essential.size()
-              << " essential classes\n";
-    points.push_back(std::move(d.points));
+    std::vector<ComparedDiagram> d = compared_diagrams(args.stores[i], selections);
+    std::cout << "  " << names[i] << ": MCS " << short_number(d.front().t0) << " to "
+              << short_number(d.front().t_end);
+    for (std::size_t c = 0; c < d.size(); ++c) {
+      if (!single)
+        std::cout << (c % 3 == 0 ? "\n    type " + selections[c].type + ":" : ",") << " H"
+                  << selections[c].dim;
+      std::cout << (single ? ", " : " ") << d[c].points.finite.size() << " finite points"
+                << (single ? ", " : " + ") << d[c].points.essential.size() << " essential classes";
+      comparisons[c].points.push_back(std::move(d[c].points));
+    }
+    std::cout << "\n";
+  }
+  for (Comparison& c : comparisons) {
+    check_interrupted();
+    c.distances = persistence::distance_matrix(
+        c.points, [&metric](const auto& a, const auto& b) { return metric(a, b); }, 2);
+    c.dendrogram = persistence::average_linkage(c.distances);
   }
   check_interrupted();
-  const persistence::DistanceMatrix distances = persistence::distance_matrix(
-      points, [&metric](const auto& a, const auto& b) { return metric(a, b); }, 2);
-  check_interrupted();
-  const persistence::Dendrogram dendrogram = persistence::average_linkage(distances);
 
-  std::cout << "distances:\n";
-  print_matrix(std::cout, distances, names);
-  if (metric.largest_relative_error() > 0)
-    std::cout << "some finite parts are certified approximations within a relative error of "
-              << short_number(metric.largest_relative_error()) << "\n";
-  std::cout << "average-linkage clustering:\n";
-  for (std::size_t k = 0; k < dendrogram.merges.size(); ++k) {
-    const persistence::Merge& m = dendrogram.merges[k];
-    std::cout << "  " << cluster_name(m.first, dendrogram, names) << " + "
-              << cluster_name(m.second, dendrogram, names) << " at " << short_number(m.height) << "\n";
+  std::vector<std::string> warnings;
+  for (const Comparison& c : comparisons)
+    if (trivially_zero(c, args.essential))
+      warnings.push_back("every distance of " + what_of(c.selection) + " is 0: no run has a " +
+                         (args.essential ? "class" : "finite class") + " there (" +
+                         (c.selection.dim == 0 && c.selection.type == "all"
+                              ? "the whole tissue is one cluster throughout"
+                              : "every diagram is empty") +
+                         "), so it cannot separate the runs");
+
+  if (single) {
+    const Comparison& c = comparisons.front();
+    std::cout << "distances:\n";
+    print_matrix(std::cout, c.distances, names);
+    if (metric.largest_relative_error() > 0)
+      std::cout << "some finite parts are certified approximations within a relative error of "
+                << short_number(metric.largest_relative_error()) << "\n";
+    std::cout << "average-linkage clustering:\n";
+    print_clustering(std::cout, c.dendrogram, names, "  ");
+    write_outputs(c, names, args.prefix, metric.description());
+    std::cout << "wrote " << args.prefix << ".distances.csv, " << args.prefix << ".heatmap.svg, "
+              << args.prefix << ".dendrogram.svg\n";
+  } else {
+    // Which comparisons separate the runs: the spread of the distances between different runs (the
+    // largest over the smallest), highest first, with the clustering it gives.
+    std::vector<std::size_t> order(comparisons.size());
+    for (std::size_t c = 0; c < order.size(); ++c)
+      order[c] = c;
+    const auto spread = [&](std::size_t c) {
+      const auto [lo, hi] = off_diagonal_range(comparisons[c].distances);
+      return hi == 0 ? 0.0 : lo == 0 ? std::numeric_limits<double>::infinity() : hi / lo;
+    };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return spread(a) > spread(b); });
+    std::cout
+        << "which comparisons separate the runs (distances between different runs: smallest, largest, and "
+           "their ratio; highest ratio first):\n";
+    for (std::size_t c : order) {
+      const Comparison& x = comparisons[c];
+      const auto [lo, hi] = off_diagonal_range(x.distances);
+      std::cout << "  type " << x.selection.type << " H" << x.selection.dim << ": " << short_number(lo)
+                << " to " << short_number(hi) << ", ratio "
+                << (hi == 0 ? std::string("-") : short_number(spread(c)));
+      if (hi > 0 && !x.dendrogram.merges.empty()) {
+        std::cout << "; clustering:";
+        std::string sep = " ";
+        for (const persistence::Merge& m : x.dendrogram.merges) {
+          std::cout << sep << cluster_name(m.first, x.dendrogram, names) << " + "
+                    << cluster_name(m.second, x.dendrogram, names) << " at " << short_number(m.height);
+          sep = "; ";
+        }
+      }
+      std::cout << "\n";
+    }
+    std::string written;
+    for (const Comparison& c : comparisons) {
+      const std::string prefix =
+          args.prefix + ".type" + c.selection.type + ".h" + std::to_string(c.selection.dim);
+      write_outputs(c, names, prefix, metric.description());
+      written += (written.empty() ? "" : ", ") + prefix + ".*";
+    }
+    std::cout << "wrote " << written << " (distances.csv, heatmap.svg, dendrogram.svg each)\n";
   }
-
-  const std::string title = what + ", " + metric.description() + ", normalised time";
-  const std::string csv = args.prefix + ".distances.csv", heatmap = args.prefix + ".heatmap.svg",
-                    dendrogram_svg = args.prefix + ".dendrogram.svg";
-  write_file_atomically(csv, [&](std::ostream& out) { write_matrix_csv(out, distances, names); });
-  write_file_atomically(heatmap, [&](std::ostream& out) { write_heatmap_svg(out, distances, names, title); });
-  write_file_atomically(dendrogram_svg,
-                        [&](std::ostream& out) { write_dendrogram_svg(out, dendrogram, names, title); });
-  std::cout << "wrote " << csv << ", " << heatmap << ", " << dendrogram_svg << "\n";
+  for (const std::string& w : warnings)
+    std::cerr << "medusa: warning: " << w << "\n";
 }
 
 } // namespace
@@ -144,33 +283,46 @@ void add_compare_command(CLI::App& app) {
           "bottleneck, or wasserstein:p for W_p with p >= 1 (ground metric L-infinity, docs/MATH.md §7.7)")
       ->check(CLI::Validator([](std::string& value) { return metric_spec_error(value); }, "METRIC"))
       ->capture_default_str();
-  compare
-      ->add_option("--type", args->selection.type,
-                   "the sub-medusa of this cell type id (docs/MATH.md §7.4), or 'all' for the whole medusa")
-      ->check(CLI::Validator(
-          [](std::string& value) {
-            return value == "all" || (!value.empty() && value.size() < 10 &&
-                                      value.find_first_not_of("0123456789") == std::string::npos)
-                       ? std::string()
-                       : "'" + value + "' is not a type id or 'all'";
-          },
-          "TYPE"))
-      ->capture_default_str();
-  compare->add_option("--dim", args->selection.dim, "homology degree")
-      ->check(CLI::Range(0, 3))
-      ->capture_default_str();
+  CLI::Option* type =
+      compare
+          ->add_option(
+              "--type", args->selection.type,
+              "compare the sub-medusa of this cell type id (docs/MATH.md §7.4), or 'all' for the whole "
+              "medusa (default without --type and --dim: every cell type of the runs, in H0, H1 and H2)")
+          ->check(CLI::Validator(
+              [](std::string& value) {
+                return value == "all" || (!value.empty() && value.size() < 10 &&
+                                          value.find_first_not_of("0123456789") == std::string::npos)
+                           ? std::string()
+                           : "'" + value + "' is not a type id or 'all'";
+              },
+              "TYPE"));
+  CLI::Option* dim = compare
+                         ->add_option("--dim", args->selection.dim,
+                                      "compare this homology degree only (with --type alone: 0; --dim alone: "
+                                      "type all)")
+                         ->check(CLI::Range(0, 3));
   compare
       ->add_option("--filtration", args->selection.filtration, "forward or reverse (docs/MATH.md §7.2, §7.3)")
       ->check(CLI::IsMember({"forward", "reverse"}))
       ->capture_default_str();
+  compare->add_flag(
+      "--essential", args->essential,
+      "compare the essential classes too (different essential counts give inf); by default only "
+      "the finite parts are compared");
   compare->add_flag("--ignore-essential", args->ignore_essential,
-                    "compare the finite parts only (otherwise different essential counts give inf)");
+                    "compare the finite parts only (the default)");
   compare
       ->add_option(
           "-o,--output", args->prefix,
-          "output prefix: writes <prefix>.distances.csv, <prefix>.heatmap.svg, <prefix>.dendrogram.svg")
+          "output prefix: writes <prefix>.distances.csv, <prefix>.heatmap.svg, <prefix>.dendrogram.svg for "
+          "one comparison, <prefix>.type<T>.h<k>.* for each of several")
       ->capture_default_str();
-  compare->callback([args] { compare_command(*args); });
+  compare->callback([args, type, dim] {
+    args->type_given = type->count() > 0;
+    args->dim_given = dim->count() > 0;
+    compare_command(*args);
+  });
 }
 
 } // namespace medusa::cli

@@ -6,6 +6,7 @@
 #include "diagram_selection.h"
 #include "interrupt.h"
 #include "progress_meter.h"
+#include "run_input.h"
 #include "run_summary.h"
 #include "stage_timings.h"
 #include "svg_plot.h"
@@ -34,7 +35,9 @@
 #include <memory>
 #include <optional>
 #include <thread>
+#include <tuple>
 #include <unistd.h>
+#include <utility>
 
 namespace medusa::cli {
 namespace {
@@ -48,7 +51,7 @@ struct RunArguments {
   std::string source;
   std::string timings;
   unsigned threads = 0; // 0: one per hardware thread
-  bool audit = false, snap = false, periodic_as_open = false, quiet = false, progress = false;
+  bool audit = false, snap = false, periodic_as_open = false, quiet = false, progress = false, force = false;
 };
 
 // Forwards the event stream to the builder; reports progress and polls for interrupts. It also
@@ -113,46 +116,12 @@ private:
   std::vector<std::int64_t> peak_rss_at_frame_;
 };
 
-// `<input-name>` of a folder or a cells.csv[.gz] file, for the default store name.
-std::string input_stem(const std::string& input) {
-  fs::path p = fs::path(input).lexically_normal();
-  if (p.filename().empty())
-    p = p.parent_path();
-  std::string name = p.filename().string();
-  for (const std::string suffix : {".gz", ".csv"})
-    if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
-      name.erase(name.size() - suffix.size());
-  return name.empty() || name == "." ? "run" : name;
-}
-
 std::string output_stem(const std::string& output) {
   const std::string suffix = ".h5";
   if (output.size() > suffix.size() &&
       output.compare(output.size() - suffix.size(), suffix.size(), suffix) == 0)
     return output.substr(0, output.size() - suffix.size());
   return output;
-}
-
-io::RunSource choose_source(const RunArguments& args) {
-  if (args.source == "vtk")
-    return io::RunSource::vtk;
-  if (args.source == "csv")
-    return io::RunSource::csv;
-  // Default for a CC3D folder: CC3D's own centres (cells.csv.gz) are on the 10^-6 grid, while the
-  // VTK voxel centroids are not and would need --snap (docs/MATH.md §1.2, §1.3).
-  const fs::path folder(args.input);
-  std::error_code ec;
-  if (fs::is_directory(folder, ec) &&
-      (fs::exists(folder / "cells.csv.gz", ec) || fs::exists(folder / "cells.csv", ec)))
-    return io::RunSource::csv;
-  return io::RunSource::automatic;
-}
-
-std::string radius_from_volumes(const io::RunData& data) {
-  const double volume = io::median_cell_volume(data.volumes);
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.6f", io::equivalent_radius(volume, data.trajectories.dimension));
-  return buffer;
 }
 
 // What the summary and --timings report about the stages after the kinetic one.
@@ -164,13 +133,12 @@ struct StoreFacts {
 // Diagrams from the stored cells, so that what later commands see is what the summary describes.
 StoreFacts write_diagrams_and_summary(const std::string& output, const std::string& stem,
                                       const kinetic::KineticStatistics& stats, const std::string& radius,
-                                      unsigned threads, ProgressMeter& meter, StageTimings& timings) {
+                                      const std::string& radius_note, unsigned threads, bool quiet,
+                                      ProgressMeter& meter, StageTimings& timings) {
   meter.stage("medusa store: reading back " + output);
   StageClock clock;
-  // The diagrams need only the cells: the batch records (one per event time) stay on disk.
-  medusa::StoreReadOptions cells_only;
-  cells_only.events = false;
-  const medusa::Medusa medusa = medusa::read_store(output, cells_only);
+  // The summary's counts at the first frame need the batch records (which batch reaches it).
+  const medusa::Medusa medusa = medusa::read_store(output);
   timings.add("medusa_store", clock);
   check_interrupted();
 
@@ -182,7 +150,7 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
               std::to_string(types.size()) + " cell types, forward and reverse, " +
               std::to_string(medusa.cells.size()) + " cells, PHAT)" + on);
   // Each task builds one filtration, reduces it and frees it (at most `threads` in memory: the peak
-  // stays below the kinetic stage's, issue #9). The two stages overlap on the threads, so their wall
+  // stays below the kinetic stage's). The two stages overlap on the threads, so their wall
   // and CPU seconds are the measured totals split in proportion to the tasks' time in each phase.
   clock = StageClock{};
   persistence::DiagramPhaseSeconds phases;
@@ -195,8 +163,8 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   timings.add("reduction", (1 - share) * wall, (1 - share) * cpu);
   check_interrupted();
 
-  meter.stage("exports: diagrams into the store, " + stem + ".diagrams.csv, " + stem +
-              ".barcode.svg, summary");
+  meter.stage("exports: diagrams into the store, " + stem + ".diagrams.csv, " + stem + ".barcode.svg, " +
+              stem + ".diagram.svg, summary");
   clock = StageClock{};
   // The diagrams go into the store too (group /persistence, docs/FORMAT.md), written atomically.
   persistence::write_diagrams(output, diagrams);
@@ -219,10 +187,17 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   write_file_atomically(stem + ".barcode.svg", [&](std::ostream& out) {
     write_barcode_svg(out, shown, t0, t_end, default_max_bars);
   });
+  write_file_atomically(stem + ".diagram.svg",
+                        [&](std::ostream& out) { write_diagram_svg(out, shown, t0, t_end); });
   check_interrupted();
 
-  write_run_summary(std::cout, medusa, stats, diagrams, radius);
-  std::cout << "wrote " << output << ", " << stem << ".diagrams.csv, " << stem << ".barcode.svg\n";
+  const std::vector<std::string> warnings =
+      write_run_summary(std::cout, medusa, stats, diagrams, radius, radius_note);
+  if (!quiet)
+    for (const std::string& w : warnings)
+      std::cerr << "medusa: warning: " << w << "\n";
+  std::cout << "wrote " << output << ", " << stem << ".diagrams.csv, " << stem << ".barcode.svg, " << stem
+            << ".diagram.svg\n";
   timings.add("exports", clock);
   return {medusa.cells.size(), diagrams.size()};
 }
@@ -287,6 +262,10 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   if (!fs::exists(input, ec))
     throw InputError("input " + input + " does not exist");
   const unsigned threads = worker_threads(args.threads);
+  // A store holds a run's whole analysis: replacing one is asked for, never a side effect.
+  const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
+  if (!args.force && fs::exists(output, ec))
+    throw CLI::ParseError("store " + output + " exists; pass --force to replace it", 2);
 
   ProgressMeter meter(std::cerr,
                       ProgressMeter::choose(args.progress, args.quiet, ::isatty(STDERR_FILENO) != 0));
@@ -294,7 +273,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   RunArguments resolved = args;
   resolved.input = input;
   io::RunOptions options;
-  options.source = choose_source(resolved);
+  options.source = choose_source(input, args.source);
   options.snap = args.snap;
   options.allow_periodic_as_open = args.periodic_as_open;
   options.read_periodic = !args.periodic_as_open;
@@ -306,7 +285,9 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     for (const std::string& w : data.warnings)
       std::cerr << "medusa: warning: " << w << "\n";
 
-  const std::string radius = args.radius == "auto" ? radius_from_volumes(data) : args.radius;
+  std::string radius = args.radius, radius_note;
+  if (args.radius == "auto")
+    std::tie(radius, radius_note) = radius_from_volumes(data);
   kinetic::KineticOptions kinetic_options;
   kinetic_options.rho2 = kinetic::squared_radius_from_decimal(radius, data.trajectories.scale);
   kinetic_options.audit = args.audit;
@@ -323,7 +304,6 @@ void run_command(const RunArguments& args, const std::string& command_line) {
                 << " trajectories of periodic copies of cells near them (docs/MATH.md §8)\n";
   }
 
-  const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
   medusa::RunInfo info;
   info.radius = std::stod(radius);
   info.radius_text = radius;
@@ -372,10 +352,12 @@ void run_command(const RunArguments& args, const std::string& command_line) {
 
   // README: an interrupted run leaves no output behind, including a store already completed.
   const std::string stem = output_stem(output);
-  const std::vector<std::string> outputs = {output, stem + ".diagrams.csv", stem + ".barcode.svg"};
+  const std::vector<std::string> outputs = {output, stem + ".diagrams.csv", stem + ".barcode.svg",
+                                            stem + ".diagram.svg"};
   try {
     check_interrupted();
-    const StoreFacts facts = write_diagrams_and_summary(output, stem, stats, radius, threads, meter, timings);
+    const StoreFacts facts = write_diagrams_and_summary(output, stem, stats, radius, radius_note, threads,
+                                                        args.quiet, meter, timings);
     if (!args.timings.empty())
       write_timings(args.timings, resolved, data, radius, output, timings, stats, peak_rss_at_frame, facts,
                     threads);
@@ -394,10 +376,17 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
       "run", "Compute the alpha medusa of a CompuCell3D run, store it, and write its persistence diagrams");
   run->add_option("input", args->input,
                   "CC3D output folder or cells.csv[.gz] (default: the bundled examples/sorting_3d)");
-  run->add_option("-o,--output", args->output, "HDF5 store to write (default: <input-name>.h5 here)");
-  run->add_option("--radius", args->radius,
-                  "alpha radius rho in lattice units (decimal), or 'auto' = "
-                  "equivalent-sphere radius of the median cell volume")
+  run->add_option("-o,--output", args->output,
+                  "HDF5 store to write (default: <input-name>.h5 here; a cells.csv[.gz] is named after its "
+                  "folder)");
+  run->add_flag("--force", args->force,
+                "replace the store if it exists (otherwise an existing store is an error)");
+  run->add_option(
+         "--radius", args->radius,
+         "alpha radius rho in lattice units (decimal): cells are balls of radius rho around their "
+         "centres, and two cells touch when their centres are closer than 2 rho. 'auto': the radius "
+         "of a ball (a disc in 2D) of the median cell volume over all cells and frames (docs/MATH.md "
+         "§7.10)")
       ->capture_default_str();
   run->add_option("--source", args->source,
                   "positions from 'csv' (cells.csv.gz, CC3D centres; default for a folder that has it) or "

@@ -14,5 +14,7 @@ void add_barcode_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
 void add_curves_command(CLI::App& app);
 void add_at_command(CLI::App& app);
+void add_report_command(CLI::App& app);
+void add_sweep_command(CLI::App& app);
 
 } // namespace medusa::cli

@@ -31,24 +31,54 @@ bool parse_wasserstein(const std::string& spec, double& p, std::string& text) {
 } // namespace
 
 ComparedDiagram compared_diagram(const std::string& store, const ComparisonSelection& selection) {
+  return compared_diagrams(store, {selection}).front();
+}
+
+std::vector<ComparedDiagram> compared_diagrams(const std::string& store,
+                                               const std::vector<ComparisonSelection>& selections) {
+  if (selections.empty())
+    return {};
   const medusa::Medusa medusa = medusa::read_store(store);
-  DiagramSelection wanted;
-  wanted.type = selection.type;
-  wanted.filtration = selection.filtration;
-  wanted.dim = selection.dim;
-  std::vector<persistence::Diagram> diagrams = selected_diagrams(medusa, wanted);
-  if (diagrams.size() != 1)
-    throw InternalError("medusa compare: " + std::to_string(diagrams.size()) + " diagrams selected in " +
-                        store);
   if (medusa.input.frame_times.size() < 2)
     throw InputError("store " + store + " has fewer than two frames; its time axis cannot be normalised");
-  ComparedDiagram result;
-  result.name = std::filesystem::path(store).stem().string();
-  result.t0 = static_cast<double>(medusa.input.frame_times.front());
-  result.t_end = static_cast<double>(medusa.input.frame_times.back());
-  result.points = persistence::normalise_time(persistence::to_points(diagrams.front(), selection.dim),
-                                              diagrams.front().direction, result.t0, result.t_end);
+  // One type asked for: only its diagrams are computed; several: the whole medusa and every type.
+  DiagramSelection wanted;
+  wanted.filtration = selections.front().filtration;
+  bool one_type = true;
+  for (const ComparisonSelection& s : selections) {
+    one_type = one_type && s.type == selections.front().type;
+    if (s.filtration != wanted.filtration)
+      throw InternalError("medusa compare: selections of different filtrations");
+  }
+  if (one_type)
+    wanted.type = selections.front().type;
+  const std::vector<persistence::Diagram> diagrams = selected_diagrams(medusa, wanted);
+  const std::vector<int> types = distinct_types(vertex_types(medusa));
+  const double t0 = static_cast<double>(medusa.input.frame_times.front());
+  const double t_end = static_cast<double>(medusa.input.frame_times.back());
+  std::vector<ComparedDiagram> result;
+  for (const ComparisonSelection& s : selections) {
+    const int type = s.type == "all" ? persistence::all_types : std::stoi(s.type);
+    if (type != persistence::all_types && std::find(types.begin(), types.end(), type) == types.end())
+      throw InputError("cell type " + s.type + " does not occur in the store " + store);
+    const auto d = std::find_if(diagrams.begin(), diagrams.end(),
+                                [&](const persistence::Diagram& x) { return x.cell_type == type; });
+    if (d == diagrams.end())
+      throw InternalError("medusa compare: no diagram of type " + s.type + " in " + store);
+    ComparedDiagram c;
+    c.name = std::filesystem::path(store).stem().string();
+    c.t0 = t0;
+    c.t_end = t_end;
+    c.points = persistence::normalise_time(persistence::to_points(*d, s.dim), d->direction, t0, t_end);
+    result.push_back(std::move(c));
+  }
   return result;
+}
+
+std::vector<int> store_types(const std::string& store) {
+  medusa::StoreReadOptions cells_only;
+  cells_only.events = false;
+  return distinct_types(vertex_types(medusa::read_store(store, cells_only)));
 }
 
 std::vector<std::string> run_names(const std::vector<std::string>& stores) {

@@ -29,6 +29,14 @@ struct ComparisonSelection {
 // InputError if the type does not occur in the store.
 ComparedDiagram compared_diagram(const std::string& store, const ComparisonSelection& selection);
 
+// The same for several selections of one filtration direction, from one reading of the store and one
+// computation of its diagrams; one result per selection, in order.
+std::vector<ComparedDiagram> compared_diagrams(const std::string& store,
+                                               const std::vector<ComparisonSelection>& selections);
+
+// The cell types (ids) that occur in the store.
+std::vector<int> store_types(const std::string& store);
+
 // Unique run names: file stems, or the paths as given when two stems coincide.
 std::vector<std::string> run_names(const std::vector<std::string>& stores);
 

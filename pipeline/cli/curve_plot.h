@@ -1,5 +1,6 @@
-// Piecewise constant curves over time as a standalone SVG: one panel per group of curves, each curve a
-// step line (the value holds from its sample time until the next sample, docs/MATH.md §6.6).
+// Piecewise constant curves over time as a standalone SVG: a row per group of curves, each curve a
+// step line in a plot of its own (the value holds from its sample time until the next sample, docs/MATH.md
+// §6.6).
 #pragma once
 
 #include <ostream>
@@ -19,7 +20,8 @@ struct CurvePanel {
   std::vector<Curve> curves;
 };
 
-// Panels stacked vertically on the shared time axis [t0, t_end] (MCS).
+// One row per panel, one plot per curve of the panel, side by side: each curve has its own vertical
+// range (b0 ~ 1-10 beside b1 ~ 400 would lie flat on a shared one) and its own time axis [t0, t_end] (MCS).
 void write_curves_svg(std::ostream& out, const std::vector<CurvePanel>& panels, double t0, double t_end);
 
 } // namespace medusa::cli

@@ -44,6 +44,8 @@ int main(int argc, char** argv) {
   medusa::cli::add_compare_command(app);
   medusa::cli::add_curves_command(app);
   medusa::cli::add_at_command(app);
+  medusa::cli::add_report_command(app);
+  medusa::cli::add_sweep_command(app);
   medusa::cli::install_interrupt_handlers();
   // A store whose final flush failed would otherwise crash HDF5's exit handler (store_writer.h).
   medusa::skip_hdf5_cleanup_at_exit();
@@ -51,9 +53,15 @@ int main(int argc, char** argv) {
   // Blocks of 128 KiB and more are mapped and unmapped one by one. glibc otherwise raises this
   // threshold after the first such block is freed and serves later large temporaries (store columns,
   // rehashed tables) from the heap, where they stay resident after they are freed: on large_3d that
-  // added a third to the peak memory of `medusa run` (issue #9; the kinetic stage runs no slower).
+  // added a third to the peak memory of `medusa run` (the kinetic stage runs no slower).
   mallopt(M_MMAP_THRESHOLD, 128 * 1024);
 #endif
+  // `medusa` alone asks what the tool does: the help on stdout, exit 0 (README, Exit codes).
+  if (argc <= 1) {
+    app.name(argc == 1 ? argv[0] : "medusa");
+    std::cout << app.help();
+    return 0;
+  }
   try {
     app.parse(argc, argv);
     return 0;

@@ -1,9 +1,10 @@
 #include "run_summary.h"
 
-#include "diagram_export.h"
+#include "class_fates.h"
 #include "diagram_selection.h"
 
-#include <cmath>
+#include "medusa/core/error.h"
+
 #include <cstdio>
 
 namespace medusa::cli {
@@ -11,89 +12,89 @@ namespace {
 
 std::string mcs(double t) {
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", t);
+  std::snprintf(buffer, sizeof buffer, "%.6g", t);
   return buffer;
 }
 
-const char* const feature_names[] = {"cluster", "loop", "cavity"};
-const char* const feature_plurals[] = {"clusters", "loops", "cavities"};
+std::string count(std::size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+const persistence::Diagram* find_diagram(const std::vector<persistence::Diagram>& diagrams, int type,
+                                         persistence::Direction direction) {
+  for (const persistence::Diagram& d : diagrams)
+    if (d.cell_type == type && d.direction == direction)
+      return &d;
+  return nullptr;
+}
+
+void describe_clusters(std::ostream& out, const ClusterFates& c, double t0, double t_end) {
+  out << "  clusters: " << c.at_first << " at MCS " << mcs(t0) << ", " << c.at_end << " at MCS " << mcs(t_end)
+      << "; ";
+  if (c.joins == 0)
+    out << "none joined another";
+  else
+    out << count(c.joins, "join", "joins") << " (a cluster touching another), "
+        << (c.joins == 1 ? "at MCS " + mcs(c.all_joined)
+                         : "half of them by MCS " + mcs(c.half_joined) + ", all by MCS " + mcs(c.all_joined));
+  out << "\n";
+  if (c.joined_at_first > 0)
+    out << "    (" << c.joined_at_first << " of the clusters at MCS " << mcs(t0)
+        << (c.joined_at_first == 1 ? " was" : " were")
+        << " already joined to another through cells present at that frame only)\n";
+  if (c.separated_again > 0)
+    out << "    (" << c.separated_again << " of the clusters at MCS " << mcs(t_end) << " had"
+        << " touched another earlier and separated again)\n";
+}
+
+void describe_holes(std::ostream& out, const HoleFates& h, const char* one, const char* many, double t0,
+                    double t_end) {
+  out << "  " << many << ": " << h.initial << " present at MCS " << mcs(t0) << ", " << h.formed
+      << " formed during the run\n";
+  if (h.initial + h.formed == 0)
+    return;
+  out << "    filled by cells: " << h.filled_initial << " of those at MCS " << mcs(t0) << ", "
+      << h.filled_formed << " formed later\n";
+  const std::size_t never = h.never_filled_initial + h.never_filled_formed;
+  out << "    never filled: " << h.never_filled_initial << " of those at MCS " << mcs(t0) << ", "
+      << h.never_filled_formed << " formed later";
+  if (never > 0)
+    out << "; of these " << never << ", " << h.still_open << " still open at MCS " << mcs(t_end) << ", "
+        << h.broken_open << " broke open";
+  out << "\n";
+  if (h.open_at_end > h.still_open)
+    out << "    (the complex at MCS " << mcs(t_end) << " has " << count(h.open_at_end, one, many) << "; "
+        << h.open_at_end - h.still_open
+        << " of them bound in space-time, e.g. around a spot that cells filled at another time, and are not "
+           "new classes)\n";
+}
 
 // H2 of a planar run's medusa is no cavity of the flat tissue: its space-time lives in R^3, where by
 // docs/MATH.md §7.6's argument for H3 one dimension down every H2 class is a bubble of space-time (a hole
 // that opened inside the tissue and closed again, born when it closes) and none of positive length
 // dies (tests/medusa/test_medusa_2d.cpp checks it on the real 2D run).
-void describe_planar_bubbles(std::ostream& out, const persistence::Diagram& diagram) {
-  std::size_t count = 0;
-  for (const persistence::PersistencePair& p : diagram.pairs)
-    count += p.dim == 2 && !p.zero_length ? 1 : 0;
-  out << "  " << count << (count == 1 ? " space-time bubble" : " space-time bubbles")
+void describe_planar_bubbles(std::ostream& out, const persistence::Diagram& forward) {
+  std::size_t n = 0;
+  for (const persistence::PersistencePair& p : forward.pairs)
+    n += p.dim == 2 && !p.zero_length ? 1 : 0;
+  out << "  " << count(n, "space-time bubble", "space-time bubbles")
       << " (holes that opened inside the tissue and closed again)\n";
 }
 
 } // namespace
 
-void describe_forward_diagram(std::ostream& out, const persistence::Diagram& diagram, double t0, double t_end,
-                              int dimension) {
-  // Components alive just after t0: born in batch 0 and not killed there (zero-length pairs are
-  // killed in their birth batch, docs/MATH.md §7.5). Those alive at the end are the essential classes.
-  std::size_t at_start = 0, at_end = 0;
-  const persistence::PersistencePair* last_merge = nullptr; // the longest-lived finite H0 class
-  for (const persistence::PersistencePair& p : diagram.pairs)
-    if (p.dim == 0) {
-      at_start += p.birth_time.batch == 0 && !p.zero_length ? 1 : 0;
-      at_end += p.essential ? 1 : 0;
-      if (!p.essential && !p.zero_length &&
-          (last_merge == nullptr || p.death - p.birth > last_merge->death - last_merge->birth))
-        last_merge = &p;
-    }
-  out << "  " << at_start << (at_start == 1 ? " cluster" : " clusters") << " at MCS " << mcs(t0)
-      << " merge into " << at_end << " by MCS " << mcs(t_end);
-  if (last_merge != nullptr)
-    out << "; longest-lived separate cluster born at MCS " << mcs(last_merge->birth) << ", merged at MCS "
-        << mcs(last_merge->death);
-  out << "\n";
-  // Loops and cavities: a class that dies was filled; an essential one never was. It is a class of
-  // the whole space-time medusa, so it need not be open at the end: a ring that later breaks apart
-  // without being filled stays one (docs/MATH.md §7.5, §7.6). The longest-lived filled one is the telling
-  // feature; essential classes are counted apart.
-  for (int k = 1; k <= 2; ++k) {
-    if (k == 2 && dimension == 2) {
-      describe_planar_bubbles(out, diagram);
-      continue;
-    }
-    const persistence::PersistencePair* longest = nullptr;
-    std::size_t filled = 0, never = 0;
-    for (const persistence::PersistencePair& p : diagram.pairs) {
-      if (p.dim != k || p.zero_length)
-        continue;
-      if (p.essential) {
-        ++never;
-        continue;
-      }
-      ++filled;
-      if (longest == nullptr || p.death - p.birth > longest->death - longest->birth)
-        longest = &p;
-    }
-    const std::size_t count = filled + never;
-    out << "  " << count << " " << (count == 1 ? feature_names[k] : feature_plurals[k]) << " (" << filled
-        << " filled, " << never << " never filled)";
-    if (longest != nullptr)
-      out << "; longest-lived filled " << feature_names[k] << " born at MCS " << mcs(longest->birth)
-          << ", filled at MCS " << mcs(longest->death) << " (lifetime "
-          << mcs(longest->death - longest->birth) << " MCS)";
-    out << "\n";
-  }
-}
-
-void write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
-                       const kinetic::KineticStatistics& stats,
-                       const std::vector<persistence::Diagram>& diagrams, const std::string& radius_text) {
+std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
+                                           const kinetic::KineticStatistics& stats,
+                                           const std::vector<persistence::Diagram>& diagrams,
+                                           const std::string& radius_text, const std::string& radius_note) {
   const kinetic::Trajectories& input = medusa.input;
   const double t0 = input.frame_times.empty() ? 0.0 : static_cast<double>(input.frame_times.front());
   const double t_end = input.frame_times.empty() ? 0.0 : static_cast<double>(input.frame_times.back());
   out << "cells: " << input.cells.size() << " trajectories, frames: " << input.frames() << " (MCS " << mcs(t0)
       << " to " << mcs(t_end) << "), dimension " << input.dimension << "\n"
-      << "radius: " << radius_text << " lattice units\n"
+      << "radius: " << radius_text << " lattice units"
+      << (radius_note.empty() ? "" : " (" + radius_note + ")")
+      << "; two cells touch when their centres are closer than twice that\n"
       << "events: " << stats.flips() << " flips (";
   // A planar run flips 2-2, a 3D run 2-3 and 3-2 (the hull flips of either are counted apart).
   if (input.dimension == 2)
@@ -106,21 +107,57 @@ void write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
   const int top = input.dimension + 1; // space-time cells go one dimension above space
   for (int k = 0; k <= top; ++k)
     out << " dim " << k << ": " << medusa.cells_of_dimension(k).size() << (k < top ? "," : "\n");
+
+  std::vector<std::string> warnings;
+  if (medusa.cells_of_dimension(1).empty())
+    warnings.push_back("radius " + radius_text +
+                       " gives no contact between any two cells at any time (two cells touch when their "
+                       "centres are closer than twice the radius): every cell stays a cluster of its own; "
+                       "--radius auto, the default, takes the radius of a ball of the median cell volume "
+                       "(docs/MATH.md §7.10)");
+  std::size_t leaving = 0;
   for (const persistence::Diagram& d : diagrams) {
     if (d.direction != persistence::Direction::forward)
       continue;
-    if (d.cell_type == persistence::all_types) {
-      out << "all cells:\n";
-    } else {
+    const persistence::Diagram* reverse =
+        find_diagram(diagrams, d.cell_type, persistence::Direction::reverse);
+    if (reverse == nullptr)
+      throw InternalError("run summary: no reverse diagram for type " + type_label(d.cell_type));
+    const ClassFates fates = class_fates(medusa, d, *reverse);
+    std::string label = "all cells";
+    if (d.cell_type != persistence::all_types) {
       const auto index = static_cast<std::size_t>(d.cell_type);
       const std::string name = index < input.type_names.size() ? input.type_names[index] : "";
-      out << "type " << d.cell_type << (name.empty() ? "" : " (" + name + ")") << ":\n";
+      label = "type " + std::to_string(d.cell_type) + (name.empty() ? "" : " (" + name + ")");
+      if (fates.clusters.at_first == 1 && fates.clusters.joins == 0 && !medusa.cells_of_dimension(1).empty())
+        warnings.push_back(label + " is one cluster from MCS " + mcs(t0) +
+                           " on and no cluster joins it: at radius " + radius_text +
+                           " its cells already touch at the first frame, so no merging can show "
+                           "(a smaller radius, e.g. --radius auto, docs/MATH.md §7.10)");
+    } else {
+      leaving = fates.cells_leaving_at_first;
     }
-    describe_forward_diagram(out, d, t0, t_end, input.dimension);
+    out << label << ":\n";
+    describe_clusters(out, fates.clusters, t0, t_end);
+    describe_holes(out, fates.holes[1], "loop", "loops", t0, t_end);
+    if (input.dimension == 2)
+      describe_planar_bubbles(out, d);
+    else
+      describe_holes(out, fates.holes[2], "cavity", "cavities", t0, t_end);
   }
-  out << "(forward filtration; \"never filled\" counts loops" << (input.dimension == 2 ? "" : " and cavities")
-      << " that no cells ever filled, including those that broke open instead: see README, Reading the "
-         "summary)\n";
+  out << "Counts at MCS " << mcs(t0) << " and MCS " << mcs(t_end)
+      << " are those of the complex at that frame (b0, b1, b2 of `medusa curves --frames-only`). Joins, "
+         "filled and never-filled "
+      << (input.dimension == 2 ? "loops" : "loops and cavities")
+      << " come from the forward filtration (docs/MATH.md §7.6): one that broke open without being filled "
+         "stays a class of the space-time medusa (README, Reading the summary).\n"
+      << "Times between frames come from linear interpolation of the cell centres between frames "
+         "(docs/MATH.md §2.2).\n";
+  if (leaving > 0)
+    out << count(leaving, "cell", "cells") << " present at MCS " << mcs(t0)
+        << " only left the complex at that instant: the counts at MCS " << mcs(t0)
+        << " are those just after (docs/MATH.md §0, §2.4).\n";
+  return warnings;
 }
 
 } // namespace medusa::cli

@@ -1,5 +1,6 @@
-// The plain-words summary `medusa run` prints: sizes, events, medusa cells per dimension, and the
-// most persistent features of each cell type's forward diagram (docs/MATH.md §7.2, §7.4).
+// The plain-words summary `medusa run` prints: sizes, events, medusa cells per dimension, and for the
+// whole tissue and each cell type what became of its clusters, loops and cavities (class_fates.h;
+// docs/MATH.md §6.6, §7.2-§7.6).
 #pragma once
 
 #include "medusa/kinetic/kinetic_alpha_complex.h"
@@ -12,13 +13,15 @@
 
 namespace medusa::cli {
 
-void write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
-                       const kinetic::KineticStatistics& stats,
-                       const std::vector<persistence::Diagram>& diagrams, const std::string& radius_text);
-
-// One line per degree H0..H2 of a forward diagram in plain words; `dimension` is the run's (2 or 3):
-// H2 is a cavity of the tissue in 3D, a bubble of space-time in the plane.
-void describe_forward_diagram(std::ostream& out, const persistence::Diagram& diagram, double t0, double t_end,
-                              int dimension);
+// `radius_note` says how the radius was chosen (--radius auto), if it was.
+// `medusa` must hold its batches (read_store with events); `diagrams` are those of
+// compute_medusa_diagrams (forward and reverse, whole medusa and each type). Returns the warnings the
+// run's radius calls for (no contact at any time; a type that is one cluster from the first frame with
+// nothing joining it), one line each, for stderr.
+std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
+                                           const kinetic::KineticStatistics& stats,
+                                           const std::vector<persistence::Diagram>& diagrams,
+                                           const std::string& radius_text,
+                                           const std::string& radius_note = "");
 
 } // namespace medusa::cli

@@ -1,7 +1,13 @@
-// A persistence barcode as a standalone SVG: one horizontal bar per pair, grouped by diagram and
-// degree, on the time axis [t0, t_end]; essential bars run to the axis end (forward) or start
-// (reverse) and end in an arrow. max_bars > 0 draws only the max_bars longest bars of each degree of
-// each diagram (the title says so): a large run has tens of thousands, which no viewer shows.
+// Persistence diagrams as standalone SVG pictures, one panel per diagram (cell type and direction)
+// and homology degree, each with its own time axis in MCS:
+//  * barcode: the finite bars, sorted by birth (a class born at MCS b and filled or joined at MCS d is
+//    a bar from b to d); the essential classes (never filled, never joined) are counted in the
+//    panel's title, not drawn. max_bars > 0 draws only the max_bars longest finite bars of a panel
+//    (the title says so): a large run has tens of thousands, which no viewer shows.
+//  * diagram: each finite class as a point (birth, death) above the diagonal, which is drawn; the
+//    farther from the diagonal, the longer the class lived. Essential classes are counted in the title.
+// Reverse diagrams are drawn on the time axis too (born late, die earlier; docs/MATH.md §7.3).
+// Panels and bars carry data-* attributes (type, direction, degree, counts, birth, death) for checks.
 #pragma once
 
 #include "medusa/persistence/diagram.h"
@@ -17,5 +23,8 @@ constexpr std::size_t default_max_bars = 200;
 
 void write_barcode_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams, double t0,
                        double t_end, std::size_t max_bars = 0);
+
+void write_diagram_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams, double t0,
+                       double t_end);
 
 } // namespace medusa::cli

@@ -136,67 +136,61 @@ KineticStatistics run_to_the_input_error(std::uint64_t seed) {
 
 TEST_CASE("simultaneous degenerate failures that cycle through flips are settled by a static repair",
           "[kinetic][degenerate][lattice]") {
-  // Before: "no progress resolving degenerate Delaunay events" (InternalError) in each.
   for (std::uint64_t seed : {1045u, 1084u, 1130u})
     run_to_the_end(seed);
 }
 
 TEST_CASE("a hull flip that would create an edge the triangulation already has is not applied",
           "[kinetic][degenerate][lattice]") {
-  // Before: "facet [0 9 14] would get a third top simplex [0 8 9 14]" (InternalError): on the flat
-  // hull of the lattice the 2-3 flip of a failed hull facet recreated an existing edge.
+  // On the flat hull of the lattice the 2-3 flip of a failed hull facet would recreate an existing
+  // edge, so that facet would get a third top simplex.
   run_to_the_end(1019);
 }
 
 TEST_CASE("a face whose radius is rho enters K when a link vertex leaves its smallest circumsphere",
           "[kinetic][degenerate][lattice]") {
-  // Seed 1126 (2D): cells 29 and 43 move rigidly 5 apart with rho = 2.5 (R = rho throughout slab 2);
-  // at u ~ 0.873 a third cell leaves the edge's smallest circle, so the edge becomes Gabriel and
-  // enters K. The triangle of the three has R = rho at that instant only (a root of even multiplicity
-  // of its radius certificate), which docs/MATH.md §3.9 drops as a non-event. Before: "audit failed in slab
-  // 2 after u ~ 0.873247: ... 1 missing (e.g. [29 43])".
+  // Seed 1126 (2D): cells 29 and 43 move rigidly 5 apart with rho = 2.5 (R = rho throughout slab 2); at u ~
+  // 0.873 a third cell leaves the edge's smallest circle, so the edge becomes Gabriel and enters K. The
+  // triangle of the three has R = rho at that instant only (a root of even multiplicity of its radius
+  // certificate), which docs/MATH.md §3.9 drops as a non-event.
   const KineticStatistics s = run_to_the_end(1126);
   REQUIRE(s.radius_touches > 0);
 }
 
 TEST_CASE("faces whose radius is rho at a frame are settled again there (a radius touch at a frame)",
           "[kinetic][degenerate][lattice]") {
-  // Seed 1157 (3D, rho = 3.5): at frame 4 a tetrahedron's radius reaches rho without crossing it (its
-  // slabs meet there) while a vertex leaves the smallest circumspheres of two of its triangles. Before:
-  // "audit failed in slab 4 after u ~ 0.000000: ... 3 missing (e.g. [14 17])". The run goes on until
-  // frame 5, where two cells of this random walk land on one lattice site: the input error that
-  // ends it, named as such.
+  // Seed 1157 (3D, rho = 3.5): at frame 4 a tetrahedron's radius reaches rho without crossing it (its slabs
+  // meet there) while a vertex leaves the smallest circumspheres of two of its triangles. The run goes on
+  // until frame 5, where two cells of this random walk land on one lattice site: the input error that ends
+  // it, named as such.
   const KineticStatistics s = run_to_the_input_error(1157);
   REQUIRE(s.radius_touches > 0);
 }
 
 TEST_CASE("a 2-3 flip whose new edge is in the triangulation already is not applied",
           "[kinetic][degenerate][lattice]") {
-  // Seed 4018 (3D, 28 cells, rho = 2.4): at frame 1 the new velocities leave the triangulation with
-  // top simplices flat at the frame, so it is not embedded just after it, and a finite 2-3 flip
-  // passing the local crossing tests would create an edge that exists already. Before: "facet [10 17
-  // 19] would get a third top simplex [10 17 19 27]" (InternalError). The frame's batch is now
-  // resolved, and the run ends on the collision check of slab 1, before that batch is reported: cells
-  // 10 and 23 of this random walk meet at t = 150, the input error that ends it, named as such.
+  // Seed 4018 (3D, 28 cells, rho = 2.4): at frame 1 the new velocities leave the triangulation with top
+  // simplices flat at the frame, so it is not embedded just after it, and a finite 2-3 flip passing the local
+  // crossing tests would create an edge that exists already. The frame's batch is resolved, and the run ends
+  // on the collision check of slab 1, before that batch is reported: cells 10 and 23 of this random walk meet
+  // at t = 150, the input error that ends it, named as such.
   run_to_the_input_error(4018);
 }
 
 TEST_CASE("a planar run whose cells cross one line at once never flips a flat triangle",
           "[kinetic][degenerate][lattice]") {
-  // Seed 5142 (2D, 39 cells): at u = 1/2 of slab 0 four cells are on one line, the twin of the
-  // hand-built case in test_kinetic_engine_2d.cpp. Before: "audit failed in slab 0 after
-  // u ~ 0.512980: facet [-1 38] is not locally Delaunay".
+  // Seed 5142 (2D, 39 cells): at u = 1/2 of slab 0 four cells are on one line, the twin of the hand-built
+  // case in test_kinetic_engine_2d.cpp.
   run_to_the_end(5142);
 }
 
 TEST_CASE("two hull facets that stay in one plane are a valid hull only side by side, not folded",
           "[kinetic][degenerate][lattice]") {
-  // Seed 6304 (3D, 30 cells, box 4): cells 6, 8, 16 and 17 stay in one plane through slab 0, and
-  // cell 11 crosses it at u = 1/sqrt(2), where all five are on the hull. The hull flip at that
-  // instant left hull facets [6 8 16] and [8 16 17] folded onto each other across their common edge,
-  // and the certificate there vanishes identically, which counted as valid. Before: "audit failed in
-  // slab 0 after u ~ 0.707107: vertex 11 lies outside the hull facet [6 8 16]" (the volumes differed
-  // from CGAL's too). The run ends where two cells of this walk land on one lattice site.
+  // Seed 6304 (3D, 30 cells, box 4): cells 6, 8, 16 and 17 stay in one plane through slab 0, and cell 11
+  // crosses it at u = 1/sqrt(2), where all five are on the hull. The hull flip at that instant left hull
+  // facets [6 8 16] and [8 16 17] folded onto each other across their common edge, and the certificate there
+  // vanishes identically, which alone would count as valid. The run ends where two cells of this walk land on
+  // one lattice site.
   run_to_the_input_error(6304);
 }
 
@@ -204,11 +198,10 @@ TEST_CASE("a hull cell passing through the plane of its hull neighbours leaves n
           "[kinetic][degenerate][lattice]") {
   // Seed 31284 (3D, 40 cells): at u = 2/3 of slab 0 cell 10, the apex of four hull facets over the
   // quadrilateral 5 15 28 24, passes through the plane of those four cells, which are coplanar at that
-  // instant only. The hull flip at ridge [5 10] made facets [5 15 24] and [10 15 24]; the latter
-  // lies folded onto [10 15 28] and [10 24 28] at 2/3, and the certificates of those ridges,
-  // orientation(10, 15, 24, 28) = -(u - 2)(3u - 2)^2, touch zero there and hold just after. Every
-  // certificate held, and 28 lay outside the hull facet [5 15 24]. Before: "audit failed in slab 0
-  // after u ~ 0.677720: vertex 28 lies outside the hull facet [5 15 24]".
+  // instant only. The hull flip at ridge [5 10] made facets [5 15 24] and [10 15 24]; the latter lies folded
+  // onto [10 15 28] and [10 24 28] at 2/3, and the certificates of those ridges, orientation(10, 15, 24, 28)
+  // = -(u - 2)(3u - 2)^2, touch zero there and hold just after. Every certificate held, and 28 lay outside
+  // the hull facet [5 15 24].
   const KineticStatistics s = run_to_the_end(31284);
   REQUIRE(s.hull_ridges_folded_at_now > 0);
 }
@@ -228,15 +221,13 @@ TEST_CASE("coplanar hull facets that fold onto each other inside a slab are flip
 
 TEST_CASE("a face of radius rho leaves K when a vertex enters its sphere while another simplex touches rho",
           "[kinetic][degenerate][lattice]") {
-  // Hull-box seed 8 (3D, 23 cells, rho = 1.5): cells 10, 12 and 14 stand still through slab 0, a
-  // right triangle whose smallest circumsphere S (centre (1, 2.5, 1), radius 1.5 = rho) it keeps, so
-  // it is short with R = rho throughout and in K while Gabriel. Cell 8 enters S at u = 1/2, where the
-  // tetrahedron [8 10 12 14] and its facet [8 10 14] are inscribed in S: both are long and touch rho
-  // there. Only the triangle is frontier and carries a certificate, and its faces did not include
-  // [10 12 14], which stayed in K (with [10 14]). Before: "audit failed in slab 0 after u ~ 0.500000:
-  // alpha complex differs from CGAL's: 2 extra (e.g. [10 14])". Seed 129 (35 cells): the same at
-  // u ~ 0.78 with a face entering K ("1 missing (e.g. [8 10 25])"), seed 158 (27 cells) at u ~ 0.59
-  // of slab 1 ("2 extra (e.g. [21 26])").
+  // Hull-box seed 8 (3D, 23 cells, rho = 1.5): cells 10, 12 and 14 stand still through slab 0, a right
+  // triangle whose smallest circumsphere S (centre (1, 2.5, 1), radius 1.5 = rho) it keeps, so it is short
+  // with R = rho throughout and in K while Gabriel. Cell 8 enters S at u = 1/2, where the tetrahedron [8 10
+  // 12 14] and its facet [8 10 14] are inscribed in S: both are long and touch rho there. Only the triangle
+  // is frontier and carries a certificate, and its faces did not include [10 12 14], which stayed in K (with
+  // [10 14]). Seed 129 (35 cells): the same at u ~ 0.78 with a face entering K ("1 missing (e.g. [8 10
+  // 25])"), seed 158 (27 cells) at u ~ 0.59 of slab 1 ("2 extra (e.g. [21 26])").
   for (std::uint64_t seed : {8, 129, 158}) {
     const KineticStatistics s = run_to_the_end(seed, 3);
     REQUIRE(s.radius_touches > 0);
@@ -245,18 +236,12 @@ TEST_CASE("a face of radius rho leaves K when a vertex enters its sphere while a
 
 TEST_CASE("a batch that finds a hull ridge folded at its time is repaired before any further flip",
           "[kinetic][degenerate][lattice]") {
-  // Hull-box seeds 211, 283 and 319 (3D): a hull flip at an instant when five or six hull cells are
-  // coplanar (three of them on one line for the whole slab in 211) leaves a ridge folded at now.
-  // Marking it failed and resolving by elementary flips, chosen on the local certificates of a
-  // triangulation that is not embedded just after now, left a hull facet with a cell outside it.
-  // Before (failure flagged, flips first): "audit failed in slab 2 after u ~ 0.732051: vertex 0 lies
-  // outside the hull facet [1 4 21]" (211), "... slab 3 after u ~ 0.500000: vertex 0 lies outside the
-  // hull facet [3 4 10]" (283), "... slab 2 after u ~ 0.333333: vertex 8 lies outside the hull facet
-  // [2 5 7]" (319). Seed 233 failed before the check at now existed: "audit failed in slab 1 after
-  // u ~ 0.000000: vertex 2 lies outside the hull facet [0 6 9]" (at frame 1).
-  // Since hull flips must not take away a hull facet over a simplex flat at now (seed 14053, below),
-  // these four batches are settled before the fold is found; hull-box seed 49 and lattice seed 20065
-  // still find it.
+  // Hull-box seeds 211, 283 and 319 (3D): a hull flip at an instant when five or six hull cells are coplanar
+  // (three of them on one line for the whole slab in 211) leaves a ridge folded at now. Elementary flips,
+  // chosen on the local certificates of a triangulation that is not embedded just after now, would leave a
+  // hull facet with a cell outside it. Seed 233 has such a fold at frame 1. Since hull flips must not take
+  // away a hull facet over a simplex flat at now (seed 14053, below), these four batches are settled before
+  // the fold is found; hull-box seed 49 and lattice seed 20065 still find it.
   for (std::uint64_t seed : {211, 283, 319, 233})
     run_to_the_end(seed, 3);
   REQUIRE(run_to_the_end(49, 3).hull_ridges_folded_at_now > 0);
@@ -265,50 +250,43 @@ TEST_CASE("a batch that finds a hull ridge folded at its time is repaired before
 
 TEST_CASE("a top simplex of a cospherical group that flattens inside a slab is repaired then",
           "[kinetic][degenerate][lattice]") {
-  // Hull-box seed 910 (3D, 19 cells): cells 3, 6, 10, 17, 4 and 16 stay on one (moving) sphere
-  // through slab 1, so the in-sphere certificates between them vanish identically, and tetrahedron
-  // [3 6 10 17], orientation u (4u - 3), flattens at u = 3/4 while cocircular: its circumsphere stays
-  // bounded and no point enters it. Before: "audit failed in slab 1 after u ~ 0.750294: top simplex
-  // [3 6 10 17] is inside out or flat at the audit time". Now those facets carry the orientations of
-  // their two top simplices as their certificate, which fails at 3/4.
+  // Hull-box seed 910 (3D, 19 cells): cells 3, 6, 10, 17, 4 and 16 stay on one (moving) sphere through slab
+  // 1, so the in-sphere certificates between them vanish identically, and tetrahedron [3 6 10 17],
+  // orientation u (4u - 3), flattens at u = 3/4 while cocircular: its circumsphere stays bounded and no point
+  // enters it. Those facets carry the orientations of their two top simplices as their certificate, which
+  // fails at 3/4.
   const KineticStatistics s = run_to_the_end(910, 3);
   REQUIRE(s.cospherical_cells_flattening > 0);
 }
 
 TEST_CASE("a hull flip whose new top simplex only touches flatness at its time is not made",
           "[kinetic][degenerate][lattice]") {
-  // Hull-box seed 11018 (3D, 13 cells; vertex ids as in the audit's message): at u = 1/2 of slab 2,
-  // vertex 10 lies where segments [1 7] and [8 12] cross, and vertices 1 and 7 pass through the hull
-  // face x + y = 3 of vertices 3, 8, 10 and 12. After two hull flips the third pasted tetrahedron
-  // [1 8 10 12], orientation -(2u - 1)^2, onto a ridge that was reflex on both sides of 1/2; the
-  // tetrahedra round hull edge [10 12] then summed to 2.07 pi with every certificate holding.
-  // Before: "audit failed in slab 2 after u ~ 0.500000: vertex 7 lies outside the hull facet
-  // [1 8 12]".
+  // Hull-box seed 11018 (3D, 13 cells; vertex ids as in the audit's message): at u = 1/2 of slab 2, vertex 10
+  // lies where segments [1 7] and [8 12] cross, and vertices 1 and 7 pass through the hull face x + y = 3 of
+  // vertices 3, 8, 10 and 12. After two hull flips the third pasted tetrahedron [1 8 10 12], orientation -(2u
+  // - 1)^2, onto a ridge that was reflex on both sides of 1/2; the tetrahedra round hull edge [10 12] then
+  // summed to 2.07 pi with every certificate holding.
   const KineticStatistics s = run_to_the_end(11018, 3);
   REQUIRE(s.hull_flips_refused_touching > 0);
 }
 
 TEST_CASE("a top simplex that flattens at a frame and turns inside out there is repaired at the frame",
           "[kinetic][degenerate][lattice]") {
-  // Seed 6265 (3D, 25 cells): cells 2, 6, 11 and 21 reach the hull plane z = 11 together at frame 3,
-  // and their tetrahedron turns inside out in slab 3 (orientation 4u (u^2 - 3u + 3) there, recorded
-  // negative). Its hull facet's certificate failed, but the first flippable failure, a hull ridge next
-  // to it, took that facet away, and every certificate left reading the stale orientation passed.
-  // Before: "audit failed in slab 3 after u ~ 0.000000: top simplex [2 6 11 21] is inside out or flat
-  // at the audit time".
+  // Seed 6265 (3D, 25 cells): cells 2, 6, 11 and 21 reach the hull plane z = 11 together at frame 3, and
+  // their tetrahedron turns inside out in slab 3 (orientation 4u (u^2 - 3u + 3) there, recorded negative).
+  // Its hull facet's certificate failed, but the first flippable failure, a hull ridge next to it, took that
+  // facet away, and every certificate left reading the stale orientation passed.
   const KineticStatistics s = run_to_the_end(6265);
   REQUIRE(s.frames_repaired_for_flat_simplices > 0);
 }
 
 TEST_CASE("a repair at an algebraic time keeps every top simplex oriented as just after that time",
           "[kinetic][degenerate][lattice]") {
-  // Seed 20232 (2D, 46 cells): at u = 2/3 of slab 0 cells 19, 21, 25 and 36 are on one line, a
-  // batch that ends in a static repair at an isolated (not exactly known) time. The repair took Del
-  // at u = 3/4, the rational before the next queued event; but cell 25 crosses the line of 19 and
-  // 32 at u ~ 0.71, so triangle [19 25 32] of Del(3/4) lay outside the hull edge [19 32] just after
-  // 2/3, with every local certificate valid. Before: "audit failed in slab 0 after u ~ 0.666667:
-  // vertex 1 lies outside the hull facet [19 32]" (the volumes differed from CGAL's too).
-  // Since hull flips must not take away a hull facet over a simplex flat at now (seed 14053, below),
+  // Seed 20232 (2D, 46 cells): at u = 2/3 of slab 0 cells 19, 21, 25 and 36 are on one line, a batch that
+  // ends in a static repair at an isolated (not exactly known) time. The repair took Del at u = 3/4, the
+  // rational before the next queued event; but cell 25 crosses the line of 19 and 32 at u ~ 0.71, so triangle
+  // [19 25 32] of Del(3/4) lay outside the hull edge [19 32] just after 2/3, with every local certificate
+  // valid. Since hull flips must not take away a hull facet over a simplex flat at now (seed 14053, below),
   // this batch ends in flips; planar hull-box seed 434 still repairs at an algebraic time.
   run_to_the_end(20232);
   REQUIRE(run_to_the_end(434, 2).repairs_at_algebraic_times > 0);
@@ -316,38 +294,33 @@ TEST_CASE("a repair at an algebraic time keeps every top simplex oriented as jus
 
 TEST_CASE("a hull flip never takes away a hull facet whose top simplex below is flat at its time",
           "[kinetic][degenerate][lattice]") {
-  // Hull-box seed 14053 (3D, 13 cells; vertex ids as in the audit's message): at u = 1/2 of slab 1,
-  // hull vertices 2, 4 and 12 are on one line, and [2 4 10 12], the tetrahedron below hull facet
-  // [2 4 12], flattens and turns inside out. A hull flip on a ridge of [2 4 12] in the same batch
-  // added [2 4 8 12] and made [2 4 12] interior first; every certificate then read the stale
-  // orientation. Before: "audit failed in slab 1 after u ~ 0.500000: top simplex [2 4 10 12] is
-  // inside out or flat at the audit time".
+  // Hull-box seed 14053 (3D, 13 cells; vertex ids as in the audit's message): at u = 1/2 of slab 1, hull
+  // vertices 2, 4 and 12 are on one line, and [2 4 10 12], the tetrahedron below hull facet [2 4 12],
+  // flattens and turns inside out. A hull flip on a ridge of [2 4 12] in the same batch added [2 4 8 12] and
+  // made [2 4 12] interior first; every certificate then read the stale orientation.
   run_to_the_end(14053, 3);
 }
 
 TEST_CASE("a static repair rebuilds the certificates of the hull ridges over the top simplices it adds",
           "[kinetic][degenerate][lattice]") {
-  // Hull-box seed 15582 (3D, 19 cells; vertex ids as in the error message): at frame 2, cells 4, 10,
-  // 16 and 18 lie on the hull line x = 4, y = 0, and [4 10 13 18], the tetrahedron below hull facet
-  // [4 10 18], is inside out just after the frame, so the frame repairs. The repair put [4 8 10 18]
-  // below that facet but left the ridge [-1 4 18] its certificate, built on the old tetrahedron's
-  // stale orientation: -u^2 where the ridge is convex (+u^2). Before: "no progress resolving
-  // degenerate Delaunay events in slab 2 at u ~ 0" after four repairs.
+  // Hull-box seed 15582 (3D, 19 cells; vertex ids as in the error message): at frame 2, cells 4, 10, 16 and
+  // 18 lie on the hull line x = 4, y = 0, and [4 10 13 18], the tetrahedron below hull facet [4 10 18], is
+  // inside out just after the frame, so the frame repairs. The repair put [4 8 10 18] below that facet but
+  // left the ridge [-1 4 18] its certificate, built on the old tetrahedron's stale orientation: -u^2 where
+  // the ridge is convex (+u^2).
   const KineticStatistics s = run_to_the_end(15582, 3);
   REQUIRE(s.frames_repaired_for_flat_simplices > 0);
 }
 
 TEST_CASE("a hull cell crossing a hull edge of its own hull facet makes the batch repair",
           "[kinetic][degenerate][lattice]") {
-  // Hull-box seed 18304 (3D, 19 cells; vertex ids as in the error message). In slab 1, cells 4, 11
-  // and 14 stay at height z = 4 - u and 5 and 12 rise as z = 3 + u; at u = 1/2 cell 14 is the middle
-  // of cells 4 and 11, and all five are coplanar on top of the hull. Just before, 14 is the apex of
-  // the hull facets [4 11 14], [4 5 14], [5 11 14]; just after, it lies under [4 11 12], across the
-  // hull edge [4 11]. The tetrahedron [4 11 12 14] below facet [4 11 14] has orientation
-  // c (2u - 1)^2: it flattens and keeps its sign while the facet turns over and folds onto [4 11 12],
-  // and the ridges round 14 read the orientation of 4, 5, 11, 14, also c' (2u - 1)^2. Every
-  // certificate touched zero and held. Before: "audit failed in slab 1 after u ~ 0.500000: vertex 12
-  // lies outside the hull facet [4 5 14]".
+  // Hull-box seed 18304 (3D, 19 cells; vertex ids as in the error message). In slab 1, cells 4, 11 and 14
+  // stay at height z = 4 - u and 5 and 12 rise as z = 3 + u; at u = 1/2 cell 14 is the middle of cells 4 and
+  // 11, and all five are coplanar on top of the hull. Just before, 14 is the apex of the hull facets [4 11
+  // 14], [4 5 14], [5 11 14]; just after, it lies under [4 11 12], across the hull edge [4 11]. The
+  // tetrahedron [4 11 12 14] below facet [4 11 14] has orientation c (2u - 1)^2: it flattens and keeps its
+  // sign while the facet turns over and folds onto [4 11 12], and the ridges round 14 read the orientation of
+  // 4, 5, 11, 14, also c' (2u - 1)^2. Every certificate touched zero and held.
   const KineticStatistics s = run_to_the_end(18304, 3);
   REQUIRE(s.hull_touches_repaired > 0);
   REQUIRE(s.repairs_at_algebraic_times > 0);
@@ -355,10 +328,9 @@ TEST_CASE("a hull cell crossing a hull edge of its own hull facet makes the batc
 
 TEST_CASE("a hull simplex flat at a frame makes the frame repair even when it keeps its orientation",
           "[kinetic][degenerate][lattice]") {
-  // The same motion as hull-box seed 18304 above, with a frame cut into the middle of slab 1: the
-  // instant u = 1/2 where cell 14 crosses the hull edge [4 11] is now a frame, and [4 11 12 14], flat
-  // there and positive on both sides, hides the fold. Before: "audit failed in slab 2 after u ~ 0:
-  // vertex 12 lies outside the hull facet [4 5 14]".
+  // The same motion as hull-box seed 18304 above, with a frame cut into the middle of slab 1: the instant u =
+  // 1/2 where cell 14 crosses the hull edge [4 11] is now a frame, and [4 11 12 14], flat there and positive
+  // on both sides, hides the fold.
   const KineticStatistics s = run_to_the_end(18304, 3, true);
   REQUIRE(s.frames_repaired_for_flat_simplices > 0);
 }

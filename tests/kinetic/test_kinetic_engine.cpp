@@ -191,7 +191,7 @@ TEST_CASE("a CC3D-sized lattice settles every certificate without the exact poly
   REQUIRE(s.start_zero_settled > 0);
   REQUIRE(s.flips23 + s.flips32 > 0);
   // Left to the exact polynomial: those vanishing to second order at t0 (three collinear hull points
-  // in an orientation), within the issue's 1% (docs/MATH.md §3.8).
+  // in an orientation), at most 1% (docs/MATH.md §3.8).
   REQUIRE(s.exact_settled * 100 <= s.certificates_built);
   REQUIRE(s.audits_compared_with_cgal > 0);
   REQUIRE(obs.mismatches == 0);
@@ -586,7 +586,7 @@ TEST_CASE("a hull cell that enters the hull facet at a frame and goes on inward 
 }
 
 TEST_CASE("a cell present only at the first frame is deleted at t0", "[kinetic][engine]") {
-  // Found by the kinetic-medusa integration tests: such a cell used to stay in K for the whole run.
+  // Its deletion at t0 must take it out of K at once, not leave it there for the whole run.
   Trajectories t = testing::random_walk(21, 20, 3, static_cast<int>(2000 * std::cbrt(20.0)), 600);
   t.cells[0].positions.resize(1);
   KineticAlphaComplex engine(t, with_radius(1200 * 1200));
@@ -600,8 +600,8 @@ TEST_CASE("a cell present only at the first frame is deleted at t0", "[kinetic][
 }
 
 TEST_CASE("a cell present at one inner frame only is inserted and deleted there", "[kinetic][engine]") {
-  // Found in review: it used to be inserted and never deleted, frozen where it was for the rest of
-  // the run. Here it is present at frame 1 of 0..3 only.
+  // It must also be deleted there, not stay frozen where it was for the rest of the run. Here it is
+  // present at frame 1 of 0..3 only.
   Trajectories t = testing::random_walk(21, 20, 4, static_cast<int>(2000 * std::cbrt(20.0)), 600);
   Trajectory& once = t.cells[0];
   once.first_frame = 1;

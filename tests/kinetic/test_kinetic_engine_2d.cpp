@@ -308,10 +308,10 @@ TEST_CASE("planar: a cell leaving the hull through an edge makes a hull flip whe
 
 TEST_CASE("planar: a cell that reaches a hull edge at a frame and stays on it leaves its flat triangle there",
           "[kinetic][engine][2d][degenerate]") {
-  // The planar twin of the 3D case: d = (5,3) - u (0,3) reaches the hull edge ab (y = 0) at frame 1
-  // (t = 100) and stays there, so triangle abd would be flat all through slab 1. The frame batch is
-  // one static repair that removes it (d joins the hull), and then nothing happens. Before: seed 31
-  // of "cells moving along shared lines" kept such a triangle through a whole slab.
+  // The planar twin of the 3D case: d = (5,3) - u (0,3) reaches the hull edge ab (y = 0) at frame 1 (t = 100)
+  // and stays there, so triangle abd would be flat all through slab 1. The frame batch is one static repair
+  // that removes it (d joins the hull), and then nothing happens. Seed 31 of "cells moving along shared
+  // lines" has such a triangle.
   Trajectories t = planar({0, 100, 200});
   still(t, 1, 0, 0);
   still(t, 2, 10, 0);
@@ -388,14 +388,12 @@ TEST_CASE("planar: three cells passing through one line keep their triangle",
 
 TEST_CASE("planar: four cells crossing one line at once enter the hull without flipping flat triangles",
           "[kinetic][engine][2d][degenerate]") {
-  // From stress seed 5142: a = (0,1) + u (2,-2), b = (2,5) + u (-2,1), c = (1,21) + u (0,-1) and
-  // d = (0,24) + u (2,1) are all on the line x = 1 at u = 1/2, t = 50, with two still cells on the
-  // right. Before, the left hull edge is ad (a and d have x < 1 < x_b, x_c = 1); after, a and d have
-  // x > 1 and x_b < 1, so the left hull is a b c d: b and c enter the hull, two hull flips. The
-  // in-circle certificate of an edge between two triangles of the four vanishes there too, with both
-  // triangles flat; its 2-2 flip passes the local test but leaves the triangulation inside out at
-  // the hull just after. Before: "audit failed in slab 0 after u ~ 0.500000: facet [-1 3] is not
-  // locally Delaunay".
+  // From stress seed 5142: a = (0,1) + u (2,-2), b = (2,5) + u (-2,1), c = (1,21) + u (0,-1) and d = (0,24) +
+  // u (2,1) are all on the line x = 1 at u = 1/2, t = 50, with two still cells on the right. Before, the left
+  // hull edge is ad (a and d have x < 1 < x_b, x_c = 1); after, a and d have x > 1 and x_b < 1, so the left
+  // hull is a b c d: b and c enter the hull, two hull flips. The in-circle certificate of an edge between two
+  // triangles of the four vanishes there too, with both triangles flat; its 2-2 flip passes the local test
+  // but leaves the triangulation inside out at the hull just after.
   Trajectories t = planar({0, 100});
   moving(t, 1, {{0, 1, 0}, {2, -1, 0}});
   moving(t, 2, {{2, 5, 0}, {0, 6, 0}});

@@ -1,16 +1,9 @@
 // Forward against reverse on a time-symmetric run (frames A B C B A): the reverse diagram is the
 // forward diagram mirrored by t -> t_0 + t_end - t (docs/MATH.md §7.2, §7.3).
 //
-// Why it must hold exactly: the positions satisfy p(t) = p(t_0 + t_end - t), so every certificate of
-// slab k at parameter u is the certificate of slab K-1-k at 1-u, the exact event times are mirrored,
-// and with batch 0 at t_0 and the end batch N at t_end, batch i mirrors batch N - i. K(t) = K(mirror t)
-// at generic times, so the cells (maximal lifetimes, flip 4-simplices) are mirrored, birth batch <->
-// N - death batch. The reverse filtration (superlevel sets of death) of M is then the forward
-// filtration of the mirrored medusa, which is M. The off-diagonal part of a diagram depends only on
-// the filtration function (batch index), not on how ties are broken inside a batch, so the
-// non-zero-length pairs and the essential classes must agree exactly as batch indices. Zero-length
-// pairs depend on the tie-breaking (rank, dimension, vertices) and are not compared. The double
-// times are independent approximations of mirrored algebraic times, so they agree only up to rounding.
+// It holds exactly for the pairs of non-zero length and the essential classes, as batch indices;
+// zero-length pairs depend on tie-breaking inside a batch and double times agree only up to
+// rounding (docs/MATH.md §7.9).
 #include "../kinetic/kinetic_test_support.h"
 #include "kinetic_run.h"
 #include "medusa/medusa/store_reader.h"

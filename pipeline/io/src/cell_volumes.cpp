@@ -12,7 +12,8 @@ double median_cell_volume(const CellVolumes& volumes) {
   for (const auto& v : volumes)
     all.insert(all.end(), v.begin(), v.end());
   if (all.empty())
-    throw InputError("no cell volumes available (the source has no volume column)");
+    throw InputError("no cell volumes available for --radius auto (the source has no volume column): give "
+                     "--radius in lattice units");
   const std::size_t mid = all.size() / 2;
   std::nth_element(all.begin(), all.begin() + mid, all.end());
   const double upper = double(all[mid]);

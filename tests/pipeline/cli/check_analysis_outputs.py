@@ -72,8 +72,8 @@ def check_compare(medusa, work, stores):
     prefix = os.path.join(work, "cmp_t1")
     # Type 1 (Condensing), H0, forward: the runs have different numbers of type-1 clusters at the end,
     # so with essential classes counted some distances are inf (docs/MATH.md §7.7) and equal counts are finite.
-    result = run([medusa, "compare", *stores, "--type", "1", "--dim", "0", "--filtration", "forward", "-o", prefix],
-                 work)
+    result = run([medusa, "compare", *stores, "--type", "1", "--dim", "0", "--filtration", "forward", "--essential",
+                  "-o", prefix], work)
     names, values = read_matrix(prefix + ".distances.csv")
     check_matrix(names, values, stores)
     counts = essential_counts(result.stdout)
@@ -136,8 +136,15 @@ def check_curves(medusa, work, store, cells):
         times = [float(r["time"]) for r in rows if r["type"] == label]
         assert times == sorted(times), f"type {label}: times not increasing"
         assert times[-1] == max(frames), f"type {label}: last sample at {times[-1]}"
+    # The SVG: one plot per curve (b0-b2, f0-f3) of each type, each with the range of its own column.
     root = ElementTree.parse(prefix + ".curves.svg").getroot()
-    assert root.tag.endswith("svg")
+    curves = [g for g in root.iter("{http://www.w3.org/2000/svg}g") if g.get("class") == "curve"]
+    labels = list(dict.fromkeys(r["type"] for r in rows))
+    expected = [(label, column) for label in labels for column in ("b0", "b1", "b2", "f0", "f1", "f2", "f3")]
+    assert [g.get("data-name") for g in curves] == [c for _, c in expected], [g.get("data-name") for g in curves]
+    for g, (label, column) in zip(curves, expected):
+        top = max(int(r[column]) for r in rows if r["type"] == label)
+        assert float(g.get("data-max")) == top, (label, column, g.get("data-max"), top)
 
     # --frames-only: one row per frame and type, at the frame times; the last frame reports K(t_end-),
     # the last row of the full curves.
@@ -271,42 +278,63 @@ def check_at(medusa, work, store, cells_csv):
     assert sorted(tuple(sorted(ids[v] for v in c[1:])) for c in cells) == sorted(mid)
 
 
+def panels_of(root):
+    """The panels of a barcode or diagram SVG: (type, direction, degree) -> (attributes, [(birth, death)])."""
+    ns = "{http://www.w3.org/2000/svg}"
+    panels = {}
+    for g in root.iter(ns + "g"):
+        if g.get("class") != "panel":
+            continue
+        key = (g.get("data-type"), g.get("data-direction"), int(g.get("data-degree")))
+        marks = [(float(e.get("data-birth")), float(e.get("data-death")))
+                 for e in g if e.get("class") in ("bar", "point")]
+        assert key not in panels, f"panel {key} twice"
+        panels[key] = (g.attrib, marks, g)
+    return panels
+
+
 def check_barcode(medusa, work, store, max_bars=5):
-    """`barcode --format svg --max-bars N` draws, per diagram and degree, the N longest bars of the
-    CSV export (essential ones first): their count and their lengths on the time axis."""
+    """`barcode --format svg --max-bars N` draws one panel per diagram and degree H0-H2 with its own time
+    axis: the N longest finite bars of the CSV export, sorted by birth, and counts the essential classes
+    in the title; `--format diagram-svg` draws every finite pair as a point, with the diagonal."""
     pairs = {}
     for row in csv.DictReader(run([medusa, "barcode", store, "--format", "csv"], work).stdout.splitlines()):
-        pairs.setdefault((row["type"], row["direction"]), {}).setdefault(int(row["dimension"]), []).append(
+        pairs.setdefault((row["type"], row["direction"], int(row["dimension"])), []).append(
             (float(row["birth"]), float(row["death"])))
-    svg = run([medusa, "barcode", store, "--format", "svg", "--max-bars", str(max_bars)], work).stdout
-    root = ElementTree.fromstring(svg)
     ns = "{http://www.w3.org/2000/svg}"
-    axis = [float(re.fullmatch(r"MCS (\S+)", t.text).group(1)) for t in root.iter(ns + "text") if t.text.startswith("MCS")]
-    t0, t_end = axis
-    colours = {"#1f77b4": 0, "#d62728": 1, "#2ca02c": 2}
-
-    def x_of(t):
-        t = t_end if t == math.inf else t0 if t == -math.inf else t
-        return 150 + 630 * (min(max(t, t0), t_end) - t0) / (t_end - t0)
-
-    sections, truncated = [], 0
-    for element in root:
-        if element.tag == ns + "text" and element.text.startswith("type "):
-            m = re.match(r"type (\S+), (forward|reverse) \((\d+) bars", element.text)
-            sections.append(((m.group(1), m.group(2)), int(m.group(3)), {}))
-            truncated += f"the {max_bars} longest of each degree shown" in element.text
-        elif element.tag == ns + "line" and element.get("stroke") in colours:
-            length = abs(float(element.get("x2")) - float(element.get("x1")))
-            sections[-1][2].setdefault(colours[element.get("stroke")], []).append(round(length, 2))
-    assert [s[0] for s in sections] == list(pairs), (list(pairs), [s[0] for s in sections])
-    for key, total, drawn in sections:
-        assert total == sum(len(v) for v in pairs[key].values()), key
-        for dim, bars in pairs[key].items():
-            longest = sorted(bars, key=lambda b: (not math.isinf(b[1]), -abs(b[1] - b[0])))[:max_bars]
-            expected = sorted(round(abs(x_of(d) - x_of(b)), 2) for b, d in longest)
-            assert sorted(drawn.get(dim, [])) == expected, (key, dim, sorted(drawn.get(dim, [])), expected)
-        print(key, {d: len(v) for d, v in drawn.items()}, "drawn of", {d: len(v) for d, v in pairs[key].items()})
-    assert truncated > 0, "no diagram was long enough to be cut: the check did not test the cap"
+    for style in ("svg", "diagram-svg"):
+        svg = run([medusa, "barcode", store, "--format", style, "--max-bars", str(max_bars)], work).stdout
+        root = ElementTree.fromstring(svg)
+        legend = [t.text for t in root.iter(ns + "text")]
+        for word in ("H0 clusters", "H1 loops", "H2 cavities"):
+            assert word in legend, f"{style}: legend without {word}"
+        panels = panels_of(root)
+        diagrams = {(t, d) for t, d, k in pairs}
+        assert {(t, d) for t, d, k in panels} == diagrams, (sorted(panels), sorted(diagrams))
+        truncated = 0
+        for (t, d, k), (attributes, marks, g) in panels.items():
+            all_pairs = pairs.get((t, d, k), [])
+            finite = [(b, e) for b, e in all_pairs if not math.isinf(e)]
+            essential = len(all_pairs) - len(finite)
+            assert int(attributes["data-finite"]) == len(finite), (style, t, d, k)
+            assert int(attributes["data-essential"]) == essential, (style, t, d, k)
+            title = " ".join(e.text for e in g if e.tag == ns + "text" and e.text)
+            assert f"{essential} " in title, (style, t, d, k, title)
+            lo, hi = float(attributes["data-t0"]), float(attributes["data-t1"])
+            for b, e in marks:
+                assert lo - 1e-9 <= min(b, e) and max(b, e) <= hi + 1e-9, (style, t, d, k, b, e, lo, hi)
+            if style == "svg":
+                expected = sorted(finite, key=lambda p: -abs(p[1] - p[0]))[:max_bars]
+                assert sorted(abs(e - b) for b, e in marks) == sorted(abs(e - b) for b, e in expected), (t, d, k)
+                starts = [min(b, e) for b, e in marks]
+                assert starts == sorted(starts), f"{t} {d} H{k}: bars not sorted by birth"
+                truncated += len(finite) > max_bars
+            else:
+                assert sorted(marks) == sorted(finite), (t, d, k)
+                assert any(e.get("class") == "diagonal" for e in g), f"{t} {d} H{k}: no diagonal"
+            print(style, t, d, f"H{k}:", len(marks), "drawn of", len(finite), "finite,", essential, "essential")
+        if style == "svg":
+            assert truncated > 0, "no panel was long enough to be cut: the check did not test the cap"
 
 
 def main():

@@ -102,7 +102,7 @@ def printed_diagrams(medusa, store):
 def main():
     medusa, store = sys.argv[1], sys.argv[2]
     if len(sys.argv) > 3:
-        made = subprocess.run([medusa, "run", sys.argv[3], "--radius", sys.argv[4], "--quiet", "-o", store],
+        made = subprocess.run([medusa, "run", "--force", sys.argv[3], "--radius", sys.argv[4], "--quiet", "-o", store],
                               capture_output=True, text=True)
         assert made.returncode == 0, made.stderr
     cells, types = read_cells(store)

@@ -38,17 +38,17 @@ endfunction()
 
 # The stores: the first 3 frames of examples/sorting_3d, of the non-sorting control and of the second
 # sorting seed (tests/data/cli/README.txt), radius 3. The run writes the CSV of all diagrams too.
-medusa_golden_test(run_small ARGS run ${DATA}/cells_3frames.csv.gz -o small.h5 --radius 3 --quiet
+medusa_golden_test(run_small ARGS run --force ${DATA}/cells_3frames.csv.gz -o small.h5 --radius 3 --quiet
                    STDOUT run_small.txt FILES small.diagrams.csv=barcode_all.csv SETUP golden_small_store)
 # The store side runs on the engine's thread with --threads 1 and on a thread of its own otherwise
 # (AsyncObserver): both give the same diagrams.
 foreach(threads 1 2)
-  medusa_golden_test(run_small_on_${threads}_threads ARGS run ${DATA}/cells_3frames.csv.gz -o small_${threads}_threads.h5
+  medusa_golden_test(run_small_on_${threads}_threads ARGS run --force ${DATA}/cells_3frames.csv.gz -o small_${threads}_threads.h5
                      --radius 3 --quiet --threads ${threads} FILES small_${threads}_threads.diagrams.csv=barcode_all.csv
                      IGNORE_STDOUT)
 endforeach()
 foreach(run nosorting_3d sorting_3d_seed2)
-  medusa_golden_test(run_${run} ARGS run ${DATA}/${run}_3frames.csv.gz -o ${run}_3frames.h5 --radius 3 --quiet
+  medusa_golden_test(run_${run} ARGS run --force ${DATA}/${run}_3frames.csv.gz -o ${run}_3frames.h5 --radius 3 --quiet
                      STDOUT run_${run}.txt SETUP golden_compare_stores)
 endforeach()
 
@@ -82,7 +82,7 @@ medusa_golden_test(at_vtk_type1 ARGS at small.h5 --time 50.5 --type 1 -o at_type
 
 set(stores small.h5 nosorting_3d_3frames.h5 sorting_3d_seed2_3frames.h5)
 set(compared REQUIRES golden_small_store golden_compare_stores)
-medusa_golden_test(compare_h0 ARGS compare ${stores} -o compare_h0 STDOUT compare_h0.txt
+medusa_golden_test(compare_h0 ARGS compare ${stores} --type all --dim 0 --essential -o compare_h0 STDOUT compare_h0.txt
                    FILES compare_h0.distances.csv=compare_h0.distances.csv
                          compare_h0.heatmap.svg=compare_h0.heatmap.svg
                          compare_h0.dendrogram.svg=compare_h0.dendrogram.svg ${compared})
@@ -94,16 +94,17 @@ medusa_golden_test(compare_type1_h1_finite
                          compare_type1_h1.dendrogram.svg=compare_type1_h1.dendrogram.svg ${compared})
 
 medusa_golden_test(help ARGS --help STDOUT help.txt)
-foreach(sub run info diagrams barcode compare curves at)
+# `medusa` alone prints the same help, exit 0.
+medusa_golden_test(no_subcommand STDOUT help.txt)
+foreach(sub run info diagrams barcode compare curves at report sweep)
   medusa_golden_test(${sub}_help ARGS ${sub} --help STDOUT help_${sub}.txt)
 endforeach()
 
 # Errors: one line on stderr and the exit code of the README (2 command line, 3 input, 5 store).
-medusa_golden_test(error_no_subcommand CODE 2 STDERR error_no_subcommand.txt)
 medusa_golden_test(error_unknown_option ARGS run --no-such-option CODE 2 STDERR error_unknown_option.txt)
-medusa_golden_test(error_missing_input ARGS run ${DATA}/no_such_run.csv.gz -o missing.h5 --radius 3
+medusa_golden_test(error_missing_input ARGS run --force ${DATA}/no_such_run.csv.gz -o missing.h5 --radius 3
                    CODE 3 STDERR error_missing_input.txt)
-medusa_golden_test(error_malformed_input ARGS run ${DATA}/malformed.csv -o malformed.h5 --radius 3
+medusa_golden_test(error_malformed_input ARGS run --force ${DATA}/malformed.csv -o malformed.h5 --radius 3
                    CODE 3 STDERR error_malformed_input.txt)
 medusa_golden_test(error_missing_store ARGS info no_such_store.h5 CODE 5 STDERR error_missing_store.txt)
 medusa_golden_test(error_dim_out_of_range ARGS diagrams small.h5 --dim 7 CODE 2

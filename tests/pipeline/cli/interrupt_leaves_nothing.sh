@@ -1,15 +1,25 @@
 #!/bin/sh
-# SIGINT during `medusa run` (README): exit code 130, one line on stderr, and no output file or
-# temporary file left in the working folder. Usage: interrupt_leaves_nothing.sh <medusa> <run> <workdir>
+# SIGINT during `medusa run`, `medusa sweep` or `medusa report` (README): exit code 130, one line on
+# stderr, and no output file or temporary file left in the working folder (for report, beside the
+# store it reads). Usage: interrupt_leaves_nothing.sh <medusa> <run> <workdir> [run|sweep|report]
 set -u
 medusa=$1
 input=$2
 work=$3
+command=${4:-run}
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 # The large run (4,945 cells) takes far longer than the delay, so the signal arrives mid-run.
-"$medusa" run "$input" -o interrupted.h5 --radius 3 --quiet 2>stderr.txt &
+if [ "$command" = report ]; then
+  # The store of the large run is written first (beside the working folder); its report takes seconds.
+  mkdir -p "${work}_store" && "$medusa" run "$input" -o "${work}_store/large.h5" --radius 3 --quiet >/dev/null 2>&1 || exit 1
+  "$medusa" report "${work}_store/large.h5" -o interrupted.html 2>stderr.txt &
+elif [ "$command" = sweep ]; then
+  "$medusa" sweep "$input" -o interrupted --radii 2.5:3:0.5 --threads 2 --quiet 2>stderr.txt &
+else
+  "$medusa" run "$input" -o interrupted.h5 --radius 3 --quiet 2>stderr.txt &
+fi
 pid=$!
-sleep 2
+if [ "$command" = report ]; then sleep 1; else sleep 2; fi
 kill -INT "$pid"
 wait "$pid"
 code=$?

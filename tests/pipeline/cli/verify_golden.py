@@ -1,6 +1,6 @@
 """Cross-checks the golden files of tests/data/cli/golden against each other and against GUDHI, so
 that a regenerated golden file that is internally inconsistent or disagrees with the oracle fails even
-before anyone reviews its diff (tests/data/cli/golden/README.txt lists what each check covers).
+before its diff is read (tests/data/cli/golden/README.txt lists what each check covers).
 
 usage: verify_golden.py <golden dir> <medusa binary> <work dir with the three golden stores>
 """
@@ -113,11 +113,15 @@ check(dims == [int(re.search(rf"  dimension {k}: (\d+)\n", info).group(1)) for k
 check(sum(dims) == int(re.search(r"medusa cells: (\d+)\n", info).group(1)), "info.txt: total cells")
 for label, t in (("all cells", "all"), ("type 1 (Condensing)", "1"), ("type 2 (NonCondensing)", "2")):
     part = summary.split(label + ":\n")[1]
-    loops = int(re.search(r"  (\d+) loops?", part).group(1))
-    cavities = int(re.search(r"  (\d+) cavit", part).group(1))
     forward = every[(t, "forward")][1]
-    check(loops == sum(1 for b, d, k in forward if k == 1 and b != d), f"loops of {t}")
-    check(cavities == sum(1 for b, d, k in forward if k == 2 and b != d), f"cavities of {t}")
+    for k, word in ((1, "loops"), (2, "cavities")):
+        present, formed = (int(x) for x in re.search(rf"  {word}: (\d+) present at MCS 0, (\d+) formed", part).groups())
+        filled = [int(x) for x in re.search(rf"  {word}: .*\n    filled by cells: (\d+) of those at MCS 0, (\d+) formed",
+                                            part).groups()] if present + formed else [0, 0]
+        finite = [(b, d) for b, d, kk in forward if kk == k and b != d and d != math.inf]
+        check(present + formed == sum(1 for b, d, kk in forward if kk == k and b != d), f"{word} of {t}")
+        check(filled == [sum(1 for b, d in finite if b == 0), sum(1 for b, d in finite if b != 0)],
+              f"filled {word} of {t}: born at MCS 0 and later")
 
 # curves_frames.csv: Euler characteristic from the f-vector and from the Betti numbers (docs/MATH.md §7.5);
 # the two types partition the vertices; MCS 100 agrees with `medusa at --time 100`.

@@ -99,7 +99,7 @@ def check_seeds(medusa, work):
 
         prefix = f"seeds_{metric.replace(':', '')}_essential"
         run([medusa, "compare", *stores, "--type", "1", "--dim", "0", "--filtration", "forward", "--metric", metric,
-             "-o", prefix], work)
+             "--essential", "-o", prefix], work)
         d = read_matrix(f"{work}/{prefix}.distances.csv")
         assert math.isfinite(d[s1, s2]) and math.isinf(d[s1, CONTROL]) and math.isinf(d[s2, CONTROL]), d
 

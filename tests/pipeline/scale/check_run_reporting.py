@@ -20,7 +20,7 @@ import numpy
 def run(medusa, folder, args):
     shutil.rmtree(folder, ignore_errors=True)
     os.makedirs(folder)
-    result = subprocess.run([medusa, "run"] + args, cwd=folder, capture_output=True, text=True)
+    result = subprocess.run([medusa, "run", "--force"] + args, cwd=folder, capture_output=True, text=True)
     if result.returncode != 0:
         sys.exit(f"medusa run {' '.join(args)} failed ({result.returncode}): {result.stderr}")
     return result
@@ -54,7 +54,7 @@ def check_terminal_shows_progress_in_place(medusa, data, work):
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     master, slave = pty.openpty()
-    process = subprocess.Popen([medusa, "run", data, "-o", "run.h5", "--radius", "3"], cwd=work,
+    process = subprocess.Popen([medusa, "run", "--force", data, "-o", "run.h5", "--radius", "3"], cwd=work,
                                stdout=subprocess.PIPE, stderr=slave)
     os.close(slave)
     err = b""

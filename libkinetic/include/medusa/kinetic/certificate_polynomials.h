@@ -113,7 +113,7 @@ template <class NT, class Pt> Poly<NT> edge_radius(const Pt& p, const Pt& q, con
   return Q * dot(d, d) - Poly<NT>(NT(4) * P);
 }
 
-// R2: Q|a|^2|b|^2|a-b|^2 - 4P|a x b|^2, the degree-6 form of seed 000 (docs/MATH.md §3.3).
+// R2: Q|a|^2|b|^2|a-b|^2 - 4P|a x b|^2, the degree-6 form (docs/MATH.md §3.3).
 template <class NT, class Pt>
 Poly<NT> triangle_radius(const Pt& p0, const Pt& p1, const Pt& p2, const NT& P, const NT& Q) {
   Vec<NT> a = difference<NT>(p0, p1), b = difference<NT>(p0, p2), c = difference<NT>(p1, p2);

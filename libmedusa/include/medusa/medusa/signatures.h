@@ -1,4 +1,4 @@
-// Signatures of K_t over time (docs/MATH.md §6.6, seed 004): simplex counts, Euler characteristic and Betti
+// Signatures of K_t over time (docs/MATH.md §6.6): simplex counts, Euler characteristic and Betti
 // numbers, for the whole complex and per cell type.
 #pragma once
 

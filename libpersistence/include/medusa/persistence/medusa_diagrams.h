@@ -21,7 +21,7 @@ struct DiagramPhaseSeconds {
 // threads (1 = sequential in the calling thread): the filtrations are independent, and so are their
 // reductions (each thread owns its PHAT boundary matrix), so the result is the same for every thread
 // count. Each task builds one filtration, reduces it and frees it, so at most `threads` filtrations
-// and boundary matrices are in memory at once (peak memory of `medusa run`, issue #9). When several
+// and boundary matrices are in memory at once (this bounds the peak memory of `medusa run`). When several
 // filtrations fail, the error of the first one in the order above is thrown. `phases`, when given,
 // receives the time spent per phase.
 std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& cells,

@@ -1,0 +1,92 @@
+#include "class_fates.h"
+
+#include "diagram_selection.h"
+
+#include "medusa/core/error.h"
+#include "medusa/medusa/complex_index.h"
+#include "medusa/medusa/signatures.h"
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace medusa::cli {
+
+ClassFates class_fates(const medusa::Medusa& medusa, const persistence::Diagram& forward,
+                       const persistence::Diagram& reverse) {
+  if (forward.direction != persistence::Direction::forward ||
+      reverse.direction != persistence::Direction::reverse || forward.cell_type != reverse.cell_type)
+    throw InternalError("class_fates: needs the forward and reverse diagrams of one sub-medusa");
+  if (medusa.input.frames() == 0 || medusa.batches.empty())
+    throw InternalError("class_fates: the medusa has no frames or no batch records");
+  const std::optional<int> type =
+      forward.cell_type == persistence::all_types ? std::nullopt : std::optional<int>(forward.cell_type);
+  const medusa::ComplexIndex index(medusa, type);
+  const std::size_t last = medusa.input.frames() - 1;
+  // The first frame's batch: the initial complex, and at t_0 itself the removal of cells present at
+  // that frame only (docs/MATH.md §2.4, §6.2), whose batch has the same time t_0.
+  const std::uint64_t first_batch = index.frame_batch(0);
+  const medusa::Signature first = medusa::signature_of(medusa, index.at_frame(0));
+  const medusa::Signature end = medusa::signature_of(medusa, index.at_frame(last));
+
+  ClassFates fates;
+  fates.clusters.at_first = first.betti[0];
+  fates.clusters.at_end = end.betti[0];
+  const std::vector<int> vertex_type = vertex_types(medusa);
+  for (const medusa::Cell& c : medusa.cells)
+    if (c.dim() == 0 && c.death.batch <= first_batch &&
+        (!type || vertex_type.at(static_cast<std::size_t>(c.vertices.front())) == *type))
+      ++fates.cells_leaving_at_first;
+
+  std::vector<double> joins;
+  std::size_t alive_after_first = 0;
+  for (const persistence::PersistencePair& p : forward.pairs) {
+    if (p.zero_length || p.dim > 2)
+      continue;
+    if (p.dim == 0) {
+      if (!p.essential)
+        joins.push_back(p.death);
+      if (p.birth_time.batch <= first_batch && (p.essential || p.death_time.batch > first_batch))
+        ++alive_after_first;
+      continue;
+    }
+    HoleFates& h = fates.holes[static_cast<std::size_t>(p.dim)];
+    const bool initial = p.birth_time.batch <= first_batch;
+    (initial ? h.initial : h.formed) += 1;
+    if (p.essential)
+      (initial ? h.never_filled_initial : h.never_filled_formed) += 1;
+    else
+      (initial ? h.filled_initial : h.filled_formed) += 1;
+  }
+  std::sort(joins.begin(), joins.end());
+  fates.clusters.joins = joins.size();
+  if (!joins.empty()) {
+    fates.clusters.half_joined = joins[(joins.size() + 1) / 2 - 1];
+    fates.clusters.all_joined = joins.back();
+  }
+  // The reverse filtration starts with K(t_end-), the cells that die at the final virtual time
+  // (docs/MATH.md §6.2, §7.3): its essential classes born there span the image of H_k(K(t_end-)).
+  std::array<std::size_t, 3> carried{};
+  for (const persistence::PersistencePair& p : reverse.pairs)
+    if (p.essential && p.dim <= 2 && p.birth_time.batch == medusa.end.batch)
+      ++carried[static_cast<std::size_t>(p.dim)];
+  if (alive_after_first > fates.clusters.at_first || carried[0] > fates.clusters.at_end)
+    throw InternalError("class_fates: more H0 classes than clusters at the first or the last frame");
+  fates.clusters.joined_at_first = fates.clusters.at_first - alive_after_first;
+  fates.clusters.separated_again = fates.clusters.at_end - carried[0];
+  for (std::size_t k = 1; k <= 2; ++k) {
+    HoleFates& h = fates.holes[k];
+    const std::size_t never = h.never_filled_initial + h.never_filled_formed;
+    if (carried[k] > never)
+      throw InternalError("class_fates: " + std::to_string(carried[k]) + " classes of degree " +
+                          std::to_string(k) + " carried by the end complex, but only " +
+                          std::to_string(never) + " essential ones");
+    h.still_open = carried[k];
+    h.broken_open = never - carried[k];
+    h.open_at_end = end.betti[k];
+  }
+  return fates;
+}
+
+} // namespace medusa::cli

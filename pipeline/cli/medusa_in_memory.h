@@ -1,0 +1,17 @@
+// The kinetic stage and the medusa builder of `medusa run` for one radius, collected in memory instead
+// of streamed to a store: what `medusa sweep` runs once per radius, on threads of its own.
+#pragma once
+
+#include "medusa/kinetic/trajectories.h"
+#include "medusa/medusa/medusa.h"
+#include "medusa/medusa/run_info.h"
+
+#include <string>
+
+namespace medusa::cli {
+
+// The medusa of `trajectories` at radius `info.radius_text` (decimal text, exact, docs/MATH.md §1).
+// Polls for interrupts (throws Interrupted). Safe to call from several threads at once.
+medusa::Medusa medusa_in_memory(const kinetic::Trajectories& trajectories, const medusa::RunInfo& info);
+
+} // namespace medusa::cli

@@ -1,0 +1,290 @@
+// Draws the report from the JSON in #report-data: headlines, charts of the Betti numbers of K_t, and
+// per run the facts, the summary, and a barcode and a persistence diagram per cell type and degree.
+// Hovering a bar or a point shows its birth, death, lifetime and the CC3D ids of the cells that
+// formed and killed the class.
+"use strict";
+(function () {
+  const data = JSON.parse(document.getElementById("report-data").textContent);
+  const NS = "http://www.w3.org/2000/svg";
+  const runColours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"];
+  const degreeColours = ["#1f77b4", "#d62728", "#2ca02c"];
+  const featureNames = [["cluster", "clusters"], ["loop", "loops"], ["cavity", "cavities"]];
+  const simplexNames = ["vertex", "edge", "triangle", "tetrahedron", "4-simplex"];
+  const tooltip = document.getElementById("tooltip");
+
+  function el(tag, attrs, parent, text) {
+    const e = document.createElementNS(NS, tag);
+    for (const k in attrs) e.setAttribute(k, attrs[k]);
+    if (text !== undefined) e.textContent = text;
+    if (parent) parent.appendChild(e);
+    return e;
+  }
+  function html(tag, attrs, parent, text) {
+    const e = document.createElement(tag);
+    for (const k in attrs) e.setAttribute(k, attrs[k]);
+    if (text !== undefined) e.textContent = text;
+    if (parent) parent.appendChild(e);
+    return e;
+  }
+  function fmt(t) { return String(Number(Number(t).toPrecision(6))); }
+  function typeTitle(label, name) {
+    if (label === "all") return "all cells";
+    return "type " + label + (name ? " (" + name + ")" : "");
+  }
+  function degreeName(run, k) {
+    if (k === 2 && run.facts.dimension === 2) return ["space-time bubble", "space-time bubbles"];
+    return featureNames[k];
+  }
+  function showTip(evt, text) {
+    tooltip.textContent = text;
+    tooltip.style.display = "block";
+    moveTip(evt);
+  }
+  function moveTip(evt) {
+    const w = tooltip.offsetWidth, h = tooltip.offsetHeight;
+    let x = evt.clientX + 14, y = evt.clientY + 14;
+    if (x + w > window.innerWidth) x = Math.max(0, evt.clientX - w - 14);
+    if (y + h > window.innerHeight) y = Math.max(0, evt.clientY - h - 14);
+    tooltip.style.left = x + "px";
+    tooltip.style.top = y + "px";
+  }
+  function hideTip() { tooltip.style.display = "none"; }
+  function hover(node, text) {
+    node.addEventListener("mouseenter", (e) => showTip(e, text));
+    node.addEventListener("mousemove", moveTip);
+    node.addEventListener("mouseleave", hideTip);
+  }
+  function ticks(lo, hi, n) {
+    if (!(hi > lo)) return [lo];
+    const raw = (hi - lo) / n, mag = Math.pow(10, Math.floor(Math.log10(raw)));
+    const step = [1, 2, 5, 10].map((m) => m * mag).find((s) => s >= raw);
+    const out = [];
+    for (let v = Math.ceil(lo / step) * step; v <= hi + 1e-9 * step; v += step) out.push(Number(v.toPrecision(12)));
+    return out;
+  }
+  // Axes of a plot area: x from x0..x1 (MCS), y from y0..y1.
+  // With logY the y range is of positive values and the axis is logarithmic.
+  function axes(svg, box, xr, yr, xlabel, ylabel, integerY, noYTicks, logY) {
+    const [left, top, w, h] = box;
+    const sx = (v) => left + ((v - xr[0]) / (xr[1] - xr[0] || 1)) * w;
+    const ly = (v) => (logY ? Math.log10(v) : v);
+    const sy = (v) => top + h - ((ly(v) - ly(yr[0])) / (ly(yr[1]) - ly(yr[0]) || 1)) * h;
+    el("rect", { x: left, y: top, width: w, height: h, fill: "none", stroke: "#999" }, svg);
+    for (const t of ticks(xr[0], xr[1], 5)) {
+      el("line", { x1: sx(t), x2: sx(t), y1: top + h, y2: top + h + 4, stroke: "#999" }, svg);
+      el("text", { x: sx(t), y: top + h + 15, "text-anchor": "middle" }, svg, fmt(t));
+    }
+    const logTicks = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 10000].filter((v) => v >= yr[0] && v <= yr[1]);
+    for (const t of noYTicks ? [] : logY ? logTicks : ticks(yr[0], yr[1], 4)) {
+      if (integerY && t !== Math.round(t)) continue;
+      el("line", { x1: left - 4, x2: left, y1: sy(t), y2: sy(t), stroke: "#999" }, svg);
+      el("text", { x: left - 6, y: sy(t) + 4, "text-anchor": "end" }, svg, fmt(t));
+    }
+    if (xlabel) el("text", { x: left + w / 2, y: top + h + 29, "text-anchor": "middle" }, svg, xlabel);
+    if (ylabel)
+      el("text", { transform: "translate(" + (left - 36) + "," + (top + h / 2) + ") rotate(-90)", "text-anchor": "middle" }, svg, ylabel);
+    return [sx, sy];
+  }
+
+  // A line chart; series: [{name, colour, xs, ys, dashed}] (null values are left out).
+  function lineChart(parent, title, series, ylabel, width, height, xlabel, logY) {
+    const svg = el("svg", { class: "chart", width: width, height: height, viewBox: "0 0 " + width + " " + height }, parent);
+    el("text", { class: "title", x: 50, y: 16 }, svg, title);
+    const xs = series.flatMap((s) => s.xs), ys = series.flatMap((s) => s.ys).filter((y) => y !== null);
+    const xr = [Math.min(...xs), Math.max(...xs)], yr = [logY ? 1 : 0, Math.max(logY ? 2 : 1, ...ys)];
+    // Legend columns as wide as the longest name (about 6.5 px a character at 11 px).
+    const longest = Math.max(...series.map((s) => s.name.length));
+    const columns = Math.max(1, Math.min(3, Math.floor((width - 80) / (longest * 6.5 + 30))));
+    const rows = Math.ceil(series.length / columns);
+    const [sx, sy] = axes(svg, [50, 26, width - 70, height - 70 - 14 * rows], xr, yr, xlabel || "MCS", ylabel, true, false, logY);
+    series.forEach((s, i) => {
+      let d = "", pen = "M";
+      s.xs.forEach((x, j) => {
+        if (s.ys[j] === null) { pen = "M"; return; }
+        d += pen + sx(x).toFixed(1) + "," + sy(s.ys[j]).toFixed(1);
+        pen = "L";
+      });
+      const dash = s.dashed ? { "stroke-dasharray": "5,3" } : {};
+      el("path", Object.assign({ d: d, fill: "none", stroke: s.colour, "stroke-width": 2 }, dash), svg);
+      s.xs.forEach((x, j) => {
+        if (s.ys[j] === null) return;
+        const c = el("circle", { cx: sx(x), cy: sy(s.ys[j]), r: 3, fill: s.colour }, svg);
+        hover(c, s.name + "\n" + (xlabel || "MCS") + " " + fmt(x) + ": " + s.ys[j]);
+      });
+      const lx = 60 + (i % columns) * ((width - 80) / columns), ly = height - 8 - 14 * (rows - 1 - Math.floor(i / columns));
+      el("line", Object.assign({ x1: lx, x2: lx + 16, y1: ly - 4, y2: ly - 4, stroke: s.colour, "stroke-width": 3 }, dash), svg);
+      el("text", { x: lx + 20, y: ly }, svg, s.name);
+    });
+    return svg;
+  }
+
+  function pairText(run, panel, p) {
+    const [birth, death, bcell, dcell, bids, dids] = p;
+    const names = degreeName(run, panel.dim);
+    const cellWords = (ids) => (ids.length === 2 ? "an " : "a ") + simplexNames[ids.length - 1] + " of CC3D cell" +
+      (ids.length === 1 ? " " : "s ") + ids.join(", ");
+    const lines = ["H" + panel.dim + " " + names[0] + " · " + typeTitle(panel.label, panel.name) + " · forward filtration",
+      "birth: MCS " + fmt(birth) + " (medusa cell " + bcell + ", " + cellWords(bids) + ")"];
+    if (death === null) {
+      // An essential loop or cavity was never filled; it need not be open at the end (README, Reading the summary).
+      lines.push(panel.dim === 0 ? "death: never (an essential class: this cluster never merged into an older one)"
+        : "death: never (an essential class: never filled by cells; it may have broken open instead)");
+      lines.push("lifetime: " + fmt(run.facts.t_end - birth) + " MCS or more (to the end of the run)");
+    } else {
+      lines.push("death: MCS " + fmt(death) + " (medusa cell " + dcell + ", " + cellWords(dids) + ")");
+      lines.push("lifetime: " + fmt(death - birth) + " MCS");
+    }
+    return lines.join("\n");
+  }
+
+  function barcode(parent, run, panel, ri, pi) {
+    const n = panel.pairs.length, width = 400, barH = n > 150 ? 1 : n > 60 ? 2 : 4;
+    const height = Math.max(90, Math.min(420, n * barH + 56));
+    const svg = el("svg", { class: "barcode", width: width, height: height, viewBox: "0 0 " + width + " " + height }, parent);
+    const t0 = run.facts.t0, t1 = run.facts.t_end;
+    const [sx] = axes(svg, [20, 8, width - 36, height - 46], [t0, t1], [0, 1], "MCS", "", true, true);
+    const rowH = (height - 46) / Math.max(1, n), colour = degreeColours[panel.dim];
+    panel.pairs.forEach((p, j) => {
+      const x0 = sx(p[0]), x1 = p[1] === null ? sx(t1) : sx(p[1]);
+      const r = el("rect", { class: "bar", x: x0, y: 8 + j * rowH, width: Math.max(1, x1 - x0), height: Math.max(0.8, rowH * 0.8),
+        fill: colour, "fill-opacity": p[1] === null ? 0.3 : 1, "data-run": ri, "data-panel": pi, "data-pair": j,
+        "data-birth-cell": p[2], "data-death-cell": p[3] === null ? "" : p[3] }, svg);
+      hover(r, pairText(run, panel, p));
+    });
+    return svg;
+  }
+
+  function diagram(parent, run, panel, ri, pi) {
+    const size = 260, pad = 44;
+    const svg = el("svg", { class: "diagram", width: size, height: size, viewBox: "0 0 " + size + " " + size }, parent);
+    const t0 = run.facts.t0, t1 = run.facts.t_end;
+    const [sx, sy] = axes(svg, [pad, 18, size - pad - 12, size - pad - 18], [t0, t1], [t0, t1], "birth (MCS)", "death (MCS)", false);
+    el("line", { x1: sx(t0), y1: sy(t0), x2: sx(t1), y2: sy(t1), stroke: "#bbb" }, svg);
+    el("text", { x: pad - 6, y: 14, "text-anchor": "end" }, svg, "never");
+    el("line", { x1: sx(t0), x2: sx(t1), y1: 10, y2: 10, stroke: "#ddd", "stroke-dasharray": "3,3" }, svg);
+    const colour = degreeColours[panel.dim];
+    panel.pairs.forEach((p, j) => {
+      const c = el("circle", { class: "point", cx: sx(p[0]), cy: p[1] === null ? 10 : sy(p[1]), r: 3,
+        fill: colour, "fill-opacity": p[1] === null ? 0.3 : 0.6, "data-run": ri, "data-panel": pi, "data-pair": j }, svg);
+      hover(c, pairText(run, panel, p));
+    });
+    return svg;
+  }
+
+  // First screen: per run the headline of each type (types first, all cells last).
+  function headlines() {
+    const cards = document.getElementById("headlines");
+    data.runs.forEach((run, ri) => {
+      const card = html("div", { class: "run-card", "data-run": ri }, cards);
+      const h = html("h3", {}, card, run.name + " ");
+      html("span", { class: "muted" }, h, "radius " + run.facts.radius + " · " + run.facts.cc3d_cells + " cells · " +
+        run.facts.frames + " frames, MCS " + run.facts.t0 + "–" + run.facts.t_end);
+      const ul = html("ul", {}, card);
+      for (const x of typesFirst(run.headlines)) {
+        const li = html("li", { class: "headline", "data-type": x.label }, ul);
+        html("b", {}, li, typeTitle(x.label, x.name) + ": ");
+        li.appendChild(document.createTextNode(x.text));
+      }
+      for (const line of run.scale || []) html("li", { class: "headline scale" }, ul, line);
+    });
+    // Clusters of each type over time, all runs in one chart per type.
+    const charts = document.getElementById("glance-charts");
+    const labels = [];
+    // The cell types only: the whole tissue's clusters are in each run's details.
+    data.runs.forEach((r) => r.slices.forEach((s) => { if (s.label !== "all" && !labels.includes(s.label)) labels.push(s.label); }));
+    labels.sort((a, b) => Number(a) - Number(b));
+    for (const label of labels) {
+      const series = [];
+      let name = "";
+      data.runs.forEach((run, ri) => {
+        const s = run.slices.find((x) => x.label === label);
+        if (!s) return;
+        name = s.name;
+        series.push({ name: run.name, colour: runColours[ri % runColours.length], xs: run.frame_times, ys: s.b0 });
+      });
+      lineChart(charts, typeTitle(label, name) + ": clusters of K_t (b0)", series, "clusters", 420, 270);
+    }
+  }
+
+  // Cell types first, the whole tissue last: the types are what sorts.
+  function typesFirst(items) {
+    return items.filter((x) => x.label !== "all").concat(items.filter((x) => x.label === "all"));
+  }
+
+  function factsTable(parent, run) {
+    const f = run.facts, t = html("table", { class: "facts" }, parent);
+    const row = (k, v) => { const tr = html("tr", {}, t); html("td", {}, tr, k); html("td", {}, tr, String(v)); };
+    row("store", f.store);
+    row("cells", f.cc3d_cells + " CC3D cells (" + f.trajectories + " trajectories)");
+    row("cell types", f.types.map((x) => x.id + (x.name ? " " + x.name : "") + ": " + x.cells + " cells").join("; "));
+    row("frames", f.frames + ", MCS " + f.t0 + " to " + f.t_end);
+    row("dimension", f.dimension + (f.dimension === 2 ? " (planar run)" : ""));
+    row("radius", f.radius + " lattice units");
+    row("medusa cells", f.medusa_cells_per_dimension.map((n, k) => "dim " + k + ": " + n).join(", "));
+    row("source", f.source_files.length ? f.source_files.join(", ") : "(not recorded)");
+    row("made by", (f.software_version ? "medusa " + f.software_version : "medusa") + (f.command_line ? ": " + f.command_line : ""));
+  }
+
+  function details() {
+    const root = document.getElementById("details");
+    data.runs.forEach((run, ri) => {
+      const sec = html("section", { class: "run", id: "run-" + ri, "data-run": ri }, root);
+      html("h2", {}, sec, "Run " + run.name);
+      factsTable(sec, run);
+      html("h3", {}, sec, "Summary of the forward diagrams (as printed by medusa run)");
+      html("pre", { class: "summary" }, sec, run.summary);
+      html("h3", {}, sec, "Betti numbers of K_t at the frames");
+      html("p", { class: "note" }, sec, "K_t is the alpha complex of the cell centres at time t: b0 counts its clusters, " +
+        "b1 its loops (rings, tunnels), b2 its cavities (closed shells), for the whole tissue and for each cell type alone.");
+      const charts = html("div", { class: "charts" }, sec);
+      for (const s of typesFirst(run.slices)) {
+        const names = run.facts.dimension === 2 ? ["b0 clusters", "b1 loops"] : ["b0 clusters", "b1 loops", "b2 cavities"];
+        lineChart(charts, typeTitle(s.label, s.name), names.map((n, k) => ({ name: n, colour: degreeColours[k], xs: run.frame_times, ys: s["b" + k] })),
+          "Betti number", 420, 250);
+      }
+      html("h3", {}, sec, "Barcodes and persistence diagrams (forward filtration)");
+      html("p", { class: "note" }, sec, "One bar per class: it starts when the cluster, loop or cavity appears and ends when it " +
+        "merges into an older cluster or is filled; pale bars never end (essential classes, drawn to the end of the run). Hover a bar or a point for its " +
+        "times and the CC3D cells that formed and killed it. Zero-length classes are not drawn.");
+      const grid = html("div", { class: "panels" }, sec);
+      typesFirst(run.panels).forEach((panel) => {
+        const pi = run.panels.indexOf(panel);
+        const div = html("div", { class: "panel", "data-run": ri, "data-type": panel.label, "data-dim": panel.dim,
+          "data-total": panel.total, "data-drawn": panel.pairs.length }, grid);
+        const names = degreeName(run, panel.dim);
+        html("div", { class: "caption" }, div, typeTitle(panel.label, panel.name) + " · H" + panel.dim + " " + names[1]);
+        html("div", { class: "count" }, div, panel.pairs.length === panel.total ? panel.total + " " + (panel.total === 1 ? names[0] : names[1])
+          : "the " + panel.pairs.length + " longest of " + panel.total + " " + names[1]);
+        if (panel.pairs.length === 0) return;
+        barcode(div, run, panel, ri, pi);
+        diagram(div, run, panel, ri, pi);
+      });
+    });
+  }
+
+  // Per type, the clusters at the first and last frames against the radius, one colour per sweep.
+  function sweepCharts() {
+    // Beside the clusters over time on the first screen: they answer "at which scale".
+    const root = document.getElementById("glance-charts");
+    if (!data.sweeps.length) return;
+    const labels = [];
+    data.sweeps.forEach((w) => w.types.forEach((t) => { if (t.label !== "all" && !labels.includes(t.label)) labels.push(t.label); }));
+    for (const label of labels) {
+      const series = [];
+      data.sweeps.forEach((w, i) => {
+        const t = w.types.find((x) => x.label === label);
+        if (!t) return;
+        // A sweep named like a run has that run's colour.
+        const ri = data.runs.findIndex((r) => r.name === w.name);
+        const colour = runColours[(ri >= 0 ? ri : data.runs.length + i) % runColours.length];
+        series.push({ name: w.name + " MCS " + fmt(w.t_end), colour: colour, xs: w.radii, ys: t.last });
+        series.push({ name: w.name + " MCS " + fmt(w.t0), colour: colour, xs: w.radii, ys: t.first, dashed: true });
+      });
+      lineChart(root, "type " + label + ": clusters of K_t (b0) against the radius", series, "clusters (log scale)", 420, 270, "radius", true);
+    }
+  }
+
+  headlines();
+  sweepCharts();
+  details();
+})();

@@ -1,0 +1,213 @@
+#include "report_model.h"
+
+#include "betti_frames.h"
+#include "diagram_selection.h"
+#include "forward_counts.h"
+#include "interrupt.h"
+#include "run_summary.h"
+
+#include "medusa/core/error.h"
+#include "medusa/medusa/store_reader.h"
+#include "medusa/persistence/medusa_diagrams.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace medusa::cli {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+std::string mcs(double t) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", t);
+  return buffer;
+}
+
+// Headline times: whole MCS (the frames are tens or hundreds of MCS apart).
+std::string whole_mcs(double t) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.0f", t);
+  return buffer;
+}
+
+std::string type_name(const kinetic::Trajectories& input, int type) {
+  if (type == persistence::all_types)
+    return "all cells";
+  const auto index = static_cast<std::size_t>(type);
+  return index < input.type_names.size() ? input.type_names[index] : "";
+}
+
+std::string plural(std::size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+// The first screen's answer for one type: clusters of K_t at the first and last frames (docs/MATH.md
+// §6.6), and when the clusters of the forward filtration merged (docs/MATH.md §7.6).
+std::string headline(const TypeSlices& slices, const ForwardCounts& counts,
+                     const kinetic::Trajectories& input) {
+  std::ostringstream out;
+  const double t0 = static_cast<double>(input.frame_times.front());
+  const double t_end = static_cast<double>(input.frame_times.back());
+  out << plural(slices.at_frame.front().betti[0], "cluster", "clusters") << " at MCS " << mcs(t0) << " -> "
+      << slices.at_frame.back().betti[0] << " at MCS " << mcs(t_end);
+  const std::vector<double>& m = counts.merge_times;
+  if (m.empty()) {
+    out << "; no two clusters ever merged";
+  } else {
+    // The median merge: half of the merges happened by then.
+    out << "; " << (m.size() == 1 ? "the only merge" : "half of the " + std::to_string(m.size()) + " merges")
+        << " by MCS " << whole_mcs(m[(m.size() - 1) / 2]);
+    if (m.size() > 1)
+      out << ", the last at MCS " << whole_mcs(m.back());
+  }
+  return out.str();
+}
+
+json cc3d_ids(const std::vector<kinetic::VertexId>& vertices, const kinetic::Trajectories& input) {
+  json ids = json::array();
+  for (const kinetic::VertexId v : vertices)
+    ids.push_back(input.cells.at(static_cast<std::size_t>(v)).cell_id);
+  return ids;
+}
+
+// One panel: the pairs of degree k of a forward diagram, each
+// [birth, death or null, birth cell, death cell or null, birth CC3D ids, death CC3D ids].
+json panel(const persistence::Diagram& d, int k, std::size_t max_bars, const medusa::Medusa& medusa) {
+  std::vector<const persistence::PersistencePair*> pairs;
+  for (const persistence::PersistencePair& p : d.pairs)
+    if (p.dim == k && !p.zero_length)
+      pairs.push_back(&p);
+  const std::size_t total = pairs.size();
+  if (max_bars > 0 && pairs.size() > max_bars) {
+    auto longer = [](const persistence::PersistencePair* a, const persistence::PersistencePair* b) {
+      if (a->essential != b->essential)
+        return a->essential;
+      return a->death - a->birth > b->death - b->birth;
+    };
+    std::stable_sort(pairs.begin(), pairs.end(), longer);
+    pairs.resize(max_bars);
+  }
+  std::stable_sort(pairs.begin(), pairs.end(), [](const auto* a, const auto* b) {
+    return std::make_pair(a->birth, a->essential ? INFINITY : a->death) <
+           std::make_pair(b->birth, b->essential ? INFINITY : b->death);
+  });
+  json rows = json::array();
+  for (const persistence::PersistencePair* p : pairs) {
+    json row = json::array();
+    row.push_back(p->birth);
+    row.push_back(p->essential ? json(nullptr) : json(p->death));
+    row.push_back(p->birth_cell);
+    row.push_back(p->essential ? json(nullptr) : json(p->death_cell));
+    row.push_back(cc3d_ids(persistence::birth_vertices(*p, medusa.cells), medusa.input));
+    row.push_back(p->essential ? json::array()
+                               : cc3d_ids(persistence::death_vertices(*p, medusa.cells), medusa.input));
+    rows.push_back(std::move(row));
+  }
+  return {{"label", type_label(d.cell_type)},
+          {"name", type_name(medusa.input, d.cell_type)},
+          {"dim", k},
+          {"total", total},
+          {"pairs", std::move(rows)}};
+}
+
+json facts(const medusa::Medusa& medusa, const std::string& store) {
+  const kinetic::Trajectories& input = medusa.input;
+  std::set<std::int64_t> cc3d;
+  std::map<int, std::set<std::int64_t>> per_type;
+  for (const kinetic::Trajectory& t : input.cells) {
+    cc3d.insert(t.cell_id);
+    per_type[t.type].insert(t.cell_id);
+  }
+  json types = json::array();
+  for (const auto& [type, ids] : per_type)
+    types.push_back({{"id", type}, {"name", type_name(input, type)}, {"cells", ids.size()}});
+  json cells_per_dim = json::array();
+  for (int k = 0; k <= input.dimension + 1; ++k)
+    cells_per_dim.push_back(medusa.cells_of_dimension(k).size());
+  return {{"store", store},
+          {"cc3d_cells", cc3d.size()},
+          {"trajectories", input.cells.size()},
+          {"types", std::move(types)},
+          {"frames", input.frames()},
+          {"t0", input.frame_times.front()},
+          {"t_end", input.frame_times.back()},
+          {"dimension", input.dimension},
+          {"radius", medusa.run.radius_text.empty() ? mcs(medusa.run.radius) : medusa.run.radius_text},
+          {"source_files", medusa.run.source_files},
+          {"software_version", medusa.run.software_version},
+          {"command_line", medusa.run.command_line},
+          {"medusa_cells_per_dimension", std::move(cells_per_dim)}};
+}
+
+} // namespace
+
+ReportRun report_run(const std::string& store, const std::string& name, std::size_t max_bars,
+                     unsigned threads) {
+  const medusa::Medusa medusa = medusa::read_store(store);
+  const kinetic::Trajectories& input = medusa.input;
+  if (input.frames() < 2)
+    throw InputError("store " + store + " has fewer than two frames; there is nothing to report over time");
+  check_interrupted();
+  const std::vector<int> vertex_type = vertex_types(medusa);
+  const std::vector<int> types = distinct_types(vertex_type);
+  const std::vector<persistence::Diagram> diagrams =
+      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, threads);
+  check_interrupted();
+  const std::vector<TypeSlices> slices = slices_at_frames(medusa);
+  const double t0 = static_cast<double>(input.frame_times.front());
+  const double t_end = static_cast<double>(input.frame_times.back());
+
+  ReportRun run;
+  run.name = name;
+  run.dimension = input.dimension;
+  json& j = run.data;
+  j["name"] = name;
+  j["facts"] = facts(medusa, store);
+  j["frame_times"] = input.frame_times;
+  json slice_rows = json::array();
+  for (const TypeSlices& s : slices) {
+    json b[3] = {json::array(), json::array(), json::array()};
+    for (const Signature& g : s.at_frame)
+      for (std::size_t k = 0; k < 3; ++k)
+        b[k].push_back(g.betti[k]);
+    const int type = s.label == "all" ? persistence::all_types : std::stoi(s.label);
+    slice_rows.push_back(
+        {{"label", s.label}, {"name", type_name(input, type)}, {"b0", b[0]}, {"b1", b[1]}, {"b2", b[2]}});
+  }
+  j["slices"] = std::move(slice_rows);
+
+  std::ostringstream summary;
+  json headlines = json::array();
+  json panels = json::array();
+  for (const persistence::Diagram& d : diagrams) {
+    if (d.direction != persistence::Direction::forward)
+      continue;
+    const std::string label = type_label(d.cell_type);
+    const std::string tname = type_name(input, d.cell_type);
+    summary << (d.cell_type == persistence::all_types
+                    ? "all cells"
+                    : "type " + label + (tname.empty() ? "" : " (" + tname + ")"))
+            << ":\n";
+    describe_forward_diagram(summary, d, t0, t_end, input.dimension);
+    const auto s =
+        std::find_if(slices.begin(), slices.end(), [&](const TypeSlices& x) { return x.label == label; });
+    headlines.push_back(
+        {{"label", label}, {"name", tname}, {"text", headline(*s, forward_counts(d), input)}});
+    for (int k = 0; k <= 2; ++k)
+      panels.push_back(panel(d, k, max_bars, medusa));
+    run.h0_points.emplace_back(
+        label, persistence::normalise_time(persistence::to_points(d, 0), d.direction, t0, t_end));
+    check_interrupted();
+  }
+  j["summary"] = summary.str();
+  j["headlines"] = std::move(headlines);
+  j["panels"] = std::move(panels);
+  return run;
+}
+
+} // namespace medusa::cli

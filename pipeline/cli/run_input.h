@@ -1,0 +1,23 @@
+// Choosing what `medusa run` and `medusa sweep` read from a CC3D run, and the names they derive from it.
+#pragma once
+
+#include "medusa/io/run_reader.h"
+
+#include <string>
+#include <utility>
+
+namespace medusa::cli {
+
+// `<input-name>` of a folder or a name.csv[.gz] file, for default output names ("run" if none);
+// CC3D's own dir/cells.csv.gz is named after dir.
+std::string input_stem(const std::string& input);
+
+// `source` is "csv", "vtk" or empty; empty picks CC3D's own centres (cells.csv.gz) for a folder that
+// has them, else lets the reader decide (docs/MATH.md §1.2, §1.3).
+io::RunSource choose_source(const std::string& input, const std::string& source);
+
+// --radius auto (docs/MATH.md §7.10): the equivalent-sphere (disc in 2D) radius of the median cell
+// volume as decimal text with 6 digits, and how it was chosen, for the summary.
+std::pair<std::string, std::string> radius_from_volumes(const io::RunData& data);
+
+} // namespace medusa::cli

@@ -1,0 +1,173 @@
+#!/usr/bin/python3
+"""`medusa report` in a real browser (headless Chromium through Selenium, network off by a dead proxy):
+no SEVERE console message; one panel per type and degree; in each panel as many bars as
+`medusa barcode --format csv --filtration forward` has pairs of that type and degree (capped by
+--max-bars); hovering bars shows the birth and death times and the CC3D ids of the cells that formed
+and killed the class, checked against the store itself (h5py: /persistence, /cells, /input); the
+CROCKER plot of a sweep next to the store is shown; the page renders (a non-blank screenshot).
+
+Usage: check_report_browser.py <medusa> <source dir> <workdir> [screenshot.png]"""
+import csv
+import io
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+from collections import Counter
+
+import h5py
+import numpy as np
+from PIL import Image
+from selenium import webdriver
+from selenium.webdriver.chrome.options import Options
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.action_chains import ActionChains
+
+medusa, source, work = sys.argv[1:4]
+screenshot_copy = os.path.abspath(sys.argv[4]) if len(sys.argv) > 4 else None
+MAX_BARS = 300
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+os.chdir(work)
+
+
+def call(*args):
+    result = subprocess.run([medusa, *args], capture_output=True, text=True)
+    if result.returncode != 0:
+        sys.exit(f"medusa {' '.join(args)}: exit {result.returncode}\n{result.stderr}")
+    return result.stdout
+
+
+runs = {"sorting_3d": f"{source}/examples/sorting_3d", "nosorting_3d": f"{source}/tests/data/cc3d/nosorting_3d"}
+for name, folder in runs.items():
+    call("run", folder, "--radius", "3", "-o", f"{name}.h5", "--quiet")
+# Sweeps named like the stores: the report shows their CROCKER plots.
+for name, folder in runs.items():
+    call("sweep", folder, "--radii", "2:4:0.5", "-o", name, "--quiet")
+call("report", "sorting_3d.h5", "-o", "one.html", "--max-bars", str(MAX_BARS))
+call("report", "sorting_3d.h5", "nosorting_3d.h5", "-o", "two.html", "--max-bars", str(MAX_BARS))
+
+
+def expected_counts(store):
+    """(type, dimension) -> number of forward pairs of positive length, from the CSV export."""
+    text = call("barcode", store, "--format", "csv", "--filtration", "forward")
+    return Counter((r["type"], int(r["dimension"])) for r in csv.DictReader(io.StringIO(text)))
+
+
+class Store:
+    """The store read directly: pairs by birth cell, cells' vertices, vertices' CC3D ids."""
+
+    def __init__(self, path):
+        with h5py.File(path, "r") as f:
+            self.cc3d = f["input/cell_id"][:]
+            c = f["cells"]
+            ids, off, verts = c["id"][:], c["vertex_offset"][:], c["vertices"][:]
+            self.vertices = {int(ids[i]): verts[off[i]:off[i + 1]] for i in range(len(ids))}
+            self.pairs = {}
+            for name in f["persistence"].attrs["diagram_order"].decode().split(","):
+                g = f["persistence"][name]
+                if g.attrs["direction"].decode() != "forward":
+                    continue
+                label = "all" if int(g.attrs["type"]) == -1 else str(int(g.attrs["type"]))
+                for b, d, k, bc, dc, e in zip(g["birth"][:], g["death"][:], g["dimension"][:], g["birth_cell"][:],
+                                              g["death_cell"][:], g["essential"][:]):
+                    self.pairs.setdefault((label, int(k), int(bc)), []).append((b, d, int(dc), bool(e)))
+
+    def cc3d_ids(self, cell):
+        return sorted(int(self.cc3d[v]) for v in self.vertices[cell])
+
+
+def close(a, b):
+    return abs(a - b) <= 1e-5 * max(1.0, abs(b))
+
+
+options = Options()
+for argument in ["--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,1000",
+                 "--proxy-server=127.0.0.1:9"]:
+    options.add_argument(argument)
+options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+failures = []
+hovered = 0
+try:
+    for page, stores in [("one.html", ["sorting_3d"]), ("two.html", ["sorting_3d", "nosorting_3d"])]:
+        driver.get("file://" + os.path.abspath(page))
+        time.sleep(0.3)
+        severe = [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]
+        if severe:
+            failures.append(f"{page}: console errors {severe}")
+        panels = driver.find_elements("css selector", ".panel")
+        if len(panels) != 9 * len(stores):  # types all, 1, 2 x degrees 0, 1, 2
+            failures.append(f"{page}: {len(panels)} panels, expected {9 * len(stores)}")
+        if not driver.find_elements("css selector", "svg.crocker .crocker-panel"):
+            failures.append(f"{page}: no CROCKER plot although sorting_3d.crocker.csv is next to the store")
+        if len(stores) > 1 and not driver.find_elements("css selector", ".comparison-figure svg"):
+            failures.append(f"{page}: no distance heat map for two stores")
+        for ri, name in enumerate(stores):
+            expected = expected_counts(f"{name}.h5")
+            store = Store(f"{name}.h5")
+            drawn_total = 0
+            for panel in driver.find_elements("css selector", f".panel[data-run='{ri}']"):
+                key = (panel.get_attribute("data-type"), int(panel.get_attribute("data-dim")))
+                bars = panel.find_elements("css selector", ".bar")
+                want = min(expected[key], MAX_BARS)
+                drawn_total += len(bars)
+                if len(bars) != want or int(panel.get_attribute("data-total")) != expected[key]:
+                    failures.append(f"{page} {name} {key}: {len(bars)} bars of {panel.get_attribute('data-total')}, "
+                                    f"expected {want} of {expected[key]}")
+                # Hover the first, middle and last bar of each panel; check the tooltip against the store.
+                for bar in {0: bars[0], 1: bars[len(bars) // 2], 2: bars[-1]}.values() if bars else []:
+                    ActionChains(driver).move_to_element(bar).perform()
+                    tip = driver.find_element("id", "tooltip")
+                    text = tip.text
+                    m = re.search(r"birth: MCS (\S+) \(medusa cell (\d+), an? [\w-]+ of CC3D cells? ([\d, ]+)\)", text)
+                    if not tip.is_displayed() or not m:
+                        failures.append(f"{page} {name} {key}: tooltip not shown or unreadable: {text!r}")
+                        continue
+                    birth, cell = float(m.group(1)), int(m.group(2))
+                    ids = sorted(int(x) for x in m.group(3).split(","))
+                    candidates = store.pairs.get((key[0], key[1], cell), [])
+                    if not candidates or not any(close(birth, b) for b, _, _, _ in candidates):
+                        failures.append(f"{page} {name} {key}: no stored pair born at MCS {birth} in cell {cell}")
+                        continue
+                    if ids != store.cc3d_ids(cell):
+                        failures.append(f"{page} {name} {key}: birth ids {ids}, store {store.cc3d_ids(cell)}")
+                    b, d, dc, essential = next(p for p in candidates if close(birth, p[0]))
+                    if essential:
+                        if "death: never" not in text:
+                            failures.append(f"{page} {name} {key}: essential class not shown as never dying: {text!r}")
+                    else:
+                        md = re.search(r"death: MCS (\S+) \(medusa cell (\d+), an? [\w-]+ of CC3D cells? ([\d, ]+)\)", text)
+                        if not md or int(md.group(2)) != dc or not close(float(md.group(1)), d):
+                            failures.append(f"{page} {name} {key}: death {md and md.groups()}, store {d} cell {dc}")
+                        elif sorted(int(x) for x in md.group(3).split(",")) != store.cc3d_ids(dc):
+                            failures.append(f"{page} {name} {key}: death ids {md.group(3)}, store {store.cc3d_ids(dc)}")
+                        m_life = re.search(r"lifetime: (\S+) MCS", text)
+                        if not m_life or not close(float(m_life.group(1)), d - b):
+                            failures.append(f"{page} {name} {key}: lifetime {m_life and m_life.group(1)}, store {d - b}")
+                    hovered += 1
+            if drawn_total == 0:
+                failures.append(f"{page} {name}: no bars drawn")
+            print(f"{page} {name}: {drawn_total} bars in {len(expected)} panels with pairs")
+        driver.execute_script("window.scrollTo(0, 0)")
+        time.sleep(0.2)
+        png = f"{page}.png"
+        driver.save_screenshot(png)
+        pixels = np.asarray(Image.open(png).convert("RGB")).reshape(-1, 3)
+        colours = len(np.unique(pixels, axis=0))
+        ink = np.mean(np.any(pixels < 200, axis=1))
+        if colours < 20 or ink < 0.02:
+            failures.append(f"{page}: screenshot looks blank ({colours} colours, {ink:.3f} of pixels drawn)")
+        if screenshot_copy and page == "two.html":
+            Image.open(png).convert("RGB").quantize(colors=128).save(screenshot_copy, optimize=True)
+finally:
+    driver.quit()
+
+print(f"{hovered} hovers checked against the store")
+if hovered == 0:
+    failures.append("no bar hovered")
+for f in failures:
+    print("FAIL:", f)
+sys.exit(1 if failures else 0)
