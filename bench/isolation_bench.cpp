@@ -13,10 +13,10 @@
 // change sign in (0, 1): those are the ones that need a root isolated.
 //
 // Usage: isolation_bench [--points N]... [--seed S]
-#include "medusa/kinetic/algebraic_time.h"
-#include "medusa/kinetic/certificate_enclosure.h"
-#include "medusa/kinetic/certificate_polynomials.h"
-#include "medusa/kinetic/root_isolation.h"
+#include "algebraic_time.h"
+#include "certificate_enclosure.h"
+#include "certificate_polynomials.h"
+#include "root_isolation.h"
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

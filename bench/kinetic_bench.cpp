@@ -4,8 +4,8 @@
 // process. Prints per-frame times, their ratio, events per second, the certificate filter hit rate,
 // the certificate arithmetic floor (what the run's certificates cost before any event processing),
 // peak memory, and a lower bound for any engine of libkinetic's design: the Delaunay skeleton
-// (delaunay_skeleton.h) on the same frames, plus the arithmetic of the run's radius certificates; in
-// the plane, the skeleton with the alpha complex maintained as well, measured.
+// (lower_bound/delaunay_skeleton.h) on the same frames, plus the arithmetic of the run's radius certificates;
+// in the plane, the skeleton with the alpha complex maintained as well, measured.
 //
 // Usage: kinetic_bench [--csv cells.csv.gz|run-folder --radius R] [--random N --frames F --step S]
 //                     [--turnover F] [--dim 2|3] [--check-skeleton]
@@ -15,12 +15,12 @@
 // dimension only. --step sets how far the random walks move per frame: the kinetic cost grows with
 // the events per frame, the static rebuild's does not. --turnover makes cells appear and vanish at
 // every frame, as in a run where cells divide and die.
-#include "delaunay_skeleton.h"
+#include "certificate_enclosure.h"
+#include "interval_filter.h"
+#include "lower_bound/delaunay_skeleton.h"
 #include "medusa/io/run_reader.h"
-#include "medusa/kinetic/certificate_enclosure.h"
-#include "medusa/kinetic/interval_filter.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
-#include "medusa/kinetic/root_isolation.h"
+#include "root_isolation.h"
 
 #include <CGAL/Alpha_shape_2.h>
 #include <CGAL/Alpha_shape_face_base_2.h>
@@ -424,15 +424,16 @@ void skeleton_case(const Trajectories& t, const std::vector<double>& static_at, 
   if (t.dimension == 2)
     alpha_skeleton_case(t, static_at, rho2);
   const auto [total, static_total] = totals(r, static_at);
-  std::printf("Delaunay skeleton (no alpha complex, general position only, certificates in CGAL cells; a "
-              "lower bound, bench/delaunay_skeleton.h): %.2f ms per slab (frame rebuilds %.2f of it), "
-              "%.2f of the static rebuilds over the run's %zu slabs; %zu %s flips and %zu 3-2 flips; %zu "
-              "certificates (%zu recomputed in interval arithmetic), %zu failure times isolated, %zu of "
-              "them retired before they fired; final triangulation %s\n",
-              1e3 * total / double(r.slab_seconds.size()), total > 0 ? r.rebuild_seconds / total : 0.0,
-              total / static_total, r.slab_seconds.size(), r.flips23, t.dimension == 2 ? "2-2" : "2-3",
-              r.flips32, r.certificates, r.tight, r.isolated, r.stale,
-              r.verified ? "equal to CGAL's static one" : r.verdict.c_str());
+  std::printf(
+      "Delaunay skeleton (no alpha complex, general position only, certificates in CGAL cells; a "
+      "lower bound, bench/lower_bound/delaunay_skeleton.h): %.2f ms per slab (frame rebuilds %.2f of it), "
+      "%.2f of the static rebuilds over the run's %zu slabs; %zu %s flips and %zu 3-2 flips; %zu "
+      "certificates (%zu recomputed in interval arithmetic), %zu failure times isolated, %zu of "
+      "them retired before they fired; final triangulation %s\n",
+      1e3 * total / double(r.slab_seconds.size()), total > 0 ? r.rebuild_seconds / total : 0.0,
+      total / static_total, r.slab_seconds.size(), r.flips23, t.dimension == 2 ? "2-2" : "2-3", r.flips32,
+      r.certificates, r.tight, r.isolated, r.stale,
+      r.verified ? "equal to CGAL's static one" : r.verdict.c_str());
   if (r.verified)
     std::printf("lower bound for the kinetic alpha complex: the skeleton plus the arithmetic of the run's "
                 "radius certificates (%.3f s, one filter each) and the isolation of its radius events' "

@@ -8,7 +8,7 @@ neighbouring steps), and prints one Markdown row per case with the medians:
 
   events per cell and frame, kinetic and static milliseconds per frame, the ratio over the frames
   that rebuild every certificate (docs/MATH.md §2.3; below 1 the kinetic structure beats the static rebuild), and the lower bound for
-  any engine of libkinetic's design (bench/delaunay_skeleton.h), when the skeleton completes: the
+  any engine of libkinetic's design (bench/lower_bound/delaunay_skeleton.h), when the skeleton completes: the
   skeleton plus an estimate of the radius certificates' arithmetic, and in the plane the skeleton
   with its alpha layer, measured (the fixed-radius alpha complex maintained, checked against CGAL's
   exact Alpha_shape_2 at the end).

@@ -1,7 +1,7 @@
-#include "medusa/kinetic/algebraic_time.h"
+#include "algebraic_time.h"
 
 #include "medusa/core/error.h"
-#include "medusa/kinetic/root_isolation.h"
+#include "root_isolation.h"
 
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Polynomial_traits_d.h>

@@ -6,9 +6,9 @@
 // order of certificate_polynomials.h) are derived in docs/MATH.md §3.10. The radius certificates
 // Q G - 4 P H (edges Q G - 4 P) then combine the two enclosures with the interval P and Q in interval
 // arithmetic, which needs the rounding mode upward (CGAL::Protect_FPU_rounding).
-#include "medusa/kinetic/certificate_enclosure.h"
+#include "certificate_enclosure.h"
 
-#include "medusa/kinetic/fixed_polynomial.h"
+#include "fixed_polynomial.h"
 
 #include <algorithm>
 #include <cmath>

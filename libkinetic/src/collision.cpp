@@ -1,5 +1,5 @@
 // Two cells meeting inside a slab (collision.h, docs/MATH.md §2.5).
-#include "medusa/kinetic/collision.h"
+#include "collision.h"
 
 #include <cstddef>
 

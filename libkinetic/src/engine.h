@@ -14,15 +14,15 @@
 #include "touched_faces.h"
 #include "triangulation.h"
 
-#include "medusa/kinetic/algebraic_time.h"
-#include "medusa/kinetic/certificate_enclosure.h"
-#include "medusa/kinetic/certificate_polynomials.h"
-#include "medusa/kinetic/interval_filter.h"
+#include "algebraic_time.h"
+#include "certificate_enclosure.h"
+#include "certificate_polynomials.h"
+#include "interval_filter.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
-#include "medusa/kinetic/moving_point.h"
 #include "medusa/kinetic/observer.h"
 #include "medusa/kinetic/simplex.h"
 #include "medusa/kinetic/trajectories.h"
+#include "moving_point.h"
 
 #include <CGAL/FPU.h>
 

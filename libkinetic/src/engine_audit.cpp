@@ -1,9 +1,9 @@
 // The audit: the structure checked exactly against static CGAL computations at a rational time.
 #include "engine.h"
 
+#include "certificate_polynomials.h"
 #include "dimension_policy.h"
 #include "medusa/core/error.h"
-#include "medusa/kinetic/certificate_polynomials.h"
 #include "static_delaunay.h"
 
 #include <CGAL/FPU.h>

@@ -2,10 +2,10 @@
 // interval filter, root isolation in doubles, the exact path with the per-slab root cache), docs/MATH.md §3.
 #include "engine.h"
 
+#include "certificate_polynomials.h"
+#include "interval_filter.h"
 #include "medusa/core/error.h"
-#include "medusa/kinetic/certificate_polynomials.h"
-#include "medusa/kinetic/interval_filter.h"
-#include "medusa/kinetic/root_isolation.h"
+#include "root_isolation.h"
 
 #include <CGAL/FPU.h>
 

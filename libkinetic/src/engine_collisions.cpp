@@ -1,8 +1,8 @@
 // Collision checks: two cells at one position at a frame, or meeting inside a slab (docs/MATH.md §2.5).
 #include "engine.h"
 
+#include "collision.h"
 #include "medusa/core/error.h"
-#include "medusa/kinetic/collision.h"
 
 #include <algorithm>
 #include <string>

@@ -8,7 +8,7 @@
 // (tests/kinetic/test_kinetic_degenerate_groups_2d.cpp has a planar example derived on paper).
 #include "engine.h"
 
-#include "medusa/kinetic/certificate_polynomials.h"
+#include "certificate_polynomials.h"
 
 #include <algorithm>
 #include <map>

@@ -2,10 +2,10 @@
 // canonical order and radius events (5.2).
 #include "engine.h"
 
+#include "certificate_polynomials.h"
 #include "dimension_policy.h"
 #include "face.h"
 #include "medusa/core/error.h"
-#include "medusa/kinetic/certificate_polynomials.h"
 
 #include <algorithm>
 #include <array>

@@ -2,9 +2,9 @@
 // of radius certificates (docs/MATH.md §4.4), the Gabriel test and membership re-evaluation (4.5).
 #include "engine.h"
 
+#include "certificate_polynomials.h"
 #include "face.h"
 #include "medusa/core/error.h"
-#include "medusa/kinetic/certificate_polynomials.h"
 #include "touched_faces.h"
 
 #include <algorithm>

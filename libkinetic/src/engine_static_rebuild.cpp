@@ -1,8 +1,8 @@
 // Static rebuilds of Del with CGAL at now+ (insertions, deletions, repairs; docs/MATH.md §5.4, §5.5).
 #include "engine.h"
 
+#include "certificate_polynomials.h"
 #include "medusa/core/error.h"
-#include "medusa/kinetic/certificate_polynomials.h"
 #include "static_delaunay.h"
 
 #include <algorithm>

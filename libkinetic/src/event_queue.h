@@ -2,7 +2,7 @@
 // Entries of retired or reinstalled certificates stay in the queue and are skipped by version.
 #pragma once
 
-#include "medusa/kinetic/algebraic_time.h"
+#include "algebraic_time.h"
 
 #include <algorithm>
 #include <cstdint>

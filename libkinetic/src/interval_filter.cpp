@@ -1,4 +1,4 @@
-#include "medusa/kinetic/interval_filter.h"
+#include "interval_filter.h"
 
 #include <algorithm>
 #include <array>

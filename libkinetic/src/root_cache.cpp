@@ -1,7 +1,7 @@
 // The exact polynomial behind a root-cache key (docs/MATH.md §3.1, §3.8).
 #include "root_cache.h"
 
-#include "medusa/kinetic/certificate_polynomials.h"
+#include "certificate_polynomials.h"
 #include "start_determinants.h"
 
 namespace medusa::kinetic::detail {

@@ -2,10 +2,10 @@
 // polynomial up to sign, hence its roots. A key names the polynomial; KeyPolynomial rebuilds it.
 #pragma once
 
-#include "medusa/kinetic/algebraic_time.h"
+#include "algebraic_time.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
-#include "medusa/kinetic/moving_point.h"
 #include "medusa/kinetic/simplex.h"
+#include "moving_point.h"
 
 #include <array>
 #include <cstddef>

@@ -1,4 +1,4 @@
-#include "medusa/kinetic/root_isolation.h"
+#include "root_isolation.h"
 
 #include <algorithm>
 #include <array>

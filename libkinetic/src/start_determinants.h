@@ -6,7 +6,7 @@
 // on CC3D runs, whose frames are full of cospherical lattice sets, that was a tenth of the run.
 #pragma once
 
-#include "medusa/kinetic/moving_point.h"
+#include "moving_point.h"
 
 #include <cstddef>
 

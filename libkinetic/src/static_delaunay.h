@@ -5,8 +5,8 @@
 // Alpha_shape_2 in GENERAL mode).
 #pragma once
 
-#include "medusa/kinetic/moving_point.h"
 #include "medusa/kinetic/simplex.h"
+#include "moving_point.h"
 
 #include <CGAL/Gmpq.h>
 

@@ -3,8 +3,8 @@
 // points are not flat at u + delta alone.
 #include "static_delaunay.h"
 
-#include "medusa/kinetic/algebraic_time.h"
-#include "medusa/kinetic/certificate_polynomials.h"
+#include "algebraic_time.h"
+#include "certificate_polynomials.h"
 #include "start_determinants.h"
 
 #include <CGAL/FPU.h>

@@ -19,6 +19,10 @@ inline constexpr const char* periodic_axes = "periodic_axes";
 inline constexpr const char* periodic_length[3] = {"periodic_length_x", "periodic_length_y",
                                                    "periodic_length_z"};
 inline constexpr const char* software_version = "software_version";
+inline constexpr const char* position_source = "position_source";
+inline constexpr const char* snap_policy = "snap_policy";
+inline constexpr const char* snapped_positions = "snapped_positions";
+inline constexpr const char* snap_max_displacement = "snap_max_displacement";
 inline constexpr const char* cell_count = "cell_count";
 inline constexpr const char* batch_count = "batch_count";
 inline constexpr const char* frame_count = "frame_count";

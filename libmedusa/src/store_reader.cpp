@@ -22,6 +22,13 @@ namespace {
   throw StoreError("store " + path + ": " + what);
 }
 
+bool has_attribute(hid_t object, const char* name, const std::string& path) {
+  const htri_t exists = H5Aexists(object, name);
+  if (exists < 0)
+    h5::fail(path, "cannot read the root group");
+  return exists > 0;
+}
+
 Handle open_group(hid_t file, const char* name, const std::string& path) {
   if (H5Lexists(file, name, H5P_DEFAULT) <= 0)
     corrupt(path, std::string("group /") + name + " is missing");
@@ -163,10 +170,17 @@ Medusa read_store(const std::string& path, const StoreReadOptions& options) {
   m.run.command_line = h5::read_string_attribute(f, L::command_line, path);
   m.run.software_version = h5::read_string_attribute(f, L::software_version, path);
   // Absent from stores written before periodic runs were supported: those are open runs.
-  if (H5Aexists(f, L::periodic_axes) > 0) {
+  if (has_attribute(f, L::periodic_axes, path)) {
     m.run.periodic_axes = h5::read_string_attribute(f, L::periodic_axes, path);
     for (std::size_t a = 0; a < 3; ++a)
       m.run.periodic_lengths[a] = h5::read_int_attribute(f, L::periodic_length[a], path);
+  }
+  // Stores written before these attributes existed leave them unknown.
+  if (has_attribute(f, L::position_source, path)) {
+    m.run.position_source = h5::read_string_attribute(f, L::position_source, path);
+    m.run.snap_policy = h5::read_string_attribute(f, L::snap_policy, path);
+    m.run.snapped_positions = h5::read_uint_attribute(f, L::snapped_positions, path);
+    m.run.snap_max_displacement = h5::read_double_attribute(f, L::snap_max_displacement, path);
   }
   m.input.scale = h5::read_int_attribute(f, L::grid_scale, path);
   m.input.dimension = static_cast<int>(h5::read_int_attribute(f, L::dimension, path));

@@ -181,6 +181,10 @@ void StoreWriter::run(const RunInfo& info, const kinetic::Trajectories& input) {
     h5::write_attribute(f, L::periodic_axes, info.periodic_axes, w.path);
     for (std::size_t a = 0; a < 3; ++a)
       h5::write_attribute(f, L::periodic_length[a], info.periodic_lengths[a], w.path);
+    h5::write_attribute(f, L::position_source, info.position_source, w.path);
+    h5::write_attribute(f, L::snap_policy, info.snap_policy, w.path);
+    h5::write_attribute(f, L::snapped_positions, info.snapped_positions, w.path);
+    h5::write_attribute(f, L::snap_max_displacement, info.snap_max_displacement, w.path);
 
     Handle g = create_group(f, L::input, w.path);
     h5::write_attribute(g.get(), L::type_names, input.type_names, w.path);

@@ -1,6 +1,7 @@
 // `medusa info`: what a store holds (docs/FORMAT.md).
 #include "commands.h"
 #include "diagram_selection.h"
+#include "position_source.h"
 
 #include "medusa/medusa/store_reader.h"
 
@@ -22,6 +23,7 @@ void info_command(const std::string& path) {
     std::cout << "  " << f << "\n";
   std::cout << "dimension: " << input.dimension << "\n"
             << "grid scale: " << input.scale << "\n"
+            << "positions: " << describe_positions(medusa.run) << "\n"
             << "cells: " << input.cells.size() << "\n"
             << "frames: " << input.frames() << "\n";
   if (!input.frame_times.empty())

@@ -38,6 +38,7 @@
 #include <tuple>
 #include <unistd.h>
 #include <utility>
+#include <vector>
 
 namespace medusa::cli {
 namespace {
@@ -51,7 +52,8 @@ struct RunArguments {
   std::string source;
   std::string timings;
   unsigned threads = 0; // 0: one per hardware thread
-  bool audit = false, snap = false, periodic_as_open = false, quiet = false, progress = false, force = false;
+  bool audit = false, snap = false, exact_vtk = false, periodic_as_open = false, quiet = false,
+       progress = false, force = false;
 };
 
 // Forwards the event stream to the builder; reports progress and polls for interrupts. It also
@@ -122,6 +124,24 @@ std::string output_stem(const std::string& output) {
       output.compare(output.size() - suffix.size(), suffix.size(), suffix) == 0)
     return output.substr(0, output.size() - suffix.size());
   return output;
+}
+
+// The bundled run `medusa run` processes without an argument: the installed copy beside the binary
+// (<prefix>/share/medusa/examples/sorting_3d for <prefix>/bin/medusa), else the source tree's (a
+// binary in the build tree).
+std::string bundled_example() {
+  std::vector<fs::path> places;
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec)
+    places.push_back((self.parent_path() / MEDUSA_EXAMPLES_FROM_BINDIR / "sorting_3d").lexically_normal());
+  places.push_back(fs::path(MEDUSA_SOURCE_DIR) / "examples" / "sorting_3d");
+  for (const fs::path& p : places)
+    if (fs::is_directory(p, ec))
+      return p.string();
+  throw InputError("no input given and the bundled example is in neither " + places.front().string() +
+                   (places.size() > 1 ? " nor " + places.back().string() : std::string()) +
+                   "; give a CC3D output folder or cells.csv[.gz]");
 }
 
 // What the summary and --timings report about the stages after the kinetic one.
@@ -256,8 +276,7 @@ void write_timings(const std::string& path, const RunArguments& args, const io::
 }
 
 void run_command(const RunArguments& args, const std::string& command_line) {
-  const std::string input =
-      args.input.empty() ? std::string(MEDUSA_SOURCE_DIR) + "/examples/sorting_3d" : args.input;
+  const std::string input = args.input.empty() ? bundled_example() : args.input;
   std::error_code ec;
   if (!fs::exists(input, ec))
     throw InputError("input " + input + " does not exist");
@@ -274,16 +293,19 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   resolved.input = input;
   io::RunOptions options;
   options.source = choose_source(input, args.source);
-  options.snap = args.snap;
+  options.snap = !args.exact_vtk;
   options.allow_periodic_as_open = args.periodic_as_open;
   options.read_periodic = !args.periodic_as_open;
   meter.stage("reading " + input);
   StageClock clock;
   const io::RunData data = io::read_run(input, options);
   timings.add("reading", clock);
-  if (!args.quiet)
+  if (!args.quiet) {
     for (const std::string& w : data.warnings)
       std::cerr << "medusa: warning: " << w << "\n";
+    for (const std::string& n : data.notes)
+      std::cerr << "medusa: " << n << "\n";
+  }
 
   std::string radius = args.radius, radius_note;
   if (args.radius == "auto")
@@ -310,6 +332,10 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   info.source_files = data.sources;
   info.command_line = command_line;
   info.software_version = medusa::version;
+  info.position_source = data.position_convention;
+  info.snap_policy = data.used == io::RunSource::vtk && data.snap.snapped ? "nearest-ties-to-even" : "exact";
+  info.snapped_positions = static_cast<std::uint64_t>(data.snap.moved);
+  info.snap_max_displacement = data.snap.max_displacement();
   if (cover) {
     info.periodic_axes = data.domain.axes();
     info.periodic_lengths = data.domain.period;
@@ -390,9 +416,13 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
       ->capture_default_str();
   run->add_option("--source", args->source,
                   "positions from 'csv' (cells.csv.gz, CC3D centres; default for a folder that has it) or "
-                  "'vtk' (exact voxel centroids; these lie off the 10^-6 grid, so they need --snap)")
+                  "'vtk' (voxel centroids, snapped to the 10^-6 grid as CC3D's centres are rounded; the "
+                  "snap is recorded in the store, docs/MATH.md §1.3)")
       ->check(CLI::IsMember({"csv", "vtk"}));
-  run->add_flag("--snap", args->snap, "snap VTK centroids to the 10^-6 grid (recorded in the store)");
+  run->add_flag("--exact-vtk", args->exact_vtk,
+                "refuse VTK centroids off the 10^-6 grid instead of snapping them");
+  run->add_flag("--snap", args->snap,
+                "snap VTK centroids to the 10^-6 grid (the default; accepted for older scripts)");
   run->add_flag("--periodic-as-open", args->periodic_as_open,
                 "read a periodic run as if its boundaries were open");
   run->add_flag("--audit", args->audit,
@@ -410,7 +440,11 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
       "--timings", args->timings,
       "write wall and CPU seconds per stage (reading, kinetic, medusa_store, filtrations, reduction, "
       "exports), peak RSS, kinetic events and store size to this JSON file");
-  run->callback([args, command_line] { run_command(*args, command_line); });
+  run->callback([args, command_line] {
+    if (args->snap && args->exact_vtk)
+      throw CLI::ValidationError("--exact-vtk", "contradicts --snap: give one of them");
+    run_command(*args, command_line);
+  });
 }
 
 } // namespace medusa::cli

@@ -193,7 +193,7 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
                     ? "all cells"
                     : "type " + label + (tname.empty() ? "" : " (" + tname + ")"))
             << ":\n";
-    describe_forward_diagram(summary, d, t0, t_end, input.dimension);
+    describe_forward_diagram(summary, medusa, diagrams, d);
     const auto s =
         std::find_if(slices.begin(), slices.end(), [&](const TypeSlices& x) { return x.label == label; });
     headlines.push_back(

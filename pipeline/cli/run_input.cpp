@@ -29,7 +29,7 @@ io::RunSource choose_source(const std::string& input, const std::string& source)
   if (source == "csv")
     return io::RunSource::csv;
   // Default for a CC3D folder: CC3D's own centres (cells.csv.gz) are on the 10^-6 grid, while the
-  // VTK voxel centroids are not and would need --snap (docs/MATH.md §1.2, §1.3).
+  // VTK voxel centroids are not and are snapped to it (docs/MATH.md §1.2, §1.3).
   const fs::path folder(input);
   std::error_code ec;
   if (fs::is_directory(folder, ec) &&

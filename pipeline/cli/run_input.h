@@ -13,7 +13,7 @@ namespace medusa::cli {
 std::string input_stem(const std::string& input);
 
 // `source` is "csv", "vtk" or empty; empty picks CC3D's own centres (cells.csv.gz) for a folder that
-// has them, else lets the reader decide (docs/MATH.md §1.2, §1.3).
+// has them, else lets the reader decide (VTK centroids are snapped to the grid, docs/MATH.md §1.3).
 io::RunSource choose_source(const std::string& input, const std::string& source);
 
 // --radius auto (docs/MATH.md §7.10): the equivalent-sphere (disc in 2D) radius of the median cell

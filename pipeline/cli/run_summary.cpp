@@ -2,6 +2,7 @@
 
 #include "class_fates.h"
 #include "diagram_selection.h"
+#include "position_source.h"
 
 #include "medusa/core/error.h"
 
@@ -81,7 +82,30 @@ void describe_planar_bubbles(std::ostream& out, const persistence::Diagram& forw
       << " (holes that opened inside the tissue and closed again)\n";
 }
 
+void describe_fates(std::ostream& out, const ClassFates& fates, const persistence::Diagram& forward,
+                    int dimension, double t0, double t_end) {
+  describe_clusters(out, fates.clusters, t0, t_end);
+  describe_holes(out, fates.holes[1], "loop", "loops", t0, t_end);
+  if (dimension == 2)
+    describe_planar_bubbles(out, forward);
+  else
+    describe_holes(out, fates.holes[2], "cavity", "cavities", t0, t_end);
+}
+
 } // namespace
+
+void describe_forward_diagram(std::ostream& out, const medusa::Medusa& medusa,
+                              const std::vector<persistence::Diagram>& diagrams,
+                              const persistence::Diagram& forward) {
+  const kinetic::Trajectories& input = medusa.input;
+  const persistence::Diagram* reverse =
+      find_diagram(diagrams, forward.cell_type, persistence::Direction::reverse);
+  if (reverse == nullptr)
+    throw InternalError("run summary: no reverse diagram for type " + type_label(forward.cell_type));
+  describe_fates(out, class_fates(medusa, forward, *reverse), forward, input.dimension,
+                 static_cast<double>(input.frame_times.front()),
+                 static_cast<double>(input.frame_times.back()));
+}
 
 std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
                                            const kinetic::KineticStatistics& stats,
@@ -94,8 +118,10 @@ std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medu
       << " to " << mcs(t_end) << "), dimension " << input.dimension << "\n"
       << "radius: " << radius_text << " lattice units"
       << (radius_note.empty() ? "" : " (" + radius_note + ")")
-      << "; two cells touch when their centres are closer than twice that\n"
-      << "events: " << stats.flips() << " flips (";
+      << "; two cells touch when their centres are closer than twice that\n";
+  if (positions_from_vtk(medusa.run))
+    out << "positions: " << describe_positions(medusa.run) << "\n";
+  out << "events: " << stats.flips() << " flips (";
   // A planar run flips 2-2, a 3D run 2-3 and 3-2 (the hull flips of either are counted apart).
   if (input.dimension == 2)
     out << stats.flips22 << " 2-2, ";
@@ -138,12 +164,7 @@ std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medu
       leaving = fates.cells_leaving_at_first;
     }
     out << label << ":\n";
-    describe_clusters(out, fates.clusters, t0, t_end);
-    describe_holes(out, fates.holes[1], "loop", "loops", t0, t_end);
-    if (input.dimension == 2)
-      describe_planar_bubbles(out, d);
-    else
-      describe_holes(out, fates.holes[2], "cavity", "cavities", t0, t_end);
+    describe_fates(out, fates, d, input.dimension, t0, t_end);
   }
   out << "Counts at MCS " << mcs(t0) << " and MCS " << mcs(t_end)
       << " are those of the complex at that frame (b0, b1, b2 of `medusa curves --frames-only`). Joins, "

@@ -24,4 +24,11 @@ std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medu
                                            const std::string& radius_text,
                                            const std::string& radius_note = "");
 
+// The lines of write_run_summary for one forward diagram (the whole medusa or one type): clusters,
+// loops and cavities and what became of them. `diagrams` must hold the reverse diagram of the same
+// type; `medusa` must hold its batches.
+void describe_forward_diagram(std::ostream& out, const medusa::Medusa& medusa,
+                              const std::vector<persistence::Diagram>& diagrams,
+                              const persistence::Diagram& forward);
+
 } // namespace medusa::cli

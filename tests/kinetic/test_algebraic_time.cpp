@@ -1,8 +1,8 @@
 // Exact times inside a slab (algebraic_time.h): choosing rationals just after an algebraic time, as
 // the static repair at an event time does (Engine::delaunay_after_algebraic_now), and the signs of a
 // polynomial just before and just after a time (Engine::flat_without_turning_at_now).
+#include "algebraic_time.h"
 #include "medusa/core/error.h"
-#include "medusa/kinetic/algebraic_time.h"
 
 #include <catch2/catch.hpp>
 

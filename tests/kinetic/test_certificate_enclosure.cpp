@@ -1,8 +1,8 @@
 // The enclosures from plain doubles (certificate_enclosure.h) against the exact integer coefficients
 // of the same certificates, at every magnitude the grid allows, in exactly degenerate positions and
 // in both rounding modes; and the filter they feed is as decisive as interval arithmetic.
-#include "medusa/kinetic/certificate_enclosure.h"
-#include "medusa/kinetic/certificate_polynomials.h"
+#include "certificate_enclosure.h"
+#include "certificate_polynomials.h"
 
 #include <CGAL/FPU.h>
 #include <CGAL/Gmpz.h>

@@ -1,7 +1,7 @@
 // Each certificate formula of docs/MATH.md §3.1 against CGAL's exact static predicates and constructions
 // on random integer inputs, at several rational times, for both signs.
-#include "medusa/kinetic/algebraic_time.h"
-#include "medusa/kinetic/certificate_polynomials.h"
+#include "algebraic_time.h"
+#include "certificate_polynomials.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <catch2/catch.hpp>

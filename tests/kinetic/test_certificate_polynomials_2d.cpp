@@ -1,7 +1,7 @@
 // The planar certificate formulas (docs/MATH.md §3.2 and §3.3 in dimension 2) against CGAL's exact static 2D
 // predicates and constructions on random integer inputs, at several rational times, for both signs.
 // The points move in a plane z = const (the z of the input is arbitrary and must not matter).
-#include "medusa/kinetic/certificate_polynomials.h"
+#include "certificate_polynomials.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <catch2/catch.hpp>

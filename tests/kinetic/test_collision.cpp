@@ -1,6 +1,6 @@
 // meeting_in_slab (collision.h, docs/MATH.md §2.5): two cells at one position inside a slab, decided in
 // integers. Each case is worked out by hand: p(u) - q(u) = da + u db per coordinate.
-#include "medusa/kinetic/collision.h"
+#include "collision.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-#include "medusa/kinetic/interval_filter.h"
+#include "interval_filter.h"
 
 #include <CGAL/FPU.h>
 #include <catch2/catch.hpp>

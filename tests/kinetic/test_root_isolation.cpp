@@ -1,7 +1,7 @@
 // Certified root isolation in doubles (root_isolation.h) and exact comparison of the times it
 // produces (SlabTime over IsolatedRoot). Expected roots are derived on paper.
-#include "medusa/kinetic/algebraic_time.h"
-#include "medusa/kinetic/root_isolation.h"
+#include "algebraic_time.h"
+#include "root_isolation.h"
 
 #include <CGAL/FPU.h>
 #include <catch2/catch.hpp>

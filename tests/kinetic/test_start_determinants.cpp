@@ -3,8 +3,8 @@
 // u = 0), against the oracle: the certificate polynomial in exact integers (certificate_polynomials.h)
 // and its real roots. Random points of a small box make cospherical, coplanar and collinear sets
 // frequent; the corners of a lattice cube are CC3D's initial layout.
-#include "medusa/kinetic/algebraic_time.h"
-#include "medusa/kinetic/certificate_polynomials.h"
+#include "algebraic_time.h"
+#include "certificate_polynomials.h"
 #include "root_cache.h"
 #include "start_determinants.h"
 #include "static_delaunay.h"

@@ -23,6 +23,10 @@ inline medusa::RunInfo test_run_info() {
   info.source_files = {"run/Step_0000.vtk.gz", "run/Step_0010.vtk.gz"};
   info.command_line = "medusa run --radius 1.05 run";
   info.software_version = "0.1.0-test";
+  info.position_source = "vtk-centroids-voxel-corner";
+  info.snap_policy = "nearest-ties-to-even";
+  info.snapped_positions = 7;
+  info.snap_max_displacement = 1.0 / 3.0;
   return info;
 }
 
@@ -74,7 +78,9 @@ inline bool same_medusa(const medusa::Medusa& a, const medusa::Medusa& b) {
     return false;
   if (a.run.radius != b.run.radius || a.run.radius_text != b.run.radius_text ||
       a.run.source_files != b.run.source_files || a.run.command_line != b.run.command_line ||
-      a.run.software_version != b.run.software_version)
+      a.run.software_version != b.run.software_version || a.run.position_source != b.run.position_source ||
+      a.run.snap_policy != b.run.snap_policy || a.run.snapped_positions != b.run.snapped_positions ||
+      a.run.snap_max_displacement != b.run.snap_max_displacement)
     return false;
   if (a.input.scale != b.input.scale || a.input.dimension != b.input.dimension ||
       a.input.frame_times != b.input.frame_times || a.input.type_names != b.input.type_names ||

@@ -234,7 +234,9 @@ TEST_CASE("The real 2D run is planar from its snapshots too", "[io][real]") {
 
 TEST_CASE("A real VTK folder reads with snapping and reports the moves", "[io][real]") {
   RunOptions o;
-  CHECK_THAT(io::test::input_error([&] { read_run(run_path("sorting_3d_seed2"), o); }), Contains("--snap"));
+  o.snap = false;
+  CHECK_THAT(io::test::input_error([&] { read_run(run_path("sorting_3d_seed2"), o); }),
+             Contains("--exact-vtk"));
   o.snap = true;
   const RunData r = read_run(run_path("sorting_3d_seed2"), o);
   CHECK(r.used == RunSource::vtk);

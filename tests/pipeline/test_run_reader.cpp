@@ -69,17 +69,19 @@ TEST_CASE("A cell changing type between VTK frames is refused naming the file an
              Contains("Step_10.vtk") && Contains("cell 1") && Contains("type 2") && Contains("Step_0.vtk"));
 }
 
-TEST_CASE("VTK centroids off the grid need the snap option", "[io][run]") {
+TEST_CASE("VTK centroids off the grid are snapped by default and refused when exact positions are asked for",
+          "[io][run]") {
   io::test::TempDir dir;
   fs::create_directories(dir.path() / "LatticeData");
   fs::copy_file(io::test::data("io/vtk_split_cell.vtk"), dir.path() / "LatticeData" / "Step_0.vtk");
   fs::copy_file(io::test::data("io/vtk_split_cell.vtk"), dir.path() / "LatticeData" / "Step_3.vtk");
-  const std::string m = io::test::input_error([&] { read_run(dir.path().string()); });
-  CHECK_THAT(m, Contains("Step_0.vtk") && Contains("cell 2") && Contains("3 voxels") && Contains("--snap"));
+  RunOptions exact;
+  exact.snap = false;
+  const std::string m = io::test::input_error([&] { read_run(dir.path().string(), exact); });
+  CHECK_THAT(m,
+             Contains("Step_0.vtk") && Contains("cell 2") && Contains("3 voxels") && Contains("--exact-vtk"));
 
-  RunOptions snap;
-  snap.snap = true;
-  const RunData r = read_run(dir.path().string(), snap);
+  const RunData r = read_run(dir.path().string());
   CHECK(r.used == RunSource::vtk);
   CHECK(r.position_convention == "vtk-centroids-voxel-corner");
   CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 3});
@@ -90,10 +92,13 @@ TEST_CASE("VTK centroids off the grid need the snap option", "[io][run]") {
         std::vector<kinetic::GridPoint>(2, kinetic::GridPoint{2666667, 333333, 333333}));
   CHECK(r.volumes == CellVolumes{{5, 5}, {3, 3}});
   CHECK(r.snap.snapped);
+  CHECK(r.snap.positions == 4);
   CHECK(r.snap.moved == 2);
   CHECK(r.snap.max_displacement_num == 1);
   CHECK(r.snap.max_displacement_den == 3);
-  CHECK(has_warning(r, "snapped 2 VTK centroids"));
+  REQUIRE(r.notes.size() == 1);
+  CHECK_THAT(r.notes[0], Contains("VTK centroids snapped to the 10^-6 grid: 2 of 4 positions moved, the "
+                                  "largest by 0.33 grid units (3.3e-07 lattice units)"));
 }
 
 TEST_CASE("A VTK run whose centroids lie on the grid needs no snapping", "[io][run]") {

@@ -6,7 +6,9 @@
 #include "medusa/io/vtk_reader.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
+#include <limits>
 
 namespace medusa::io {
 
@@ -97,6 +99,27 @@ void take_assembly(RunData& run, AssembledRun&& assembled) {
   run.warnings.insert(run.warnings.end(), assembled.warnings.begin(), assembled.warnings.end());
 }
 
+// One line on what snapping did (docs/MATH.md §1.3): the user's results are exact for the snapped
+// positions, which differ from the voxel means by at most half a grid unit per coordinate.
+std::string snap_note(const SnapReport& report, std::int64_t scale) {
+  int digits = 0;
+  std::int64_t power = 1;
+  while (power < scale && power <= std::numeric_limits<std::int64_t>::max() / 10) {
+    power *= 10;
+    ++digits;
+  }
+  const std::string grid = power == scale ? "10^-" + std::to_string(digits) : "1/" + std::to_string(scale);
+  const double grid_units = report.max_displacement();
+  char buffer[320];
+  std::snprintf(buffer, sizeof buffer,
+                "VTK centroids snapped to the %s grid: %lld of %lld positions moved, the largest by "
+                "%.2g grid units (%.2g lattice units); exact results are for the snapped positions "
+                "(docs/MATH.md §1.3; --exact-vtk refuses off-grid centroids instead)",
+                grid.c_str(), static_cast<long long>(report.moved), static_cast<long long>(report.positions),
+                grid_units, grid_units / static_cast<double>(scale));
+  return buffer;
+}
+
 } // namespace
 
 RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& options,
@@ -148,16 +171,18 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
       s.type = c.type;
       s.volume = c.voxels;
       s.source = k;
+      ++run.snap.positions;
       if (centroid_on_grid(c.scaled_sum, c.voxels)) {
         for (int a = 0; a < 3; ++a)
           s.position[a] = c.scaled_sum[a] / c.voxels;
       } else if (options.snap) {
         s.position = snap_centroid(c.scaled_sum, c.voxels, run.snap);
       } else {
-        throw InputError(
-            file + ": cell " + std::to_string(c.id) + ": its voxel centroid (" + std::to_string(c.voxels) +
-            " voxels) is not on the grid of scale " + std::to_string(options.scale) +
-            "; rerun with --snap to round VTK centroids to the nearest grid point (docs/MATH.md §1.3)");
+        throw InputError(file + ": cell " + std::to_string(c.id) + ": its voxel centroid (" +
+                         std::to_string(c.voxels) + " voxels) is not on the grid of scale " +
+                         std::to_string(options.scale) +
+                         " and exact VTK positions were asked for (--exact-vtk); without it centroids are "
+                         "snapped to the nearest grid point (docs/MATH.md §1.3)");
       }
       samples.push_back(s);
     }
@@ -171,10 +196,7 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
   unwrap_trajectories(run.trajectories, run.domain, run.sources);
   name_types(run, {});
   if (run.snap.moved > 0)
-    run.warnings.push_back("snapped " + std::to_string(run.snap.moved) +
-                           " VTK centroids to the grid (policy R, docs/MATH.md §1.3); largest move " +
-                           std::to_string(run.snap.max_displacement_num) + "/" +
-                           std::to_string(run.snap.max_displacement_den) + " grid units");
+    run.notes.push_back(snap_note(run.snap, options.scale));
   run.trajectories.validate();
   return run;
 }

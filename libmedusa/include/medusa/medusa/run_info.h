@@ -20,6 +20,12 @@ struct RunInfo {
   // axes): the medusa is then the one on the torus, its positions unwrapped (docs/MATH.md §8).
   std::string periodic_axes;
   std::array<std::int64_t, 3> periodic_lengths{};
+  // Where the positions came from and whether they were moved onto the grid (docs/MATH.md §1.1,
+  // §1.3): every exact answer is exact for the recorded positions.
+  std::string position_source;         // e.g. "csv-centres", "vtk-centroids-voxel-corner"; "" unknown
+  std::string snap_policy;             // "exact" (never moved) or "nearest-ties-to-even" (policy R)
+  std::uint64_t snapped_positions = 0; // positions (cell, frame) moved by snapping
+  double snap_max_displacement = 0.0;  // largest move of one coordinate, grid units (<= 1/2)
 };
 
 } // namespace medusa

@@ -1,5 +1,5 @@
 // VTK centroids X / n on the grid (docs/MATH.md §1.3): exact when n divides X, otherwise snapped to the
-// nearest grid point (policy R) only on explicit opt-in.
+// nearest grid point (policy R) unless the caller asks for exact positions.
 #pragma once
 
 #include "medusa/kinetic/trajectories.h"
@@ -11,8 +11,9 @@ namespace medusa::io {
 
 // What policy R did to a run (written into output headers by the caller, docs/MATH.md §1.1).
 struct SnapReport {
-  bool snapped = false;   // policy R was allowed (the caller opted in)
-  std::int64_t moved = 0; // positions (cell, frame) with at least one coordinate moved
+  bool snapped = false;       // policy R was in force (the caller did not ask for exact positions)
+  std::int64_t positions = 0; // positions (cell, frame) read from voxel centroids
+  std::int64_t moved = 0;     // of these, positions with at least one coordinate moved
   // Largest displacement of one coordinate, in grid units, as the exact fraction num / den (<= 1/2).
   std::int64_t max_displacement_num = 0;
   std::int64_t max_displacement_den = 1;

@@ -24,7 +24,9 @@ enum class RunSource {
 struct RunOptions {
   std::int64_t scale = 1000000; // grid scale S = 10^m (docs/MATH.md §1.1)
   RunSource source = RunSource::automatic;
-  bool snap = false;                   // policy R for VTK centroids off the grid (CLI: --snap)
+  // VTK centroids off the grid are snapped to the nearest grid point (policy R, docs/MATH.md §1.3),
+  // as CC3D's own centres in cells.csv are rounded; false refuses them (CLI: --exact-vtk).
+  bool snap = true;
   bool allow_periodic_as_open = false; // read a periodic run as if its boundaries were open
   // Read a periodic run as periodic (docs/MATH.md §8): no refusal and no warning; RunData::domain holds
   // its periodic axes for the caller to run it on the torus.
@@ -38,10 +40,12 @@ struct RunOptions {
 struct RunData {
   kinetic::Trajectories trajectories;
   std::vector<std::string> warnings;
+  // Facts about how the input was read that are not problems (e.g. the VTK centroids' snapping).
+  std::vector<std::string> notes;
   CellVolumes volumes;              // volumes[i][f] of trajectory i at frame first_frame + f
   std::vector<std::string> sources; // files read, in order (VTK snapshots by MCS, or the CSV)
   RunSource used = RunSource::csv;  // vtk or csv
-  SnapReport snap;                  // policy R bookkeeping (VTK only)
+  SnapReport snap;                  // policy R bookkeeping (VTK only; snapped: policy R was in force)
   // How positions were obtained, for output headers: "csv-centres" (CC3D's centres, 6 decimals) or
   // "vtk-centroids-voxel-corner" (exact voxel means, voxel (i,j,k) at origin + spacing*(i,j,k)).
   std::string position_convention;
@@ -54,7 +58,7 @@ struct RunData {
 // Reads a CC3D output folder (LatticeData/Step_*.vtk[.gz], Simulation/*.xml, cells.csv[.gz]) or a
 // .csv/.csv.gz file (its folder's Simulation/*.xml is used when present). Throws InputError for a
 // periodic run unless options.allow_periodic_as_open (then a warning is recorded and the positions are
-// unwrapped, docs/MATH.md §8), for VTK centroids off the grid unless options.snap, and for every
+// unwrapped, docs/MATH.md §8), for VTK centroids off the grid when !options.snap, and for every
 // malformed input (naming file, line, cell).
 RunData read_run(const std::string& path, const RunOptions& options = {});
 

@@ -1,11 +1,11 @@
 #include "delaunay_skeleton.h"
 
-#include "medusa/kinetic/certificate_enclosure.h"
-#include "medusa/kinetic/certificate_polynomials.h"
-#include "medusa/kinetic/collision.h"
-#include "medusa/kinetic/interval_filter.h"
-#include "medusa/kinetic/moving_point.h"
-#include "medusa/kinetic/root_isolation.h"
+#include "certificate_enclosure.h"
+#include "certificate_polynomials.h"
+#include "collision.h"
+#include "interval_filter.h"
+#include "moving_point.h"
+#include "root_isolation.h"
 
 #include <CGAL/Alpha_shape_2.h>
 #include <CGAL/Alpha_shape_face_base_2.h>

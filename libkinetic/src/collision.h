@@ -2,7 +2,7 @@
 // The engine reports it as an input error; the lower-bound skeleton of bench/ stops on it.
 #pragma once
 
-#include "medusa/kinetic/moving_point.h"
+#include "moving_point.h"
 
 #include <cstdint>
 #include <optional>

@@ -4,7 +4,7 @@
 // does not move lowers the degree.
 #pragma once
 
-#include "medusa/kinetic/moving_point.h"
+#include "moving_point.h"
 
 #include <array>
 

@@ -3,7 +3,7 @@
 // caller falls back to exact arithmetic. Callers must hold a CGAL::Protect_FPU_rounding guard.
 #pragma once
 
-#include "medusa/kinetic/polynomial.h"
+#include "polynomial.h"
 
 #include <CGAL/Interval_nt.h>
 

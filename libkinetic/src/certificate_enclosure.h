@@ -4,8 +4,8 @@
 // so a certificate it cannot settle is recomputed with intervals (certificate_polynomials.h).
 #pragma once
 
-#include "medusa/kinetic/interval_filter.h"
-#include "medusa/kinetic/moving_point.h"
+#include "interval_filter.h"
+#include "moving_point.h"
 
 namespace medusa::kinetic {
 

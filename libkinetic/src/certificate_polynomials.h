@@ -4,9 +4,9 @@
 // §1.5), so every input difference is an exact integer.
 #pragma once
 
-#include "medusa/kinetic/interval_filter.h"
-#include "medusa/kinetic/moving_point.h"
-#include "medusa/kinetic/polynomial.h"
+#include "interval_filter.h"
+#include "moving_point.h"
+#include "polynomial.h"
 
 #include <array>
 #include <type_traits>

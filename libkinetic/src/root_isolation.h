@@ -5,7 +5,7 @@
 // to exact isolation. Callers must hold a CGAL::Protect_FPU_rounding guard.
 #pragma once
 
-#include "medusa/kinetic/interval_filter.h"
+#include "interval_filter.h"
 
 namespace medusa::kinetic {
 

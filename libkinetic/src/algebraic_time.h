@@ -3,8 +3,8 @@
 // Heavy header: include it only in the few translation units that need exact times.
 #pragma once
 
-#include "medusa/kinetic/interval_filter.h"
-#include "medusa/kinetic/polynomial.h"
+#include "interval_filter.h"
+#include "polynomial.h"
 
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/Gmpq.h>
