@@ -16,7 +16,6 @@ per type and degree). The prefix defaults to the store's name without .h5.
 """
 import argparse
 import csv
-import io
 import math
 import os
 import shutil
@@ -53,11 +52,15 @@ def read_store(path):
             "radius": text(f.attrs.get("radius_text", b"")) or str(float(f.attrs["radius"])),
             "type_counts": {int(t): int(np.sum(types == t)) for t in np.unique(types)},
             "type_names": names,
+            "run_id": text(f.attrs.get("run_id", b"")),
         }
 
 
-def read_pairs(store, diagrams, medusa):
-    """Rows of the diagrams CSV (birth,death,dimension,type,direction) as dicts with float times."""
+def read_pairs(store, diagrams, medusa, run_id=""):
+    """Rows of the diagrams CSV (birth,death,dimension,type,direction) as dicts with float times.
+
+    The CSV's first line `# medusa run <id>` must name the store's run id (docs/FORMAT.md): a CSV from
+    another run is refused (exit 5), as medusa refuses a store error."""
     if diagrams is None:
         stem = store[:-3] if store.endswith(".h5") else store
         if os.path.exists(stem + ".diagrams.csv"):
@@ -65,6 +68,12 @@ def read_pairs(store, diagrams, medusa):
     if diagrams is not None:
         with open(diagrams, newline="") as f:
             content = f.read()
+        first = content.split("\n", 1)[0]
+        stamped = first[len("# medusa run "):] if first.startswith("# medusa run ") else ""
+        if run_id and stamped != run_id:
+            sys.stderr.write(f"plot_store.py: {diagrams} comes from another run than {store} "
+                             f"(run id {stamped or 'none'}, the store's is {run_id})\n")
+            sys.exit(5)
     else:
         program = medusa or shutil.which("medusa")
         if program is None:
@@ -74,7 +83,8 @@ def read_pairs(store, diagrams, medusa):
             raise SystemExit(f"plot_store.py: medusa barcode failed: {result.stderr.strip()}")
         content = result.stdout
     rows = []
-    for r in csv.DictReader(io.StringIO(content)):
+    lines = [line for line in content.splitlines() if not line.startswith("#")]
+    for r in csv.DictReader(lines):
         rows.append({"birth": float(r["birth"]), "death": float(r["death"]), "dim": int(r["dimension"]),
                      "type": r["type"], "direction": r["direction"]})
     return rows
@@ -254,7 +264,7 @@ def main():
     parser.add_argument("-o", "--output", help="output prefix (default: the store name without .h5)")
     args = parser.parse_args()
     info = read_store(args.store)
-    rows = read_pairs(args.store, args.diagrams, args.medusa)
+    rows = read_pairs(args.store, args.diagrams, args.medusa, info["run_id"])
     if not rows:
         raise SystemExit("plot_store.py: the diagrams are empty")
     prefix = args.output or (args.store[:-3] if args.store.endswith(".h5") else args.store)

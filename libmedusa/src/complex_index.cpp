@@ -34,18 +34,20 @@ std::vector<CellId> ComplexIndex::before(std::uint64_t batch) const {
   return out;
 }
 
-std::uint64_t ComplexIndex::frame_batch(std::size_t k) const {
-  const std::size_t frames = medusa_.input.frames();
+std::uint64_t ComplexIndex::frame_batch(std::size_t k) const { return medusa::frame_batch(medusa_, k); }
+
+std::uint64_t frame_batch(const Medusa& m, std::size_t k) {
+  const std::size_t frames = m.input.frames();
   if (k >= frames)
     throw InputError("medusa: frame " + std::to_string(k) + " is out of range (the run has " +
                      std::to_string(frames) + " frames)");
   if (k + 1 == frames)
-    return medusa_.end.batch;
+    return m.end.batch;
   // Batches are in exact time order; frame k is reached after the batches of earlier slabs and after
   // its own frame batch (slab k, u = 0 exactly), before any other batch of slab k.
   std::uint64_t last = 0;
   bool found = false;
-  for (const BatchRecord& b : medusa_.batches) {
+  for (const BatchRecord& b : m.batches) {
     if (b.slab < k || (b.slab == k && b.at_frame)) {
       last = b.batch;
       found = true;

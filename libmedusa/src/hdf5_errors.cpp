@@ -1,6 +1,7 @@
 #include "hdf5_errors.h"
 
 #include "medusa/core/error.h"
+#include "medusa/medusa/store_reader.h"
 
 #include <vector>
 
@@ -39,8 +40,21 @@ std::string error_text() {
   return text.empty() ? "HDF5 error" : text;
 }
 
+namespace {
+bool details = false;
+} // namespace
+
+void set_error_details(bool on) { details = on; }
+
 void fail(const std::string& path, const std::string& what) {
-  throw StoreError("store " + path + ": " + what + ": " + error_text());
+  // HDF5's own messages (errno, open flags, timestamps, internal function names) mean little to a
+  // user: they are added only on request (`--verbose`).
+  const std::string text = error_text();
+  throw StoreError("store " + path + ": " + what + (details ? " (HDF5: " + text + ")" : ""));
 }
 
 } // namespace medusa::h5
+
+namespace medusa {
+void set_store_error_details(bool on) { h5::set_error_details(on); }
+} // namespace medusa

@@ -24,7 +24,10 @@ private:
 // The most specific messages of the current HDF5 error stack, on one line ("" when empty).
 std::string error_text();
 
-// Throws StoreError("store <path>: <what>: <HDF5 text>").
+// Whether fail() adds the HDF5 error stack to its message (off by default).
+void set_error_details(bool on);
+
+// Throws StoreError("store <path>: <what>"), with " (HDF5: <text>)" when details are on.
 [[noreturn]] void fail(const std::string& path, const std::string& what);
 
 } // namespace medusa::h5

@@ -45,13 +45,11 @@ Signature signature_of(const Medusa& medusa, const std::vector<CellId>& cells) {
 std::vector<SignatureSample> signatures_over_time(const ComplexIndex& index) {
   const Medusa& m = index.medusa();
   std::vector<SignatureSample> samples;
-  std::unordered_map<std::uint64_t, std::size_t> by_batch;
   for (const BatchRecord& b : m.batches) {
     SignatureSample s;
     s.batch = b.batch;
     s.time = b.time;
     s.signature = signature_of(m, index.after(b.batch));
-    by_batch.emplace(b.batch, samples.size());
     samples.push_back(std::move(s));
   }
   SignatureSample end;
@@ -60,17 +58,27 @@ std::vector<SignatureSample> signatures_over_time(const ComplexIndex& index) {
   end.time = m.end.time;
   end.signature = signature_of(m, index.before(m.end.batch));
   samples.push_back(std::move(end));
+  assign_frames(m, samples);
+  return samples;
+}
+
+void assign_frames(const Medusa& m, std::vector<SignatureSample>& samples) {
+  if (samples.size() != m.batches.size() + 1)
+    throw InternalError("medusa signature: " + std::to_string(samples.size()) + " samples for " +
+                        std::to_string(m.batches.size()) + " batches");
+  std::unordered_map<std::uint64_t, std::size_t> by_batch;
+  for (std::size_t i = 0; i < m.batches.size(); ++i)
+    by_batch.emplace(m.batches[i].batch, i);
   for (std::size_t k = 0; k < m.input.frames(); ++k) {
     if (k + 1 == m.input.frames()) {
       samples.back().frames.push_back(k);
       continue;
     }
-    auto it = by_batch.find(index.frame_batch(k));
+    auto it = by_batch.find(frame_batch(m, k));
     if (it == by_batch.end())
       throw InternalError("medusa signature: frame " + std::to_string(k) + " maps to no batch");
     samples[it->second].frames.push_back(k);
   }
-  return samples;
 }
 
 } // namespace medusa

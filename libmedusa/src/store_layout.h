@@ -23,6 +23,7 @@ inline constexpr const char* position_source = "position_source";
 inline constexpr const char* snap_policy = "snap_policy";
 inline constexpr const char* snapped_positions = "snapped_positions";
 inline constexpr const char* snap_max_displacement = "snap_max_displacement";
+inline constexpr const char* run_id = "run_id";
 inline constexpr const char* cell_count = "cell_count";
 inline constexpr const char* batch_count = "batch_count";
 inline constexpr const char* frame_count = "frame_count";

@@ -9,7 +9,11 @@
 #include "medusa/core/error.h"
 #include "medusa/medusa/store_writer.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
+#include <sys/stat.h>
 
 namespace medusa {
 
@@ -140,13 +144,118 @@ void read_cells(hid_t file, Medusa& m, std::uint64_t count, const std::string& p
   }
 }
 
+// Reads every dataset outside the groups read above (the diagrams of /persistence, and anything a
+// later writer added) whole, so that HDF5 checks each chunk's fletcher32 checksum as h5py would: a
+// flipped bit there is a store error too, not data passed on.
+struct VisitState {
+  bool events_read = true;
+  std::string failed; // the first dataset that could not be read
+};
+
+herr_t verify_object(hid_t root, const char* name, const H5O_info_t* info, void* data) {
+  auto& state = *static_cast<VisitState*>(data);
+  if (info->type != H5O_TYPE_DATASET || !state.failed.empty())
+    return 0;
+  const std::string full = std::string("/") + name;
+  const auto under = [&](const char* group) { return full.rfind(std::string("/") + group + "/", 0) == 0; };
+  if (under(L::input) || under(L::cells) || (state.events_read && under(L::events)))
+    return 0;
+  Handle dataset = h5::dataset_handle(H5Dopen2(root, name, H5P_DEFAULT));
+  Handle file_type = h5::type_handle(dataset.valid() ? H5Dget_type(dataset.get()) : -1);
+  Handle memory_type =
+      h5::type_handle(file_type.valid() ? H5Tget_native_type(file_type.get(), H5T_DIR_ASCEND) : -1);
+  Handle space = h5::space_handle(dataset.valid() ? H5Dget_space(dataset.get()) : -1);
+  const hssize_t points = space.valid() ? H5Sget_simple_extent_npoints(space.get()) : -1;
+  const std::size_t width = memory_type.valid() ? H5Tget_size(memory_type.get()) : 0;
+  if (points < 0 || width == 0) {
+    state.failed = full;
+    return 1;
+  }
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(points) * width);
+  if (points > 0 &&
+      H5Dread(dataset.get(), memory_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data()) < 0) {
+    state.failed = full;
+    return 1;
+  }
+  return 0;
+}
+
+void verify_other_datasets(hid_t file, bool events_read, const std::string& path) {
+  VisitState state;
+  state.events_read = events_read;
+  const herr_t visited =
+      H5Ovisit2(file, H5_INDEX_NAME, H5_ITER_NATIVE, verify_object, &state, H5O_INFO_BASIC);
+  if (!state.failed.empty())
+    h5::fail(path, "dataset " + state.failed + " is corrupted (checksum or structure)");
+  if (visited < 0)
+    h5::fail(path, "cannot list its objects (corrupted?)");
+}
+
+// The run facts a correct writer cannot produce otherwise (docs/FORMAT.md): checked before anything
+// is computed from them, so an edited or damaged store with valid checksums is refused, naming the
+// first impossible value.
+void validate_run_facts(const Medusa& m, const std::string& path) {
+  try {
+    m.input.validate();
+  } catch (const InputError& e) {
+    corrupt(path, e.what());
+  }
+  const std::vector<std::int64_t>& times = m.input.frame_times;
+  const std::size_t frames = times.size();
+  if (!std::isfinite(m.run.radius) || m.run.radius <= 0)
+    corrupt(path, "radius " + std::to_string(m.run.radius) + " is not a positive number");
+  for (const kinetic::Trajectory& t : m.input.cells) {
+    if (t.type < 0)
+      corrupt(path, "cell " + std::to_string(t.cell_id) + " has the negative type " + std::to_string(t.type));
+    if (t.first_frame >= frames || t.positions.size() > frames - t.first_frame)
+      corrupt(path, "cell " + std::to_string(t.cell_id) + " has first_frame " +
+                        std::to_string(t.first_frame) + " outside the run's " + std::to_string(frames) +
+                        " frames");
+  }
+  // The builder kills every cell alive at the end at end_time (docs/MATH.md §6.2), and nothing
+  // happens after it.
+  if (!std::isfinite(m.end.time))
+    corrupt(path, "end_time is not a finite number");
+  double last_death = -std::numeric_limits<double>::infinity();
+  for (const Cell& c : m.cells) {
+    if (!std::isfinite(c.birth.time) || !std::isfinite(c.death.time) || c.death.time > m.end.time)
+      corrupt(path, "cell " + std::to_string(c.id) + " is born or dies at a time outside the run");
+    last_death = std::max(last_death, c.death.time);
+  }
+  if (!m.cells.empty() && last_death != m.end.time)
+    corrupt(path, "end_time " + std::to_string(m.end.time) + " is not the time the last cells die (" +
+                      std::to_string(last_death) + ")");
+  for (const BatchRecord& b : m.batches)
+    if (!std::isfinite(b.time) || b.time > m.end.time)
+      corrupt(path, "batch " + std::to_string(b.batch) + " has a time outside the run");
+  for (const FrameRecord& f : m.frames)
+    if (f.frame >= frames || !std::isfinite(f.time))
+      corrupt(path, "frame record " + std::to_string(f.frame) + " is outside the run's " +
+                        std::to_string(frames) + " frames");
+  if (!m.run.run_id.empty() &&
+      (m.run.run_id.size() != 32 || m.run.run_id.find_first_not_of("0123456789abcdef") != std::string::npos))
+    corrupt(path, "run_id '" + m.run.run_id + "' is not 32 hexadecimal digits");
+}
+
+// One plain sentence for a path that cannot be a store at all (HDF5 would say more, and less clearly).
+void check_is_file(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0)
+    corrupt(path, errno == ENOENT ? "no such file" : "cannot be read");
+  if (S_ISDIR(st.st_mode))
+    corrupt(path, "is a folder, not a store file");
+  if (!S_ISREG(st.st_mode))
+    corrupt(path, "is not a regular file");
+}
+
 } // namespace
 
 Medusa read_store(const std::string& path, const StoreReadOptions& options) {
+  check_is_file(path);
   h5::Quiet quiet;
   Handle file = h5::file_handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
   if (!file.valid())
-    h5::fail(path, "cannot open it (missing, not an HDF5 file, truncated or corrupt)");
+    h5::fail(path, "cannot open it (not an HDF5 file, or truncated or corrupt)");
   const hid_t f = file.get();
   const htri_t has_format = H5Aexists(f, L::format);
   if (has_format < 0)
@@ -182,6 +291,8 @@ Medusa read_store(const std::string& path, const StoreReadOptions& options) {
     m.run.snapped_positions = h5::read_uint_attribute(f, L::snapped_positions, path);
     m.run.snap_max_displacement = h5::read_double_attribute(f, L::snap_max_displacement, path);
   }
+  if (H5Aexists(f, L::run_id) > 0)
+    m.run.run_id = h5::read_string_attribute(f, L::run_id, path);
   m.input.scale = h5::read_int_attribute(f, L::grid_scale, path);
   m.input.dimension = static_cast<int>(h5::read_int_attribute(f, L::dimension, path));
   m.end.batch = h5::read_uint_attribute(f, L::end_batch, path);
@@ -195,8 +306,10 @@ Medusa read_store(const std::string& path, const StoreReadOptions& options) {
       corrupt(path, "batch_count or frame_count does not match /events");
   }
   read_cells(f, m, h5::read_uint_attribute(f, L::cell_count, path), path);
+  verify_other_datasets(f, options.events, path);
   if (!file.reset())
     h5::fail(path, "cannot close it");
+  validate_run_facts(m, path);
   validate_medusa(m, path);
   return m;
 }

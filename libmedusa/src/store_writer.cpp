@@ -38,6 +38,7 @@ struct StoreWriter::Impl {
   bool run_written = false;
   bool finished = false;
   bool failed = false;
+  Publish publish = Publish::on_finish;
 
   // /events
   std::optional<Column<std::uint64_t>> batch_index, batch_slab, frame_index, frame_batch;
@@ -96,9 +97,10 @@ struct StoreWriter::Impl {
   }
 };
 
-StoreWriter::StoreWriter(const std::string& path) : impl_(std::make_unique<Impl>()) {
+StoreWriter::StoreWriter(const std::string& path, Publish publish) : impl_(std::make_unique<Impl>()) {
   Impl& w = *impl_;
   w.path = path;
+  w.publish = publish;
   w.temporary = path + ".tmp-" + std::to_string(static_cast<long long>(::getpid()));
   h5::Quiet quiet;
   // Format 1.10 objects: every object header, B-tree and chunk index carries a checksum, so a flipped
@@ -185,6 +187,8 @@ void StoreWriter::run(const RunInfo& info, const kinetic::Trajectories& input) {
     h5::write_attribute(f, L::snap_policy, info.snap_policy, w.path);
     h5::write_attribute(f, L::snapped_positions, info.snapped_positions, w.path);
     h5::write_attribute(f, L::snap_max_displacement, info.snap_max_displacement, w.path);
+    if (!info.run_id.empty())
+      h5::write_attribute(f, L::run_id, info.run_id, w.path);
 
     Handle g = create_group(f, L::input, w.path);
     h5::write_attribute(g.get(), L::type_names, input.type_names, w.path);
@@ -289,7 +293,7 @@ void StoreWriter::finish(const VirtualTime& end) {
     w.close_objects();
     if (!w.file.reset())
       h5::fail(w.path, "cannot close " + w.temporary);
-    if (std::rename(w.temporary.c_str(), w.path.c_str()) != 0)
+    if (w.publish == Publish::on_finish && std::rename(w.temporary.c_str(), w.path.c_str()) != 0)
       throw StoreError("store " + w.path + ": cannot rename " + w.temporary + " to it");
   });
   w.finished = true;

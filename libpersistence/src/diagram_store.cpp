@@ -229,11 +229,28 @@ std::string diagram_group_name(const Diagram& diagram) {
          (diagram.cell_type == all_types ? "all" : "type" + std::to_string(diagram.cell_type));
 }
 
-void write_diagrams(const std::string& store_path, const std::vector<Diagram>& diagrams) {
+namespace {
+
+void check_names(const std::string& store_path, const std::vector<Diagram>& diagrams) {
   std::set<std::string> names;
   for (const Diagram& d : diagrams)
     check(names.insert(diagram_group_name(d)).second, store_path,
           "two diagrams named " + diagram_group_name(d));
+}
+
+} // namespace
+
+void write_diagrams_in_place(const std::string& store_path, const std::vector<Diagram>& diagrams) {
+  check_names(store_path, diagrams);
+  const Quiet quiet;
+  Id file = open_file(store_path, H5F_ACC_RDWR);
+  write_group(file.get(), diagrams, store_path);
+  check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL) >= 0 && file.close(), store_path,
+        "cannot write the diagrams (disk full?)");
+}
+
+void write_diagrams(const std::string& store_path, const std::vector<Diagram>& diagrams) {
+  check_names(store_path, diagrams);
   const std::string temporary = store_path + ".tmp-" + std::to_string(static_cast<long long>(::getpid()));
   std::error_code ec;
   if (!fs::copy_file(store_path, temporary, fs::copy_options::overwrite_existing, ec))

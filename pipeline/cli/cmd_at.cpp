@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "complex_export.h"
 #include "diagram_export.h"
+#include "interrupt.h"
 
 #include "medusa/core/error.h"
 #include "medusa/medusa/complex_index.h"
@@ -31,6 +32,7 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 
 void at_command(const AtArguments& args) {
   const medusa::Medusa medusa = medusa::read_store(args.store);
+  check_interrupted();
   if (args.type) {
     const auto& cells = medusa.input.cells;
     if (std::none_of(cells.begin(), cells.end(),
@@ -80,7 +82,15 @@ void add_at_command(CLI::App& app) {
   CLI::App* at = app.add_subcommand("at", "Export the alpha complex at one time as VTK (ParaView) or CSV");
   at->add_option("store", args->store, "HDF5 store written by `medusa run`")->required();
   at->add_option("--time", args->time, "time T in MCS; the complex reported is K(T+), K(t_end-) at the end")
-      ->required();
+      ->required()
+      ->check(CLI::Validator(
+          [](std::string& value) {
+            // CLI11 reads "" as 0; a time must be written out.
+            return value.find_first_not_of(" \t") == std::string::npos
+                       ? std::string("an empty time is not a number")
+                       : std::string();
+          },
+          "TIME"));
   at->add_option("-o,--output", args->output,
                  "shape.vtk (legacy ASCII unstructured grid, positions interpolated at T) or shape.csv "
                  "(dimension,v0..v3: one simplex per row, CC3D cell ids sorted)")

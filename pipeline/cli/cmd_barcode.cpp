@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "diagram_export.h"
 #include "diagram_selection.h"
+#include "interrupt.h"
 #include "svg_plot.h"
 
 #include "medusa/medusa/store_reader.h"
@@ -23,7 +24,9 @@ struct BarcodeArguments {
 
 void barcode_command(const BarcodeArguments& args) {
   const medusa::Medusa medusa = medusa::read_store(args.store);
+  check_interrupted();
   const std::vector<persistence::Diagram> diagrams = selected_diagrams(medusa, args.selection);
+  check_interrupted();
   const double t0 =
       medusa.input.frame_times.empty() ? 0.0 : static_cast<double>(medusa.input.frame_times.front());
   const double t_end =

@@ -197,7 +197,13 @@ void compare_command(const CompareArguments& args) {
   for (Comparison& c : comparisons) {
     check_interrupted();
     c.distances = persistence::distance_matrix(
-        c.points, [&metric](const auto& a, const auto& b) { return metric(a, b); }, 2);
+        c.points,
+        [&metric](const auto& a, const auto& b) {
+          // Both workers poll before each pair, so an interrupt stops the whole matrix at the next pair.
+          check_interrupted();
+          return metric(a, b);
+        },
+        2);
     c.dendrogram = persistence::average_linkage(c.distances);
   }
   check_interrupted();
@@ -276,7 +282,8 @@ void add_compare_command(CLI::App& app) {
   CLI::App* compare = app.add_subcommand(
       "compare", "Distances between the persistence diagrams of several runs, with a clustering");
   compare->add_option("stores", args->stores, "HDF5 stores written by `medusa run` (two or more)")
-      ->required();
+      ->required()
+      ->expected(2, CLI::detail::expected_max_vector_size);
   compare
       ->add_option(
           "--metric", args->metric,

@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "diagram_export.h"
 #include "diagram_selection.h"
+#include "interrupt.h"
 
 #include "medusa/medusa/store_reader.h"
 
@@ -26,7 +27,11 @@ void add_diagrams_command(CLI::App& app) {
   add_selection_options(*diagrams, args->selection);
   diagrams->callback([args] {
     const medusa::Medusa medusa = medusa::read_store(args->store);
-    write_pairs_text(std::cout, selected_diagrams(medusa, args->selection));
+    check_interrupted();
+    const std::vector<persistence::Diagram> diagrams = selected_diagrams(medusa, args->selection);
+    // Nothing on stdout before the last check: an interrupted command prints no partial listing.
+    check_interrupted();
+    write_pairs_text(std::cout, diagrams);
   });
 }
 

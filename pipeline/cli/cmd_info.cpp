@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "diagram_selection.h"
 #include "position_source.h"
+#include "side_outputs.h"
 
 #include "medusa/medusa/store_reader.h"
 
@@ -13,8 +14,10 @@ namespace {
 
 void info_command(const std::string& path) {
   const medusa::Medusa medusa = medusa::read_store(path);
+  check_side_outputs(path, medusa.run.run_id);
   const kinetic::Trajectories& input = medusa.input;
   std::cout << "store: " << path << "\n"
+            << "run id: " << (medusa.run.run_id.empty() ? "none" : medusa.run.run_id) << "\n"
             << "software version: " << medusa.run.software_version << "\n"
             << "command line: " << medusa.run.command_line << "\n"
             << "radius: " << medusa.run.radius_text << "\n"

@@ -1,13 +1,14 @@
 // `medusa run`: CC3D run -> trajectories -> kinetic alpha complex -> medusa store -> diagrams
 // (docs/MATH.md §1-§7), with a plain-words summary on stdout.
-#include "atomic_file.h"
 #include "commands.h"
 #include "diagram_export.h"
 #include "diagram_selection.h"
 #include "interrupt.h"
 #include "progress_meter.h"
 #include "run_input.h"
+#include "run_outputs.h"
 #include "run_summary.h"
+#include "side_outputs.h"
 #include "stage_timings.h"
 #include "svg_plot.h"
 
@@ -31,11 +32,12 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <thread>
-#include <tuple>
 #include <unistd.h>
 #include <utility>
 #include <vector>
@@ -54,7 +56,24 @@ struct RunArguments {
   unsigned threads = 0; // 0: one per hardware thread
   bool audit = false, snap = false, exact_vtk = false, periodic_as_open = false, quiet = false,
        progress = false, force = false;
+  bool skip_unreadable_frames = false;
 };
+
+// --radius: 'auto' or a positive decimal (digits with at most one point, as the exact grid needs:
+// docs/MATH.md §1.1); "" when valid, else CLI11's message.
+std::string radius_problem(const std::string& value) {
+  if (value == "auto")
+    return "";
+  const bool digits_only = value.find_first_not_of("0123456789.") == std::string::npos &&
+                           std::count(value.begin(), value.end(), '.') <= 1 &&
+                           value.find_first_of("0123456789") != std::string::npos;
+  if (!digits_only || value.size() > 40)
+    return "'" + value.substr(0, 40) +
+           "' is not 'auto' or a decimal number of lattice units such as 3 or 2.5";
+  if (value.find_first_of("123456789") == std::string::npos)
+    return "'" + value + "' is not positive";
+  return "";
+}
 
 // Forwards the event stream to the builder; reports progress and polls for interrupts. It also
 // times the builder (which streams the store) apart from the kinetic engine that calls it.
@@ -118,14 +137,6 @@ private:
   std::vector<std::int64_t> peak_rss_at_frame_;
 };
 
-std::string output_stem(const std::string& output) {
-  const std::string suffix = ".h5";
-  if (output.size() > suffix.size() &&
-      output.compare(output.size() - suffix.size(), suffix.size(), suffix) == 0)
-    return output.substr(0, output.size() - suffix.size());
-  return output;
-}
-
 // The bundled run `medusa run` processes without an argument: the installed copy beside the binary
 // (<prefix>/share/medusa/examples/sorting_3d for <prefix>/bin/medusa), else the source tree's (a
 // binary in the build tree).
@@ -150,15 +161,39 @@ struct StoreFacts {
   std::size_t diagrams = 0;
 };
 
+// What the run prints once its outputs are published.
+struct RunResult {
+  medusa::Medusa medusa;
+  std::vector<persistence::Diagram> diagrams;
+  StoreFacts facts;
+};
+
+// Writes `path` (a temporary of RunOutputs) whole; StoreError naming `shown` if it cannot.
+void write_temporary(const std::string& path, const std::string& shown,
+                     const std::function<void(std::ostream&)>& write) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out)
+    throw StoreError("cannot create " + path + " (for " + shown + ")");
+  write(out);
+  out.flush();
+  if (!out)
+    throw StoreError("cannot write " + shown + " (disk full?)");
+  out.close();
+  if (!out)
+    throw StoreError("cannot write " + shown + " (disk full?)");
+}
+
 // Diagrams from the stored cells, so that what later commands see is what the summary describes.
-StoreFacts write_diagrams_and_summary(const std::string& output, const std::string& stem,
-                                      const kinetic::KineticStatistics& stats, const std::string& radius,
-                                      const std::string& radius_note, unsigned threads, bool quiet,
-                                      ProgressMeter& meter, StageTimings& timings) {
-  meter.stage("medusa store: reading back " + output);
+// Everything goes to the temporaries of `outputs`; nothing is published here.
+RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id, unsigned threads,
+                           ProgressMeter& meter, StageTimings& timings) {
+  const std::string& store = outputs.store_temporary();
+  meter.stage("medusa store: reading back " + outputs.final_name(0));
   StageClock clock;
   // The summary's counts at the first frame need the batch records (which batch reaches it).
-  const medusa::Medusa medusa = medusa::read_store(output);
+  RunResult result;
+  result.medusa = medusa::read_store(store);
+  const medusa::Medusa& medusa = result.medusa;
   timings.add("medusa_store", clock);
   check_interrupted();
 
@@ -170,12 +205,12 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
               std::to_string(types.size()) + " cell types, forward and reverse, " +
               std::to_string(medusa.cells.size()) + " cells, PHAT)" + on);
   // Each task builds one filtration, reduces it and frees it (at most `threads` in memory: the peak
-  // stays below the kinetic stage's). The two stages overlap on the threads, so their wall
-  // and CPU seconds are the measured totals split in proportion to the tasks' time in each phase.
+  // stays below the kinetic stage's). The two stages overlap on the threads, so their wall and CPU
+  // seconds are the measured totals split in proportion to the tasks' time in each phase.
   clock = StageClock{};
   persistence::DiagramPhaseSeconds phases;
-  std::vector<persistence::Diagram> diagrams =
-      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, threads, &phases);
+  result.diagrams = persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, threads, &phases);
+  std::vector<persistence::Diagram>& diagrams = result.diagrams;
   const double both = phases.filtrations + phases.reduction;
   const double share = both > 0 ? phases.filtrations / both : 0.5;
   const double wall = clock.wall_seconds(), cpu = clock.cpu_seconds();
@@ -183,11 +218,13 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
   timings.add("reduction", (1 - share) * wall, (1 - share) * cpu);
   check_interrupted();
 
-  meter.stage("exports: diagrams into the store, " + stem + ".diagrams.csv, " + stem + ".barcode.svg, " +
-              stem + ".diagram.svg, summary");
+  const std::string& csv = outputs.final_name(1);
+  const std::string& svg = outputs.final_name(2);
+  const std::string& diagram_svg = outputs.final_name(3);
+  meter.stage("exports: diagrams into the store, " + csv + ", " + svg + ", " + diagram_svg + ", summary");
   clock = StageClock{};
-  // The diagrams go into the store too (group /persistence, docs/FORMAT.md), written atomically.
-  persistence::write_diagrams(output, diagrams);
+  // The diagrams go into the store too (group /persistence, docs/FORMAT.md).
+  persistence::write_diagrams_in_place(store, diagrams);
   check_interrupted();
   // From here on only positive-length pairs are shown (the summary skips zero-length ones too), so
   // they are dropped in place rather than copied: the diagrams are the largest structure of this stage.
@@ -198,37 +235,30 @@ StoreFacts write_diagrams_and_summary(const std::string& output, const std::stri
                 pairs.end());
     pairs.shrink_to_fit();
   }
-  const std::vector<persistence::Diagram>& shown = diagrams;
   check_interrupted();
 
   const double t0 = static_cast<double>(medusa.input.frame_times.front());
   const double t_end = static_cast<double>(medusa.input.frame_times.back());
-  write_file_atomically(stem + ".diagrams.csv", [&](std::ostream& out) { write_csv(out, shown); });
-  write_file_atomically(stem + ".barcode.svg", [&](std::ostream& out) {
-    write_barcode_svg(out, shown, t0, t_end, default_max_bars);
+  write_temporary(outputs.temporary(1), csv, [&](std::ostream& out) { write_csv(out, diagrams, run_id); });
+  write_temporary(outputs.temporary(2), svg, [&](std::ostream& out) {
+    write_barcode_svg(out, diagrams, t0, t_end, default_max_bars, run_id);
   });
-  write_file_atomically(stem + ".diagram.svg",
-                        [&](std::ostream& out) { write_diagram_svg(out, shown, t0, t_end); });
+  write_temporary(outputs.temporary(3), diagram_svg,
+                  [&](std::ostream& out) { write_diagram_svg(out, diagrams, t0, t_end, run_id); });
   check_interrupted();
-
-  const std::vector<std::string> warnings =
-      write_run_summary(std::cout, medusa, stats, diagrams, radius, radius_note);
-  if (!quiet)
-    for (const std::string& w : warnings)
-      std::cerr << "medusa: warning: " << w << "\n";
-  std::cout << "wrote " << output << ", " << stem << ".diagrams.csv, " << stem << ".barcode.svg, " << stem
-            << ".diagram.svg\n";
   timings.add("exports", clock);
-  return {medusa.cells.size(), diagrams.size()};
+  result.facts = {medusa.cells.size(), diagrams.size()};
+  return result;
 }
 
 // The machine-readable record of --timings (read by bench/e2e_bench.py).
-void write_timings(const std::string& path, const RunArguments& args, const io::RunData& data,
-                   const std::string& radius, const std::string& output, const StageTimings& timings,
+void write_timings(const RunOutputs& outputs, const std::string& run_id, const RunArguments& args,
+                   const io::RunData& data, const std::string& radius, const StageTimings& timings,
                    const kinetic::KineticStatistics& stats,
                    const std::vector<std::int64_t>& peak_rss_at_frame, const StoreFacts& facts,
                    unsigned threads) {
   nlohmann::ordered_json j;
+  j["run_id"] = run_id;
   j["input"] = args.input;
   j["cells"] = data.trajectories.cells.size();
   j["frames"] = data.trajectories.frames();
@@ -267,12 +297,29 @@ void write_timings(const std::string& path, const RunArguments& args, const io::
                        {"static_rebuilds", stats.static_rebuilds}};
   j["kinetic_seconds_per_frame"] = stats.seconds_per_frame;
   std::error_code ec;
-  const auto bytes = fs::file_size(output, ec);
-  j["store"] = {{"path", output},
+  const auto bytes = fs::file_size(outputs.store_temporary(), ec);
+  j["store"] = {{"path", outputs.final_name(0)},
                 {"bytes", ec ? -1 : static_cast<std::int64_t>(bytes)},
                 {"cells", facts.cells},
                 {"diagrams", facts.diagrams}};
-  write_file_atomically(path, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+  write_temporary(outputs.temporary(4), outputs.final_name(4),
+                  [&](std::ostream& out) { out << j.dump(2) << "\n"; });
+}
+
+std::string size_text(const std::string& input) {
+  std::error_code ec;
+  std::uintmax_t bytes = 0;
+  if (fs::is_directory(input, ec)) {
+    for (auto it = fs::recursive_directory_iterator(input, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+      if (it->is_regular_file(ec))
+        bytes += it->file_size(ec);
+  } else {
+    bytes = fs::file_size(input, ec);
+  }
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.1f MB", static_cast<double>(bytes) / 1e6);
+  return buffer;
 }
 
 void run_command(const RunArguments& args, const std::string& command_line) {
@@ -281,10 +328,18 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   if (!fs::exists(input, ec))
     throw InputError("input " + input + " does not exist");
   const unsigned threads = worker_threads(args.threads);
-  // A store holds a run's whole analysis: replacing one is asked for, never a side effect.
+
+  // Every output is checked and the store's lock taken before anything is read or written.
   const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
+  // A store holds a run's whole analysis: replacing one is asked for, never a side effect.
   if (!args.force && fs::exists(output, ec))
     throw CLI::ParseError("store " + output + " exists; pass --force to replace it", 2);
+  const std::string stem = output_stem(output);
+  std::vector<std::string> side = {stem + ".diagrams.csv", stem + ".barcode.svg", stem + ".diagram.svg"};
+  if (!args.timings.empty())
+    side.push_back(args.timings);
+  RunOutputs outputs(output, side, input);
+  const std::string run_id = new_run_id();
 
   ProgressMeter meter(std::cerr,
                       ProgressMeter::choose(args.progress, args.quiet, ::isatty(STDERR_FILENO) != 0));
@@ -296,10 +351,18 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   options.snap = !args.exact_vtk;
   options.allow_periodic_as_open = args.periodic_as_open;
   options.read_periodic = !args.periodic_as_open;
+  options.skip_unreadable_frames = args.skip_unreadable_frames;
   meter.stage("reading " + input);
   StageClock clock;
-  const io::RunData data = io::read_run(input, options);
+  io::RunData data;
+  try {
+    data = io::read_run(input, options);
+  } catch (const std::bad_alloc&) {
+    throw InputError(input + ": out of memory while reading it (" + size_text(input) +
+                     " on disk); the input is larger than the memory available, or malformed");
+  }
   timings.add("reading", clock);
+  outputs.check_not_read(data.sources);
   if (!args.quiet) {
     for (const std::string& w : data.warnings)
       std::cerr << "medusa: warning: " << w << "\n";
@@ -336,6 +399,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   info.snap_policy = data.used == io::RunSource::vtk && data.snap.snapped ? "nearest-ties-to-even" : "exact";
   info.snapped_positions = static_cast<std::uint64_t>(data.snap.moved);
   info.snap_max_displacement = data.snap.max_displacement();
+  info.run_id = run_id;
   if (cover) {
     info.periodic_axes = data.domain.axes();
     info.periodic_lengths = data.domain.period;
@@ -346,7 +410,8 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   {
     clock = StageClock{};
     kinetic::KineticAlphaComplex engine(cover ? cover->trajectories : data.trajectories, kinetic_options);
-    medusa::StoreWriter writer(output);
+    // Finished, the store stays under its temporary name (outputs.store_temporary()) until publish.
+    medusa::StoreWriter writer(outputs.final_name(0), medusa::StoreWriter::Publish::later);
     medusa::MedusaBuilder builder(writer);
     builder.set_run(info, data.trajectories);
     // With more than one thread the builder and the store writer run beside the engine, on a thread
@@ -376,22 +441,21 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   // them too. Peak memory is then the larger of the two parts, not their sum.
   release_free_memory();
 
-  // README: an interrupted run leaves no output behind, including a store already completed.
-  const std::string stem = output_stem(output);
-  const std::vector<std::string> outputs = {output, stem + ".diagrams.csv", stem + ".barcode.svg",
-                                            stem + ".diagram.svg"};
-  try {
-    check_interrupted();
-    const StoreFacts facts = write_diagrams_and_summary(output, stem, stats, radius, radius_note, threads,
-                                                        args.quiet, meter, timings);
-    if (!args.timings.empty())
-      write_timings(args.timings, resolved, data, radius, output, timings, stats, peak_rss_at_frame, facts,
-                    threads);
-  } catch (const Interrupted&) {
-    for (const std::string& path : outputs)
-      fs::remove(path, ec);
-    throw;
-  }
+  check_interrupted();
+  const RunResult result = compute_diagrams(outputs, run_id, threads, meter, timings);
+  if (!args.timings.empty())
+    write_timings(outputs, run_id, resolved, data, radius, timings, stats, peak_rss_at_frame, result.facts,
+                  threads);
+  // The last moment an interrupt undoes the run: after it, the outputs replace the previous ones.
+  check_interrupted();
+  outputs.publish();
+  const std::vector<std::string> warnings =
+      write_run_summary(std::cout, result.medusa, stats, result.diagrams, radius, radius_note);
+  if (!args.quiet)
+    for (const std::string& w : warnings)
+      std::cerr << "medusa: warning: " << w << "\n";
+  std::cout << "wrote " << outputs.final_name(0) << ", " << outputs.final_name(1) << ", "
+            << outputs.final_name(2) << ", " << outputs.final_name(3) << "\n";
 }
 
 } // namespace
@@ -413,7 +477,8 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
          "centres, and two cells touch when their centres are closer than 2 rho. 'auto': the radius "
          "of a ball (a disc in 2D) of the median cell volume over all cells and frames (docs/MATH.md "
          "§7.10)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::Validator([](std::string& value) { return radius_problem(value); }, "RADIUS"));
   run->add_option("--source", args->source,
                   "positions from 'csv' (cells.csv.gz, CC3D centres; default for a folder that has it) or "
                   "'vtk' (voxel centroids, snapped to the 10^-6 grid as CC3D's centres are rounded; the "
@@ -425,6 +490,9 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
                 "snap VTK centroids to the 10^-6 grid (the default; accepted for older scripts)");
   run->add_flag("--periodic-as-open", args->periodic_as_open,
                 "read a periodic run as if its boundaries were open");
+  run->add_flag("--skip-unreadable-frames", args->skip_unreadable_frames,
+                "go on, with a warning naming each, past LatticeData snapshots that cannot be read (dangling "
+                "link, FIFO, folder, no permission) or are missing from the series, instead of stopping");
   run->add_flag("--audit", args->audit,
                 "check the kinetic structure against static CGAL computations (slow)");
   run->add_flag("--progress", args->progress,

@@ -32,7 +32,10 @@ void write_pers(std::ostream& out, const std::vector<persistence::Diagram>& diag
       out << p.dim << ' ' << format_time(p.birth) << ' ' << format_time(p.death) << '\n';
 }
 
-void write_csv(std::ostream& out, const std::vector<persistence::Diagram>& diagrams) {
+void write_csv(std::ostream& out, const std::vector<persistence::Diagram>& diagrams,
+               const std::string& run_id) {
+  if (!run_id.empty())
+    out << "# medusa run " << run_id << "\n";
   out << "birth,death,dimension,type,direction\n";
   for (const persistence::Diagram& d : diagrams)
     for (const persistence::PersistencePair& p : d.pairs)

@@ -16,8 +16,10 @@ std::string format_time(double t);
 void write_pairs_text(std::ostream& out, const std::vector<persistence::Diagram>& diagrams);
 // GUDHI's .pers layout: `dim birth death` per pair, nothing else.
 void write_pers(std::ostream& out, const std::vector<persistence::Diagram>& diagrams);
-// Header `birth,death,dimension,type,direction`, one row per pair; type is "all" or the type id.
-void write_csv(std::ostream& out, const std::vector<persistence::Diagram>& diagrams);
+// Header `birth,death,dimension,type,direction`, one row per pair; type is "all" or the type id. With
+// a run id, a first line `# medusa run <id>` names the store the pairs come from (docs/FORMAT.md).
+void write_csv(std::ostream& out, const std::vector<persistence::Diagram>& diagrams,
+               const std::string& run_id = "");
 // {"diagrams": [{"type", "direction", "pairs": [{"dimension", "birth", "death"}]}]}; infinite
 // deaths are the strings "inf" / "-inf" (JSON has no infinity).
 void write_json(std::ostream& out, const std::vector<persistence::Diagram>& diagrams);

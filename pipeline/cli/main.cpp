@@ -2,19 +2,24 @@
 // `medusa: <message>` on stderr.
 #include "commands.h"
 #include "interrupt.h"
+#include "run_outputs.h"
 
 #include "medusa/core/error.h"
 #include "medusa/core/version.h"
+#include "medusa/medusa/store_reader.h"
 #include "medusa/medusa/store_writer.h"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <exception>
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
 #include <iostream>
 #include <new>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -37,6 +42,12 @@ int main(int argc, char** argv) {
       "medusa: topology of cell-sorting simulations (kinetic alpha complex, alpha medusa, persistence)"};
   app.require_subcommand(1, 1);
   app.set_version_flag("--version", std::string("medusa ") + medusa::version);
+  // Accepted after the subcommand too, as users type it there (fallthrough: set before the
+  // subcommands, which inherit it).
+  app.fallthrough();
+  app.add_flag_function(
+      "--verbose", [](std::int64_t) { medusa::set_store_error_details(true); },
+      "store errors also carry the HDF5 library's own messages (for a bug report)");
   medusa::cli::add_run_command(app, joined(argc, argv));
   medusa::cli::add_info_command(app);
   medusa::cli::add_diagrams_command(app);
@@ -46,6 +57,19 @@ int main(int argc, char** argv) {
   medusa::cli::add_at_command(app);
   medusa::cli::add_report_command(app);
   medusa::cli::add_sweep_command(app);
+  // CLI11 reports an unknown first word as a missing subcommand; name it instead.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string word = argv[1];
+    std::vector<std::string> names;
+    for (const CLI::App* sub : app.get_subcommands({}))
+      names.push_back(sub->get_name());
+    if (std::find(names.begin(), names.end(), word) == names.end()) {
+      std::string list;
+      for (const std::string& n : names)
+        list += (list.empty() ? "" : ", ") + n;
+      return fail("unknown command '" + word + "' (the commands are " + list + "; see medusa --help)", 2);
+    }
+  }
   medusa::cli::install_interrupt_handlers();
   // A store whose final flush failed would otherwise crash HDF5's exit handler (store_writer.h).
   medusa::skip_hdf5_cleanup_at_exit();
@@ -75,6 +99,8 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0)
       return app.exit(e);
     return fail(e.what(), 2);
+  } catch (const medusa::cli::UsageError& e) {
+    return fail(e.what(), 2);
   } catch (const medusa::cli::Interrupted&) {
     return fail("interrupted; no partial output left", 130);
   } catch (const medusa::InputError& e) {
@@ -86,7 +112,7 @@ int main(int argc, char** argv) {
   } catch (const medusa::InternalError& e) {
     return fail(std::string("internal error (please report): ") + e.what(), 1);
   } catch (const std::bad_alloc&) {
-    return fail("out of memory", 1);
+    return fail("out of memory: the input is larger than the memory available to medusa", 3);
   } catch (const std::exception& e) {
     return fail(std::string("internal error (please report): ") + e.what(), 1);
   }

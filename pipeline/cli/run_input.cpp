@@ -1,5 +1,7 @@
 #include "run_input.h"
 
+#include "medusa/core/error.h"
+
 #include "medusa/io/cell_volumes.h"
 
 #include <cstdio>
@@ -40,6 +42,10 @@ io::RunSource choose_source(const std::string& input, const std::string& source)
 
 std::pair<std::string, std::string> radius_from_volumes(const io::RunData& data) {
   const double volume = io::median_cell_volume(data.volumes);
+  if (!(volume > 0))
+    throw InputError((data.sources.empty() ? std::string("input") : data.sources.front()) +
+                     ": the median cell volume is " + std::to_string(volume) +
+                     ", so no radius can be chosen from it; give one with --radius");
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.6f", io::equivalent_radius(volume, data.trajectories.dimension));
   char note[160];

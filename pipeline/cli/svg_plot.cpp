@@ -180,13 +180,14 @@ std::string counts_text(const Panel& p, std::size_t max_bars, bool bars) {
 }
 
 void write_header(std::ostream& out, double height, const std::vector<int>& degrees, std::string what,
-                  std::size_t beyond) {
+                  std::size_t beyond, const std::string& run_id) {
   if (beyond > 0)
     what += " Other degrees (H3, 4D bubbles): no finite class; " + std::to_string(beyond) +
             " essential in all (not drawn).";
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(page_width) << "\" height=\""
-      << number(height) << "\" font-family=\"sans-serif\" font-size=\"11\">\n"
+      << number(height) << "\" font-family=\"sans-serif\" font-size=\"11\""
+      << (run_id.empty() ? std::string() : " data-medusa-run=\"" + run_id + "\"") << ">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   double x = margin;
   for (const int k : degrees) {
@@ -235,7 +236,7 @@ void write_title(std::ostream& out, const Panel& p, double x, double y, const st
 } // namespace
 
 void write_barcode_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams, double t0,
-                       double t_end, std::size_t max_bars) {
+                       double t_end, std::size_t max_bars, const std::string& run_id) {
   const std::vector<int> degrees = degrees_of(diagrams);
   const auto columns = static_cast<double>(degrees.size());
   const double panel_width = (page_width - 2 * margin - (columns - 1) * column_gap) / columns;
@@ -259,7 +260,7 @@ void write_barcode_svg(std::ostream& out, const std::vector<persistence::Diagram
       out, height + margin, degrees,
       "Barcodes: each finite class a bar from its birth to its death (MCS), sorted by birth; classes "
       "that never die are counted in the titles.",
-      essential_beyond(diagrams, degrees));
+      essential_beyond(diagrams, degrees), run_id);
   double y = margin + legend_height;
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const double h = plot_heights[r];
@@ -299,7 +300,7 @@ void write_barcode_svg(std::ostream& out, const std::vector<persistence::Diagram
 }
 
 void write_diagram_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams, double t0,
-                       double t_end) {
+                       double t_end, const std::string& run_id) {
   const std::vector<int> degrees = degrees_of(diagrams);
   const auto columns = static_cast<double>(degrees.size());
   const double panel_width = (page_width - 2 * margin - (columns - 1) * column_gap) / columns;
@@ -310,7 +311,7 @@ void write_diagram_svg(std::ostream& out, const std::vector<persistence::Diagram
   write_header(out, height + margin, degrees,
                "Persistence diagrams: each finite class a point (birth, death) in MCS; the farther above the "
                "diagonal, the longer it lived. Classes that never die are counted in the titles.",
-               essential_beyond(diagrams, degrees));
+               essential_beyond(diagrams, degrees), run_id);
   double y = margin + legend_height;
   for (const persistence::Diagram& d : diagrams) {
     for (std::size_t c = 0; c < degrees.size(); ++c) {

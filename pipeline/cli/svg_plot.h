@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <ostream>
+#include <string>
 #include <vector>
 
 namespace medusa::cli {
@@ -21,10 +22,11 @@ namespace medusa::cli {
 // What `medusa run` draws, and `medusa barcode --format svg` unless told otherwise.
 constexpr std::size_t default_max_bars = 200;
 
+// With a run id, the root element carries it as data-medusa-run (docs/FORMAT.md).
 void write_barcode_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams, double t0,
-                       double t_end, std::size_t max_bars = 0);
+                       double t_end, std::size_t max_bars = 0, const std::string& run_id = "");
 
 void write_diagram_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams, double t0,
-                       double t_end);
+                       double t_end, const std::string& run_id = "");
 
 } // namespace medusa::cli

@@ -8,6 +8,7 @@
 #include "medusa/medusa/store_writer.h"
 #include "stream.h"
 
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -80,6 +81,8 @@ inline KineticRun run_into_store(const kinetic::Trajectories& input, const std::
   options.audit_stride = audit_stride;
   medusa::RunInfo info;
   info.radius_text = radius_text;
+  // rho = sqrt(rho_g^2) / S (docs/MATH.md §1.1): a store's radius is positive (read_store checks it).
+  info.radius = std::sqrt(rho2.num.get_d() / rho2.den.get_d()) / static_cast<double>(input.scale);
   info.command_line = "test_medusa_from_kinetic";
   info.software_version = "test";
   KineticRun out;

@@ -41,6 +41,7 @@ void make_store(const std::string& path) {
   medusa::StoreWriter writer(path);
   medusa::MedusaBuilder builder(writer);
   medusa::RunInfo info;
+  info.radius = 1200; // as the text says; read_store refuses a store whose radius is not positive
   info.radius_text = "1200";
   builder.set_run(info, t);
   engine.run(builder);

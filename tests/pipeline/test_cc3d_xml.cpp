@@ -31,3 +31,16 @@ TEST_CASE("Commented-out CC3DML tags are ignored and a missing Dimensions is ref
   CHECK_THAT(io::test::input_error([&] { read_cc3d_xml(dir.file("b.xml")); }),
              Contains("b.xml") && Contains("Dimensions"));
 }
+
+TEST_CASE("A CC3DML file cut off before the end of Potts is refused, not read as open boundaries",
+          "[io][xml]") {
+  io::test::TempDir dir;
+  const std::string whole = "<CompuCell3D>\n<Potts>\n<Dimensions x=\"50\" y=\"50\" z=\"40\"/>\n"
+                            "<Boundary_x>Periodic</Boundary_x>\n</Potts>\n</CompuCell3D>\n";
+  std::ofstream(dir.file("whole.xml")) << whole;
+  CHECK(periodic_axes(read_cc3d_xml(dir.file("whole.xml"))) == "x");
+  // Cut just before <Boundary_x>: its periodic boundary would otherwise vanish.
+  std::ofstream(dir.file("cut.xml")) << whole.substr(0, whole.find("<Boundary_x>"));
+  CHECK_THAT(io::test::input_error([&] { read_cc3d_xml(dir.file("cut.xml")); }),
+             Contains("cut.xml") && Contains("boundary conditions cannot be read"));
+}

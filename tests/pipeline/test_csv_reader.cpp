@@ -104,3 +104,33 @@ TEST_CASE("A header-only or empty CSV is refused", "[io][csv]") {
   CHECK_THAT(io::test::input_error([&] { read_csv(dir.file("header.csv")); }),
              Contains("header.csv") && Contains("no data"));
 }
+
+TEST_CASE("A UTF-8 byte order mark before the header is not part of the first column's name", "[io][csv]") {
+  io::test::TempDir dir;
+  std::ifstream plain(io::test::data("io/gap.csv"), std::ios::binary);
+  std::ofstream(dir.file("bom.csv"), std::ios::binary) << "\xEF\xBB\xBF" << plain.rdbuf();
+  const CsvContents with_bom = read_csv(dir.file("bom.csv"));
+  const CsvContents without = read_csv(io::test::data("io/gap.csv"));
+  REQUIRE(with_bom.samples.size() == without.samples.size());
+  CHECK(with_bom.samples.front().position == without.samples.front().position);
+}
+
+TEST_CASE("Input quoted in a message is cut to about 200 characters with control bytes escaped",
+          "[io][csv]") {
+  io::test::TempDir dir;
+  const std::string header = "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n";
+  // A NUL byte inside a number: the message goes on past it, with the byte written \x00.
+  std::ofstream(dir.file("nul.csv"), std::ios::binary) << header << std::string("0,1,1,1.5\0junk,2,3\n", 19);
+  const std::string nul = io::test::input_error([&] { read_csv(dir.file("nul.csv")); });
+  CHECK_THAT(nul, Contains("nul.csv:2") && Contains("'1.5\\x00junk'") && Contains("not a decimal number"));
+  CHECK(nul.find('\0') == std::string::npos);
+  // A 10 MB field (on a line under the 1 MiB cap, 900 KB here) is quoted by its first 200 characters.
+  std::ofstream(dir.file("wide.csv")) << header << "0,1,1," << std::string(900000, '9') << "x,2,3\n";
+  const std::string wide = io::test::input_error([&] { read_csv(dir.file("wide.csv")); });
+  CHECK_THAT(wide, Contains("wide.csv:2") && Contains("(900001 bytes in all)"));
+  CHECK(wide.size() < 400);
+  // A header of binary bytes is escaped too.
+  std::ofstream(dir.file("binary.csv"), std::ios::binary) << std::string("\x01\x02\xff,b\n0,1\n", 10);
+  const std::string binary = io::test::input_error([&] { read_csv(dir.file("binary.csv")); });
+  CHECK_THAT(binary, Contains("missing column 'mcs'") && Contains("'\\x01\\x02\\xFF,b'"));
+}

@@ -109,3 +109,38 @@ TEST_CASE("Raw bytes follow a text line exactly", "[io][gzip]") {
   CHECK(t == "TAIL");
   CHECK_THAT(io::test::input_error([&] { in.read_bytes(bytes, 1); }), Contains("b.gz"));
 }
+
+TEST_CASE("A file named .gz that is not gzip is refused as not a gzip file, without echoing its bytes",
+          "[io][gzip]") {
+  io::test::TempDir dir;
+  {
+    std::ofstream(dir.file("binary.csv.gz"), std::ios::binary) << std::string("\x7f"
+                                                                              "ELF\x02\x01\x01\0\0binary",
+                                                                              16);
+  }
+  const std::string m = io::test::input_error([&] { GzipReader in(dir.file("binary.csv.gz")); });
+  CHECK_THAT(m, Contains("binary.csv.gz") && Contains("not a gzip file"));
+  CHECK(m.find("ELF") == std::string::npos);
+}
+
+TEST_CASE("A line or a value longer than 1 MiB is refused naming its line, before it is held whole",
+          "[io][gzip]") {
+  io::test::TempDir dir;
+  // A gzip bomb in miniature: 3 MiB of digits on line 2 compress to a few KiB.
+  write_gzip(dir.file("long.csv.gz"), "mcs,cell_id\n" + std::string(3u << 20, '7') + "\n");
+  GzipReader lines(dir.file("long.csv.gz"));
+  std::string line;
+  REQUIRE(lines.next_line(line));
+  CHECK_THAT(io::test::input_error([&] { lines.next_line(line); }),
+             Contains("long.csv.gz:2") && Contains("longer than 1 MiB"));
+  GzipReader tokens(dir.file("long.csv.gz"));
+  std::string_view token;
+  REQUIRE(tokens.next_token(token));
+  CHECK_THAT(io::test::input_error([&] { tokens.next_token(token); }),
+             Contains("long.csv.gz:2") && Contains("longer than 1 MiB"));
+  // Exactly 1 MiB is still a line.
+  write_gzip(dir.file("limit.csv.gz"), std::string(max_line_bytes, '7') + "\nnext\n");
+  GzipReader limit(dir.file("limit.csv.gz"));
+  REQUIRE(limit.next_line(line));
+  CHECK(line.size() == max_line_bytes);
+}

@@ -2,6 +2,7 @@
 #include "medusa/io/run_reader.h"
 
 #include <fstream>
+#include <sys/stat.h>
 
 using namespace medusa;
 using namespace medusa::io;
@@ -192,4 +193,55 @@ TEST_CASE("A folder with neither snapshots nor CSV, or a missing path, is refuse
   CHECK_THAT(io::test::input_error([] { read_run("/nonexistent/run"); }), Contains("/nonexistent/run"));
   CHECK_THAT(io::test::input_error([] { read_run(io::test::data("io/vtk_split_cell.vtk")); }),
              Contains("vtk_split_cell.vtk") && Contains("folder"));
+}
+
+TEST_CASE("A CSV run whose CC3DML is cut off is refused, not read as open", "[io][run]") {
+  io::test::TempDir dir;
+  const std::string whole = xml("x=\"50\" y=\"50\" z=\"40\"", "    <Boundary_x>Periodic</Boundary_x>\n");
+  write((dir.path() / "Simulation" / "run.xml").string(), whole.substr(0, whole.find("<Boundary_x>")));
+  fs::copy_file(io::test::data("io/gap.csv"), dir.path() / "cells.csv");
+  CHECK_THAT(io::test::input_error([&] { read_run(dir.path().string()); }),
+             Contains("run.xml") && Contains("boundary conditions cannot be read"));
+}
+
+TEST_CASE("A LatticeData snapshot that cannot be read is an error naming it unless skipping is asked for",
+          "[io][run]") {
+  for (const std::string kind : {"dangling link", "FIFO", "folder"}) {
+    CAPTURE(kind);
+    io::test::TempDir dir;
+    const fs::path lattice = dir.path() / "LatticeData";
+    fs::create_directories(lattice);
+    fs::copy_file(io::test::data("io/vtk_split_cell_exact.vtk"), lattice / "Step_0.vtk");
+    fs::copy_file(io::test::data("io/vtk_split_cell_exact.vtk"), lattice / "Step_20.vtk");
+    const fs::path bad = lattice / "Step_10.vtk";
+    if (kind == "dangling link")
+      fs::create_symlink(dir.path() / "nowhere.vtk", bad);
+    else if (kind == "FIFO")
+      REQUIRE(::mkfifo(bad.c_str(), 0644) == 0);
+    else
+      fs::create_directories(bad);
+    CHECK_THAT(io::test::input_error([&] { read_run(dir.path().string()); }),
+               Contains("Step_10.vtk") && Contains("--skip-unreadable-frames"));
+    RunOptions skip;
+    skip.skip_unreadable_frames = true;
+    const RunData r = read_run(dir.path().string(), skip);
+    CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 20});
+    CHECK(has_warning(r, "Step_10.vtk"));
+  }
+}
+
+TEST_CASE("A snapshot missing from the middle of an evenly saved series is an error naming its MCS",
+          "[io][run]") {
+  io::test::TempDir dir;
+  const fs::path lattice = dir.path() / "LatticeData";
+  fs::create_directories(lattice);
+  for (const char* name : {"Step_0.vtk", "Step_10.vtk", "Step_30.vtk", "Step_40.vtk"})
+    fs::copy_file(io::test::data("io/vtk_split_cell_exact.vtk"), lattice / name);
+  CHECK_THAT(io::test::input_error([&] { read_run(dir.path().string()); }),
+             Contains("MCS 20 is missing") && Contains("Step_10.vtk") && Contains("Step_30.vtk"));
+  RunOptions skip;
+  skip.skip_unreadable_frames = true;
+  const RunData r = read_run(dir.path().string(), skip);
+  CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 10, 30, 40});
+  CHECK(has_warning(r, "MCS 20 is missing"));
 }

@@ -86,7 +86,12 @@ Cc3dSimulation read_cc3d_xml(const std::string& path) {
   sim.path = path;
   const std::vector<std::string> dimensions = tags(text, "Dimensions");
   if (dimensions.empty())
-    throw InputError(path + ": no <Dimensions x=\"..\" y=\"..\" z=\"..\"/> in the CC3DML file");
+    throw NotASimulation(path + ": no <Dimensions x=\"..\" y=\"..\" z=\"..\"/> in the CC3DML file");
+  // The boundary conditions are read from <Potts>; a file cut before its end (a copy interrupted,
+  // a full disk) would silently read as open boundaries.
+  if (text.find("</Potts>") == std::string::npos || text.find("</CompuCell3D>") == std::string::npos)
+    throw InputError(path + ": the CC3DML file ends before </Potts> or </CompuCell3D> (cut off?), so its "
+                            "boundary conditions cannot be read");
   const char* axes[3] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
     const std::string v = attribute(dimensions.front(), axes[a]);

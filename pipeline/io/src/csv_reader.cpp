@@ -2,6 +2,7 @@
 
 #include "medusa/core/error.h"
 #include "medusa/io/decimal.h"
+#include "medusa/io/excerpt.h"
 #include "medusa/io/gzip_reader.h"
 
 #include <map>
@@ -53,6 +54,9 @@ CsvContents read_csv(const std::string& path, const CsvOptions& options) {
   std::string line;
   if (!in.next_line(line))
     throw InputError(path + ": empty file (expected a header line)");
+  // A UTF-8 byte order mark (spreadsheet exports write one) is not part of the first column's name.
+  if (line.rfind("\xEF\xBB\xBF", 0) == 0)
+    line.erase(0, 3);
   const std::vector<std::string_view> header = split_commas(line);
   const auto column = [&](const std::string& name, bool required) -> std::optional<std::size_t> {
     if (name.empty())
@@ -62,7 +66,7 @@ CsvContents read_csv(const std::string& path, const CsvOptions& options) {
         return k;
     if (required)
       throw InputError(path + ":" + std::to_string(in.line()) + ": missing column '" + name +
-                       "' in header '" + line + "'");
+                       "' in header '" + excerpt(line) + "'");
     return std::nullopt;
   };
   const CsvColumns& c = options.columns;
@@ -122,8 +126,9 @@ CsvContents read_csv(const std::string& path, const CsvOptions& options) {
       const std::string name(trim(f[*col_name]));
       const auto [named, new_type] = type_name.emplace(s.type, std::make_pair(name, s.line));
       if (!new_type && named->second.first != name)
-        throw InputError(cell + ": type " + std::to_string(s.type) + " is named '" + name + "' but '" +
-                         named->second.first + "' at line " + std::to_string(named->second.second));
+        throw InputError(cell + ": type " + std::to_string(s.type) + " is named '" + excerpt(name) +
+                         "' but '" + excerpt(named->second.first) + "' at line " +
+                         std::to_string(named->second.second));
     }
     out.samples.push_back(s);
   }

@@ -1,6 +1,7 @@
 #include "medusa/io/decimal.h"
 
 #include "medusa/core/error.h"
+#include "medusa/io/excerpt.h"
 
 #include <cctype>
 #include <limits>
@@ -77,8 +78,8 @@ std::int64_t parse_integer(std::string_view text, const std::string& where) {
   std::int64_t v = 0;
   if (!try_parse_integer(text, v)) {
     if (is_non_finite(trim(text)))
-      throw InputError(where + ": '" + std::string(trim(text)) + "' is not a finite number");
-    throw InputError(where + ": '" + std::string(trim(text)) + "' is not an integer");
+      throw InputError(where + ": '" + excerpt(trim(text)) + "' is not a finite number");
+    throw InputError(where + ": '" + excerpt(trim(text)) + "' is not an integer");
   }
   return v;
 }
@@ -88,7 +89,7 @@ std::int64_t parse_scaled_decimal(std::string_view text, std::int64_t scale, con
   const std::string_view s0 = trim(text);
   std::string_view s = s0;
   const auto fail = [&](const std::string& why) {
-    return InputError(where + ": '" + std::string(s0) + "' " + why);
+    return InputError(where + ": '" + excerpt(s0) + "' " + why);
   };
   if (is_non_finite(s))
     throw fail("is not a finite number");

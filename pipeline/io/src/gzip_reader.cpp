@@ -2,6 +2,7 @@
 
 #include "medusa/core/error.h"
 
+#include <cstdio>
 #include <cstring>
 #include <zlib.h>
 
@@ -14,6 +15,18 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' |
 } // namespace
 
 GzipReader::GzipReader(std::string path) : path_(std::move(path)), buf_(2 * chunk) {
+  // zlib reads a file that is not gzip as plain text; one named .gz must be gzip, else its bytes
+  // would be taken for the data.
+  if (path_.size() > 3 && path_.compare(path_.size() - 3, 3, ".gz") == 0) {
+    std::FILE* raw = std::fopen(path_.c_str(), "rb");
+    if (raw == nullptr)
+      throw InputError(path_ + ": cannot open file (" + std::strerror(errno) + ")");
+    unsigned char magic[2] = {0, 0};
+    const std::size_t got = std::fread(magic, 1, 2, raw);
+    std::fclose(raw);
+    if (got == 2 && (magic[0] != 0x1F || magic[1] != 0x8B))
+      throw InputError(path_ + ": not a gzip file (its name ends in .gz but its first bytes are not gzip's)");
+  }
   file_ = gzopen(path_.c_str(), "rb");
   if (file_ == nullptr)
     throw InputError(path_ + ": cannot open file (" + std::strerror(errno) + ")");
@@ -67,6 +80,9 @@ bool GzipReader::next_line(std::string& out) {
       break;
     }
     const std::size_t before = end_ - pos_;
+    if (before > max_line_bytes)
+      throw InputError(path_ + ":" + std::to_string(line_) + ": line longer than " +
+                       std::to_string(max_line_bytes >> 20) + " MiB (not a text file of the expected kind?)");
     if (!fill()) {
       if (pos_ == end_)
         return false;
@@ -101,6 +117,9 @@ bool GzipReader::next_token(std::string_view& out) {
     if (stop < end_)
       break;
     const std::size_t length = stop - pos_;
+    if (length > max_line_bytes)
+      throw InputError(path_ + ":" + std::to_string(line_) + ": a value longer than " +
+                       std::to_string(max_line_bytes >> 20) + " MiB (not a text file of the expected kind?)");
     if (!fill()) {
       stop = pos_ + length;
       break;

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <unistd.h>
 
 namespace medusa::io {
 
@@ -35,13 +36,71 @@ std::optional<Cc3dSimulation> find_simulation(const fs::path& run, std::vector<s
   for (const std::string& xml : xmls) {
     try {
       return read_cc3d_xml(xml);
-    } catch (const InputError& e) {
+    } catch (const NotASimulation& e) {
       warnings.push_back(std::string("skipping ") + e.what());
     }
   }
   warnings.push_back("no CC3DML file with <Dimensions> in " + folder.string() +
                      ": lattice size and boundary conditions unknown (assumed non-periodic)");
   return std::nullopt;
+}
+
+// The LatticeData snapshots by name. One that cannot be read (a dangling link, a FIFO, a folder, no
+// read permission) is an error naming it, or with skip_unreadable_frames a warning: a frame left out
+// silently would join its neighbours by straight motion the cells never made.
+std::vector<std::string> list_snapshots(const fs::path& folder, const RunOptions& options,
+                                        std::vector<std::string>& warnings) {
+  std::vector<std::string> vtks;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (!is_vtk_step_name(name))
+      continue;
+    std::error_code ec;
+    std::string problem;
+    if (!fs::exists(entry.path(), ec))
+      problem = "is a symbolic link to nothing";
+    else if (fs::is_directory(entry.path(), ec))
+      problem = "is a folder";
+    else if (!fs::is_regular_file(entry.path(), ec))
+      problem = "is not a regular file (a FIFO, socket or device)";
+    else if (::access(entry.path().c_str(), R_OK) != 0)
+      problem = "cannot be read (permission denied)";
+    if (problem.empty()) {
+      vtks.push_back(entry.path().string());
+      continue;
+    }
+    if (!options.skip_unreadable_frames)
+      throw InputError(entry.path().string() + ": snapshot " + problem +
+                       " (rerun with --skip-unreadable-frames to leave it out)");
+    warnings.push_back(entry.path().string() + ": snapshot " + problem + "; left out");
+  }
+  return vtks;
+}
+
+// A snapshot missing from the middle of an evenly saved series (MCS gaps that are multiples of the
+// usual step) is an error, or with skip_unreadable_frames a warning.
+void check_series(const std::vector<std::pair<std::int64_t, std::string>>& by_mcs, const RunOptions& options,
+                  std::vector<std::string>& warnings) {
+  if (by_mcs.size() < 3)
+    return;
+  std::int64_t step = by_mcs[1].first - by_mcs[0].first;
+  for (std::size_t k = 1; k < by_mcs.size(); ++k)
+    step = std::min(step, by_mcs[k].first - by_mcs[k - 1].first);
+  if (step <= 0)
+    return;
+  for (std::size_t k = 1; k < by_mcs.size(); ++k) {
+    const std::int64_t gap = by_mcs[k].first - by_mcs[k - 1].first;
+    if (gap == step || gap % step != 0)
+      continue;
+    const std::string what =
+        "the snapshot of MCS " + std::to_string(by_mcs[k - 1].first + step) +
+        " is missing: the series goes from " + fs::path(by_mcs[k - 1].second).filename().string() + " to " +
+        fs::path(by_mcs[k].second).filename().string() + ", every " + std::to_string(step) + " MCS elsewhere";
+    if (!options.skip_unreadable_frames)
+      throw InputError(fs::path(by_mcs[k].second).parent_path().string() + ": " + what +
+                       " (rerun with --skip-unreadable-frames to go on without it)");
+    warnings.push_back(fs::path(by_mcs[k].second).parent_path().string() + ": " + what);
+  }
 }
 
 void check_periodic(const std::optional<Cc3dSimulation>& sim, const RunOptions& options, RunData& run,
@@ -143,6 +202,7 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
     if (by_mcs[k].first == by_mcs[k - 1].first)
       throw InputError(by_mcs[k].second + ": same MCS " + std::to_string(by_mcs[k].first) + " as " +
                        by_mcs[k - 1].second);
+  check_series(by_mcs, options, run.warnings);
 
   std::vector<CellSample> samples;
   std::vector<std::int64_t> frame_times;
@@ -262,9 +322,7 @@ RunData read_run(const std::string& path, const RunOptions& options) {
     const std::optional<Cc3dSimulation> sim = find_simulation(p, warnings);
     std::vector<std::string> vtks;
     if (fs::is_directory(p / "LatticeData", ec))
-      for (const auto& entry : fs::directory_iterator(p / "LatticeData"))
-        if (entry.is_regular_file() && is_vtk_step_name(entry.path().filename().string()))
-          vtks.push_back(entry.path().string());
+      vtks = list_snapshots(p / "LatticeData", options, warnings);
     std::string csv;
     for (const char* name : {"cells.csv.gz", "cells.csv"})
       if (csv.empty() && fs::is_regular_file(p / name, ec))

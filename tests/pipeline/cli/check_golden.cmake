@@ -11,7 +11,9 @@
 #     line) becomes `medusa`;
 #   - the work folder becomes <WORK> (first: the build folder may lie inside the source tree);
 #   - the source tree (input paths recorded in the store, named in error messages) becomes <SOURCE>;
-#   - the value of the `software version:` line of `medusa info` becomes <VERSION>.
+#   - the value of the `software version:` line of `medusa info` becomes <VERSION>;
+#   - the random run id (`run id:` of `medusa info`, the `# medusa run` line of a diagrams CSV, the
+#     data-medusa-run attribute of a barcode SVG) becomes <RUN_ID>.
 # Everything else, floating-point text included, must match to the byte.
 #
 # With the environment variable MEDUSA_UPDATE_GOLDEN=1 (scripts/update-golden), the normalised
@@ -35,6 +37,7 @@ function(normalise text out)
   string(REPLACE "${WORKDIR}" "<WORK>" text "${text}")
   string(REPLACE "${SOURCE_DIR}" "<SOURCE>" text "${text}")
   string(REGEX REPLACE "(^|\n)software version: [^\n]*" "\\1software version: <VERSION>" text "${text}")
+  string(REGEX REPLACE "(run id: |# medusa run |data-medusa-run=\")[0-9a-f]+" "\\1<RUN_ID>" text "${text}")
   set(${out} "${text}" PARENT_SCOPE)
 endfunction()
 

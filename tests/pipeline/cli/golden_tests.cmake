@@ -39,12 +39,12 @@ endfunction()
 # The stores: the first 3 frames of examples/sorting_3d, of the non-sorting control and of the second
 # sorting seed (tests/data/cli/README.txt), radius 3. The run writes the CSV of all diagrams too.
 medusa_golden_test(run_small ARGS run --force ${DATA}/cells_3frames.csv.gz -o small.h5 --radius 3 --quiet
-                   STDOUT run_small.txt FILES small.diagrams.csv=barcode_all.csv SETUP golden_small_store)
+                   STDOUT run_small.txt FILES small.diagrams.csv=run_small.diagrams.csv SETUP golden_small_store)
 # The store side runs on the engine's thread with --threads 1 and on a thread of its own otherwise
 # (AsyncObserver): both give the same diagrams.
 foreach(threads 1 2)
   medusa_golden_test(run_small_on_${threads}_threads ARGS run --force ${DATA}/cells_3frames.csv.gz -o small_${threads}_threads.h5
-                     --radius 3 --quiet --threads ${threads} FILES small_${threads}_threads.diagrams.csv=barcode_all.csv
+                     --radius 3 --quiet --threads ${threads} FILES small_${threads}_threads.diagrams.csv=run_small.diagrams.csv
                      IGNORE_STDOUT)
 endforeach()
 foreach(run nosorting_3d sorting_3d_seed2)
@@ -74,7 +74,9 @@ medusa_golden_test(barcode_json_type2 ARGS barcode small.h5 --format json --type
 medusa_golden_test(barcode_svg_h2 ARGS barcode small.h5 --format svg --dim 2 -o barcode_h2.svg
                    FILES barcode_h2.svg=barcode_h2.svg ${small})
 medusa_golden_test(curves_frames ARGS curves small.h5 --frames-only -o curves STDOUT curves_frames.txt
-                   FILES curves.curves.csv=curves_frames.csv curves.curves.svg=curves_frames.svg ${small})
+                   FILES curves.curves.csv=curves_frames.csv curves.curves.svg=curves_frames.svg
+                         curves.sorting.csv=curves_frames_sorting.csv
+                         curves.sorting.svg=curves_frames_sorting.svg ${small})
 medusa_golden_test(at_csv ARGS at small.h5 --time 100 -o at_100.csv STDOUT at_100.txt FILES at_100.csv=at_100.csv
                    ${small})
 medusa_golden_test(at_vtk_type1 ARGS at small.h5 --time 50.5 --type 1 -o at_type1_50.5.vtk
@@ -113,7 +115,7 @@ medusa_golden_test(error_unknown_type ARGS diagrams small.h5 --type 9 CODE 3 STD
                    ${small})
 medusa_golden_test(error_time_outside_run ARGS at small.h5 --time 250 -o late.csv CODE 3
                    STDERR error_time_outside_run.txt ${small})
-medusa_golden_test(error_compare_one_store ARGS compare small.h5 CODE 3 STDERR error_compare_one_store.txt
+medusa_golden_test(error_compare_one_store ARGS compare small.h5 CODE 2 STDERR error_compare_one_store.txt
                    ${small})
 
 # The golden files against each other and against GUDHI (pers reader, bottleneck distance).

@@ -11,7 +11,7 @@ rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 # The large run (4,945 cells) takes far longer than the delay, so the signal arrives mid-run.
 if [ "$command" = report ]; then
   # The store of the large run is written first (beside the working folder); its report takes seconds.
-  mkdir -p "${work}_store" && "$medusa" run "$input" -o "${work}_store/large.h5" --radius 3 --quiet >/dev/null 2>&1 || exit 1
+  mkdir -p "${work}_store" && "$medusa" run --force "$input" -o "${work}_store/large.h5" --radius 3 --quiet >/dev/null 2>&1 || exit 1
   "$medusa" report "${work}_store/large.h5" -o interrupted.html 2>stderr.txt &
 elif [ "$command" = sweep ]; then
   "$medusa" sweep "$input" -o interrupted --radii 2.5:3:0.5 --threads 2 --quiet 2>stderr.txt &

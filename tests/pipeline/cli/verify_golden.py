@@ -65,6 +65,9 @@ for k in range(4):
 # barcode_all.csv: the same pairs, labelled with their diagram, in the order of diagrams_all.txt.
 with open(os.path.join(golden, "barcode_all.csv")) as f:
     rows = list(csv.DictReader(f))
+# run_small.diagrams.csv (what `medusa run` wrote beside small.h5): its run id line, then barcode_all.csv.
+with open(os.path.join(golden, "run_small.diagrams.csv")) as f, open(os.path.join(golden, "barcode_all.csv")) as g:
+    check(f.read() == "# medusa run <RUN_ID>\n" + g.read(), "run_small.diagrams.csv is not barcode_all.csv under its run id")
 expected = [(t, d, p) for (t, d), (_, pairs) in every.items() for p in pairs]
 got = [(r["type"], r["direction"], (number(r["birth"]), number(r["death"]), int(r["dimension"]))) for r in rows]
 check(got == expected, "barcode_all.csv differs from diagrams_all.txt")

@@ -40,4 +40,7 @@ private:
   IntervalTree before_;
 };
 
+// The batch after which frame k is reached (ComplexIndex::frame_batch without an index).
+std::uint64_t frame_batch(const Medusa& medusa, std::size_t k);
+
 } // namespace medusa

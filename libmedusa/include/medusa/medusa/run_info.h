@@ -26,6 +26,10 @@ struct RunInfo {
   std::string snap_policy;             // "exact" (never moved) or "nearest-ties-to-even" (policy R)
   std::uint64_t snapped_positions = 0; // positions (cell, frame) moved by snapping
   double snap_max_displacement = 0.0;  // largest move of one coordinate, grid units (<= 1/2)
+  // 32 lowercase hex digits (128 random bits) naming this run; `medusa run` writes it into the store
+  // and into every side output, so that files of two runs are never taken for one (docs/FORMAT.md).
+  // Empty in stores written before it existed.
+  std::string run_id;
 };
 
 } // namespace medusa

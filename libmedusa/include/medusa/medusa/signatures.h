@@ -35,4 +35,9 @@ struct SignatureSample {
 // all its values; every frame maps to one sample.
 std::vector<SignatureSample> signatures_over_time(const ComplexIndex& index);
 
+// Fills the frames of samples laid out as signatures_over_time lays them out (one per batch of the
+// medusa in order, then K(t_end-)): frame k goes to the sample of its frame batch, the last frame to
+// the final sample. Throws InternalError when a frame maps to no batch.
+void assign_frames(const Medusa& medusa, std::vector<SignatureSample>& samples);
+
 } // namespace medusa

@@ -20,6 +20,10 @@ struct StoreReadOptions {
 
 Medusa read_store(const std::string& path, const StoreReadOptions& options = {});
 
+// Store errors are one plain sentence; with details on (the CLI's --verbose) they also carry the HDF5
+// library's own error stack, for a bug report.
+void set_store_error_details(bool on);
+
 // Checks the structure of a medusa: ids 0..N-1; sorted vertex tuples of known vertices; one facet per
 // vertex, facet i the tuple without vertex i, whose lifetime contains the cell's (docs/MATH.md §6.4); d d = 0
 // over Z/2; instant kinds have birth == death and regular cells birth < death; cells of one simplex

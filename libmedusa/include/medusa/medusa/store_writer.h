@@ -18,7 +18,11 @@ inline constexpr std::int64_t store_format_version = 1;
 // throws StoreError naming the path; after one the writer is unusable.
 class StoreWriter : public CellSink {
 public:
-  explicit StoreWriter(const std::string& path);
+  // on_finish: finish() renames the complete file to `path`. later: finish() leaves it complete at
+  // temporary_path() and the caller publishes it (with the run's other outputs, or not at all) and
+  // removes it on failure.
+  enum class Publish { on_finish, later };
+  explicit StoreWriter(const std::string& path, Publish publish = Publish::on_finish);
   ~StoreWriter() override;
   StoreWriter(const StoreWriter&) = delete;
   StoreWriter& operator=(const StoreWriter&) = delete;

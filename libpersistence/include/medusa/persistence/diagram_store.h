@@ -19,6 +19,10 @@ std::string diagram_group_name(const Diagram& diagram);
 // two diagrams have the same group name.
 void write_diagrams(const std::string& store_path, const std::vector<Diagram>& diagrams);
 
+// The same, written into the file itself: for a store nobody else can see yet (`medusa run` writes
+// its store under a temporary name and publishes it with the run's other outputs at the end).
+void write_diagrams_in_place(const std::string& store_path, const std::vector<Diagram>& diagrams);
+
 // Reads `/persistence` back, in the stored order. Each pair has dim, birth, death, birth_cell,
 // death_cell, essential and zero_length; the other fields of PersistencePair (virtual times,
 // filtration indices, vertices) are not stored and keep their defaults. Throws StoreError when the

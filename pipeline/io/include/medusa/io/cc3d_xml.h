@@ -2,6 +2,8 @@
 // boundary conditions and type names. Not a general XML parser: it looks for the Potts tags.
 #pragma once
 
+#include "medusa/core/error.h"
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -16,7 +18,14 @@ struct Cc3dSimulation {
   std::vector<std::string> type_names;      // <CellType TypeName= TypeId=/>, index = type id
 };
 
-// Throws InputError naming the file if it cannot be read or has no <Dimensions x= y= z=/>.
+// A CC3DML file without <Dimensions>: not the simulation's lattice description (another XML).
+class NotASimulation : public InputError {
+public:
+  using InputError::InputError;
+};
+
+// Throws NotASimulation if the file has no <Dimensions x= y= z=/>, and InputError naming the file if
+// it cannot be read or ends before </Potts> and </CompuCell3D> (cut off).
 Cc3dSimulation read_cc3d_xml(const std::string& path);
 
 // "x", "x,y", ... for the periodic axes; empty if none.

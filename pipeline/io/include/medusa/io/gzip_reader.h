@@ -11,6 +11,10 @@
 
 namespace medusa::io {
 
+// No line or token of a CompuCell3D text file comes near this; a longer one is refused (naming its
+// line) before it takes memory in proportion to a decompressed size that can be 1000 times the file's.
+inline constexpr std::size_t max_line_bytes = std::size_t(1) << 20;
+
 class GzipReader {
 public:
   explicit GzipReader(std::string path); // InputError if the file cannot be opened

@@ -31,6 +31,9 @@ struct RunOptions {
   // Read a periodic run as periodic (docs/MATH.md §8): no refusal and no warning; RunData::domain holds
   // its periodic axes for the caller to run it on the torus.
   bool read_periodic = false;
+  // Leave out LatticeData snapshots that cannot be read, and go on past snapshots missing from the
+  // series, with a warning each (CLI: --skip-unreadable-frames); otherwise each is an InputError.
+  bool skip_unreadable_frames = false;
   CsvColumns csv_columns;
   // Lattice z extent if the caller knows it; otherwise taken from Simulation/*.xml or the VTK header.
   // z extent 1 makes the run planar (dimension 2; z kept).

@@ -1,0 +1,129 @@
+"""`medusa run` trusts nothing in -o, and a mix of two runs' outputs is refused (docs/FORMAT.md,
+"One result per run").
+
+usage: check_run_outputs.py unsafe <medusa> <small run csv> <workdir>
+       check_run_outputs.py mixed <medusa> <small run csv> <plot_store.py> <workdir>
+
+unsafe: -o naming the input file, a file the input folder's reader reads, a device, a FIFO, a folder,
+        a dangling link or a link to a device is refused with exit 2 and one line, and nothing is
+        changed or created; -o through a link to a regular file writes that file and keeps the link.
+mixed:  a diagrams CSV or barcode SVG beside a store from another run makes `medusa info` and
+        examples/plot_store.py exit 5.
+Run with /usr/bin/python3.
+"""
+import hashlib
+import os
+import shutil
+import stat
+import subprocess
+import sys
+
+if not __debug__:
+    sys.exit("these checks are assert statements: run without -O and without PYTHONOPTIMIZE")
+
+
+def run(args, cwd):
+    result = subprocess.run(args, cwd=cwd, capture_output=True, text=True)
+    print("$", " ".join(args), "->", result.returncode, result.stderr.strip()[-300:])
+    return result
+
+
+def digest(path):
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+def listing(folder):
+    return sorted(os.listdir(folder))
+
+
+def refused(result, fragment):
+    lines = result.stderr.strip().splitlines()
+    assert result.returncode == 2, f"exit {result.returncode}, expected 2"
+    assert len(lines) == 1 and lines[0].startswith("medusa: "), result.stderr
+    assert fragment in lines[0], f"'{fragment}' not in {lines[0]}"
+
+
+def check_unsafe(medusa, csv, work):
+    shutil.copyfile(csv, os.path.join(work, "in.csv.gz"))
+    os.makedirs(os.path.join(work, "folder", "LatticeData"))
+    shutil.copyfile(csv, os.path.join(work, "folder", "cells.csv.gz"))
+    os.mkfifo(os.path.join(work, "fifo.h5"))
+    os.makedirs(os.path.join(work, "dir.h5"))
+    os.symlink("/dev/null", os.path.join(work, "null_link.h5"))
+    os.symlink(os.path.join(work, "dir.h5"), os.path.join(work, "dir_link.h5"))
+    os.symlink(os.path.join(work, "nowhere.h5"), os.path.join(work, "dangling.h5"))
+    before = {p: digest(os.path.join(work, p)) for p in ["in.csv.gz", "folder/cells.csv.gz"]}
+    names = listing(work)
+    cases = [
+        (["in.csv.gz", "-o", "in.csv.gz"], "is the input"),
+        (["in.csv.gz", "-o", "./in.csv.gz"], "is the input"),
+        (["folder", "-o", "folder/cells.csv.gz"], "inside the input folder"),
+        (["folder", "-o", "folder/LatticeData/x.h5"], "inside the input folder"),
+        (["in.csv.gz", "-o", "/dev/null"], "is a device"),
+        (["in.csv.gz", "-o", "fifo.h5"], "is a FIFO"),
+        (["in.csv.gz", "-o", "dir.h5"], "is a folder"),
+        (["in.csv.gz", "-o", "null_link.h5"], "symbolic link to a device"),
+        (["in.csv.gz", "-o", "dir_link.h5"], "symbolic link to a folder"),
+        (["in.csv.gz", "-o", "dangling.h5"], "symbolic link to nothing"),
+        # A side output's name is checked too: `in.h5` writes in.diagrams.csv, here a FIFO.
+        (["in.csv.gz", "-o", "side.h5"], "side.diagrams.csv is a FIFO"),
+    ]
+    os.mkfifo(os.path.join(work, "side.diagrams.csv"))
+    names = listing(work)
+    for args, fragment in cases:
+        # --force: an existing output is replaced only if it is safe to (the refusals come after it).
+        refused(run([medusa, "run", *args, "--force", "--radius", "3", "-q"], work), fragment)
+        assert listing(work) == names, f"files changed: {listing(work)} (was {names})"
+        assert {p: digest(os.path.join(work, p)) for p in before} == before, "an input changed"
+        assert stat.S_ISFIFO(os.lstat(os.path.join(work, "fifo.h5")).st_mode)
+        assert os.path.islink(os.path.join(work, "null_link.h5"))
+        assert stat.S_ISCHR(os.stat("/dev/null").st_mode)
+        assert not os.path.exists("/dev/null.diagrams.csv") and not os.path.exists("/dev/null.barcode.svg")
+    # Through a link to a regular file: the file is written, the link stays a link.
+    with open(os.path.join(work, "target.h5"), "w") as f:
+        f.write("old\n")
+    os.symlink("target.h5", os.path.join(work, "link.h5"))
+    result = run([medusa, "run", "in.csv.gz", "-o", "link.h5", "--force", "--radius", "3", "-q"], work)
+    assert result.returncode == 0, result.stderr
+    assert os.path.islink(os.path.join(work, "link.h5"))
+    assert run([medusa, "info", "target.h5"], work).returncode == 0
+    print(f"{len(cases)} unsafe outputs refused")
+
+
+def check_mixed(medusa, csv, plot_store, work):
+    for name, radius in [("a.h5", "3"), ("b.h5", "2.5")]:
+        assert run([medusa, "run", csv, "-o", name, "--radius", radius, "-q"], work).returncode == 0
+    assert run([medusa, "info", "a.h5"], work).returncode == 0
+    for side in ["diagrams.csv", "barcode.svg", "diagram.svg"]:
+        folder = os.path.join(work, "mix_" + side)
+        os.makedirs(folder)
+        for suffix in ["h5", "diagrams.csv", "barcode.svg", "diagram.svg"]:
+            shutil.copyfile(os.path.join(work, "a." + suffix), os.path.join(folder, "a." + suffix))
+        shutil.copyfile(os.path.join(work, "b." + side), os.path.join(folder, "a." + side))
+        result = run([medusa, "info", "a.h5"], folder)
+        assert result.returncode == 5, result.stderr
+        assert "a." + side in result.stderr and "another run" in result.stderr, result.stderr
+        if side == "diagrams.csv":
+            plot = run(["/usr/bin/python3", plot_store, "a.h5"], folder)
+            assert plot.returncode == 5, plot.stderr
+            assert "another run" in plot.stderr, plot.stderr
+    # The matching set plots.
+    plot = run(["/usr/bin/python3", plot_store, "a.h5"], work)
+    assert plot.returncode == 0, plot.stderr
+
+
+def main():
+    mode, medusa, csv = sys.argv[1:4]
+    work = sys.argv[-1]
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    if mode == "unsafe":
+        check_unsafe(medusa, csv, work)
+    else:
+        check_mixed(medusa, csv, sys.argv[4], work)
+    print("ok")
+
+
+if __name__ == "__main__":
+    main()
