@@ -49,7 +49,7 @@ def run(medusa, folder, out, radius, *extra):
                        capture_output=True, text=True)
     assert p.returncode == 0, "medusa run %s: exit %d: %s" % (folder, p.returncode, p.stderr)
     with open(out[:-3] + ".diagrams.csv") as f:
-        text = f.read()
+        text = "".join(line for line in f if not line.startswith("#"))  # "# medusa run <id>"
     rows = list(csv.DictReader(io.StringIO(text)))
     return text, rows
 
