@@ -21,7 +21,8 @@ ALLOWED = {
     "libmedusa/": {"core", "kinetic", "medusa"},
     "libpersistence/": {"core", "kinetic", "medusa", "persistence"},
     "pipeline/io/": {"core", "kinetic", "io"},
-    "pipeline/cli/": {"core", "kinetic", "medusa", "persistence", "io"},
+    "pipeline/periodic/": {"core", "kinetic", "io", "periodic"},
+    "pipeline/cli/": {"core", "kinetic", "medusa", "persistence", "io", "periodic"},
 }
 # Folder -> third-party headers it must not include (the library knows nothing of them).
 FORBIDDEN = {

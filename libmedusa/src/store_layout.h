@@ -15,6 +15,9 @@ inline constexpr const char* grid_scale = "grid_scale";
 inline constexpr const char* dimension = "dimension";
 inline constexpr const char* source_files = "source_files";
 inline constexpr const char* command_line = "command_line";
+inline constexpr const char* periodic_axes = "periodic_axes";
+inline constexpr const char* periodic_length[3] = {"periodic_length_x", "periodic_length_y",
+                                                   "periodic_length_z"};
 inline constexpr const char* software_version = "software_version";
 inline constexpr const char* position_source = "position_source";
 inline constexpr const char* snap_policy = "snap_policy";

@@ -278,6 +278,12 @@ Medusa read_store(const std::string& path, const StoreReadOptions& options) {
   m.run.source_files = h5::read_strings_attribute(f, L::source_files, path);
   m.run.command_line = h5::read_string_attribute(f, L::command_line, path);
   m.run.software_version = h5::read_string_attribute(f, L::software_version, path);
+  // Absent from stores written before periodic runs were supported: those are open runs.
+  if (has_attribute(f, L::periodic_axes, path)) {
+    m.run.periodic_axes = h5::read_string_attribute(f, L::periodic_axes, path);
+    for (std::size_t a = 0; a < 3; ++a)
+      m.run.periodic_lengths[a] = h5::read_int_attribute(f, L::periodic_length[a], path);
+  }
   // Stores written before these attributes existed leave them unknown.
   if (has_attribute(f, L::position_source, path)) {
     m.run.position_source = h5::read_string_attribute(f, L::position_source, path);

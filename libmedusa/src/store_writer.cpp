@@ -180,6 +180,9 @@ void StoreWriter::run(const RunInfo& info, const kinetic::Trajectories& input) {
     h5::write_attribute(f, L::source_files, info.source_files, w.path);
     h5::write_attribute(f, L::command_line, info.command_line, w.path);
     h5::write_attribute(f, L::software_version, info.software_version, w.path);
+    h5::write_attribute(f, L::periodic_axes, info.periodic_axes, w.path);
+    for (std::size_t a = 0; a < 3; ++a)
+      h5::write_attribute(f, L::periodic_length[a], info.periodic_lengths[a], w.path);
     h5::write_attribute(f, L::position_source, info.position_source, w.path);
     h5::write_attribute(f, L::snap_policy, info.snap_policy, w.path);
     h5::write_attribute(f, L::snapped_positions, info.snapped_positions, w.path);

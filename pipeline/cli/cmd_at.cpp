@@ -24,6 +24,27 @@
 namespace medusa::cli {
 namespace {
 
+// The cells' positions at `time`, interpolated between frames. A periodic run's positions are
+// unwrapped (docs/MATH.md §8.2): they are shown wrapped into [0, L) on its periodic axes, where
+// CompuCell3D draws the cells. Validates `time` against the frames.
+std::vector<std::optional<std::array<double, 3>>> display_positions(const medusa::Medusa& medusa,
+                                                                    double time) {
+  auto positions = positions_at_time(medusa.input, time);
+  for (std::size_t a = 0; a < 3; ++a) {
+    if (medusa.run.periodic_lengths[a] <= 0)
+      continue;
+    const double length =
+        static_cast<double>(medusa.run.periodic_lengths[a]) / static_cast<double>(medusa.input.scale);
+    for (auto& x : positions)
+      if (x) {
+        (*x)[a] = std::fmod((*x)[a], length);
+        if ((*x)[a] < 0)
+          (*x)[a] += length;
+      }
+  }
+  return positions;
+}
+
 namespace fs = std::filesystem;
 
 struct AtArguments {
@@ -163,7 +184,7 @@ void write_series(const AtArguments& args, const medusa::Medusa& medusa, const m
     throw StoreError("cannot create the folder " + args.output + (ec ? " (" + ec.message() + ")" : ""));
   // Validates every time before writing anything.
   for (double t : times)
-    positions_at_time(medusa.input, t);
+    display_positions(medusa, t);
   std::vector<fs::path> written;
   try {
     std::string collection =
@@ -172,7 +193,7 @@ void write_series(const AtArguments& args, const medusa::Medusa& medusa, const m
       check_interrupted();
       char name[32];
       std::snprintf(name, sizeof name, "at_%05zu.vtu", i);
-      const auto positions = positions_at_time(medusa.input, times[i]);
+      const auto positions = display_positions(medusa, times[i]);
       ClassMarks marks;
       const auto cells = cells_at(medusa, index, times[i], positions, classes, marks);
       written.push_back(folder / name);
@@ -223,7 +244,7 @@ void at_command(const AtArguments& args) {
   }
   const double time = args.time ? *args.time : classes->first_birth;
   // Validates T against the frames before the (batch-approximate) index query.
-  const auto positions = positions_at_time(medusa.input, time);
+  const auto positions = display_positions(medusa, time);
   ClassMarks marks;
   const std::vector<medusa::CellId> cells =
       cells_at(medusa, index, time, positions, classes ? &*classes : nullptr, marks);

@@ -20,6 +20,8 @@
 #include "medusa/medusa/medusa_builder.h"
 #include "medusa/medusa/store_reader.h"
 #include "medusa/medusa/store_writer.h"
+#include "medusa/periodic/canonical_filter.h"
+#include "medusa/periodic/periodic_cover.h"
 #include "medusa/persistence/diagram_store.h"
 #include "medusa/persistence/medusa_diagrams.h"
 
@@ -355,6 +357,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   options.source = choose_source(input, args.source);
   options.snap = !args.exact_vtk;
   options.allow_periodic_as_open = args.periodic_as_open;
+  options.read_periodic = !args.periodic_as_open;
   options.skip_unreadable_frames = args.skip_unreadable_frames;
   meter.stage("reading " + input);
   StageClock clock;
@@ -380,6 +383,18 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   kinetic::KineticOptions kinetic_options;
   kinetic_options.rho2 = kinetic::squared_radius_from_decimal(radius, data.trajectories.scale);
   kinetic_options.audit = args.audit;
+  // A periodic run goes through the covering space: the cells and their copies near the seams, with
+  // the canonical filter in front of the builder (docs/MATH.md §8). Refused before any output exists.
+  std::optional<periodic::PeriodicCover> cover;
+  if (data.domain.any() && !args.periodic_as_open) {
+    periodic::check_periodic_radius(data.domain, kinetic_options.rho2, radius);
+    cover = periodic::cover_trajectories(data.trajectories, data.domain, kinetic_options.rho2);
+    cover->trajectories.validate();
+    if (!args.quiet)
+      std::cerr << "medusa: periodic along " << data.domain.axes() << ": the complex on the torus, with "
+                << cover->ghosts()
+                << " trajectories of periodic copies of cells near them (docs/MATH.md §8)\n";
+  }
 
   medusa::RunInfo info;
   info.radius = std::stod(radius);
@@ -392,12 +407,16 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   info.snapped_positions = static_cast<std::uint64_t>(data.snap.moved);
   info.snap_max_displacement = data.snap.max_displacement();
   info.run_id = run_id;
+  if (cover) {
+    info.periodic_axes = data.domain.axes();
+    info.periodic_lengths = data.domain.period;
+  }
 
   kinetic::KineticStatistics stats;
   std::vector<std::int64_t> peak_rss_at_frame;
   {
     clock = StageClock{};
-    kinetic::KineticAlphaComplex engine(data.trajectories, kinetic_options);
+    kinetic::KineticAlphaComplex engine(cover ? cover->trajectories : data.trajectories, kinetic_options);
     // Finished, the store stays under its temporary name (outputs.store_temporary()) until publish.
     medusa::StoreWriter writer(outputs.final_name(0), medusa::StoreWriter::Publish::later);
     medusa::MedusaBuilder builder(writer);
@@ -411,7 +430,10 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     kinetic::Observer& store_side = beside ? static_cast<kinetic::Observer&>(*beside) : builder;
     meter.start_kinetic(data.trajectories.frames());
     ProgressObserver observer(store_side, engine, meter, data.trajectories.frames());
-    engine.run(observer);
+    std::optional<periodic::CanonicalFilter> torus;
+    if (cover)
+      torus.emplace(*cover, observer);
+    engine.run(torus ? static_cast<kinetic::Observer&>(*torus) : observer);
     // The engine's wall time includes the time spent in the store side's callbacks (with a thread of
     // its own: queueing the calls, and waiting for it at the end), which belongs to the store stage;
     // their CPU time is not measured apart (see ProgressObserver::timed) and stays in the kinetic

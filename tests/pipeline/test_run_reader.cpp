@@ -127,7 +127,8 @@ TEST_CASE("A VTK run whose lattice differs from the CC3DML is refused", "[io][ru
 
 TEST_CASE("A periodic run is refused unless periodic-as-open is allowed", "[io][run]") {
   io::test::TempDir dir;
-  fs::copy_file(io::test::data("io/gap.csv"), dir.path() / "cells.csv");
+  write(dir.file("cells.csv"), "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n0,1,1,1,2,3\n0,2,1,4,5,6\n0,3,1,7,8,9\n"
+                               "0,4,1,10,11,12\n0,5,1,13,14,15\n");
   write(dir.file("Simulation/run.xml"),
         xml("x=\"20\" y=\"20\" z=\"20\"",
             "    <Boundary_x>Periodic</Boundary_x>\n    <Boundary_z>Periodic</Boundary_z>\n"));

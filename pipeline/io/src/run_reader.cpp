@@ -1,6 +1,7 @@
 #include "medusa/io/run_reader.h"
 
 #include "medusa/core/error.h"
+#include "medusa/io/periodic_unwrap.h"
 #include "medusa/io/trajectory_assembly.h"
 #include "medusa/io/vtk_reader.h"
 
@@ -107,13 +108,35 @@ void check_periodic(const std::optional<Cc3dSimulation>& sim, const RunOptions& 
   if (!sim)
     return;
   const std::string axes = periodic_axes(*sim);
-  if (axes.empty())
+  if (axes.empty() || options.read_periodic)
     return;
   if (!options.allow_periodic_as_open)
     throw InputError(sim->path + ": the run is periodic along " + axes +
                      "; medusa needs open boundaries (rerun with --periodic-as-open to treat them as open)");
   run.warnings.push_back("periodic boundaries along " + axes + " (" + sim->path +
                          ") treated as open: " + consequence);
+}
+
+const char* const as_open_consequence =
+    "each cell is followed across the boundaries (docs/MATH.md §8.2) but contacts across them are not seen";
+
+// CC3D's centres along a periodic axis lie in [0, L] (L itself after rounding): anything outside is a
+// corrupt row; L is the same point as 0 (docs/MATH.md §8.1).
+void wrap_csv_centres(std::vector<CellSample>& samples, const PeriodicDomain& domain, const std::string& path,
+                      const CsvColumns& columns) {
+  const std::string* names[3] = {&columns.x, &columns.y, &columns.z};
+  for (CellSample& s : samples)
+    for (std::size_t a = 0; a < 3; ++a) {
+      if (!domain.periodic[a])
+        continue;
+      const std::int64_t x = s.position[a], lo = domain.origin[a], hi = lo + domain.period[a];
+      if (x < lo || x > hi)
+        throw InputError(path + ":" + std::to_string(s.line) + ": cell " + std::to_string(s.cell_id) +
+                         " at MCS " + std::to_string(s.mcs) + ": " + *names[a] + " lies outside [0, " +
+                         std::to_string(domain.lattice[a]) + "], the periodic lattice along " +
+                         char('x' + a));
+      s.position[a] = wrap_coordinate(x, lo, domain.period[a]);
+    }
 }
 
 void name_types(RunData& run, const std::vector<std::string>& from_source) {
@@ -165,8 +188,10 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
   run.simulation = simulation;
   run.position_convention = "vtk-centroids-voxel-corner";
   run.snap.snapped = options.snap;
-  check_periodic(simulation, options, run,
-                 "a cell straddling a seam gets the plain mean of its voxels, far from its body");
+  check_periodic(simulation, options, run, as_open_consequence);
+  std::array<bool, 3> periodic{};
+  if (simulation)
+    periodic = simulation->periodic;
   if (files.empty())
     throw InputError("no VTK snapshots to read");
   std::vector<std::pair<std::int64_t, std::string>> by_mcs;
@@ -184,9 +209,11 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
   std::array<std::int64_t, 3> dims{};
   for (std::size_t k = 0; k < by_mcs.size(); ++k) {
     const auto& [mcs, file] = by_mcs[k];
-    const VtkSnapshot snap = read_vtk_snapshot(file, options.scale);
+    const VtkSnapshot snap = read_vtk_snapshot(file, options.scale, periodic);
     if (k == 0) {
       dims = snap.dimensions;
+      if (simulation)
+        run.domain = periodic_domain(*simulation, snap.origin, snap.spacing);
       if (simulation && simulation->dimensions != dims)
         throw InputError(file + ": DIMENSIONS " + std::to_string(dims[0]) + " " + std::to_string(dims[1]) +
                          " " + std::to_string(dims[2]) + " differ from the lattice of " + simulation->path);
@@ -226,6 +253,7 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
                      std::to_string(z_extent));
   take_assembly(run, assemble_trajectories(std::move(samples), run.sources, options.scale,
                                            dims[2] == 1 ? 2 : 3, frame_times));
+  unwrap_trajectories(run.trajectories, run.domain, run.sources);
   name_types(run, {});
   if (run.snap.moved > 0)
     run.notes.push_back(snap_note(run.snap, options.scale));
@@ -239,10 +267,13 @@ RunData read_csv_run(const std::string& path, const RunOptions& options,
   run.used = RunSource::csv;
   run.simulation = simulation;
   run.position_convention = "csv-centres";
-  check_periodic(simulation, options, run,
-                 "CC3D wraps centres into the lattice, so a cell crossing a seam jumps");
+  check_periodic(simulation, options, run, as_open_consequence);
   CsvContents csv = read_csv(path, CsvOptions{options.csv_columns, options.scale});
   run.sources.push_back(path);
+  if (simulation) {
+    run.domain = periodic_domain(*simulation, {0, 0, 0}, {options.scale, options.scale, options.scale});
+    wrap_csv_centres(csv.samples, run.domain, path, options.csv_columns);
+  }
 
   std::optional<std::int64_t> z_extent = options.z_extent;
   if (!z_extent && simulation)
@@ -267,6 +298,7 @@ RunData read_csv_run(const std::string& path, const RunOptions& options,
                            "; read as a planar (2D) run");
   }
   take_assembly(run, assemble_trajectories(std::move(csv.samples), run.sources, options.scale, dimension));
+  unwrap_trajectories(run.trajectories, run.domain, run.sources);
   name_types(run, csv.type_names);
   run.trajectories.validate();
   return run;

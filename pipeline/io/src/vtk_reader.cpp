@@ -3,6 +3,7 @@
 #include "medusa/core/error.h"
 #include "medusa/io/decimal.h"
 #include "medusa/io/gzip_reader.h"
+#include "periodic_centroid.h"
 
 #include <algorithm>
 #include <cstring>
@@ -61,10 +62,12 @@ public:
     snap_.path = path;
   }
 
-  VtkSnapshot parse() {
+  VtkSnapshot parse(const std::array<bool, 3>& periodic) {
     header();
     field_arrays();
     accumulate();
+    if (periodic[0] || periodic[1] || periodic[2])
+      periodic_centroids(snap_, ids_, periodic, scale_);
     return std::move(snap_);
   }
 
@@ -319,9 +322,10 @@ private:
 
 } // namespace
 
-VtkSnapshot read_vtk_snapshot(const std::string& path, std::int64_t scale) {
+VtkSnapshot read_vtk_snapshot(const std::string& path, std::int64_t scale,
+                              const std::array<bool, 3>& periodic) {
   scale_decimals(scale);
-  return SnapshotParser(path, scale).parse();
+  return SnapshotParser(path, scale).parse(periodic);
 }
 
 bool is_vtk_step_name(const std::string& filename) {

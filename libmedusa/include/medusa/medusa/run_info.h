@@ -1,6 +1,7 @@
 // Run metadata recorded in the store next to the medusa (docs/FORMAT.md).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -15,6 +16,10 @@ struct RunInfo {
   std::vector<std::string> source_files; // the CompuCell3D files read
   std::string command_line;
   std::string software_version;
+  // Periodic lattice axes ("x,y"; empty for an open run) and their periods in grid units (0 on open
+  // axes): the medusa is then the one on the torus, its positions unwrapped (docs/MATH.md §8).
+  std::string periodic_axes;
+  std::array<std::int64_t, 3> periodic_lengths{};
   // Where the positions came from and whether they were moved onto the grid (docs/MATH.md §1.1,
   // §1.3): every exact answer is exact for the recorded positions.
   std::string position_source;         // e.g. "csv-centres", "vtk-centroids-voxel-corner"; "" unknown

@@ -5,6 +5,7 @@
 #include "medusa/io/cell_volumes.h"
 #include "medusa/io/centroid.h"
 #include "medusa/io/csv_reader.h"
+#include "medusa/io/periodic_domain.h"
 #include "medusa/kinetic/trajectories.h"
 
 #include <cstdint>
@@ -27,6 +28,9 @@ struct RunOptions {
   // as CC3D's own centres in cells.csv are rounded; false refuses them (CLI: --exact-vtk).
   bool snap = true;
   bool allow_periodic_as_open = false; // read a periodic run as if its boundaries were open
+  // Read a periodic run as periodic (docs/MATH.md §8): no refusal and no warning; RunData::domain holds
+  // its periodic axes for the caller to run it on the torus.
+  bool read_periodic = false;
   // Leave out LatticeData snapshots that cannot be read, and go on past snapshots missing from the
   // series, with a warning each (CLI: --skip-unreadable-frames); otherwise each is an InputError.
   bool skip_unreadable_frames = false;
@@ -49,12 +53,16 @@ struct RunData {
   // "vtk-centroids-voxel-corner" (exact voxel means, voxel (i,j,k) at origin + spacing*(i,j,k)).
   std::string position_convention;
   std::optional<Cc3dSimulation> simulation; // the run's CC3DML facts, when found
+  // The lattice's periodic axes (none for an open run). Positions along them are unwrapped: continuous
+  // between frames, each trajectory starting inside [origin, origin + period) (docs/MATH.md §8.2).
+  PeriodicDomain domain;
 };
 
 // Reads a CC3D output folder (LatticeData/Step_*.vtk[.gz], Simulation/*.xml, cells.csv[.gz]) or a
 // .csv/.csv.gz file (its folder's Simulation/*.xml is used when present). Throws InputError for a
-// periodic run unless options.allow_periodic_as_open (then a warning is recorded), for VTK centroids
-// off the grid when !options.snap, and for every malformed input (naming file, line, cell).
+// periodic run unless options.allow_periodic_as_open (then a warning is recorded and the positions are
+// unwrapped, docs/MATH.md §8), for VTK centroids off the grid when !options.snap, and for every
+// malformed input (naming file, line, cell).
 RunData read_run(const std::string& path, const RunOptions& options = {});
 
 // The pieces of read_run, for callers that already know their files.

@@ -32,8 +32,10 @@ struct VtkSnapshot {
 // Reads one snapshot; `scale` is the grid scale S. Throws InputError naming the file (and cell or
 // line) for an unreadable/truncated file, a header that is not STRUCTURED_POINTS, POINT_DATA that does
 // not match DIMENSIONS, a missing CellType/CellId array, too few values, a bad token, a cell whose
-// voxels carry different types, or medium/cell id inconsistencies.
-VtkSnapshot read_vtk_snapshot(const std::string& path, std::int64_t scale);
+// voxels carry different types, or medium/cell id inconsistencies. Along the `periodic` axes a cell's
+// centroid is its periodic mean, in [origin, origin + period) (docs/MATH.md §8.1).
+VtkSnapshot read_vtk_snapshot(const std::string& path, std::int64_t scale,
+                              const std::array<bool, 3>& periodic = {});
 
 // The MCS in a CompuCell3D snapshot name "Step_<MCS>.vtk" or "Step_<MCS>.vtk.gz" (integer between the
 // last '_' and ".vtk"). Throws InputError for any other name.
