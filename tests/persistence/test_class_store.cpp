@@ -40,6 +40,7 @@ StoredRun make_store(const std::string& name) {
     medusa::MedusaBuilder builder(writer);
     medusa::RunInfo info;
     info.radius_text = "1200";
+    info.radius = 1200;
     builder.set_run(info, t);
     engine.run(builder);
   }
