@@ -1,8 +1,8 @@
-#include "hdf5_attributes.h"
+#include "medusa/medusa/internal/hdf5_attributes.h"
 
-#include "hdf5_errors.h"
-#include "hdf5_handle.h"
-#include "hdf5_types.h"
+#include "medusa/medusa/internal/hdf5_errors.h"
+#include "medusa/medusa/internal/hdf5_handle.h"
+#include "medusa/medusa/internal/hdf5_types.h"
 
 #include "medusa/core/error.h"
 

@@ -1,6 +1,6 @@
-#include "hdf5_column.h"
+#include "medusa/medusa/internal/hdf5_column.h"
 
-#include "hdf5_errors.h"
+#include "medusa/medusa/internal/hdf5_errors.h"
 
 #include <algorithm>
 
@@ -46,6 +46,35 @@ void ColumnBase::write(const void* data, std::size_t rows) {
       H5Dwrite(dataset_.get(), memory_type_, memory_space.get(), file_space.get(), H5P_DEFAULT, data) < 0)
     fail(path_, "cannot write dataset " + name_);
   written_ += rows;
+}
+
+void write_whole_column(hid_t location, const std::string& name, hid_t file_type, hid_t memory_type,
+                        const void* data, std::size_t count, const std::string& path) {
+  const hsize_t size = count;
+  const hsize_t max_size = H5S_UNLIMITED;
+  const hsize_t chunk = std::max<hsize_t>(1, std::min<hsize_t>(size, chunk_bytes / H5Tget_size(file_type)));
+  Handle space = space_handle(H5Screate_simple(1, &size, &max_size));
+  Handle dcpl = plist_handle(H5Pcreate(H5P_DATASET_CREATE));
+  if (!space.valid() || !dcpl.valid() || H5Pset_chunk(dcpl.get(), 1, &chunk) < 0 ||
+      H5Pset_shuffle(dcpl.get()) < 0 || H5Pset_deflate(dcpl.get(), 6) < 0 ||
+      H5Pset_fletcher32(dcpl.get()) < 0 || H5Pset_obj_track_times(dcpl.get(), 0) < 0)
+    fail(path, "cannot set up dataset " + name);
+  Handle dataset = dataset_handle(
+      H5Dcreate2(location, name.c_str(), file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT));
+  if (!dataset.valid())
+    fail(path, "cannot create dataset " + name);
+  if (size > 0 && H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
+    fail(path, "cannot write dataset " + name);
+}
+
+Handle create_group(hid_t parent, const std::string& name, const std::string& path) {
+  Handle gcpl = plist_handle(H5Pcreate(H5P_GROUP_CREATE));
+  if (!gcpl.valid() || H5Pset_obj_track_times(gcpl.get(), 0) < 0)
+    fail(path, "cannot set up group " + name);
+  Handle group = group_handle(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT));
+  if (!group.valid())
+    fail(path, "cannot create group " + name);
+  return group;
 }
 
 } // namespace medusa::h5

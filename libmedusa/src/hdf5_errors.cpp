@@ -1,4 +1,4 @@
-#include "hdf5_errors.h"
+#include "medusa/medusa/internal/hdf5_errors.h"
 
 #include "medusa/core/error.h"
 #include "medusa/medusa/store_reader.h"

@@ -1,9 +1,9 @@
 #include "medusa/medusa/store_writer.h"
 
-#include "hdf5_attributes.h"
-#include "hdf5_column.h"
-#include "hdf5_errors.h"
-#include "hdf5_handle.h"
+#include "medusa/medusa/internal/hdf5_attributes.h"
+#include "medusa/medusa/internal/hdf5_column.h"
+#include "medusa/medusa/internal/hdf5_errors.h"
+#include "medusa/medusa/internal/hdf5_handle.h"
 #include "store_layout.h"
 
 #include "medusa/core/error.h"

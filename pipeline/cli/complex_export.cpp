@@ -1,29 +1,20 @@
 #include "complex_export.h"
 
+#include "complex_fields.h"
+
 #include "medusa/core/error.h"
 
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <map>
 #include <string>
 
 namespace medusa::cli {
 namespace {
 
-std::string coordinate(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.9g", x);
-  return buffer;
-}
-
-// The common type of a simplex's vertices, or 0 (never a cell type: 0 is CC3D's medium).
-int common_type(const kinetic::Trajectories& input, const medusa::Cell& c) {
-  const int first = input.cells[static_cast<std::size_t>(c.vertices.front())].type;
-  for (kinetic::VertexId v : c.vertices)
-    if (input.cells[static_cast<std::size_t>(v)].type != first)
-      return 0;
-  return first;
+template <class Values>
+void scalars(std::ostream& out, const char* name, const char* type, const Values& values) {
+  out << "SCALARS " << name << ' ' << type << " 1\nLOOKUP_TABLE default\n";
+  for (const auto& v : values)
+    out << v << '\n';
 }
 
 } // namespace
@@ -32,7 +23,7 @@ std::vector<std::optional<std::array<double, 3>>> positions_at_time(const kineti
                                                                     double t) {
   const std::vector<std::int64_t>& times = input.frame_times;
   if (times.empty() || !(t >= static_cast<double>(times.front()) && t <= static_cast<double>(times.back())))
-    throw InputError("time " + coordinate(t) + " is outside the run (MCS " +
+    throw InputError("time " + vtk_number(t) + " is outside the run (MCS " +
                      (times.empty() ? std::string("none")
                                     : std::to_string(times.front()) + " to " + std::to_string(times.back())) +
                      ")");
@@ -65,77 +56,38 @@ void write_complex_vtk(std::ostream& out, const medusa::Medusa& medusa,
                        const std::vector<medusa::CellId>& cells,
                        const std::vector<std::optional<std::array<double, 3>>>& positions,
                        const std::string& title, const ClassMarks* marks) {
-  const kinetic::Trajectories& input = medusa.input;
-  // Points: the vertices of the complex in increasing vertex id, numbered from 0.
-  std::map<kinetic::VertexId, std::size_t> point_of;
-  for (medusa::CellId id : cells)
-    for (kinetic::VertexId v : medusa.cell(id).vertices)
-      point_of.emplace(v, 0);
-  std::size_t next = 0;
-  for (auto& [v, index] : point_of) {
-    index = next++;
-    if (static_cast<std::size_t>(v) >= positions.size() || !positions[static_cast<std::size_t>(v)])
-      throw InternalError("medusa at: vertex " + std::to_string(v) + " (CC3D cell " +
-                          std::to_string(input.cells.at(static_cast<std::size_t>(v)).cell_id) +
-                          ") is in K_t but has no position at that time");
-  }
+  const ComplexFields f = complex_fields(medusa, cells, positions, marks);
   std::size_t size = 0;
-  for (medusa::CellId id : cells)
-    size += medusa.cell(id).vertices.size() + 1;
+  for (const auto& points : f.cell_points)
+    size += points.size() + 1;
 
   out << "# vtk DataFile Version 3.0\n" << title << "\nASCII\nDATASET UNSTRUCTURED_GRID\n";
-  out << "POINTS " << point_of.size() << " double\n";
-  for (const auto& [v, index] : point_of) {
-    const std::array<double, 3>& x = *positions[static_cast<std::size_t>(v)];
-    out << coordinate(x[0]) << ' ' << coordinate(x[1]) << ' ' << coordinate(x[2]) << '\n';
-  }
-  out << "CELLS " << cells.size() << ' ' << size << '\n';
-  for (medusa::CellId id : cells) {
-    const medusa::Cell& c = medusa.cell(id);
-    out << c.vertices.size();
-    for (kinetic::VertexId v : c.vertices)
-      out << ' ' << point_of.at(v);
+  out << "POINTS " << f.points.size() << " double\n";
+  for (const std::array<double, 3>& x : f.points)
+    out << vtk_number(x[0]) << ' ' << vtk_number(x[1]) << ' ' << vtk_number(x[2]) << '\n';
+  out << "CELLS " << f.cell_points.size() << ' ' << size << '\n';
+  for (const auto& points : f.cell_points) {
+    out << points.size();
+    for (std::size_t p : points)
+      out << ' ' << p;
     out << '\n';
   }
-  // VTK_VERTEX, VTK_LINE, VTK_TRIANGLE, VTK_TETRA.
-  constexpr int vtk_type[] = {1, 3, 5, 10};
-  out << "CELL_TYPES " << cells.size() << '\n';
-  for (medusa::CellId id : cells) {
-    const int d = medusa.cell(id).dim();
-    if (d < 0 || d > 3)
-      throw InternalError("medusa at: cell " + std::to_string(id) + " of dimension " + std::to_string(d) +
-                          " in K_t");
-    out << vtk_type[d] << '\n';
-  }
-  out << "CELL_DATA " << cells.size() << "\nSCALARS cell_type int 1\nLOOKUP_TABLE default\n";
-  for (medusa::CellId id : cells)
-    out << common_type(input, medusa.cell(id)) << '\n';
-  out << "SCALARS dimension int 1\nLOOKUP_TABLE default\n";
-  for (medusa::CellId id : cells)
-    out << medusa.cell(id).dim() << '\n';
+  out << "CELL_TYPES " << f.vtk_type.size() << '\n';
+  for (int t : f.vtk_type)
+    out << t << '\n';
+  out << "CELL_DATA " << f.cell_points.size() << '\n';
+  scalars(out, "cell_type", "int", f.cell_type);
+  scalars(out, "dimension", "int", f.cell_dimension);
   if (marks != nullptr) {
-    out << "SCALARS in_class int 1\nLOOKUP_TABLE default\n";
-    for (std::int64_t c : marks->cell_class)
-      out << (c >= 0 ? 1 : 0) << '\n';
-    out << "SCALARS class_id long 1\nLOOKUP_TABLE default\n";
-    for (std::int64_t c : marks->cell_class)
-      out << c << '\n';
+    scalars(out, "in_class", "int", membership(f.cell_class));
+    scalars(out, "class_id", "long", f.cell_class);
   }
-  out << "POINT_DATA " << point_of.size() << "\nSCALARS cell_id long 1\nLOOKUP_TABLE default\n";
-  for (const auto& entry : point_of)
-    out << input.cells[static_cast<std::size_t>(entry.first)].cell_id << '\n';
-  out << "SCALARS cell_type int 1\nLOOKUP_TABLE default\n";
-  for (const auto& entry : point_of)
-    out << input.cells[static_cast<std::size_t>(entry.first)].type << '\n';
+  out << "POINT_DATA " << f.points.size() << '\n';
+  scalars(out, "cell_id", "long", f.point_cell_id);
+  scalars(out, "cell_type", "int", f.point_type);
   if (marks != nullptr) {
-    out << "SCALARS in_class int 1\nLOOKUP_TABLE default\n";
-    for (const auto& entry : point_of)
-      out << (marks->vertex_class.count(entry.first) != 0 ? 1 : 0) << '\n';
-    out << "SCALARS class_id long 1\nLOOKUP_TABLE default\n";
-    for (const auto& entry : point_of) {
-      const auto it = marks->vertex_class.find(entry.first);
-      out << (it == marks->vertex_class.end() ? -1 : it->second) << '\n';
-    }
+    scalars(out, "in_class", "int", membership(f.point_class));
+    scalars(out, "class_id", "long", f.point_class);
   }
 }
 

@@ -10,32 +10,15 @@ on a section that is not a heading of docs/MATH.md, on a MATH.md other than docs
 and when no citation at all is found.
 """
 import re
-import subprocess
 import sys
+
+from tracked_text import tracked_text_files
 
 SECTION = r"[0-9]+(?:\.[0-9]+)*|[A-C]\b"
 CITATION = re.compile(r"§(" + SECTION + r")(?:\s*[-–]\s*§?(" + SECTION + r"))?")
 HEADING = re.compile(r"^#+\s+(?:Appendix\s+)?(" + SECTION + r")[.:\s]")
 OTHER_MATH = re.compile(r"(?<!docs/)\bMATH\.md\b")
 NUMBER_WITHOUT_SIGN = re.compile(r"docs/MATH\.md[\s,]+[0-9]")
-
-
-def tracked_text_files(root):
-    out = subprocess.run(["git", "-C", root, "ls-files", "-z"], capture_output=True, check=True).stdout
-    for name in out.decode().split("\0"):
-        if not name or name.startswith("tests/docs/"):
-            continue  # the checks themselves spell out what they look for
-        try:
-            with open(f"{root}/{name}", "rb") as f:
-                data = f.read()
-        except OSError:
-            continue
-        if b"\0" in data[:8192]:
-            continue  # binary (gzip, HDF5)
-        try:
-            yield name, data.decode("utf-8")
-        except UnicodeDecodeError:
-            continue
 
 
 def main():

@@ -7,8 +7,9 @@ Fails, naming file:line and the words, on "session N", "reviewer(s)", "found in 
 "helper session" in any git-tracked text file, and when no file was read.
 """
 import re
-import subprocess
 import sys
+
+from tracked_text import tracked_text_files
 
 PROCESS_WORDS = re.compile(
     r"\bsessions?\s+[0-9]|\breviewers?\b|found\s+in\s+review|\bissue\s+#[0-9]|\bhelper\s+session",
@@ -17,21 +18,10 @@ PROCESS_WORDS = re.compile(
 
 def main():
     root = sys.argv[1] if len(sys.argv) > 1 else "."
-    out = subprocess.run(["git", "-C", root, "ls-files", "-z"], capture_output=True, check=True).stdout
     failures = []
     read = 0
-    for name in out.decode().split("\0"):
-        if not name or name.startswith("tests/docs/"):
-            continue  # the checks themselves spell out what they look for
-        try:
-            with open(f"{root}/{name}", "rb") as f:
-                data = f.read()
-        except OSError:
-            continue
-        if b"\0" in data[:8192]:
-            continue  # binary (gzip, HDF5)
+    for name, text in tracked_text_files(root):
         read += 1
-        text = data.decode("utf-8", errors="replace")
         for number, line in enumerate(text.splitlines(), 1):
             for m in PROCESS_WORDS.finditer(line):
                 failures.append(f"{name}:{number}: \"{m.group(0)}\": {line.strip()[:160]}")

@@ -1,9 +1,9 @@
 // Reading whole datasets of the store (docs/FORMAT.md).
 #pragma once
 
-#include "hdf5_errors.h"
-#include "hdf5_handle.h"
-#include "hdf5_types.h"
+#include "medusa/medusa/internal/hdf5_errors.h"
+#include "medusa/medusa/internal/hdf5_handle.h"
+#include "medusa/medusa/internal/hdf5_types.h"
 
 #include "medusa/core/error.h"
 

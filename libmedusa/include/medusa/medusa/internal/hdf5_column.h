@@ -3,8 +3,8 @@
 // store is written while the medusa streams.
 #pragma once
 
-#include "hdf5_handle.h"
-#include "hdf5_types.h"
+#include "medusa/medusa/internal/hdf5_handle.h"
+#include "medusa/medusa/internal/hdf5_types.h"
 
 #include <cstddef>
 #include <string>
@@ -54,5 +54,20 @@ public:
 private:
   std::vector<T> buffer_;
 };
+
+// Writes `count` values as the dataset `name` of `location` in one go, with Column's layout and without
+// object timestamps, so that the same values give byte-identical objects.
+void write_whole_column(hid_t location, const std::string& name, hid_t file_type, hid_t memory_type,
+                        const void* data, std::size_t count, const std::string& path);
+
+template <class T>
+void write_column(hid_t location, const std::string& name, const std::vector<T>& values,
+                  const std::string& path) {
+  write_whole_column(location, name, TypeOf<T>::file(), TypeOf<T>::memory(), values.data(), values.size(),
+                     path);
+}
+
+// Creates the group `name` under `parent`, without object timestamps.
+Handle create_group(hid_t parent, const std::string& name, const std::string& path);
 
 } // namespace medusa::h5
