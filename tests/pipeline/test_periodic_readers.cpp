@@ -14,22 +14,13 @@
 using namespace medusa;
 using namespace medusa::io;
 using Catch::Matchers::Contains;
+using io::test::cc3d_xml;
+using io::test::write;
 namespace fs = std::filesystem;
 
 namespace {
 
 constexpr std::int64_t S = 1000000;
-
-void write(const std::string& path, const std::string& text) {
-  fs::create_directories(fs::path(path).parent_path());
-  std::ofstream(path) << text;
-}
-
-std::string xml(const std::string& dims, const std::string& boundaries) {
-  return "<CompuCell3D>\n  <Potts>\n    <Dimensions " + dims + "/>\n" + boundaries +
-         "  </Potts>\n  <Plugin Name=\"CellType\">\n    <CellType TypeName=\"Medium\" TypeId=\"0\"/>\n"
-         "    <CellType TypeName=\"A\" TypeId=\"1\"/>\n  </Plugin>\n</CompuCell3D>\n";
-}
 
 const std::string periodic_x = "    <Boundary_x>Periodic</Boundary_x>\n";
 
@@ -131,7 +122,7 @@ TEST_CASE("A VTK run followed across a periodic seam has a continuous trajectory
   write(dir.file("LatticeData/Step_0.vtk"), snapshot(10, 2, 2, {{{8, 0, 0}, 1}, {{9, 0, 0}, 1}}));
   write(dir.file("LatticeData/Step_1.vtk"), snapshot(10, 2, 2, {{{9, 0, 0}, 1}, {{0, 0, 0}, 1}}));
   write(dir.file("LatticeData/Step_2.vtk"), snapshot(10, 2, 2, {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}));
-  write(dir.file("Simulation/run.xml"), xml("x=\"10\" y=\"2\" z=\"2\"", periodic_x));
+  write(dir.file("Simulation/run.xml"), cc3d_xml("x=\"10\" y=\"2\" z=\"2\"", periodic_x));
   RunOptions o;
   o.allow_periodic_as_open = true;
   const RunData r = read_run(dir.path().string(), o);
@@ -151,7 +142,7 @@ TEST_CASE("CSV centres on a periodic lattice are wrapped into it and unwrapped b
                                "0,1,1,9.5,1,1\n0,2,1,10,3,3\n"
                                "100,1,1,0.5,1,1\n100,2,1,9.75,3,3\n"
                                "200,1,1,1.5,1,1\n200,2,1,9,3,3\n");
-  write(dir.file("Simulation/run.xml"), xml("x=\"10\" y=\"10\" z=\"10\"", periodic_x));
+  write(dir.file("Simulation/run.xml"), cc3d_xml("x=\"10\" y=\"10\" z=\"10\"", periodic_x));
   RunOptions o;
   o.allow_periodic_as_open = true;
   const RunData r = read_run(dir.path().string(), o);
@@ -171,7 +162,7 @@ TEST_CASE("A planar run periodic in x and y is unwrapped in both", "[io][periodi
                                "10,1,1,0.5,7.5,0\n10,2,1,3,3,0\n10,3,1,4,3,0\n"
                                "20,1,1,1.5,6.5,0\n20,2,1,3,3,0\n20,3,1,4,3,0\n");
   write(dir.file("Simulation/run.xml"),
-        xml("x=\"8\" y=\"8\" z=\"1\"", periodic_x + "    <Boundary_y>Periodic</Boundary_y>\n"));
+        cc3d_xml("x=\"8\" y=\"8\" z=\"1\"", periodic_x + "    <Boundary_y>Periodic</Boundary_y>\n"));
   RunOptions o;
   o.allow_periodic_as_open = true;
   const RunData r = read_run(dir.path().string(), o);
@@ -189,7 +180,7 @@ TEST_CASE("A step of half the period between frames is refused naming the cell a
   write(dir.file("cells.csv"), "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n"
                                "0,1,1,2,1,1\n0,7,1,1,5,5\n"
                                "100,1,1,2.5,1,1\n100,7,1,6,5,5\n");
-  write(dir.file("Simulation/run.xml"), xml("x=\"10\" y=\"10\" z=\"10\"", periodic_x));
+  write(dir.file("Simulation/run.xml"), cc3d_xml("x=\"10\" y=\"10\" z=\"10\"", periodic_x));
   RunOptions o;
   o.allow_periodic_as_open = true;
   const std::string m = io::test::input_error([&] { read_run(dir.path().string(), o); });
@@ -200,7 +191,7 @@ TEST_CASE("A step of half the period between frames is refused naming the cell a
 TEST_CASE("A CSV centre outside the periodic lattice is refused naming line and cell", "[io][periodic]") {
   io::test::TempDir dir;
   write(dir.file("cells.csv"), "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n0,1,1,2,1,1\n0,3,1,10.000001,1,1\n");
-  write(dir.file("Simulation/run.xml"), xml("x=\"10\" y=\"10\" z=\"10\"", periodic_x));
+  write(dir.file("Simulation/run.xml"), cc3d_xml("x=\"10\" y=\"10\" z=\"10\"", periodic_x));
   RunOptions o;
   o.allow_periodic_as_open = true;
   const std::string m = io::test::input_error([&] { read_run(dir.path().string(), o); });

@@ -7,23 +7,13 @@
 using namespace medusa;
 using namespace medusa::io;
 using Catch::Matchers::Contains;
+using io::test::cc3d_xml;
+using io::test::write;
 namespace fs = std::filesystem;
 
 namespace {
 
 constexpr std::int64_t S = 1000000;
-
-void write(const std::string& path, const std::string& text) {
-  fs::create_directories(fs::path(path).parent_path());
-  std::ofstream(path) << text;
-}
-
-std::string xml(const std::string& dims, const std::string& extra = "") {
-  return "<CompuCell3D>\n  <Potts>\n    <Dimensions " + dims + "/>\n" + extra +
-         "  </Potts>\n  <Plugin Name=\"CellType\">\n    <CellType TypeName=\"Medium\" TypeId=\"0\"/>\n"
-         "    <CellType TypeName=\"A\" TypeId=\"1\"/>\n    <CellType TypeName=\"B\" TypeId=\"2\"/>\n"
-         "  </Plugin>\n</CompuCell3D>\n";
-}
 
 bool has_warning(const RunData& r, const std::string& part) {
   for (const std::string& w : r.warnings)
@@ -107,7 +97,7 @@ TEST_CASE("A VTK run whose centroids lie on the grid needs no snapping", "[io][r
   io::test::TempDir dir;
   fs::create_directories(dir.path() / "LatticeData");
   fs::copy_file(io::test::data("io/vtk_split_cell_exact.vtk"), dir.path() / "LatticeData" / "Step_5.vtk");
-  write(dir.file("Simulation/run.xml"), xml("x=\"4\" y=\"3\" z=\"2\""));
+  write(dir.file("Simulation/run.xml"), cc3d_xml("x=\"4\" y=\"3\" z=\"2\""));
   const RunData r = read_run(dir.path().string());
   REQUIRE(r.trajectories.cells.size() == 1);
   CHECK(r.trajectories.cells[0].positions == std::vector<kinetic::GridPoint>{{1000000, 800000, 200000}});
@@ -120,7 +110,7 @@ TEST_CASE("A VTK run whose lattice differs from the CC3DML is refused", "[io][ru
   io::test::TempDir dir;
   fs::create_directories(dir.path() / "LatticeData");
   fs::copy_file(io::test::data("io/vtk_split_cell_exact.vtk"), dir.path() / "LatticeData" / "Step_5.vtk");
-  write(dir.file("Simulation/run.xml"), xml("x=\"4\" y=\"3\" z=\"3\""));
+  write(dir.file("Simulation/run.xml"), cc3d_xml("x=\"4\" y=\"3\" z=\"3\""));
   CHECK_THAT(io::test::input_error([&] { read_run(dir.path().string()); }),
              Contains("Step_5.vtk") && Contains("differ") && Contains("run.xml"));
 }
@@ -130,8 +120,8 @@ TEST_CASE("A periodic run is refused unless periodic-as-open is allowed", "[io][
   write(dir.file("cells.csv"), "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n0,1,1,1,2,3\n0,2,1,4,5,6\n0,3,1,7,8,9\n"
                                "0,4,1,10,11,12\n0,5,1,13,14,15\n");
   write(dir.file("Simulation/run.xml"),
-        xml("x=\"20\" y=\"20\" z=\"20\"",
-            "    <Boundary_x>Periodic</Boundary_x>\n    <Boundary_z>Periodic</Boundary_z>\n"));
+        cc3d_xml("x=\"20\" y=\"20\" z=\"20\"",
+                 "    <Boundary_x>Periodic</Boundary_x>\n    <Boundary_z>Periodic</Boundary_z>\n"));
   CHECK_THAT(io::test::input_error([&] { read_run(dir.path().string()); }),
              Contains("run.xml") && Contains("periodic along x,z"));
   RunOptions open;
@@ -146,7 +136,7 @@ TEST_CASE("A run with lattice z extent 1 is planar", "[io][run]") {
   write(dir.file("cells.csv"),
         "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n0,1,1,1.5,2,0\n0,2,2,3,4,0\n10,1,1,1,2,0\n"
         "10,2,2,3,4.25,0\n");
-  write(dir.file("Simulation/run.xml"), xml("x=\"10\" y=\"10\" z=\"1\""));
+  write(dir.file("Simulation/run.xml"), cc3d_xml("x=\"10\" y=\"10\" z=\"1\""));
   const RunData r = read_run(dir.path().string());
   CHECK(r.trajectories.dimension == 2);
   CHECK(r.trajectories.cells.size() == 2);
@@ -198,7 +188,7 @@ TEST_CASE("A folder with neither snapshots nor CSV, or a missing path, is refuse
 
 TEST_CASE("A CSV run whose CC3DML is cut off is refused, not read as open", "[io][run]") {
   io::test::TempDir dir;
-  const std::string whole = xml("x=\"50\" y=\"50\" z=\"40\"", "    <Boundary_x>Periodic</Boundary_x>\n");
+  const std::string whole = cc3d_xml("x=\"50\" y=\"50\" z=\"40\"", "    <Boundary_x>Periodic</Boundary_x>\n");
   write((dir.path() / "Simulation" / "run.xml").string(), whole.substr(0, whole.find("<Boundary_x>")));
   fs::copy_file(io::test::data("io/gap.csv"), dir.path() / "cells.csv");
   CHECK_THAT(io::test::input_error([&] { read_run(dir.path().string()); }),
