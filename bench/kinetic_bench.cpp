@@ -516,9 +516,10 @@ void run_case(const std::string& name, const Trajectories& t, const std::string&
   std::printf(
       "exact certificates: %zu Delaunay, %zu radius; %zu with a failure time in the slab, %zu invalid "
       "at creation, %zu root-cache hits; event times not told apart by their isolating intervals: %zu "
-      "given their exact polynomial rounded to intervals, %zu compared as algebraic reals\n",
+      "given their exact polynomial rounded to intervals, %zu compared as algebraic reals; %zu batch "
+      "times rounded with an exact comparison\n",
       s.exact_delaunay, s.exact_radius, s.exact_scheduled, s.invalid_at_creation, s.root_cache_hits,
-      s.times_sharpened, s.times_compared_algebraically);
+      s.times_sharpened, s.times_compared_algebraically, s.times_reported_exactly);
   double radius_filtered = 0;  // the radius certificates' arithmetic, one filter each
   double radius_isolation = 0; // the radius events' failure times, isolated and narrowed
   if (t.frames() > 1) {

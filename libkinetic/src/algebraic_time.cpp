@@ -126,6 +126,69 @@ double SlabTime::approx() const {
   return CGAL::to_double(kernel().approximate_relative_1_object()(*a_, 53).first);
 }
 
+namespace {
+thread_local TimeComparisonCounts comparison_counts;
+} // namespace
+
+int SlabTime::side_of(const Rational& g) const {
+  const std::pair<double, double> around = CGAL::to_interval(g);
+  if (root_) {
+    if (root_->lo == root_->hi) {
+      const Rational u(root_->lo);
+      return u < g ? -1 : (g < u ? 1 : 0);
+    }
+    if (around.second <= root_->lo)
+      return 1;
+    if (around.first >= root_->hi)
+      return -1;
+    if (root_->lo < around.first && around.second < root_->hi) {
+      CGAL::Protect_FPU_rounding<true> guard;
+      const int s = interval_sign(root_->bisection_polynomial(), around.first, around.second);
+      if (s != 0)
+        return s == root_->sign_lo ? 1 : -1; // one simple root in (lo, hi), where the sign changes
+    }
+  } else if (rational_) {
+    return *q_ < g ? -1 : (g < *q_ ? 1 : 0);
+  }
+  ++comparison_counts.reported_exactly;
+  const AlgebraicReal& a = algebraic();
+  const AlgebraicReal b = kernel().construct_algebraic_real_1_object()(g);
+  return a < b ? -1 : (b < a ? 1 : 0);
+}
+
+double SlabTime::reported_time(std::int64_t t0, std::int64_t t1) const {
+  if (t1 == t0)
+    return static_cast<double>(t0);
+  // c = floor(t 2^33), by bisection over the cells [k 2^-33, (k + 1) 2^-33) that the enclosure
+  // [lo, hi] of u spans (usually one), then half up to the 2^-32 grid.
+  constexpr unsigned bits = 33;
+  const mpq_class start(static_cast<long>(t0)), span(static_cast<long>(t1 - t0));
+  auto cell_of = [&](double u) {
+    const mpq_class t = (start + mpq_class(u) * span) * mpq_class(mpz_class(1) << bits);
+    mpz_class k;
+    mpz_fdiv_q(k.get_mpz_t(), t.get_num_mpz_t(), t.get_den_mpz_t());
+    return k;
+  };
+  auto point = [&](const mpz_class& k) { // u at t = k 2^-33
+    const mpq_class u = (mpq_class(k, mpz_class(1) << bits) - start) / span;
+    return Rational(u.get_mpq_t());
+  };
+  double lo = 0.0, hi = 0.0;
+  enclosure(lo, hi);
+  mpz_class c = cell_of(std::max(lo, 0.0)), last = cell_of(std::min(hi, 1.0));
+  while (c < last) {
+    mpz_class k = c + last + 1;
+    mpz_fdiv_q_2exp(k.get_mpz_t(), k.get_mpz_t(), 1);
+    if (side_of(point(k)) >= 0)
+      c = k;
+    else
+      last = k - 1;
+  }
+  mpz_class grid = c + 1;
+  mpz_fdiv_q_2exp(grid.get_mpz_t(), grid.get_mpz_t(), 1);
+  return std::ldexp(grid.get_d(), -static_cast<int>(bits - 1));
+}
+
 void SlabTime::enclosure(double& lo, double& hi) const {
   if (root_) {
     lo = root_->lo;
@@ -149,10 +212,6 @@ void SlabTime::sharpen(const IntervalPoly& tighter) const {
     root_->wide = false;
   }
 }
-
-namespace {
-thread_local TimeComparisonCounts comparison_counts;
-} // namespace
 
 TimeComparisonCounts time_comparison_counts() { return comparison_counts; }
 

@@ -100,6 +100,12 @@ public:
   // reported double value needs.
   void sharpen(const IntervalPoly& tighter) const;
   double approx() const;
+  // The time reported for u in the slab [t0, t1] (events' times in the store): t = t0 + u (t1 - t0)
+  // rounded to the nearest multiple of 2^-32 MCS, exactly (docs/MATH.md §3.12). A function of t alone,
+  // not of how far u's interval was refined, so equal times are reported equal by any engine and in
+  // any copy of a periodic run, reported times never decrease as t grows, and times on the grid
+  // (whole MCS among them) are reported exactly.
+  double reported_time(std::int64_t t0, std::int64_t t1) const;
   // An isolating interval [lo, hi] of u as doubles rounded outward (lo == hi for exact doubles).
   void enclosure(double& lo, double& hi) const;
   // Narrows the enclosure of an isolated root as far as doubles allow.
@@ -121,6 +127,8 @@ private:
   // About 60 us for the exact polynomial (kept for the algebraic real, should one still be needed)
   // against about 110 us for the comparison of two algebraic reals it usually saves.
   bool sharpen_from_exact() const;
+  // sign(u - g) for a rational g, exactly; the isolating polynomial decides when it can.
+  int side_of(const Rational& g) const;
 
   mutable bool rational_;             // set lazily when an isolated root turns out to be a dyadic rational
   mutable std::optional<Rational> q_; // set iff rational_ (no allocation for isolated roots)
@@ -132,8 +140,9 @@ private:
 // Event-time comparisons that the isolating intervals alone did not decide (docs/MATH.md §3.7), counted
 // per thread since it started; KineticStatistics reports the difference over a run.
 struct TimeComparisonCounts {
-  std::uint64_t sharpened = 0; // isolated roots given their exact polynomial rounded to intervals
-  std::uint64_t algebraic = 0; // comparisons decided on CGAL's algebraic reals
+  std::uint64_t sharpened = 0;        // isolated roots given their exact polynomial rounded to intervals
+  std::uint64_t algebraic = 0;        // comparisons decided on CGAL's algebraic reals
+  std::uint64_t reported_exactly = 0; // grid points of a reported time decided exactly (§3.12)
 };
 TimeComparisonCounts time_comparison_counts();
 

@@ -11,10 +11,10 @@ EventTime Engine::event_time(bool at_frame) const {
   EventTime e;
   e.batch = batch_index;
   e.slab = slab;
-  e.u = now.approx();
-  double t0 = double(traj.frame_times[slab]);
-  double t1 = slab + 1 < traj.frames() ? double(traj.frame_times[slab + 1]) : t0;
-  e.time = t0 + e.u * (t1 - t0);
+  const std::int64_t t0 = traj.frame_times[slab];
+  const std::int64_t t1 = slab + 1 < traj.frames() ? traj.frame_times[slab + 1] : t0;
+  e.time = now.reported_time(t0, t1);
+  e.u = t1 > t0 ? (e.time - static_cast<double>(t0)) / static_cast<double>(t1 - t0) : 0.0;
   e.at_frame = at_frame;
   return e;
 }

@@ -17,8 +17,12 @@
 
 namespace medusa::kinetic::testing {
 
+// How far a reported event time may be from the exact one: half a step of the 2^-32 MCS grid
+// (docs/MATH.md §3.12).
+constexpr double reported_time_error = 0x1p-33;
+
 // Replays the stream: K(t0+) then entered/left of every step. After each batch the replayed complex
-// must equal the engine's (the stream is complete, issue "libmedusa will be built on this stream").
+// must equal the engine's (the stream is complete: libmedusa is built on it).
 class ReplayObserver : public Observer {
 public:
   explicit ReplayObserver(const KineticAlphaComplex& engine) : engine_(engine) {}

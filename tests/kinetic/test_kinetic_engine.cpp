@@ -18,6 +18,7 @@ using namespace medusa::kinetic;
 using medusa::kinetic::testing::built_by_formula;
 using medusa::kinetic::testing::FormulaCounts;
 using medusa::kinetic::testing::ReplayObserver;
+using medusa::kinetic::testing::reported_time_error;
 
 namespace {
 
@@ -90,7 +91,7 @@ TEST_CASE("the worked example flips abc into de at u* = (47 - sqrt 257)/32 with 
   REQUIRE(s.flips32 == 0);
   REQUIRE(obs.flips_in_alpha == 1);
   REQUIRE(obs.times.size() == 1);
-  REQUIRE(obs.times[0] == Approx(100 * (47 - std::sqrt(257.0)) / 32).epsilon(1e-12));
+  REQUIRE(obs.times[0] == Approx(100 * (47 - std::sqrt(257.0)) / 32).epsilon(0).margin(reported_time_error));
   REQUIRE(obs.mismatches == 0);
   REQUIRE(obs.inconsistencies == 0);
   // After the flip: edge de (vertex ids 3, 4) is in K and triangle abc (0, 1, 2) is not.
@@ -125,7 +126,7 @@ TEST_CASE("two cells approaching make their edge short exactly at the predicted 
   engine.run(obs);
   REQUIRE(engine.statistics().radius_events >= 1);
   REQUIRE(!obs.times.empty());
-  REQUIRE(obs.times.front() == Approx(200.0 / 3).epsilon(1e-12));
+  REQUIRE(obs.times.front() == Approx(200.0 / 3).epsilon(0).margin(reported_time_error));
   REQUIRE(obs.complex().count(Simplex{0, 4}) == 1);
   REQUIRE(obs.mismatches == 0);
 }
@@ -409,7 +410,7 @@ TEST_CASE("a cell leaving the hull through a facet makes a hull flip when the te
   engine.run(both);
   REQUIRE(engine.statistics().radius_events == 0);
   REQUIRE(log.batches.size() >= 1);
-  REQUIRE(log.batches[0].time.time == Approx(200.0 / 9).epsilon(1e-12));
+  REQUIRE(log.batches[0].time.time == Approx(200.0 / 9).epsilon(0).margin(reported_time_error));
   REQUIRE(log.count(StepKind::hull_flip) >= 1);
   REQUIRE(engine.statistics().audits > 0);
   // e starts inside abcd, so ebcd is a finite tetrahedron; it flattens and leaves Del (case A), and
@@ -450,8 +451,9 @@ void require_turned_inside_out(const Trajectories& t, double time) {
   REQUIRE(s.audits_compared_with_cgal > 0);
   REQUIRE(obs.mismatches == 0);
   REQUIRE(obs.inconsistencies == 0);
-  REQUIRE(std::count_if(obs.times.begin(), obs.times.end(),
-                        [&](double x) { return x == Approx(time).epsilon(1e-12); }) == 1);
+  REQUIRE(std::count_if(obs.times.begin(), obs.times.end(), [&](double x) {
+            return x == Approx(time).epsilon(0).margin(reported_time_error);
+          }) == 1);
 }
 
 } // namespace
@@ -489,7 +491,7 @@ TEST_CASE("two mirror-image flips at exactly the same time form one batch of two
   const double t_star = 100 * (47 - std::sqrt(257.0)) / 32;
   int found = 0;
   for (const auto& b : log.batches)
-    if (b.time.time == Approx(t_star).epsilon(1e-12)) {
+    if (b.time.time == Approx(t_star).epsilon(0).margin(reported_time_error)) {
       ++found;
       REQUIRE(std::count(b.kinds.begin(), b.kinds.end(), StepKind::flip23) == 2);
       REQUIRE(b.flips_in_alpha == 2);

@@ -342,3 +342,72 @@ TEST_CASE("the tightest narrowing finds every short dyadic root exactly", "[kine
   }
   REQUIRE(cases == 2000);
 }
+
+TEST_CASE("the reported time of an event does not depend on how far its interval was refined",
+          "[kinetic][isolation][reported]") {
+  // u* = (47 - sqrt(257)) / 32 (docs/MATH.md §B) in the slab [0, 1]. Its cell c = floor(u* 2^33) is the
+  // largest k with k <= u* 2^33, i.e. (47 2^33 - 32 k)^2 >= 257 2^66 (both sides positive), checked in
+  // integers; the reported time is floor((c + 1) / 2) 2^-32 (docs/MATH.md §3.12).
+  const mpz_class two33 = mpz_class(1) << 33;
+  auto at_or_below = [&](const mpz_class& k) {
+    const mpz_class lhs = 47 * two33 - 32 * k;
+    return lhs * lhs >= 257 * two33 * two33;
+  };
+  mpz_class c(static_cast<unsigned long>(std::floor((47.0 - std::sqrt(257.0)) / 32.0 * 0x1p33)));
+  while (!at_or_below(c))
+    c -= 1;
+  while (at_or_below(c + 1))
+    c += 1;
+  const double expected = std::ldexp(mpz_class((c + 1) / 2).get_d(), -32);
+
+  const SlabTime wide = isolated_time({61, -94, 32});
+  const SlabTime tight = isolated_time({61, -94, 32});
+  tight.tighten();
+  double lo = 0, hi = 0, tight_lo = 0, tight_hi = 0;
+  wide.enclosure(lo, hi);
+  tight.enclosure(tight_lo, tight_hi);
+  INFO("wide interval width " << hi - lo << ", tight " << tight_hi - tight_lo);
+  REQUIRE(tight_hi - tight_lo < hi - lo);
+  CHECK(wide.reported_time(0, 1) == expected);
+  CHECK(tight.reported_time(0, 1) == expected);
+  // In the slab [100, 200] the same u is t = 100 + 100 u*: the same rule on t.
+  const mpz_class two33_100 = two33 * 100;
+  // k 2^-33 <= 100 + 100 u* iff 100 sqrt(257) 2^33 <= 4700 2^33 - 32 (k - 100 2^33).
+  auto at_or_below_t = [&](const mpz_class& k) {
+    const mpz_class lhs = 47 * two33_100 - 32 * (k - two33_100);
+    return lhs * lhs >= 257 * two33_100 * two33_100;
+  };
+  mpz_class ct(
+      static_cast<unsigned long>(std::floor((100 + 100 * (47.0 - std::sqrt(257.0)) / 32.0) * 0x1p33)));
+  while (!at_or_below_t(ct))
+    ct -= 1;
+  while (at_or_below_t(ct + 1))
+    ct += 1;
+  CHECK(wide.reported_time(100, 200) == std::ldexp(mpz_class((ct + 1) / 2).get_d(), -32));
+}
+
+TEST_CASE("a time on the 2^-32 MCS grid is reported exactly, and one off it at the nearest grid point",
+          "[kinetic][isolation][reported]") {
+  CHECK(isolated_time({-3, 8}).reported_time(0, 1) == 0.375); // 8u - 3
+  // 5u - 4: u = 4/5, not a double; in the slab [0, 100] it is MCS 80, reported exactly.
+  CHECK(isolated_time({-4, 5}).reported_time(0, 100) == 80.0);
+  CHECK(isolated_time({-4, 5}).reported_time(100, 200) == 180.0);
+  // 1/3: 2^32 / 3 = 1431655765.33..., nearest 1431655765.
+  CHECK(SlabTime(Rational(1, 3)).reported_time(0, 1) == std::ldexp(1431655765.0, -32));
+  // Halves go up: 2^-33 to 2^-32; 3 2^-34 (0.75 of a step) to 2^-32; 2^-34 (0.25) to 0.
+  CHECK(SlabTime(Rational(1) / Rational(std::ldexp(1.0, 33))).reported_time(0, 1) == std::ldexp(1.0, -32));
+  CHECK(SlabTime(Rational(3) / Rational(std::ldexp(1.0, 34))).reported_time(0, 1) == std::ldexp(1.0, -32));
+  CHECK(SlabTime(Rational(1) / Rational(std::ldexp(1.0, 34))).reported_time(0, 1) == 0.0);
+  CHECK(SlabTime(Rational(0)).reported_time(40, 60) == 40.0);
+  CHECK(SlabTime(Rational(1)).reported_time(40, 60) == 60.0);
+}
+
+TEST_CASE("reported times follow the exact order of the times", "[kinetic][isolation][reported]") {
+  // Roots of (u - 1/4)(u - 3/4) times 16, and of 8u - 3 (3/8) between them, in the slab [0, 10].
+  const SlabTime first = isolated_time({3, -16, 16});
+  const SlabTime middle = isolated_time({-3, 8});
+  const SlabTime second = isolated_time({3, -16, 16}, 0.5);
+  CHECK(first.reported_time(0, 10) == 2.5);
+  CHECK(middle.reported_time(0, 10) == 3.75);
+  CHECK(second.reported_time(0, 10) == 7.5);
+}
