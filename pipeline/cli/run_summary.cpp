@@ -48,24 +48,32 @@ void describe_clusters(std::ostream& out, const ClusterFates& c, double t0, doub
         << " touched another earlier and separated again)\n";
 }
 
-void describe_holes(std::ostream& out, const HoleFates& h, const char* one, const char* many, double t0,
-                    double t_end) {
-  out << "  " << many << ": " << h.initial << " present at MCS " << mcs(t0) << ", " << h.formed
+void describe_holes(std::ostream& out, const persistence::HoleFates& h, std::size_t open_at_end,
+                    const char* one, const char* many, double t0, double t_end) {
+  out << "  " << many << ": " << h.initial() << " present at MCS " << mcs(t0) << ", " << h.formed()
       << " formed during the run\n";
-  if (h.initial + h.formed == 0)
+  if (h.initial() + h.formed() == 0)
     return;
   out << "    filled by cells: " << h.filled_initial << " of those at MCS " << mcs(t0) << ", "
       << h.filled_formed << " formed later\n";
-  const std::size_t never = h.never_filled_initial + h.never_filled_formed;
-  out << "    never filled: " << h.never_filled_initial << " of those at MCS " << mcs(t0) << ", "
-      << h.never_filled_formed << " formed later";
-  if (never > 0)
-    out << "; of these " << never << ", " << h.still_open << " still open at MCS " << mcs(t_end) << ", "
-        << h.broken_open << " broke open";
+  // Each never-filled count split into still open at the end and broke open (docs/MATH.md §7.12); the
+  // first split names the end's time.
+  bool named_end = false;
+  const auto split = [&](std::size_t still, std::size_t broken) {
+    if (still + broken == 0)
+      return;
+    out << " (" << still << " still open" << (named_end ? "" : " at MCS " + mcs(t_end)) << ", " << broken
+        << " broke open)";
+    named_end = true;
+  };
+  out << "    never filled: " << h.never_filled_initial << " of those at MCS " << mcs(t0);
+  split(h.still_open_initial, h.broken_open_initial);
+  out << ", " << h.never_filled_formed << " formed later";
+  split(h.still_open_formed, h.broken_open_formed);
   out << "\n";
-  if (h.open_at_end > h.still_open)
-    out << "    (the complex at MCS " << mcs(t_end) << " has " << count(h.open_at_end, one, many) << "; "
-        << h.open_at_end - h.still_open
+  if (open_at_end > h.still_open())
+    out << "    (the complex at MCS " << mcs(t_end) << " has " << count(open_at_end, one, many) << "; "
+        << open_at_end - h.still_open()
         << " of them bound in space-time, e.g. around a spot that cells filled at another time, and are not "
            "new classes)\n";
 }
@@ -85,11 +93,11 @@ void describe_planar_bubbles(std::ostream& out, const persistence::Diagram& forw
 void describe_fates(std::ostream& out, const ClassFates& fates, const persistence::Diagram& forward,
                     int dimension, double t0, double t_end) {
   describe_clusters(out, fates.clusters, t0, t_end);
-  describe_holes(out, fates.holes[1], "loop", "loops", t0, t_end);
+  describe_holes(out, fates.holes[1], fates.open_at_end[1], "loop", "loops", t0, t_end);
   if (dimension == 2)
     describe_planar_bubbles(out, forward);
   else
-    describe_holes(out, fates.holes[2], "cavity", "cavities", t0, t_end);
+    describe_holes(out, fates.holes[2], fates.open_at_end[2], "cavity", "cavities", t0, t_end);
 }
 
 } // namespace
