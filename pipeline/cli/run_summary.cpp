@@ -6,6 +6,8 @@
 
 #include "medusa/core/error.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 
 namespace medusa::cli {
@@ -100,6 +102,43 @@ void describe_fates(std::ostream& out, const ClassFates& fates, const persistenc
     describe_holes(out, fates.holes[2], fates.open_at_end[2], "cavity", "cavities", t0, t_end);
 }
 
+// A path as a shell word: quoted unless it is made of characters no shell treats specially.
+std::string shell_word(const std::string& path) {
+  bool plain = !path.empty();
+  for (char c : path)
+    plain = plain && (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' ||
+                      c == '/' || c == '+' || c == ',' || c == ':');
+  if (plain)
+    return path;
+  std::string quoted = "'";
+  for (char c : path)
+    quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// Cells shown before "and N more".
+constexpr std::size_t cells_shown = 8;
+
+// One line: the class, its first cells, its times, and the commands that list it and draw it
+// (docs/MATH.md §7.11).
+void describe_longest(std::ostream& out, const LongestFilled& c, const std::string& store) {
+  out << "  longest-lived filled " << (c.dim == 1 ? "loop" : "cavity") << ": class " << c.id << ", cells ";
+  for (std::size_t i = 0; i < std::min(cells_shown, c.cells.size()); ++i)
+    out << (i > 0 ? ", " : "") << c.cells[i];
+  if (c.cells.size() > cells_shown)
+    out << " and " << c.cells.size() - cells_shown << " more";
+  out << ", formed at MCS " << mcs(c.birth) << ", filled at MCS " << mcs(c.death);
+  if (store.empty()) {
+    out << "\n";
+    return;
+  }
+  const std::string type = c.cell_type == persistence::all_types ? "all" : std::to_string(c.cell_type);
+  const std::string at_type = c.cell_type == persistence::all_types ? "" : " --type " + type;
+  out << " (`medusa classes " << shell_word(store) << " --type " << type << " --dim " << c.dim
+      << "`, `medusa at " << shell_word(store) << at_type << " --class " << c.id << " -o class" << c.id
+      << ".vtk`)\n";
+}
+
 } // namespace
 
 void describe_forward_diagram(std::ostream& out, const medusa::Medusa& medusa,
@@ -118,7 +157,9 @@ void describe_forward_diagram(std::ostream& out, const medusa::Medusa& medusa,
 std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
                                            const kinetic::KineticStatistics& stats,
                                            const std::vector<persistence::Diagram>& diagrams,
-                                           const std::string& radius_text, const std::string& radius_note) {
+                                           const std::string& radius_text, const std::string& radius_note,
+                                           const std::vector<LongestFilled>& longest,
+                                           const std::string& store) {
   const kinetic::Trajectories& input = medusa.input;
   const double t0 = input.frame_times.empty() ? 0.0 : static_cast<double>(input.frame_times.front());
   const double t_end = input.frame_times.empty() ? 0.0 : static_cast<double>(input.frame_times.back());
@@ -173,6 +214,10 @@ std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medu
     }
     out << label << ":\n";
     describe_fates(out, fates, d, input.dimension, t0, t_end);
+    // A planar run's H2 classes are space-time bubbles, none of which is filled (docs/MATH.md §7.6).
+    for (const LongestFilled& c : longest)
+      if (c.cell_type == d.cell_type && (c.dim == 1 || input.dimension == 3))
+        describe_longest(out, c, store);
   }
   out << "Counts at MCS " << mcs(t0) << " and MCS " << mcs(t_end)
       << " are those of the complex at that frame (b0, b1, b2 of `medusa curves --frames-only`). Joins, "
