@@ -42,22 +42,12 @@ ClassFates class_fates(const medusa::Medusa& medusa, const persistence::Diagram&
   std::vector<double> joins;
   std::size_t alive_after_first = 0;
   for (const persistence::PersistencePair& p : forward.pairs) {
-    if (p.zero_length || p.dim > 2)
+    if (p.zero_length || p.dim != 0)
       continue;
-    if (p.dim == 0) {
-      if (!p.essential)
-        joins.push_back(p.death);
-      if (p.birth_time.batch <= first_batch && (p.essential || p.death_time.batch > first_batch))
-        ++alive_after_first;
-      continue;
-    }
-    HoleFates& h = fates.holes[static_cast<std::size_t>(p.dim)];
-    const bool initial = p.birth_time.batch <= first_batch;
-    (initial ? h.initial : h.formed) += 1;
-    if (p.essential)
-      (initial ? h.never_filled_initial : h.never_filled_formed) += 1;
-    else
-      (initial ? h.filled_initial : h.filled_formed) += 1;
+    if (!p.essential)
+      joins.push_back(p.death);
+    if (p.birth_time.batch <= first_batch && (p.essential || p.death_time.batch > first_batch))
+      ++alive_after_first;
   }
   std::sort(joins.begin(), joins.end());
   fates.clusters.joins = joins.size();
@@ -66,26 +56,25 @@ ClassFates class_fates(const medusa::Medusa& medusa, const persistence::Diagram&
     fates.clusters.all_joined = joins.back();
   }
   // The reverse filtration starts with K(t_end-), the cells that die at the final virtual time
-  // (docs/MATH.md §6.2, §7.3): its essential classes born there span the image of H_k(K(t_end-)).
-  std::array<std::size_t, 3> carried{};
+  // (docs/MATH.md §6.2, §7.3): its essential H0 classes born there span the image of H_0(K(t_end-)).
+  std::size_t carried = 0;
   for (const persistence::PersistencePair& p : reverse.pairs)
-    if (p.essential && p.dim <= 2 && p.birth_time.batch == medusa.end.batch)
-      ++carried[static_cast<std::size_t>(p.dim)];
-  if (alive_after_first > fates.clusters.at_first || carried[0] > fates.clusters.at_end)
+    if (p.essential && p.dim == 0 && p.birth_time.batch == medusa.end.batch)
+      ++carried;
+  if (alive_after_first > fates.clusters.at_first || carried > fates.clusters.at_end)
     throw InternalError("class_fates: more H0 classes than clusters at the first or the last frame");
   fates.clusters.joined_at_first = fates.clusters.at_first - alive_after_first;
-  fates.clusters.separated_again = fates.clusters.at_end - carried[0];
-  for (std::size_t k = 1; k <= 2; ++k) {
-    HoleFates& h = fates.holes[k];
-    const std::size_t never = h.never_filled_initial + h.never_filled_formed;
-    if (carried[k] > never)
-      throw InternalError("class_fates: " + std::to_string(carried[k]) + " classes of degree " +
-                          std::to_string(k) + " carried by the end complex, but only " +
-                          std::to_string(never) + " essential ones");
-    h.still_open = carried[k];
-    h.broken_open = never - carried[k];
-    h.open_at_end = end.betti[k];
+  fates.clusters.separated_again = fates.clusters.at_end - carried;
+  std::vector<char> member;
+  if (type) {
+    member.resize(medusa.cells.size());
+    for (std::size_t i = 0; i < medusa.cells.size(); ++i)
+      member[i] = medusa.has_type(medusa.cells[i], *type) ? 1 : 0;
   }
+  fates.holes =
+      persistence::hole_fates(medusa.cells, member, forward, reverse, first_batch, medusa.end.batch);
+  for (std::size_t k = 1; k <= 2; ++k)
+    fates.open_at_end[k] = end.betti[k];
   return fates;
 }
 

@@ -46,6 +46,34 @@ std::string what_of(const ComparisonSelection& s) {
   return "type " + s.type + ", H" + std::to_string(s.dim) + ", " + s.filtration + " filtration";
 }
 
+// The classes of a homology degree in words: clusters, loops, cavities (docs/MATH.md §7.6).
+std::string degree_words(int dim) {
+  switch (dim) {
+  case 0: return "clusters (H0)";
+  case 1: return "loops (H1)";
+  case 2: return "cavities (H2)";
+  default: return "classes of degree " + std::to_string(dim) + " (H" + std::to_string(dim) + ")";
+  }
+}
+
+// A comparison for the terminal: "type 1 loops (H1)", "all cells' clusters (H0)".
+std::string words_of(const ComparisonSelection& s) {
+  return (s.type == "all" ? std::string("all cells' ") : "type " + s.type + " ") + degree_words(s.dim);
+}
+
+// "bottleneck distance between their persistence diagrams (essential classes ignored)".
+std::string metric_words(const ComparisonMetric& metric) {
+  const std::string d = metric.description();
+  const std::size_t paren = std::min(d.find(" ("), d.size());
+  return d.substr(0, paren) + " distance between their persistence diagrams" + d.substr(paren);
+}
+
+// The filtration in words (docs/MATH.md §7.2, §7.3).
+std::string direction_words(const std::string& filtration) {
+  return filtration == "forward" ? "time running forward (forward filtration)"
+                                 : "time running backward from the end (reverse filtration)";
+}
+
 // Largest and smallest distance between two different runs.
 std::pair<double, double> off_diagonal_range(const persistence::DistanceMatrix& d) {
   double lo = std::numeric_limits<double>::infinity(), hi = 0;
@@ -176,9 +204,12 @@ void compare_command(const CompareArguments& args) {
     comparisons[c].selection = selections[c];
 
   std::cout << "comparing " << args.stores.size() << " runs: "
-            << (single ? what_of(selections.front())
-                       : "each cell type, H0, H1 and H2, " + args.selection.filtration + " filtration")
-            << ", " << metric.description() << ", time normalised t -> (t - t0) / (t_end - t0)\n";
+            << (single ? words_of(selections.front())
+                       : "clusters, loops and cavities (H0, H1, H2) of each cell type")
+            << ", " << direction_words(args.selection.filtration) << "; " << metric_words(metric)
+            << "; each run's time rescaled to 0..1, t -> (t - t0) / (t_end - t0)\n"
+            << "classes: finite = ended (a cluster joined another, a loop or cavity was filled), essential = "
+               "never ended\n";
   for (std::size_t i = 0; i < args.stores.size(); ++i) {
     check_interrupted();
     std::vector<ComparedDiagram> d = compared_diagrams(args.stores[i], selections);
@@ -186,12 +217,11 @@ void compare_command(const CompareArguments& args) {
               << short_number(d.front().t_end);
     for (std::size_t c = 0; c < d.size(); ++c) {
       if (!single)
-        std::cout << (c % 3 == 0 ? "\n    type " + selections[c].type + ":" : ",") << " H"
-                  << selections[c].dim;
+        std::cout << (c % 3 == 0 ? "\n    type " + selections[c].type + ":" : ",") << " "
+                  << degree_words(selections[c].dim);
       const std::size_t finite = d[c].points.finite.size(), essential = d[c].points.essential.size();
-      std::cout << (single ? ", " : " ") << finite << (finite == 1 ? " finite point" : " finite points")
-                << (single ? ", " : " + ") << essential
-                << (essential == 1 ? " essential class" : " essential classes");
+      std::cout << (single ? ", " : " ") << finite << " finite" << (single ? ", " : " + ") << essential
+                << " essential";
       comparisons[c].points.push_back(std::move(d[c].points));
     }
     std::cout << "\n";
@@ -213,8 +243,8 @@ void compare_command(const CompareArguments& args) {
   std::vector<std::string> warnings;
   for (const Comparison& c : comparisons)
     if (trivially_zero(c, args.essential))
-      warnings.push_back("every distance of " + what_of(c.selection) + " is 0: no run has a " +
-                         (args.essential ? "class" : "finite class") + " there (" +
+      warnings.push_back("every distance of " + words_of(c.selection) + " is 0: no run has a " +
+                         (args.essential ? "class" : "class that ended") + " there (" +
                          (c.selection.dim == 0 && c.selection.type == "all"
                               ? "the whole tissue is one cluster throughout"
                               : "every diagram is empty") +
@@ -222,12 +252,12 @@ void compare_command(const CompareArguments& args) {
 
   if (single) {
     const Comparison& c = comparisons.front();
-    std::cout << "distances:\n";
+    std::cout << "distances (" << metric.reading() << "):\n";
     print_matrix(std::cout, c.distances, names);
     if (metric.largest_relative_error() > 0)
       std::cout << "some finite parts are certified approximations within a relative error of "
                 << short_number(metric.largest_relative_error()) << "\n";
-    std::cout << "average-linkage clustering:\n";
+    std::cout << "runs grouped by distance, closest first (average linkage):\n";
     print_clustering(std::cout, c.dendrogram, names, "  ");
     write_outputs(c, names, args.prefix, metric.description());
     std::cout << "wrote " << args.prefix << ".distances.csv, " << args.prefix << ".heatmap.svg, "
@@ -245,16 +275,16 @@ void compare_command(const CompareArguments& args) {
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return spread(a) > spread(b); });
     std::cout
+        << "distances: " << metric.reading() << "\n"
         << "which comparisons separate the runs (distances between different runs: smallest, largest, and "
-           "their ratio; highest ratio first):\n";
+           "their ratio; highest ratio first, then the runs grouped by distance):\n";
     for (std::size_t c : order) {
       const Comparison& x = comparisons[c];
       const auto [lo, hi] = off_diagonal_range(x.distances);
-      std::cout << "  type " << x.selection.type << " H" << x.selection.dim << ": " << short_number(lo)
-                << " to " << short_number(hi) << ", ratio "
-                << (hi == 0 ? std::string("-") : short_number(spread(c)));
+      std::cout << "  " << words_of(x.selection) << ": " << short_number(lo) << " to " << short_number(hi)
+                << ", ratio " << (hi == 0 ? std::string("-") : short_number(spread(c)));
       if (hi > 0 && !x.dendrogram.merges.empty()) {
-        std::cout << "; clustering:";
+        std::cout << "; grouped:";
         std::string sep = " ";
         for (const persistence::Merge& m : x.dendrogram.merges) {
           std::cout << sep << cluster_name(m.first, x.dendrogram, names) << " + "

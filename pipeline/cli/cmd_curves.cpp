@@ -98,11 +98,22 @@ std::vector<CurvePanel> panels_of(const std::vector<TypeCurves>& all) {
   return panels;
 }
 
+// One sample in words: the cells and their contacts, then the Betti numbers as clusters, loops and
+// cavities (docs/MATH.md §6.6, §7.6).
 void describe(std::ostream& out, const medusa::SignatureSample& s) {
   const medusa::Signature& g = s.signature;
-  out << "MCS " << format_time(s.time) << ": " << g.f[0] << " vertices, " << g.f[1] << " edges, " << g.f[2]
-      << " triangles, " << g.f[3] << " tetrahedra; b0 " << g.betti[0] << ", b1 " << g.betti[1] << ", b2 "
-      << g.betti[2];
+  out << "MCS " << format_time(s.time) << ": " << g.f[0] << " cells, " << g.f[1] << " contacts, " << g.f[2]
+      << " triangles, " << g.f[3] << " tetrahedra; " << g.betti[0]
+      << (g.betti[0] == 1 ? " cluster, " : " clusters, ") << g.betti[1]
+      << (g.betti[1] == 1 ? " loop, " : " loops, ") << g.betti[2]
+      << (g.betti[2] == 1 ? " cavity" : " cavities");
+}
+
+// "type 1 (Condensing)", as the summary of `medusa run` names a type.
+std::string type_heading(const medusa::Medusa& medusa, const std::string& label) {
+  const auto index = static_cast<std::size_t>(std::stoi(label));
+  const std::vector<std::string>& names = medusa.input.type_names;
+  return "type " + label + (index < names.size() && !names[index].empty() ? " (" + names[index] + ")" : "");
 }
 
 // A fraction for the terminal: three decimals, "n/a" without a denominator.
@@ -140,12 +151,16 @@ void curves_command(const CurvesArguments& args) {
     sorting = frame_samples(sorting, medusa.input);
   check_interrupted();
 
+  // The complex K_t of touching cells (docs/MATH.md §4.1), with its Betti numbers b0, b1, b2 in words.
   if (args.frames_only)
-    std::cout << "K_t at each of " << medusa.input.frames() << " frames\n";
+    std::cout << "the cells in contact (the complex K_t) at each of " << medusa.input.frames() << " frames";
   else
-    std::cout << "K_t sampled after each of " << medusa.batches.size() << " event batches and at the end\n";
+    std::cout << "the cells in contact (the complex K_t) after each of " << medusa.batches.size()
+              << " event batches and at the end";
+  std::cout << "; clusters, loops and cavities are its Betti numbers b0, b1, b2 (the columns of the CSV); "
+               "first and last:\n";
   for (const TypeCurves& c : all) {
-    std::cout << "type " << c.label << ":\n  ";
+    std::cout << (c.label == "all" ? std::string("all cells") : type_heading(medusa, c.label)) << ":\n  ";
     describe(std::cout, c.samples.front());
     std::cout << "\n  ";
     describe(std::cout, c.samples.back());
@@ -158,15 +173,18 @@ void curves_command(const CurvesArguments& args) {
   const std::string prefix = args.prefix.empty() ? store_stem(args.store) : args.prefix;
   const std::string csv = prefix + ".curves.csv", svg = prefix + ".curves.svg";
   const std::string sorting_csv = prefix + ".sorting.csv", sorting_svg = prefix + ".sorting.svg";
-  std::cout << "sorting measures, MCS " << format_time(sorting.front().time) << " -> MCS "
-            << format_time(sorting.back().time) << ":\n";
+  std::cout
+      << "sorting measures, MCS " << format_time(sorting.front().time) << " -> MCS "
+      << format_time(sorting.back().time)
+      << " (fraction of contacts between cells of different types; mean fraction of a cell's neighbours "
+         "of its own type; clusters and the largest one's cells; README):\n";
   for (std::size_t g = 0; g < sorting.front().measures.size(); ++g) {
     const medusa::SortingMeasures &a = sorting.front().measures[g], &b = sorting.back().measures[g];
-    std::cout << "  type " << (a.type ? std::to_string(*a.type) : "all") << ": heterotypic contacts "
-              << share(a.heterotypic_fraction()) << " -> " << share(b.heterotypic_fraction())
-              << ", same-type neighbours " << share(a.same_type_fraction) << " -> "
-              << share(b.same_type_fraction) << ", clusters " << a.clusters << " -> " << b.clusters
-              << ", largest " << a.largest_cluster << " -> " << b.largest_cluster << "\n";
+    std::cout << "  " << (a.type ? "type " + std::to_string(*a.type) : std::string("all cells"))
+              << ": heterotypic contacts " << share(a.heterotypic_fraction()) << " -> "
+              << share(b.heterotypic_fraction()) << ", same-type neighbours " << share(a.same_type_fraction)
+              << " -> " << share(b.same_type_fraction) << ", clusters " << a.clusters << " -> " << b.clusters
+              << ", largest cluster " << a.largest_cluster << " -> " << b.largest_cluster << " cells\n";
   }
   // All four files or none: an interrupt between two writes removes those already written.
   std::vector<std::string> written;

@@ -165,6 +165,7 @@ struct StoreFacts {
 struct RunResult {
   medusa::Medusa medusa;
   std::vector<persistence::Diagram> diagrams;
+  std::vector<LongestFilled> longest; // the summary's longest-lived filled loop and cavity per type
   StoreFacts facts;
 };
 
@@ -232,6 +233,10 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
     stored_classes.push_back(diagrams[i].direction == persistence::Direction::forward ? &classes[i]
                                                                                       : nullptr);
   persistence::write_diagrams_in_place(store, diagrams, stored_classes);
+  // Before the zero-length pairs go: class ids are rows of the diagrams as stored.
+  result.longest = longest_filled_classes(medusa, diagrams, classes);
+  classes.clear();
+  classes.shrink_to_fit();
   check_interrupted();
   // From here on only positive-length pairs are shown (the summary skips zero-length ones too), so
   // they are dropped in place rather than copied: the diagrams are the largest structure of this stage.
@@ -457,7 +462,8 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   check_interrupted();
   outputs.publish();
   const std::vector<std::string> warnings =
-      write_run_summary(std::cout, result.medusa, stats, result.diagrams, radius, radius_note);
+      write_run_summary(std::cout, result.medusa, stats, result.diagrams, radius, radius_note, result.longest,
+                        outputs.final_name(0));
   if (!args.quiet)
     for (const std::string& w : warnings)
       std::cerr << "medusa: warning: " << w << "\n";

@@ -130,6 +130,18 @@ std::string ComparisonMetric::description() const {
   return (wasserstein_ ? "Wasserstein W_" + p_text_ : std::string("bottleneck")) + " (" + essential + ")";
 }
 
+std::string ComparisonMetric::reading() const {
+  std::string text = "0: the runs have the same classes at the same times; ";
+  if (wasserstein_)
+    text += "larger: more classes, or classes further apart in time, differ (each class's share counts)";
+  else
+    text += "d: every class of one run has a partner in the other whose start and end are within d (a "
+            "fraction of the run's duration), except classes that lasted at most 2d";
+  if (!ignore_essential_)
+    text += "; inf: the runs have different numbers of classes that never ended";
+  return text;
+}
+
 double ComparisonMetric::largest_relative_error() const {
   const std::lock_guard<std::mutex> lock(mutex_);
   return relative_error_;

@@ -50,6 +50,9 @@ public:
   double operator()(const persistence::PointDiagram& a, const persistence::PointDiagram& b) const;
 
   std::string description() const;
+  // What a distance means, in words, for the terminal: what 0 means, and for the bottleneck distance
+  // what a value d says about the matching of classes (docs/MATH.md §7.7).
+  std::string reading() const;
   double largest_relative_error() const;
 
 private:

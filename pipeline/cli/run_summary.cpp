@@ -6,6 +6,8 @@
 
 #include "medusa/core/error.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 
 namespace medusa::cli {
@@ -48,24 +50,32 @@ void describe_clusters(std::ostream& out, const ClusterFates& c, double t0, doub
         << " touched another earlier and separated again)\n";
 }
 
-void describe_holes(std::ostream& out, const HoleFates& h, const char* one, const char* many, double t0,
-                    double t_end) {
-  out << "  " << many << ": " << h.initial << " present at MCS " << mcs(t0) << ", " << h.formed
+void describe_holes(std::ostream& out, const persistence::HoleFates& h, std::size_t open_at_end,
+                    const char* one, const char* many, double t0, double t_end) {
+  out << "  " << many << ": " << h.initial() << " present at MCS " << mcs(t0) << ", " << h.formed()
       << " formed during the run\n";
-  if (h.initial + h.formed == 0)
+  if (h.initial() + h.formed() == 0)
     return;
   out << "    filled by cells: " << h.filled_initial << " of those at MCS " << mcs(t0) << ", "
       << h.filled_formed << " formed later\n";
-  const std::size_t never = h.never_filled_initial + h.never_filled_formed;
-  out << "    never filled: " << h.never_filled_initial << " of those at MCS " << mcs(t0) << ", "
-      << h.never_filled_formed << " formed later";
-  if (never > 0)
-    out << "; of these " << never << ", " << h.still_open << " still open at MCS " << mcs(t_end) << ", "
-        << h.broken_open << " broke open";
+  // Each never-filled count split into still open at the end and broke open (docs/MATH.md §7.12); the
+  // first split names the end's time.
+  bool named_end = false;
+  const auto split = [&](std::size_t still, std::size_t broken) {
+    if (still + broken == 0)
+      return;
+    out << " (" << still << " still open" << (named_end ? "" : " at MCS " + mcs(t_end)) << ", " << broken
+        << " broke open)";
+    named_end = true;
+  };
+  out << "    never filled: " << h.never_filled_initial << " of those at MCS " << mcs(t0);
+  split(h.still_open_initial, h.broken_open_initial);
+  out << ", " << h.never_filled_formed << " formed later";
+  split(h.still_open_formed, h.broken_open_formed);
   out << "\n";
-  if (h.open_at_end > h.still_open)
-    out << "    (the complex at MCS " << mcs(t_end) << " has " << count(h.open_at_end, one, many) << "; "
-        << h.open_at_end - h.still_open
+  if (open_at_end > h.still_open())
+    out << "    (the complex at MCS " << mcs(t_end) << " has " << count(open_at_end, one, many) << "; "
+        << open_at_end - h.still_open()
         << " of them bound in space-time, e.g. around a spot that cells filled at another time, and are not "
            "new classes)\n";
 }
@@ -85,11 +95,48 @@ void describe_planar_bubbles(std::ostream& out, const persistence::Diagram& forw
 void describe_fates(std::ostream& out, const ClassFates& fates, const persistence::Diagram& forward,
                     int dimension, double t0, double t_end) {
   describe_clusters(out, fates.clusters, t0, t_end);
-  describe_holes(out, fates.holes[1], "loop", "loops", t0, t_end);
+  describe_holes(out, fates.holes[1], fates.open_at_end[1], "loop", "loops", t0, t_end);
   if (dimension == 2)
     describe_planar_bubbles(out, forward);
   else
-    describe_holes(out, fates.holes[2], "cavity", "cavities", t0, t_end);
+    describe_holes(out, fates.holes[2], fates.open_at_end[2], "cavity", "cavities", t0, t_end);
+}
+
+// A path as a shell word: quoted unless it is made of characters no shell treats specially.
+std::string shell_word(const std::string& path) {
+  bool plain = !path.empty();
+  for (char c : path)
+    plain = plain && (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' ||
+                      c == '/' || c == '+' || c == ',' || c == ':');
+  if (plain)
+    return path;
+  std::string quoted = "'";
+  for (char c : path)
+    quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// Cells shown before "and N more".
+constexpr std::size_t cells_shown = 8;
+
+// One line: the class, its first cells, its times, and the commands that list it and draw it
+// (docs/MATH.md §7.11).
+void describe_longest(std::ostream& out, const LongestFilled& c, const std::string& store) {
+  out << "  longest-lived filled " << (c.dim == 1 ? "loop" : "cavity") << ": class " << c.id << ", cells ";
+  for (std::size_t i = 0; i < std::min(cells_shown, c.cells.size()); ++i)
+    out << (i > 0 ? ", " : "") << c.cells[i];
+  if (c.cells.size() > cells_shown)
+    out << " and " << c.cells.size() - cells_shown << " more";
+  out << ", formed at MCS " << mcs(c.birth) << ", filled at MCS " << mcs(c.death);
+  if (store.empty()) {
+    out << "\n";
+    return;
+  }
+  const std::string type = c.cell_type == persistence::all_types ? "all" : std::to_string(c.cell_type);
+  const std::string at_type = c.cell_type == persistence::all_types ? "" : " --type " + type;
+  out << " (`medusa classes " << shell_word(store) << " --type " << type << " --dim " << c.dim
+      << "`, `medusa at " << shell_word(store) << at_type << " --class " << c.id << " -o class" << c.id
+      << ".vtk`)\n";
 }
 
 } // namespace
@@ -110,7 +157,9 @@ void describe_forward_diagram(std::ostream& out, const medusa::Medusa& medusa,
 std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
                                            const kinetic::KineticStatistics& stats,
                                            const std::vector<persistence::Diagram>& diagrams,
-                                           const std::string& radius_text, const std::string& radius_note) {
+                                           const std::string& radius_text, const std::string& radius_note,
+                                           const std::vector<LongestFilled>& longest,
+                                           const std::string& store) {
   const kinetic::Trajectories& input = medusa.input;
   const double t0 = input.frame_times.empty() ? 0.0 : static_cast<double>(input.frame_times.front());
   const double t_end = input.frame_times.empty() ? 0.0 : static_cast<double>(input.frame_times.back());
@@ -165,12 +214,16 @@ std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medu
     }
     out << label << ":\n";
     describe_fates(out, fates, d, input.dimension, t0, t_end);
+    // A planar run's H2 classes are space-time bubbles, none of which is filled (docs/MATH.md §7.6).
+    for (const LongestFilled& c : longest)
+      if (c.cell_type == d.cell_type && (c.dim == 1 || input.dimension == 3))
+        describe_longest(out, c, store);
   }
   out << "Counts at MCS " << mcs(t0) << " and MCS " << mcs(t_end)
       << " are those of the complex at that frame (b0, b1, b2 of `medusa curves --frames-only`). Joins, "
          "filled and never-filled "
       << (input.dimension == 2 ? "loops" : "loops and cavities")
-      << " come from the forward filtration (docs/MATH.md §7.6): one that broke open without being filled "
+      << " come from the forward filtration (docs/MATH.md §7.6, §7.12): one that broke open without being filled "
          "stays a class of the space-time medusa (README, Reading the summary).\n"
       << "Times between frames come from linear interpolation of the cell centres between frames "
          "(docs/MATH.md §2.2).\n";

@@ -65,7 +65,7 @@ def check_matrix(names, values, stores):
 def essential_counts(stdout):
     """Run name -> number of essential classes, from the per-run lines of `medusa compare`."""
     return {m.group(1): int(m.group(2))
-            for m in re.finditer(r"^  (\S+): MCS .* finite points?, (\d+) essential class(?:es)?$", stdout, re.M)}
+            for m in re.finditer(r"^  (\S+): MCS \S+ to \S+, \d+ finite, (\d+) essential$", stdout, re.M)}
 
 
 def check_compare(medusa, work, stores):
@@ -84,7 +84,7 @@ def check_compare(medusa, work, stores):
         same = counts[names[i]] == counts[names[j]]
         print(f"{names[i]} / {names[j]}: {values[i][j]} (essential counts {'equal' if same else 'differ'})")
         assert math.isinf(values[i][j]) != same
-    assert "average-linkage clustering:" in result.stdout
+    assert "runs grouped by distance, closest first (average linkage):" in result.stdout
     assert len(re.findall(r"^  .* \+ .* at \S+$", result.stdout, re.M)) == len(names) - 1, "n-1 merges expected"
     for suffix in (".heatmap.svg", ".dendrogram.svg"):
         root = ElementTree.parse(prefix + suffix).getroot()

@@ -59,9 +59,9 @@ for group in groups[1:]:
         if not left_at_first:
             assert present == int(b_first[f"b{k}"]), f"{label}: {word} at first frame {present} vs b{k} {b_first[f'b{k}']}"
             compared += 1
-        still = re.search(r"(\d+) still open", part)
+        still = sum(int(n) for n in re.findall(r"(\d+) still open", part))
         whole = re.search(r"the complex at MCS \S+ has (\d+)", part)
-        at_end = int(whole.group(1)) if whole else (int(still.group(1)) if still else 0)
+        at_end = int(whole.group(1)) if whole else still
         assert at_end == int(b_last[f"b{k}"]), f"{label}: {word} open at the end {at_end} vs b{k} {b_last[f'b{k}']}"
         compared += 1
 assert compared > 0, "nothing compared"
