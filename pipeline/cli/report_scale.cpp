@@ -257,6 +257,15 @@ ScaleSection report_scale(std::vector<ReportRun>& runs, const ScaleOptions& opti
   if (computed_radii.empty() && !runs.empty())
     computed_radii = default_sweep_radii(runs.front().data["facts"]["radius"].get<std::string>());
   std::vector<std::string> notes;
+  // The files given are read first: a malformed one fails before any sweep is computed.
+  std::vector<Sweep> given;
+  for (const std::string& file : options.given) {
+    check_interrupted();
+    Sweep s = sweep_of(read_crocker_csv(file));
+    s.name = stem_of(file, ".crocker.csv");
+    s.origin = "read from " + file + " (written by medusa sweep)";
+    given.push_back(std::move(s));
+  }
   for (std::size_t i = 0; i < runs.size(); ++i) {
     check_interrupted();
     const std::string& store = options.stores.at(i);
@@ -294,13 +303,8 @@ ScaleSection report_scale(std::vector<ReportRun>& runs, const ScaleOptions& opti
             {{"label", type}, {"text", run_scale_line(s, type, type_name_of(runs[i].input, type))}});
     sweeps.push_back(std::move(s));
   }
-  for (const std::string& file : options.given) {
-    check_interrupted();
-    Sweep s = sweep_of(read_crocker_csv(file));
-    s.name = stem_of(file, ".crocker.csv");
-    s.origin = "read from " + file + " (written by medusa sweep)";
+  for (Sweep& s : given)
     sweeps.push_back(std::move(s));
-  }
 
   ScaleSection section;
   std::vector<const Sweep*> of_runs;
