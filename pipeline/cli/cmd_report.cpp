@@ -139,7 +139,7 @@ void add_report_command(CLI::App& app) {
       ->capture_default_str();
   report
       ->add_option("--threads", args->threads,
-                   "threads for the filtrations and reductions (0: one per hardware thread)")
+                   "threads for the filtrations, reductions and radius sweep (0: one per hardware thread)")
       ->capture_default_str();
   report->callback([args] { report_command(*args); });
 }

@@ -225,6 +225,34 @@ json comparison(const std::vector<const Sweep*>& sweeps, const std::vector<Repor
     else
       text += ": the runs differ at radi" + std::string(differ.size() == 1 ? "us " : "i ") +
               radii_text(differ, common);
+    // Where the sorting itself shows: several clusters at the first frame, one at the last.
+    std::vector<std::pair<std::string, std::vector<std::string>>> joins;
+    for (const Sweep* s : sweeps) {
+      std::vector<std::string> at;
+      for (const std::string& r : common) {
+        const auto [first, last] = first_last(*s, type, r);
+        if (first > 1 && last == 1)
+          at.push_back(r);
+      }
+      const std::string where =
+          at.empty() ? "at no swept radius"
+                     : "at radi" + std::string(at.size() == 1 ? "us " : "i ") + radii_text(at, common);
+      auto g = std::find_if(joins.begin(), joins.end(), [&](const auto& x) { return x.first == where; });
+      if (g == joins.end())
+        joins.push_back({where, {s->name}});
+      else
+        g->second.push_back(s->name);
+    }
+    text += ". It joins from several clusters at the first frame into one at the last ";
+    for (std::size_t i = 0; i < joins.size(); ++i) {
+      std::string runs_text;
+      for (std::size_t k = 0; k < joins[i].second.size(); ++k)
+        runs_text += (k == 0 ? "" : k + 1 == joins[i].second.size() ? " and " : ", ") + joins[i].second[k];
+      text += std::string(i == 0                  ? ""
+                          : i + 1 == joins.size() ? " and "
+                                                  : ", ") +
+              joins[i].first + " in " + runs_text;
+    }
     out["statements"].push_back({{"label", type}, {"name", name}, {"text", text}, {"radii", differ}});
   }
   return out;

@@ -328,8 +328,15 @@
     for (const n of data.scale.notes || []) html("p", { class: "note" }, root, n);
     if (data.scale.statements.length) {
       const ul = html("ul", { class: "radius-statements" }, root);
-      for (const st of data.scale.statements)
-        html("li", { class: "radius-statement", "data-type": st.label, "data-radii": st.radii.join(",") }, ul, st.text + ".");
+      for (const st of data.scale.statements) {
+        const li = html("li", { class: "radius-statement", "data-type": st.label, "data-radii": st.radii.join(",") }, ul);
+        // The clause that answers the question in bold.
+        st.text.split(/(the runs (?:do not )?differ.*?(?=\. It |$))/).forEach((part, i) => {
+          if (i % 2) html("b", {}, li, part);
+          else li.appendChild(document.createTextNode(part));
+        });
+        li.appendChild(document.createTextNode("."));
+      }
     }
     const labels = [];
     own.forEach((w) => w.types.forEach((t) => { if (t.label !== "all" && !labels.includes(t.label)) labels.push(t.label); }));
