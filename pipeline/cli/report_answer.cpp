@@ -1,5 +1,6 @@
 #include "report_answer.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace medusa::cli {
@@ -44,8 +45,11 @@ TypeCourse type_course(const std::vector<std::int64_t>& times, const std::vector
   } else if (from < n) {
     if (b0.front() > 1)
       course.gathered_at = static_cast<double>(times[from]);
-    text += ", one cluster from " + at_mcs(static_cast<double>(times[from])) + " to the end (" +
-            at_mcs(t_end) + ")";
+    else // one cluster at the first frame, split at some frames after it
+      text += ", up to " + std::to_string(*std::max_element(b0.begin(), b0.end())) + " clusters later";
+    text += from + 1 == n ? ", one cluster at the last frame (" + at_mcs(t_end) + ")"
+                          : ", one cluster from " + at_mcs(static_cast<double>(times[from])) +
+                                " to the end (" + at_mcs(t_end) + ")";
   } else {
     std::size_t first_one = n;
     for (std::size_t k = 1; k < n && first_one == n; ++k)
