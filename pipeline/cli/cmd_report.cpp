@@ -5,7 +5,6 @@
 #include "atomic_file.h"
 #include "commands.h"
 #include "comparison.h"
-#include "crocker.h"
 #include "diagram_selection.h"
 #include "interrupt.h"
 #include "matrix_svg.h"
@@ -18,15 +17,12 @@
 #include "medusa/persistence/clustering.h"
 
 #include <algorithm>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
 namespace medusa::cli {
 namespace {
-
-namespace fs = std::filesystem;
 
 struct ReportArguments {
   std::vector<std::string> stores;
@@ -128,7 +124,8 @@ void add_report_command(CLI::App& app) {
   report
       ->add_option("--sweep-radii", args->sweep_radii,
                    "radii A:B:STEP of the radius sweep computed at report time (default: nine radii from "
-                   "half to one and a half times the first store's radius); may be repeated")
+                   "half to one and a half times the first store's radius); may be repeated; sweep files "
+                   "beside the stores are then not used")
       ->check(CLI::Validator([](std::string& value) { return expand_range(value, nullptr); }, "A:B:STEP"));
   report->add_flag("--no-sweep", args->no_sweep,
                    "compute no radius sweep: show only the sweeps of `medusa sweep` found or given");

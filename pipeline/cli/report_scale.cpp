@@ -289,6 +289,14 @@ ScaleSection report_scale(std::vector<ReportRun>& runs, const ScaleOptions& opti
   std::vector<Sweep> given;
   for (const std::string& file : options.given) {
     check_interrupted();
+    // A store's own sweep given again is shown once, as that store's.
+    std::error_code ec;
+    if (options.radii.empty() &&
+        std::any_of(options.stores.begin(), options.stores.end(), [&](const std::string& store) {
+          const fs::path own = fs::path(store).parent_path() / (stem_of(store, ".h5") + ".crocker.csv");
+          return fs::exists(own, ec) && fs::equivalent(own, file, ec);
+        }))
+      continue;
     Sweep s = sweep_of(read_crocker_csv(file));
     s.name = stem_of(file, ".crocker.csv");
     s.origin = "read from " + file + " (written by medusa sweep)";

@@ -323,7 +323,7 @@
     html("h3", {}, root, own.length > 1 ? "At which radius do the runs differ?" : "At which radius does it show?");
     const computed = own.filter((w) => w.origin.startsWith("computed"));
     const how = html("p", { class: "note sweep-origin" }, root);
-    how.textContent = (computed.length ? "Radius sweep computed at report time from the trajectories in the stores (the same computation as " +
+    how.textContent = (computed.length ? "Radius sweep computed at report time from the trajectories in the store" + (data.runs.length > 1 ? "s" : "") + " (the same computation as " +
       "medusa sweep), " + data.scale.how + ": radii " + computed[0].radii.join(", ") + ". " : "") +
       own.filter((w) => !w.origin.startsWith("computed")).map((w) => w.name + ": radius sweep " + w.origin + ".").join(" ");
     if (data.scale.statements.length) {
