@@ -7,10 +7,10 @@
 #include "medusa/core/error.h"
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <iostream>
 #include <map>
-#include <optional>
 #include <sstream>
 
 namespace medusa::cli {
