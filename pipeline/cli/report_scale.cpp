@@ -153,7 +153,7 @@ json sweep_json(const Sweep& s, const std::vector<ReportRun>& runs) {
 }
 
 // Per type, the radii (common to the runs' sweeps) at which the runs differ in whether the type is
-// one cluster at the end of the run. Alpha complexes grow with the radius (docs/MATH.md §4.1), so b0
+// one cluster at the end of the run. Alpha complexes grow with the radius (docs/MATH.md §7.10), so b0
 // does not increase with it: each run is one cluster at the end from some radius on.
 json comparison(const std::vector<const Sweep*>& sweeps, const std::vector<ReportRun>& runs) {
   std::vector<std::string> common = sweeps.front()->radii;

@@ -25,7 +25,8 @@ struct ScaleOptions {
 };
 
 // The default radii: r/2 to 3r/2 in steps of r/8 (nine radii), r the given radius, each rounded to
-// 0.01 lattice units (exact decimal arithmetic); radii that round to 0 are left out.
+// 0.01 lattice units (exact decimal arithmetic; why this span: docs/MATH.md §7.10); radii that round
+// to 0 are left out.
 std::vector<std::string> default_sweep_radii(const std::string& radius_text);
 
 struct ScaleSection {
