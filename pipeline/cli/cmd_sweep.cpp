@@ -2,31 +2,24 @@
 // CROCKER data of the run (Betti numbers of K_t over time and radius, docs/MATH.md §6.6) as CSV and SVG,
 // with a one-line summary of the forward diagrams per radius (docs/MATH.md §7.6).
 #include "atomic_file.h"
-#include "betti_frames.h"
 #include "commands.h"
 #include "crocker.h"
 #include "diagram_selection.h"
-#include "forward_counts.h"
 #include "interrupt.h"
-#include "medusa_in_memory.h"
+#include "radius_sweep.h"
 #include "run_input.h"
 
 #include "medusa/core/error.h"
 #include "medusa/core/version.h"
 #include "medusa/io/run_reader.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
-#include "medusa/persistence/medusa_diagrams.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cstdint>
-#include <exception>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <mutex>
 #include <sstream>
-#include <thread>
 
 namespace medusa::cli {
 namespace {
@@ -43,176 +36,16 @@ struct SweepArguments {
   bool snap = false, periodic_as_open = false, quiet = false;
 };
 
-// A positive decimal as an integer count of 10^-decimals.
-struct Decimal {
-  std::int64_t units = 0;
-  int decimals = 0;
-};
-
-bool parse_decimal(const std::string& text, Decimal& d) {
-  const std::size_t dot = text.find('.');
-  const std::string whole = text.substr(0, dot),
-                    fraction = dot == std::string::npos ? "" : text.substr(dot + 1);
-  if ((whole.empty() && fraction.empty()) || whole.size() + fraction.size() > 15 ||
-      whole.find_first_not_of("0123456789") != std::string::npos ||
-      fraction.find_first_not_of("0123456789") != std::string::npos)
-    return false;
-  d.decimals = static_cast<int>(fraction.size());
-  d.units = std::stoll("0" + whole + fraction);
-  return true;
-}
-
-std::int64_t rescaled(const Decimal& d, int decimals) {
-  std::int64_t u = d.units;
-  for (int i = d.decimals; i < decimals; ++i)
-    u *= 10;
-  return u;
-}
-
-// units * 10^-decimals as the shortest decimal text ("2.5", "3").
-std::string decimal_text(std::int64_t units, int decimals) {
-  std::string digits = std::to_string(units);
-  if (decimals == 0)
-    return digits;
-  if (digits.size() <= static_cast<std::size_t>(decimals))
-    digits.insert(0, static_cast<std::size_t>(decimals) + 1 - digits.size(), '0');
-  std::string text = digits.substr(0, digits.size() - static_cast<std::size_t>(decimals)) + "." +
-                     digits.substr(digits.size() - static_cast<std::size_t>(decimals));
-  while (text.back() == '0')
-    text.pop_back();
-  if (text.back() == '.')
-    text.pop_back();
-  return text;
-}
-
-constexpr std::size_t max_radii = 200;
-
-// The radii of A:B:STEP (A, B, STEP positive decimals, A <= B), in exact decimal steps, or the reason
-// the range is not valid.
-std::string expand_range(const std::string& spec, std::vector<std::string>* radii) {
-  const std::size_t c1 = spec.find(':'), c2 = c1 == std::string::npos ? c1 : spec.find(':', c1 + 1);
-  Decimal a, b, step;
-  if (c2 == std::string::npos || !parse_decimal(spec.substr(0, c1), a) ||
-      !parse_decimal(spec.substr(c1 + 1, c2 - c1 - 1), b) || !parse_decimal(spec.substr(c2 + 1), step))
-    return "'" + spec + "' is not A:B:STEP with decimal numbers";
-  const int decimals = std::max({a.decimals, b.decimals, step.decimals});
-  const std::int64_t from = rescaled(a, decimals), to = rescaled(b, decimals), by = rescaled(step, decimals);
-  if (from <= 0 || by <= 0 || to < from)
-    return "'" + spec + "' needs 0 < A <= B and STEP > 0";
-  if ((to - from) / by + 1 > static_cast<std::int64_t>(max_radii))
-    return "'" + spec + "' gives more than " + std::to_string(max_radii) + " radii";
-  for (std::int64_t u = from; u <= to; u += by)
-    if (radii != nullptr)
-      radii->push_back(decimal_text(u, decimals));
-  return "";
-}
-
-std::string radius_error(const std::string& text) {
-  Decimal d;
-  if (!parse_decimal(text, d) || d.units <= 0)
-    return "'" + text + "' is not a positive decimal radius";
-  return "";
-}
-
 // The radii in increasing order, each once (compared by exact decimal value).
 std::vector<std::string> all_radii(const SweepArguments& args) {
   std::vector<std::string> texts = args.radii;
   for (const std::string& spec : args.ranges)
     expand_range(spec, &texts);
-  std::vector<std::pair<Decimal, std::string>> values;
-  int decimals = 0;
-  for (const std::string& t : texts) {
-    Decimal d;
-    parse_decimal(t, d);
-    decimals = std::max(decimals, d.decimals);
-    values.emplace_back(d, t);
+  try {
+    return sorted_radii(texts);
+  } catch (const InputError& e) {
+    throw InputError(std::string("medusa sweep: ") + e.what());
   }
-  std::vector<std::pair<std::int64_t, std::string>> keyed;
-  for (const auto& [d, t] : values)
-    keyed.emplace_back(rescaled(d, decimals), decimal_text(rescaled(d, decimals), decimals));
-  std::sort(keyed.begin(), keyed.end());
-  keyed.erase(std::unique(keyed.begin(), keyed.end(),
-                          [](const auto& x, const auto& y) { return x.first == y.first; }),
-              keyed.end());
-  if (keyed.size() > max_radii)
-    throw InputError("medusa sweep: more than " + std::to_string(max_radii) + " radii");
-  std::vector<std::string> radii;
-  for (const auto& [u, t] : keyed)
-    radii.push_back(t);
-  return radii;
-}
-
-struct RadiusResult {
-  std::string radius;
-  std::vector<TypeSlices> slices;
-  std::vector<std::pair<std::string, ForwardCounts>> counts; // per type label, whole complex first
-  bool edges = false;
-};
-
-RadiusResult sweep_one(const kinetic::Trajectories& trajectories, const medusa::RunInfo& base,
-                       const std::string& radius) {
-  medusa::RunInfo info = base;
-  info.radius_text = radius;
-  info.radius = std::stod(radius);
-  const medusa::Medusa medusa = medusa_in_memory(trajectories, info);
-  check_interrupted();
-  RadiusResult result;
-  result.radius = radius;
-  result.edges = !medusa.cells_of_dimension(1).empty();
-  result.slices = slices_at_frames(medusa);
-  const std::vector<int> vertex_type = vertex_types(medusa);
-  const std::vector<int> types = distinct_types(vertex_type);
-  check_interrupted();
-  for (const persistence::Diagram& d :
-       persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, 1))
-    if (d.direction == persistence::Direction::forward)
-      result.counts.emplace_back(type_label(d.cell_type), forward_counts(d));
-  return result;
-}
-
-// Every radius on a pool of `workers` threads; the first error (an interrupt first) is rethrown here
-// once all have stopped.
-std::vector<RadiusResult> sweep_all(const kinetic::Trajectories& trajectories, const medusa::RunInfo& info,
-                                    const std::vector<std::string>& radii, unsigned workers, bool quiet) {
-  std::vector<RadiusResult> results(radii.size());
-  std::vector<std::exception_ptr> errors(radii.size());
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> failed{false};
-  std::mutex print;
-  auto work = [&] {
-    for (std::size_t i = next++; i < radii.size() && !failed; i = next++) {
-      try {
-        results[i] = sweep_one(trajectories, info, radii[i]);
-        if (!quiet) {
-          const std::lock_guard<std::mutex> lock(print);
-          std::cerr << "medusa sweep: radius " << radii[i] << " done\n";
-        }
-      } catch (...) {
-        errors[i] = std::current_exception();
-        failed = true;
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned w = 1; w < std::min<std::size_t>(workers, radii.size()); ++w)
-    pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool)
-    t.join();
-  for (const std::exception_ptr& e : errors)
-    if (e) {
-      try {
-        std::rethrow_exception(e);
-      } catch (const Interrupted&) {
-        throw;
-      } catch (...) {
-      }
-    }
-  for (const std::exception_ptr& e : errors)
-    if (e)
-      std::rethrow_exception(e);
-  check_interrupted();
-  return results;
 }
 
 std::string summary_line(const RadiusResult& r, int dimension) {
@@ -278,16 +111,13 @@ void sweep_command(const SweepArguments& args) {
   if (!args.quiet)
     std::cerr << "medusa sweep: " << radii.size() << " radii on "
               << std::min<std::size_t>(workers, radii.size()) << " thread(s)\n";
-  const std::vector<RadiusResult> results = sweep_all(data.trajectories, info, radii, workers, args.quiet);
-
-  std::vector<CrockerRow> rows;
-  for (const RadiusResult& r : results)
-    for (const TypeSlices& s : r.slices)
-      for (std::size_t k = 0; k < s.at_frame.size(); ++k)
-        rows.push_back({r.radius,
-                        static_cast<double>(data.trajectories.frame_times[k]),
-                        s.label,
-                        {s.at_frame[k].betti[0], s.at_frame[k].betti[1], s.at_frame[k].betti[2]}});
+  const std::vector<RadiusResult> results =
+      sweep_radii(data.trajectories, info, radii, workers, true,
+                  [&args](const std::string& radius, std::size_t, std::size_t) {
+                    if (!args.quiet)
+                      std::cerr << "medusa sweep: radius " << radius << " done\n";
+                  });
+  const std::vector<CrockerRow> rows = crocker_rows(results, data.trajectories.frame_times);
   std::ostringstream summary;
   summary << "sweep of " << args.input << ": " << data.trajectories.cells.size() << " trajectories, "
           << data.trajectories.frames() << " frames, " << radii.size()

@@ -212,7 +212,7 @@ void write_crocker_svg(std::ostream& out, const std::vector<CrockerRow>& rows, c
         out << "<text x=\"" << lx + lw + 4 << "\" y=\"" << y + 4 << "\">" << v << "</text>\n";
       }
       out << "<text x=\"" << lx << "\" y=\"" << y0 + panel_h + 16
-          << "\" font-size=\"9\">log scale</text>\n</g>\n";
+          << "\" font-size=\"9\">log(1 + b)</text>\n</g>\n";
     }
   out << "</svg>\n";
 }

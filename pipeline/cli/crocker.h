@@ -23,7 +23,7 @@ void write_crocker_csv(std::ostream& out, const std::vector<CrockerRow>& rows);
 // Reads what write_crocker_csv wrote; InputError naming the file and line otherwise.
 std::vector<CrockerRow> read_crocker_csv(const std::string& path);
 
-// One panel per type and degree (x = MCS, y = radius, colour = Betti number on a log scale, with a
+// One panel per type and degree (x = MCS, y = radius, colour = log(1 + Betti number), so 0 has one, with a
 // colour legend per panel); degrees up to `max_degree` (1 for planar runs: they have no cavities).
 // Each cell has a <title> with its radius, time and value. `title` heads the picture.
 void write_crocker_svg(std::ostream& out, const std::vector<CrockerRow>& rows, const std::string& title,

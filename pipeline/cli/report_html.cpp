@@ -44,12 +44,13 @@ void write_figures(std::ostream& out, const std::vector<ReportFigure>& figures, 
 
 void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
                        const std::vector<ReportFigure>& comparison, const std::vector<ReportFigure>& crocker,
-                       const nlohmann::ordered_json& sweeps) {
+                       const nlohmann::ordered_json& sweeps, const nlohmann::ordered_json& scale) {
   std::string names;
   nlohmann::ordered_json data;
   data["version"] = medusa::version;
   data["runs"] = nlohmann::ordered_json::array();
   data["sweeps"] = sweeps;
+  data["scale"] = scale;
   for (const ReportRun& r : runs) {
     names += (names.empty() ? "" : ", ") + r.name;
     data["runs"].push_back(r.data);
@@ -59,34 +60,31 @@ void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
       << report_css << "</style>\n</head>\n<body>\n"
       << "<h1>medusa report</h1>\n<p class=\"sub\">" << xml_escape(names) << " · medusa " << medusa::version
       << "</p>\n"
-      << "<section id=\"glance\">\n<h2>"
-      << (sweeps.empty() ? "Did the cells sort, and when?" : "Did the cells sort, when, and at which scale?")
-      << "</h2>\n"
-      << "<p class=\"note\">A cluster is a group of cells of one type linked to each other: two cells are "
-         "linked "
-         "when their balls of the radius overlap inside their Voronoi regions (about: centres at most twice "
-         "the radius apart; docs/MATH.md §4.1). Sorting shows as the clusters of the engulfed type merging "
-         "into "
-         "one body early in the run. The counts at the first and last frames are those of the complex K_t at "
-         "that time; the merges are those of the forward filtration (docs/MATH.md §7.6): a merge is when two "
-         "clusters first touched.</p>\n"
-      << "<div id=\"headlines\" class=\"cards\"></div>\n<div id=\"glance-charts\" class=\"charts\"></div>\n";
-  if (sweeps.empty())
-    out << "<p class=\"note\">At which scale? These counts are at one radius. <code>medusa sweep RUN --radii "
-           "2:4:0.5</code> in the folder of the store (it writes &lt;run-name&gt;.crocker.csv) and this "
-           "report "
-           "again add the radii at which each type is one cluster, at the start and at the end.</p>\n";
+      << "<section id=\"glance\">\n<h2>Did the cells sort, when, and at which radius?</h2>\n"
+      << "<p class=\"criterion\">A <b>cluster</b> is a group of cells of one type linked to each other: two "
+         "cells are linked when their balls of the radius overlap inside their Voronoi regions (about: "
+         "centres at most twice the radius apart; docs/MATH.md §4.1). Clusters at a frame are those of the "
+         "complex K_t at that frame (b0). A <b>join</b> is a cluster first touching another (the forward "
+         "filtration, docs/MATH.md §7.6); times between frames come from linear interpolation of the cell "
+         "centres. <b>Criterion</b> for &ldquo;sorts&rdquo;: a cell type that is in several clusters at the "
+         "first frame is one cluster at every frame from some frame to the last; no other threshold "
+         "enters.</p>\n"
+      << "<div id=\"headlines\" class=\"cards\"></div>\n<div id=\"radius-answer\"></div>\n"
+      << "<div id=\"glance-charts\" class=\"charts\"></div>\n";
+  if (crocker.empty())
+    out << "<p class=\"note\">At which radius? No radius sweep was computed (<code>--no-sweep</code>, or a "
+           "periodic run): these counts are at one radius. <code>medusa report</code> without "
+           "<code>--no-sweep</code>, or <code>medusa sweep RUN --radii 2:4:0.25</code> in the folder of the "
+           "store, adds the radii.</p>\n";
   out << "</section>\n";
   if (!crocker.empty()) {
-    out << "<section id=\"crocker\">\n<h2>At which scale? CROCKER plots of the radius sweeps</h2>\n"
-        << "<p class=\"note\">Each panel shows a Betti number of K_t (colour, log scale) over time (x) and "
-           "radius (y), from <code>medusa sweep</code> (Topaz, Ziegelmeier &amp; Halverson 2015). Sorting "
-           "shows in b0 of the engulfed type as one cluster reached over time at radii where it was "
-           "split at the start. Hover a cell for its value. The charts of the clusters against the radius on "
-           "the "
-           "first screen read off the scale: the clusters of each type at the first frame (dashed) and at "
-           "the "
-           "last frame (solid).</p>\n";
+    out << "<section id=\"crocker\">\n<h2>At which radius? CROCKER plots of the radius sweeps</h2>\n"
+        << "<p class=\"note\">Each panel shows a Betti number b of K_t over time (x) and radius (y), as "
+           "<code>medusa sweep</code> computes it (Topaz, Ziegelmeier &amp; Halverson 2015). Colour: log(1 + "
+           "b), "
+           "so that b = 0 has a colour too (the darkest; the legend is labelled in b). Sorting shows in b0 "
+           "of the engulfed type as one cluster reached over time at radii where it was split at the start. "
+           "Hover a cell for its value.</p>\n";
     write_figures(out, crocker, "crocker-figure");
     out << "</section>\n";
   }

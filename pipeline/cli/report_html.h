@@ -10,8 +10,8 @@
 
 namespace medusa::cli {
 
-// `sweeps`: per sweep found next to the stores, b0 of each type at the first and last frames against
-// the radius ({name, t0, t_end, radii, types: [{label, first, last}]}), drawn as one chart per type.
+// `sweeps`: per radius sweep, the Betti numbers of each type at the frames against the radius (see
+// report_scale.h); `scale`: the runs compared over their common swept radii.
 // Pictures made here and embedded as SVG: distances between runs, CROCKER plots.
 struct ReportFigure {
   std::string title;
@@ -21,6 +21,6 @@ struct ReportFigure {
 
 void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
                        const std::vector<ReportFigure>& comparison, const std::vector<ReportFigure>& crocker,
-                       const nlohmann::ordered_json& sweeps);
+                       const nlohmann::ordered_json& sweeps, const nlohmann::ordered_json& scale);
 
 } // namespace medusa::cli

@@ -4,6 +4,7 @@
 #include "diagram_selection.h"
 #include "forward_counts.h"
 #include "interrupt.h"
+#include "report_answer.h"
 #include "run_summary.h"
 
 #include "medusa/core/error.h"
@@ -28,44 +29,11 @@ std::string mcs(double t) {
   return buffer;
 }
 
-// Headline times: whole MCS (the frames are tens or hundreds of MCS apart).
-std::string whole_mcs(double t) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.0f", t);
-  return buffer;
-}
-
 std::string type_name(const kinetic::Trajectories& input, int type) {
   if (type == persistence::all_types)
     return "all cells";
   const auto index = static_cast<std::size_t>(type);
   return index < input.type_names.size() ? input.type_names[index] : "";
-}
-
-std::string plural(std::size_t n, const char* one, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
-
-// The first screen's answer for one type: clusters of K_t at the first and last frames (docs/MATH.md
-// §6.6), and when the clusters of the forward filtration merged (docs/MATH.md §7.6).
-std::string headline(const TypeSlices& slices, const ForwardCounts& counts,
-                     const kinetic::Trajectories& input) {
-  std::ostringstream out;
-  const double t0 = static_cast<double>(input.frame_times.front());
-  const double t_end = static_cast<double>(input.frame_times.back());
-  out << plural(slices.at_frame.front().betti[0], "cluster", "clusters") << " at MCS " << mcs(t0) << " -> "
-      << slices.at_frame.back().betti[0] << " at MCS " << mcs(t_end);
-  const std::vector<double>& m = counts.merge_times;
-  if (m.empty()) {
-    out << "; no two clusters ever merged";
-  } else {
-    // The median merge: half of the merges happened by then.
-    out << "; " << (m.size() == 1 ? "the only merge" : "half of the " + std::to_string(m.size()) + " merges")
-        << " by MCS " << whole_mcs(m[(m.size() - 1) / 2]);
-    if (m.size() > 1)
-      out << ", the last at MCS " << whole_mcs(m.back());
-  }
-  return out.str();
 }
 
 json cc3d_ids(const std::vector<kinetic::VertexId>& vertices, const kinetic::Trajectories& input) {
@@ -165,6 +133,8 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
   ReportRun run;
   run.name = name;
   run.dimension = input.dimension;
+  run.input = input;
+  run.run_info = medusa.run;
   json& j = run.data;
   j["name"] = name;
   j["facts"] = facts(medusa, store);
@@ -183,6 +153,7 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
 
   std::ostringstream summary;
   json headlines = json::array();
+  std::vector<TypeVerdictInput> verdict_types;
   json panels = json::array();
   for (const persistence::Diagram& d : diagrams) {
     if (d.direction != persistence::Direction::forward)
@@ -196,8 +167,16 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
     describe_forward_diagram(summary, medusa, diagrams, d);
     const auto s =
         std::find_if(slices.begin(), slices.end(), [&](const TypeSlices& x) { return x.label == label; });
-    headlines.push_back(
-        {{"label", label}, {"name", tname}, {"text", headline(*s, forward_counts(d), input)}});
+    std::vector<std::size_t> b0;
+    for (const Signature& g : s->at_frame)
+      b0.push_back(g.betti[0]);
+    const TypeCourse course = type_course(input.frame_times, b0, forward_counts(d).merge_times);
+    headlines.push_back({{"label", label},
+                         {"name", tname},
+                         {"text", course.text},
+                         {"gathered_at", course.gathered_at ? json(*course.gathered_at) : json(nullptr)}});
+    if (d.cell_type != persistence::all_types)
+      verdict_types.push_back({"type " + label + (tname.empty() ? "" : " (" + tname + ")"), course});
     for (int k = 0; k <= 2; ++k)
       panels.push_back(panel(d, k, max_bars, medusa));
     run.h0_points.emplace_back(
@@ -206,6 +185,7 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
   }
   j["summary"] = summary.str();
   j["headlines"] = std::move(headlines);
+  j["verdict"] = run_verdict(verdict_types, j["facts"]["radius"].get<std::string>());
   j["panels"] = std::move(panels);
   return run;
 }

@@ -3,6 +3,8 @@
 // of the cells that formed and killed each class. Serialised as JSON into the report page.
 #pragma once
 
+#include "medusa/kinetic/trajectories.h"
+#include "medusa/medusa/run_info.h"
 #include "medusa/persistence/points.h"
 
 #include <nlohmann/json.hpp>
@@ -14,11 +16,15 @@ namespace medusa::cli {
 
 struct ReportRun {
   std::string name;            // shown in the page
-  nlohmann::ordered_json data; // name, path, facts, summary, headlines, frame_times, slices, panels
+  nlohmann::ordered_json data; // name, path, facts, summary, headlines, verdict, frame_times, slices, panels
   // H0 of the forward filtration on the normalised time axis (docs/MATH.md §7.7), per type label
   // ("all", "1", ...), for the distances between runs.
   std::vector<std::pair<std::string, persistence::PointDiagram>> h0_points;
   int dimension = 3;
+  // The store's trajectories and run record: the radius sweep of the report reruns the kinetic stage
+  // on them.
+  kinetic::Trajectories input;
+  medusa::RunInfo run_info;
 };
 
 // Reads `store` (with its events), computes its diagrams on `threads` threads and the Betti numbers

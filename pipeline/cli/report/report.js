@@ -63,18 +63,18 @@
     return out;
   }
   // Axes of a plot area: x from x0..x1 (MCS), y from y0..y1.
-  // With logY the y range is of positive values and the axis is logarithmic.
+  // With logY the y axis shows log(1 + y), labelled in y, so that 0 has a place on it.
   function axes(svg, box, xr, yr, xlabel, ylabel, integerY, noYTicks, logY) {
     const [left, top, w, h] = box;
     const sx = (v) => left + ((v - xr[0]) / (xr[1] - xr[0] || 1)) * w;
-    const ly = (v) => (logY ? Math.log10(v) : v);
+    const ly = (v) => (logY ? Math.log10(1 + v) : v);
     const sy = (v) => top + h - ((ly(v) - ly(yr[0])) / (ly(yr[1]) - ly(yr[0]) || 1)) * h;
     el("rect", { x: left, y: top, width: w, height: h, fill: "none", stroke: "#999" }, svg);
     for (const t of ticks(xr[0], xr[1], 5)) {
       el("line", { x1: sx(t), x2: sx(t), y1: top + h, y2: top + h + 4, stroke: "#999" }, svg);
       el("text", { x: sx(t), y: top + h + 15, "text-anchor": "middle" }, svg, fmt(t));
     }
-    const logTicks = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 10000].filter((v) => v >= yr[0] && v <= yr[1]);
+    const logTicks = [0, 1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000, 10000].filter((v) => v >= yr[0] && v <= yr[1]);
     for (const t of noYTicks ? [] : logY ? logTicks : ticks(yr[0], yr[1], 4)) {
       if (integerY && t !== Math.round(t)) continue;
       el("line", { x1: left - 4, x2: left, y1: sy(t), y2: sy(t), stroke: "#999" }, svg);
@@ -91,7 +91,7 @@
     const svg = el("svg", { class: "chart", width: width, height: height, viewBox: "0 0 " + width + " " + height }, parent);
     el("text", { class: "title", x: 50, y: 16 }, svg, title);
     const xs = series.flatMap((s) => s.xs), ys = series.flatMap((s) => s.ys).filter((y) => y !== null);
-    const xr = [Math.min(...xs), Math.max(...xs)], yr = [logY ? 1 : 0, Math.max(logY ? 2 : 1, ...ys)];
+    const xr = [Math.min(...xs), Math.max(...xs)], yr = [0, Math.max(logY ? 2 : 1, ...ys)];
     // Legend columns as wide as the longest name (about 6.5 px a character at 11 px).
     const longest = Math.max(...series.map((s) => s.name.length));
     const columns = Math.max(1, Math.min(3, Math.floor((width - 80) / (longest * 6.5 + 30))));
@@ -127,7 +127,7 @@
       "birth: MCS " + fmt(birth) + " (medusa cell " + bcell + ", " + cellWords(bids) + ")"];
     if (death === null) {
       // An essential loop or cavity was never filled; it need not be open at the end (README, Reading the summary).
-      lines.push(panel.dim === 0 ? "death: never (an essential class: this cluster never merged into an older one)"
+      lines.push(panel.dim === 0 ? "death: never (an essential class: this cluster never joined an older one)"
         : "death: never (an essential class: never filled by cells; it may have broken open instead)");
       lines.push("lifetime: " + fmt(run.facts.t_end - birth) + " MCS or more (to the end of the run)");
     } else {
@@ -137,12 +137,27 @@
     return lines.join("\n");
   }
 
+  // The H0 panels end a little after the last birth or join (a round value), when that is well before
+  // the end of the run: clusters join in the first few hundred MCS. Other degrees span the whole run.
+  function zoomedEnd(run, panel) {
+    const t0 = run.facts.t0, t1 = run.facts.t_end;
+    if (panel.dim !== 0 || !panel.pairs.length) return t1;
+    let last = t0;
+    for (const p of panel.pairs) last = Math.max(last, p[0], p[1] === null ? p[0] : p[1]);
+    const target = t0 + Math.max(last - t0, (t1 - t0) / 100) * 1.1;
+    const tk = ticks(t0, target, 5), step = tk.length > 1 ? tk[1] - tk[0] : target - t0;
+    const end = t0 + Math.ceil((target - t0) / step) * step;
+    return end < t0 + 0.7 * (t1 - t0) ? end : t1;
+  }
+
   function barcode(parent, run, panel, ri, pi) {
     const n = panel.pairs.length, width = 400, barH = n > 150 ? 1 : n > 60 ? 2 : 4;
     const height = Math.max(90, Math.min(420, n * barH + 56));
     const svg = el("svg", { class: "barcode", width: width, height: height, viewBox: "0 0 " + width + " " + height }, parent);
-    const t0 = run.facts.t0, t1 = run.facts.t_end;
-    const [sx] = axes(svg, [20, 8, width - 36, height - 46], [t0, t1], [0, 1], "MCS", "", true, true);
+    const t0 = run.facts.t0, t1 = zoomedEnd(run, panel);
+    const zoomed = t1 < run.facts.t_end;
+    const [sx] = axes(svg, [20, 8, width - 36, height - 46], [t0, t1], [0, 1],
+      zoomed ? "MCS " + fmt(t0) + "–" + fmt(t1) + " of " + fmt(t0) + "–" + fmt(run.facts.t_end) + " (zoomed to the joins)" : "MCS", "", true, true);
     const rowH = (height - 46) / Math.max(1, n), colour = degreeColours[panel.dim];
     panel.pairs.forEach((p, j) => {
       const x0 = sx(p[0]), x1 = p[1] === null ? sx(t1) : sx(p[1]);
@@ -157,8 +172,10 @@
   function diagram(parent, run, panel, ri, pi) {
     const size = 260, pad = 48;
     const svg = el("svg", { class: "diagram", width: size, height: size, viewBox: "0 0 " + size + " " + size }, parent);
-    const t0 = run.facts.t0, t1 = run.facts.t_end;
-    const [sx, sy] = axes(svg, [pad, 18, size - pad - 20, size - pad - 20], [t0, t1], [t0, t1], "birth (MCS)", "death (MCS)", false);
+    const t0 = run.facts.t0, t1 = zoomedEnd(run, panel);
+    const zoomed = t1 < run.facts.t_end;
+    const [sx, sy] = axes(svg, [pad, 18, size - pad - 20, size - pad - 20], [t0, t1], [t0, t1],
+      zoomed ? "birth (MCS, zoomed to the joins)" : "birth (MCS)", "death (MCS)", false);
     el("line", { x1: sx(t0), y1: sy(t0), x2: sx(t1), y2: sy(t1), stroke: "#bbb" }, svg);
     el("text", { x: pad - 6, y: 14, "text-anchor": "end" }, svg, "never");
     el("line", { x1: sx(t0), x2: sx(t1), y1: 10, y2: 10, stroke: "#ddd", "stroke-dasharray": "3,3" }, svg);
@@ -179,13 +196,22 @@
       const h = html("h3", {}, card, run.name + " ");
       html("span", { class: "muted" }, h, "radius " + run.facts.radius + " · " + run.facts.cc3d_cells + " cells · " +
         run.facts.frames + " frames, MCS " + run.facts.t0 + "–" + run.facts.t_end);
+      const sorts = run.verdict.startsWith("sorts");
+      const v = html("p", { class: "verdict " + (sorts ? "sorts" : "no-sort"), "data-run": ri }, card);
+      html("b", {}, v, run.name + " " + run.verdict.split(":")[0] + ":");
+      v.appendChild(document.createTextNode(run.verdict.slice(run.verdict.indexOf(":") + 1)));
       const ul = html("ul", {}, card);
       for (const x of typesFirst(run.headlines)) {
-        const li = html("li", { class: "headline", "data-type": x.label }, ul);
+        const li = html("li", { class: "headline" + (x.label === "all" ? " muted" : ""), "data-type": x.label }, ul);
         html("b", {}, li, typeTitle(x.label, x.name) + ": ");
         li.appendChild(document.createTextNode(x.text));
       }
-      for (const line of run.scale || []) html("li", { class: "headline scale" }, ul, line);
+      // With several runs the table and statements under the cards say it for all of them at once.
+      if ((run.scale || []).length && data.sweeps.filter((w) => w.run >= 0).length === 1) {
+        html("div", { class: "scale-head" }, card, "At other radii (radius sweep):");
+        const sl = html("ul", {}, card);
+        for (const x of run.scale) html("li", { class: "headline scale", "data-type": x.label }, sl, x.text);
+      }
     });
     // Clusters of each type over time, all runs in one chart per type.
     const charts = document.getElementById("glance-charts");
@@ -244,7 +270,8 @@
       }
       html("h3", {}, sec, "Barcodes and persistence diagrams (forward filtration)");
       html("p", { class: "note" }, sec, "One bar per class: it starts when the cluster, loop or cavity appears and ends when it " +
-        "merges into an older cluster or is filled; pale bars never end (essential classes, drawn to the end of the run). Hover a bar or a point for its " +
+        "joins an older cluster or is filled; pale bars never end (essential classes, drawn to the end of the run). The H0 (clusters) panels " +
+        "show the time up to the last join only, labelled under the axis. Hover a bar or a point for its " +
         "times and the CC3D cells that formed and killed it. Zero-length classes are not drawn.");
       const grid = html("div", { class: "panels" }, sec);
       typesFirst(run.panels).forEach((panel) => {
@@ -275,16 +302,81 @@
         const t = w.types.find((x) => x.label === label);
         if (!t) return;
         // A sweep named like a run has that run's colour.
-        const ri = data.runs.findIndex((r) => r.name === w.name);
+        const ri = w.run;
         const colour = runColours[(ri >= 0 ? ri : data.runs.length + i) % runColours.length];
-        series.push({ name: w.name + " MCS " + fmt(w.t_end), colour: colour, xs: w.radii, ys: t.last });
-        series.push({ name: w.name + " MCS " + fmt(w.t0), colour: colour, xs: w.radii, ys: t.first, dashed: true });
+        const times = w.times;
+        series.push({ name: w.name + " MCS " + fmt(times[times.length - 1]), colour: colour, xs: w.radii, ys: t.last });
+        series.push({ name: w.name + " MCS " + fmt(times[0]), colour: colour, xs: w.radii, ys: t.first, dashed: true });
       });
-      lineChart(root, "type " + label + ": clusters of K_t (b0) against the radius", series, "clusters (log scale)", 420, 270, "radius", true);
+      lineChart(root, "type " + label + ": clusters (b0) against the radius", series.map((x) => Object.assign({}, x, { xs: x.xs.map(Number) })),
+        "clusters, log(1 + b0) scale", 420, 270, "radius", true);
+    }
+  }
+
+  // "At which radius?": the statements comparing the runs, then per type a table of the clusters at
+  // the first and the last frame at each swept radius, one row per run.
+  function radiusAnswer() {
+    const root = document.getElementById("radius-answer");
+    const own = data.sweeps.filter((w) => w.run >= 0);
+    for (const n of data.scale.notes || []) html("p", { class: "note" }, root, n);
+    if (!own.length) return;
+    html("h3", {}, root, own.length > 1 ? "At which radius do the runs differ?" : "At which radius does it show?");
+    const computed = own.filter((w) => w.origin.startsWith("computed"));
+    const how = html("p", { class: "note sweep-origin" }, root);
+    how.textContent = (computed.length ? "Radius sweep computed at report time from the trajectories in the store" + (data.runs.length > 1 ? "s" : "") + " (the same computation as " +
+      "medusa sweep), " + data.scale.how + ": radii " + computed[0].radii.join(", ") + ". " : "") +
+      own.filter((w) => !w.origin.startsWith("computed")).map((w) => w.name + ": radius sweep " + w.origin + ".").join(" ");
+    if (data.scale.statements.length) {
+      const ul = html("ul", { class: "radius-statements" }, root);
+      for (const st of data.scale.statements) {
+        const li = html("li", { class: "radius-statement", "data-type": st.label, "data-radii": st.radii.join(",") }, ul);
+        // The clause that answers the question in bold.
+        st.text.split(/(the runs (?:do not )?differ.*?(?=\. It |$))/).forEach((part, i) => {
+          if (i % 2) html("b", {}, li, part);
+          else li.appendChild(document.createTextNode(part));
+        });
+        li.appendChild(document.createTextNode("."));
+      }
+    }
+    const labels = [];
+    own.forEach((w) => w.types.forEach((t) => { if (t.label !== "all" && !labels.includes(t.label)) labels.push(t.label); }));
+    const grid = html("div", { class: "radius-tables" }, root);
+    for (const label of labels) {
+      const radii = [];
+      own.forEach((w) => w.radii.forEach((r) => { if (!radii.includes(r)) radii.push(r); }));
+      radii.sort((a, b) => Number(a) - Number(b));
+      const st = data.scale.statements.find((x) => x.label === label);
+      const differ = st ? st.radii : [];
+      const box = html("div", { class: "radius-table-box" }, grid);
+      const first = own.find((w) => w.types.some((t) => t.label === label));
+      const name = (first.types.find((t) => t.label === label) || {}).name;
+      html("div", { class: "caption" }, box, typeTitle(label, name) + ": clusters at the first → the last frame, per radius");
+      const table = html("table", { class: "radius-table", "data-type": label }, box);
+      const head = html("tr", {}, table);
+      html("th", {}, head, "radius");
+      for (const r of radii) html("th", { class: differ.includes(r) ? "differ" : "" }, head, r);
+      for (const w of own) {
+        const t = w.types.find((x) => x.label === label);
+        const tr = html("tr", {}, table);
+        html("th", {}, tr, w.name);
+        for (const r of radii) {
+          const i = w.radii.indexOf(r);
+          if (!t || i < 0) { html("td", {}, tr, ""); continue; }
+          const a = t.first[i], b = t.last[i];
+          const kind = b !== 1 ? "split" : a === 1 ? "one" : "joins";
+          html("td", { class: kind, "data-radius": r }, tr, a + " → " + b);
+        }
+      }
+      const key = html("div", { class: "key" }, box);
+      html("span", { class: "joins" }, key, "several → one: joins into one cluster during the run");
+      html("span", { class: "one" }, key, "one from the start");
+      html("span", { class: "split" }, key, "several at the end");
+      if (differ.length) html("span", { class: "differ" }, key, "bold radius: the runs differ");
     }
   }
 
   headlines();
+  radiusAnswer();
   sweepCharts();
   details();
 })();

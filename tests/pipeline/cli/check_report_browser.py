@@ -6,6 +6,14 @@ no SEVERE console message; one panel per type and degree; in each panel as many 
 and killed the class, checked against the store itself (h5py: /persistence, /cells, /input); the
 CROCKER plot of a sweep next to the store is shown; the page renders (a non-blank screenshot).
 
+The answer on top, for the sorting runs and the control at the default radius, `medusa run` +
+`medusa report` as a user types them: each run's verdict and each type's clusters at the first frame
+and from when it is one cluster agree with b0 of K_t at the frames from `medusa sweep` at the store's
+radius; the sorting runs sort and the control does not; the radii at which the runs differ, stated per
+type, and the table of clusters per radius equal those derived here from `medusa sweep` CSVs at the
+documented default radii; the page says the sweep was computed at report time; "joins", never
+"merges"; the H0 panels are zoomed to the joins.
+
 Usage: check_report_browser.py <medusa> <source dir> <workdir> [screenshot.png]"""
 import csv
 import io
@@ -16,6 +24,7 @@ import subprocess
 import sys
 import time
 from collections import Counter
+from decimal import ROUND_HALF_UP, Decimal
 
 import h5py
 import numpy as np
@@ -40,14 +49,47 @@ def call(*args):
     return result.stdout
 
 
-runs = {"sorting_3d": f"{source}/examples/sorting_3d", "nosorting_3d": f"{source}/tests/data/cc3d/nosorting_3d"}
+runs = {"sorting_3d": f"{source}/examples/sorting_3d", "nosorting_3d": f"{source}/tests/data/cc3d/nosorting_3d",
+        "sorting_3d_seed2": f"{source}/tests/data/cc3d/sorting_3d_seed2"}
+SORTING = {"sorting_3d": True, "nosorting_3d": False, "sorting_3d_seed2": True}
 for name, folder in runs.items():
-    call("run", folder, "--radius", "3", "-o", f"{name}.h5", "--quiet")
-# Sweeps named like the stores: the report shows their CROCKER plots.
+    call("run", folder, "-o", f"{name}.h5", "--quiet")
+# A store with a sweep named like it beside it: the report shows that sweep's CROCKER plot.
+os.makedirs("filed")
+call("run", runs["sorting_3d"], "--radius", "3", "-o", "filed/sorting_3d.h5", "--quiet")
+call("sweep", runs["sorting_3d"], "--radii", "2:4:0.5", "-o", "filed/sorting_3d", "--quiet")
+call("report", "filed/sorting_3d.h5", "-o", "one.html", "--max-bars", str(MAX_BARS), "-q")
+# The stores of `medusa run` alone: the report computes its radius sweep itself.
+call("report", *[f"{n}.h5" for n in runs], "-o", "three.html", "--max-bars", str(MAX_BARS), "-q")
+
+
+def store_radius(store):
+    return re.search(r"^radius: (\S+)$", call("info", store), re.M).group(1)
+
+
+def b0_table(crocker_csv):
+    """(run-independent) radius -> type -> [b0 at each frame], frame times."""
+    table, times = {}, set()
+    with open(crocker_csv) as f:
+        for r in csv.DictReader(f):
+            table.setdefault(Decimal(r["radius"]), {}).setdefault(r["type"], []).append((float(r["time"]), int(r["b0"])))
+            times.add(float(r["time"]))
+    return {radius: {t: [b for _, b in sorted(v)] for t, v in types.items()} for radius, types in table.items()}, sorted(times)
+
+
+# Oracles from `medusa sweep`: b0 at the frames at each store's own radius, and at the default radii of
+# the report (r/2 to 3r/2 in steps of r/8, rounded half up to 0.01, r the first store's radius).
+own = {}
 for name, folder in runs.items():
-    call("sweep", folder, "--radii", "2:4:0.5", "-o", name, "--quiet")
-call("report", "sorting_3d.h5", "-o", "one.html", "--max-bars", str(MAX_BARS))
-call("report", "sorting_3d.h5", "nosorting_3d.h5", "-o", "two.html", "--max-bars", str(MAX_BARS))
+    radius = store_radius(f"{name}.h5")
+    call("sweep", folder, "--radius", radius, "-o", f"oracle_own_{name}", "--quiet")
+    own[name] = b0_table(f"oracle_own_{name}.crocker.csv")
+first_radius = Decimal(store_radius("sorting_3d.h5"))
+default_radii = [(first_radius * k / 8).quantize(Decimal("0.01"), rounding=ROUND_HALF_UP) for k in range(4, 13)]
+swept = {}
+for name, folder in runs.items():
+    call("sweep", folder, *sum((["--radius", str(r)] for r in default_radii), []), "-o", f"oracle_{name}", "--quiet")
+    swept[name] = b0_table(f"oracle_{name}.crocker.csv")[0]
 
 
 def expected_counts(store):
@@ -83,6 +125,69 @@ def close(a, b):
     return abs(a - b) <= 1e-5 * max(1.0, abs(b))
 
 
+def check_answer(driver, failures):
+    """The answer on top of three.html against the oracles from `medusa sweep`."""
+    text = driver.execute_script("return document.body.innerText")
+    if re.search(r"merg", text, re.I):
+        failures.append("three.html: says 'merge' (the word is 'join')")
+    if "computed at report time" not in text or ", ".join(str(r).rstrip("0").rstrip(".") for r in default_radii) not in text:
+        failures.append("three.html: does not say that the radius sweep was computed at report time, at which radii")
+    for ri, name in enumerate(runs):
+        table, times = own[name]
+        b0 = next(iter(table.values()))
+        gathered = {}
+        for label in ("1", "2"):
+            series = b0[label]
+            start = len(series)
+            while start > 0 and series[start - 1] == 1:
+                start -= 1
+            line = driver.find_element("css selector", f".run-card[data-run='{ri}'] .headline[data-type='{label}']").text
+            if not line.startswith(f"type {label}") or f"{series[0]} clusters at MCS {times[0]:.0f}" not in line:
+                failures.append(f"three.html {name} type {label}: {line!r} does not start with {series[0]} clusters")
+            if series[0] > 1 and start < len(series):
+                gathered[label] = times[start]
+                if f"one cluster from MCS {times[start]:.0f} to the end" not in line:
+                    failures.append(f"three.html {name} type {label}: {line!r}, expected one cluster from MCS {times[start]:.0f}")
+            elif "never one cluster" not in line and "split again" not in line and series[0] > 1:
+                failures.append(f"three.html {name} type {label}: {line!r} does not say it never stays one cluster")
+        verdict = driver.find_element("css selector", f".verdict[data-run='{ri}']").text
+        if verdict.startswith(f"{name} sorts") != bool(gathered) or bool(gathered) != SORTING[name]:
+            failures.append(f"three.html {name}: verdict {verdict!r}; types one cluster to the end: {gathered}, "
+                            f"expected {'a sorting run' if SORTING[name] else 'the control'}")
+        for label, t in gathered.items():
+            if f"type {label}" not in verdict or f"by MCS {t:.0f}" not in verdict:
+                failures.append(f"three.html {name}: verdict {verdict!r} does not name type {label} by MCS {t:.0f}")
+    # At which radii the runs differ: one cluster at the last frame in some runs but not in all.
+    for label in ("1", "2"):
+        differ = [r for r in default_radii
+                  if len({swept[n][r][label][-1] == 1 for n in runs}) > 1]
+        items = driver.find_elements("css selector", f".radius-statement[data-type='{label}']")
+        if len(items) != 1:
+            failures.append(f"three.html: {len(items)} radius statements for type {label}")
+            continue
+        shown = [Decimal(x) for x in items[0].get_attribute("data-radii").split(",") if x]
+        if shown != differ:
+            failures.append(f"three.html type {label}: the runs differ at radii {shown} on the page, {differ} from medusa sweep")
+        wording = (f"differ at radi{'us' if len(differ) == 1 else 'i'} {differ[0].normalize()}" if differ
+                   else "do not differ")
+        if wording not in items[0].text.replace("E+0", ""):
+            failures.append(f"three.html type {label}: statement {items[0].text!r} lacks {wording!r}")
+        print(f"type {label}: the runs differ at radii {[str(r) for r in differ]}")
+        for ri, name in enumerate(runs):
+            for r in default_radii:
+                cells = driver.find_elements(
+                    "css selector", f".radius-table[data-type='{label}'] tr:nth-child({ri + 2}) td[data-radius='{r.normalize()}']")
+                want = f"{swept[name][r][label][0]} → {swept[name][r][label][-1]}"
+                if len(cells) != 1 or cells[0].text != want:
+                    failures.append(f"three.html type {label} {name} radius {r}: table shows "
+                                    f"{[c.text for c in cells]}, medusa sweep {want}")
+    # The sorting runs' type 1 joins end early: its H0 panel is zoomed.
+    axis = driver.execute_script("""return [...document.querySelectorAll(".panel[data-run='0'][data-type='1'][data-dim='0'] text")]
+        .map((t) => t.textContent).join(" | ");""")
+    if "zoomed to the joins" not in axis:
+        failures.append(f"three.html: the type 1 H0 panel of sorting_3d is not zoomed: {axis!r}")
+
+
 options = Options()
 for argument in ["--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,1000",
                  "--proxy-server=127.0.0.1:9"]:
@@ -92,7 +197,7 @@ driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opti
 failures = []
 hovered = 0
 try:
-    for page, stores in [("one.html", ["sorting_3d"]), ("two.html", ["sorting_3d", "nosorting_3d"])]:
+    for page, stores in [("one.html", ["filed/sorting_3d"]), ("three.html", list(runs))]:
         driver.get("file://" + os.path.abspath(page))
         time.sleep(0.3)
         severe = [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]
@@ -102,7 +207,7 @@ try:
         if len(panels) != 9 * len(stores):  # types all, 1, 2 x degrees 0, 1, 2
             failures.append(f"{page}: {len(panels)} panels, expected {9 * len(stores)}")
         if not driver.find_elements("css selector", "svg.crocker .crocker-panel"):
-            failures.append(f"{page}: no CROCKER plot although sorting_3d.crocker.csv is next to the store")
+            failures.append(f"{page}: no CROCKER plot")
         if len(stores) > 1 and not driver.find_elements("css selector", ".comparison-figure svg"):
             failures.append(f"{page}: no distance heat map for two stores")
         # Every label of a drawing (tick labels at the ends of the axes, run names under the
@@ -166,6 +271,9 @@ try:
             if drawn_total == 0:
                 failures.append(f"{page} {name}: no bars drawn")
             print(f"{page} {name}: {drawn_total} bars in {len(expected)} panels with pairs")
+        if page == "three.html":
+            # The README's picture: tall enough for the answer and the first table of the radii.
+            driver.set_window_size(1400, 1180)
         driver.execute_script("window.scrollTo(0, 0)")
         time.sleep(0.2)
         png = f"{page}.png"
@@ -175,12 +283,14 @@ try:
         ink = np.mean(np.any(pixels < 200, axis=1))
         if colours < 20 or ink < 0.02:
             failures.append(f"{page}: screenshot looks blank ({colours} colours, {ink:.3f} of pixels drawn)")
-        if screenshot_copy and page == "two.html":
+        if page == "three.html":
+            check_answer(driver, failures)
+        if screenshot_copy and page == "three.html":
             Image.open(png).convert("RGB").quantize(colors=128).save(screenshot_copy, optimize=True)
     # The drawings `medusa run` writes next to the store: no text runs past the edge of the page. At
     # the default radius sorting_3d has essential H3 classes, which the captions mention.
     call("run", runs["sorting_3d"], "-o", "default_radius.h5", "--quiet")
-    for picture in ["default_radius.barcode.svg", "default_radius.diagram.svg", "sorting_3d.crocker.svg"]:
+    for picture in ["default_radius.barcode.svg", "default_radius.diagram.svg", "filed/sorting_3d.crocker.svg"]:
         driver.get("file://" + os.path.abspath(picture))
         outside = driver.execute_script("""
             const svg = document.documentElement, w = svg.width.baseVal.value, h = svg.height.baseVal.value;

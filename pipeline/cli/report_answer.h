@@ -1,0 +1,36 @@
+// The answer at the top of `medusa report`, in plain words: for each cell type, its clusters (b0 of K_t
+// at the frames, docs/MATH.md §6.6) at the first frame, whether and from when it is one cluster to the
+// end, and when its clusters joined (the finite H0 classes of the forward filtration, docs/MATH.md
+// §7.6); for each run, whether a type gathers into one cluster by the page's stated criterion.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace medusa::cli {
+
+// The page's criterion, stated on it: a type gathers when it is in several clusters at the first frame
+// and one cluster at every frame from some frame to the last.
+struct TypeCourse {
+  std::string text;                  // "7 clusters at MCS 0, one cluster from MCS 100 to the end (...)"
+  std::optional<double> gathered_at; // the first frame of that last stretch, if the type gathers
+  bool one_from_start = false;       // one cluster at every frame, the first included
+};
+
+// `times` the frame times, `b0` the clusters at each frame, `joins` the join times (increasing).
+TypeCourse type_course(const std::vector<std::int64_t>& times, const std::vector<std::size_t>& b0,
+                       const std::vector<double>& joins);
+
+struct TypeVerdictInput {
+  std::string title; // "type 1 (Condensing)"
+  TypeCourse course;
+};
+
+// "sorts: type 1 (Condensing) gathers into one cluster by MCS 100 and stays one to the end", or why
+// not, for the run's types (the whole tissue left out).
+std::string run_verdict(const std::vector<TypeVerdictInput>& types, const std::string& radius);
+
+} // namespace medusa::cli

@@ -1,0 +1,58 @@
+// The plain-words answer of `medusa report` (pipeline/cli/report_answer.cpp) on cluster counts worked
+// out by hand: each sentence and the verdict follow from b0 at the frames and the join times alone.
+#include "report_answer.h"
+
+#include <catch2/catch.hpp>
+
+using medusa::cli::run_verdict;
+using medusa::cli::type_course;
+
+namespace {
+const std::vector<std::int64_t> five_frames = {0, 100, 200, 300, 400};
+}
+
+TEST_CASE("A type that becomes one cluster and stays one gathers at the first frame of that stretch") {
+  const auto c = type_course(five_frames, {7, 3, 1, 1, 1}, {10, 20, 31, 40, 50, 59});
+  REQUIRE(c.gathered_at == 200.0);
+  CHECK_FALSE(c.one_from_start);
+  // Six joins: the median is the third (half of them by then), the last the sixth.
+  CHECK(c.text == "7 clusters at MCS 0, one cluster from MCS 200 to the end (MCS 400) "
+                  "(6 joins, half by MCS 31, all by MCS 59)");
+}
+
+TEST_CASE("A type that is one cluster at a frame but split again at the end does not gather") {
+  const auto c = type_course(five_frames, {7, 4, 1, 2, 4}, {5, 150});
+  CHECK_FALSE(c.gathered_at);
+  CHECK(c.text == "7 clusters at MCS 0, 4 at MCS 400, one cluster at MCS 200 but split again by the end "
+                  "(2 joins, half by MCS 5, all by MCS 150)");
+}
+
+TEST_CASE("A type that is never one cluster says so, and that no cluster joined another") {
+  const auto c = type_course(five_frames, {5, 5, 5, 5, 5}, {});
+  CHECK_FALSE(c.gathered_at);
+  CHECK(c.text == "5 clusters at MCS 0, 5 at MCS 400, never one cluster after MCS 0 "
+                  "(no cluster ever joined another)");
+}
+
+TEST_CASE("A type that is one cluster at the first frame does not gather, even if one again at the end") {
+  const auto c = type_course({0, 100, 200}, {1, 3, 1}, {150});
+  CHECK_FALSE(c.gathered_at);
+  CHECK_FALSE(c.one_from_start);
+  CHECK(c.text == "one cluster at MCS 0, up to 3 clusters later, one cluster at the last frame (MCS 200) "
+                  "(1 join, at MCS 150)");
+}
+
+TEST_CASE("The verdict names the types that gather, or says why it cannot tell") {
+  const auto gathers = type_course(five_frames, {7, 3, 1, 1, 1}, {59});
+  const auto split = type_course(five_frames, {12, 8, 4, 2, 2}, {265});
+  const auto one = type_course(five_frames, {1, 1, 1, 1, 1}, {});
+  CHECK(
+      run_verdict({{"type 1 (Condensing)", gathers}, {"type 2", split}}, "3") ==
+      "sorts at radius 3: type 1 (Condensing) gathers into one cluster by MCS 200 and stays one to the end");
+  CHECK(run_verdict({{"type 1", split}, {"type 2", split}}, "3") ==
+        "does not sort at radius 3: no cell type gathers into one cluster that lasts to the end");
+  CHECK(run_verdict({{"type 1", one}, {"type 2", one}}, "4.5")
+            .rfind("cannot tell at radius 4.5: every type is one "
+                   "cluster from the first frame on",
+                   0) == 0);
+}
