@@ -4,6 +4,7 @@
 #include "diagram_selection.h"
 #include "forward_counts.h"
 #include "interrupt.h"
+#include "report_classes.h"
 #include "run_summary.h"
 
 #include "medusa/core/error.h"
@@ -207,6 +208,8 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
   j["summary"] = summary.str();
   j["headlines"] = std::move(headlines);
   j["panels"] = std::move(panels);
+  // A handful per type and degree: the page's tables stay short, the rest is in `medusa classes`.
+  j["classes"] = report_classes(store, medusa, 5);
   return run;
 }
 
