@@ -247,10 +247,10 @@
       const here = (vs) => vs.every((v) => pos[v]);
       const edge = (a, b, radius, colour, list) => list.push([pos[a], pos[b], radius, colour]);
       const cylinders = [];
-      for (const [a, b] of cls.edges) if (pos[a] && pos[b]) edge(a, b, s * 0.07, "#222222", cylinders);
+      for (const [a, b] of cls.edges) if (pos[a] && pos[b]) edge(a, b, s * 0.08, "#222222", cylinders);
       const pairs = (vs) => { const out = []; for (let i = 0; i < vs.length; ++i) for (let j = i + 1; j < vs.length; ++j) out.push([vs[i], vs[j]]); return out; };
-      if (here(cls.birth_simplex)) for (const [a, b] of pairs(cls.birth_simplex)) edge(a, b, s * 0.1, "#00a651", cylinders);
-      if (cls.death_simplex.length && here(cls.death_simplex)) for (const [a, b] of pairs(cls.death_simplex)) edge(a, b, s * 0.09, "#c51b8a", cylinders);
+      if (here(cls.birth_simplex)) for (const [a, b] of pairs(cls.birth_simplex)) edge(a, b, s * 0.13, "#00a651", cylinders);
+      if (cls.death_simplex.length && here(cls.death_simplex)) for (const [a, b] of pairs(cls.death_simplex)) edge(a, b, s * 0.12, "#c51b8a", cylinders);
       const cylinder = new THREE.CylinderBufferGeometry(1, 1, 1, 10);
       const byColour = new Map();
       for (const c of cylinders) { if (!byColour.has(c[3])) byColour.set(c[3], []); byColour.get(c[3]).push(c); }
@@ -300,7 +300,7 @@
       let radius = 0;
       for (const x of all) radius = Math.max(radius, Math.hypot(x[0] - c[0], x[1] - c[1], x[2] - c[2]));
       radius = Math.max(radius, 2.5 * s);
-      const dist = (radius * 1.6) / Math.sin((camera.fov * Math.PI) / 360);
+      const dist = (radius * 1.15) / Math.sin((camera.fov * Math.PI) / 360);
       const normal = leastSpreadDirection(all, c);
       const side = new THREE.Vector3(...normal).cross(new THREE.Vector3(0, 0, 1));
       if (side.length() < 1e-6) side.set(1, 0, 0);
@@ -410,6 +410,13 @@
       select(v, s, c);
     },
     setTime: (ri, t) => viewOf(ri).setTime(t),
+    range: (ri) => [viewOf(ri).run.facts.t0, viewOf(ri).run.facts.t_end],
+    // The cell types of these CC3D ids.
+    types: (ri, ids) => {
+      const c = viewOf(ri).classes.cells, want = new Set(ids), out = new Set();
+      c.cc3d.forEach((id, v) => { if (want.has(id)) out.add(c.type[v]); });
+      return [...out];
+    },
     // {CC3D id: [x, y, z]} of the cells present at time t (the last trajectory of an id wins).
     positions: (ri, t) => {
       const v = viewOf(ri), pos = positionsAt(v.classes, t), out = {};

@@ -4,9 +4,10 @@ no SEVERE console message; one panel per type and degree; in each panel as many 
 `medusa barcode --format csv --filtration forward` has pairs of that type and degree (capped by
 --max-bars); hovering bars shows the birth and death times and the CC3D ids of the cells that formed
 and killed the class, checked against the store itself (h5py: /persistence, /cells, /input); the
-CROCKER plot of a sweep next to the store is shown; the page renders (a non-blank screenshot).
+CROCKER plot of a sweep next to the store is shown; the page renders (a non-blank screenshot); the
+classes section agrees with `medusa classes` and `medusa at` (report_classes_check.py).
 
-Usage: check_report_browser.py <medusa> <source dir> <workdir> [screenshot.png]"""
+Usage: check_report_browser.py <medusa> <source dir> <workdir> [screenshot.png [class.png]]"""
 import csv
 import io
 import os
@@ -25,9 +26,15 @@ from selenium.webdriver.chrome.options import Options
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 
+from report_classes_check import check_classes
+
 medusa, source, work = sys.argv[1:4]
 screenshot_copy = os.path.abspath(sys.argv[4]) if len(sys.argv) > 4 else None
+class_screenshot = os.path.abspath(sys.argv[5]) if len(sys.argv) > 5 else None
 MAX_BARS = 300
+# The class of sorting_3d selected last on one.html, whose 3D view is saved as the class screenshot:
+# (type, degree, class id as `medusa classes` lists it).
+CLASS_SHOWN = ("1", 1, 129)
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 os.chdir(work)
@@ -91,6 +98,7 @@ options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
 driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
 failures = []
 hovered = 0
+class_clicks = 0
 try:
     for page, stores in [("one.html", ["sorting_3d"]), ("two.html", ["sorting_3d", "nosorting_3d"])]:
         driver.get("file://" + os.path.abspath(page))
@@ -166,6 +174,11 @@ try:
             if drawn_total == 0:
                 failures.append(f"{page} {name}: no bars drawn")
             print(f"{page} {name}: {drawn_total} bars in {len(expected)} panels with pairs")
+        class_clicks += check_classes(driver, call, page, stores, failures, class_screenshot if page == "one.html" else None,
+                                      CLASS_SHOWN)
+        severe = [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]
+        if severe:
+            failures.append(f"{page}: console errors after selecting classes {severe}")
         driver.execute_script("window.scrollTo(0, 0)")
         time.sleep(0.2)
         png = f"{page}.png"
@@ -197,9 +210,11 @@ try:
 finally:
     driver.quit()
 
-print(f"{hovered} hovers checked against the store")
+print(f"{hovered} hovers checked against the store, {class_clicks} classes selected")
 if hovered == 0:
     failures.append("no bar hovered")
+if class_clicks == 0:
+    failures.append("no class selected")
 for f in failures:
     print("FAIL:", f)
 sys.exit(1 if failures else 0)
