@@ -100,8 +100,10 @@ json report_classes(const std::string& store, const medusa::Medusa& medusa, std:
     cells["cc3d"].push_back(c.cell_id);
     cells["type"].push_back(c.type);
   }
-  const bool periodic = std::any_of(medusa.run.periodic_lengths.begin(), medusa.run.periodic_lengths.end(),
-                                    [](std::int64_t l) { return l > 0; });
+  // Periodic axes' lengths in lattice units (0: not periodic), as `medusa at` wraps with.
+  json periodic = json::array();
+  for (std::int64_t length : medusa.run.periodic_lengths)
+    periodic.push_back(static_cast<double>(length) / static_cast<double>(input.scale));
   std::vector<int> types = {persistence::all_types};
   for (int t : distinct_types(vertex_types(medusa)))
     types.push_back(t);
@@ -137,7 +139,7 @@ json report_classes(const std::string& store, const medusa::Medusa& medusa, std:
     }
   }
   return {{"top", top},
-          {"periodic", periodic},
+          {"periodic_lengths", std::move(periodic)},
           {"cells", std::move(cells)},
           {"frames", frame_positions(input)},
           {"sections", std::move(sections)}};

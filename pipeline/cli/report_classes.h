@@ -12,7 +12,8 @@
 
 namespace medusa::cli {
 
-// {top, periodic, cells: {cc3d, type}, frames: {times, frame_count, positions}, sections: [...]}.
+// {top, periodic_lengths, cells: {cc3d, type}, frames: {times, frame_count, positions}, sections: [...]}.
+// periodic_lengths: per axis the period in lattice units, 0 for an axis that is not periodic.
 // cells: per trajectory (index = vertex id) its CC3D id and type. frames: the positions (lattice units,
 // to 1e-3) of every trajectory at each embedded frame as a flat [x, y, z, ...] with null for a
 // trajectory absent there; every frame unless the run is large, then every k-th and the last.

@@ -52,6 +52,45 @@
     return out;
   }
 
+  // On a periodic run, the positions to draw: the class's cells placed along its edges, each at the
+  // periodic image nearest to its neighbour (an edge is shorter than half a period, docs/MATH.md §8.3),
+  // and every other cell at its image nearest to the class's centre.
+  function periodicImages(classes, cls, pos) {
+    const L = classes.periodic_lengths;
+    if (!L.some((l) => l > 0)) return pos;
+    const near = (x, ref) => x.map((xi, a) => (L[a] > 0 ? xi + L[a] * Math.round((ref[a] - xi) / L[a]) : xi));
+    const out = pos.slice(), placed = new Set();
+    if (cls) {
+      const adjacent = new Map();
+      const link = (a, b) => { if (!adjacent.has(a)) adjacent.set(a, []); adjacent.get(a).push(b); };
+      const pairs = [...cls.edges];
+      for (const s of [cls.birth_simplex, cls.death_simplex])
+        for (let i = 0; i < s.length; ++i) for (let j = i + 1; j < s.length; ++j) pairs.push([s[i], s[j]]);
+      for (const [a, b] of pairs) { link(a, b); link(b, a); }
+      const roots = cls.vertices.concat(cls.birth_simplex, cls.death_simplex);
+      for (const root of roots) {
+        if (placed.has(root) || !pos[root]) continue;
+        if (placed.size) out[root] = near(pos[root], out[[...placed][0]]);
+        placed.add(root);
+        const queue = [root];
+        while (queue.length) {
+          const a = queue.shift();
+          for (const b of adjacent.get(a) || []) {
+            if (placed.has(b) || !pos[b]) continue;
+            out[b] = near(pos[b], out[a]);
+            placed.add(b);
+            queue.push(b);
+          }
+        }
+      }
+    }
+    const mine = [...placed];
+    const all = mine.length ? mine.map((v) => out[v]) : pos.filter((x) => x);
+    const c = [0, 1, 2].map((i) => all.reduce((sum, x) => sum + x[i], 0) / Math.max(1, all.length));
+    pos.forEach((x, v) => { if (x && !placed.has(v)) out[v] = near(x, c); });
+    return out;
+  }
+
   // Typical distance between neighbouring cells (median nearest-neighbour distance of a sample), for the
   // size of the spheres.
   function cellSpacing(pos) {
@@ -137,8 +176,10 @@
     const note = classes.frames.times.length < classes.frames.frame_count
       ? "Positions embedded at " + classes.frames.times.length + " of the run's " + classes.frames.frame_count +
         " frames and interpolated between them. " : "";
-    if (note || classes.periodic)
-      html("div", { class: "note" }, box, note + (classes.periodic ? "Periodic run: positions are shown unwrapped, so a class crossing the boundary stays in one piece." : ""));
+    const periodic = classes.periodic_lengths.some((l) => l > 0);
+    if (note || periodic)
+      html("div", { class: "note" }, box, note + (periodic ? "Periodic run: the cells are shown around the selected " +
+        "class, each at its periodic image nearest to it, so a class across the boundary stays in one piece." : ""));
 
     const setTime = (t, refit) => {
       view.time = Math.min(run.facts.t_end, Math.max(run.facts.t0, Number(t)));
@@ -147,6 +188,7 @@
       draw(view, refit === true);
     };
     view.setTime = setTime;
+    view.toDeath = toDeath;
     slider.addEventListener("input", () => setTime(slider.value));
     number.addEventListener("change", () => setTime(number.value));
     toBirth.addEventListener("click", () => view.cls && setTime(view.cls.birth));
@@ -189,7 +231,8 @@
   // The cells of the selected class present at the view's time are drawn opaque in their type's colour,
   // the others pale; the class's edges, triangles and its birth and death cells between them.
   function draw(view, refit) {
-    const classes = view.classes, cls = view.cls, pos = positionsAt(classes, view.time);
+    const classes = view.classes, cls = view.cls;
+    let pos = positionsAt(classes, view.time);
     const inClass = new Set(cls ? cls.vertices : []);
     const sectionType = view.section && view.section.label !== "all" ? Number(view.section.label) : null;
     view.drawn = [];
@@ -208,6 +251,7 @@
     }
     if (!view.three) return;
     const { group, camera, orbit, renderer, scene } = view.three;
+    pos = periodicImages(classes, cls, pos);
     while (group.children.length) {
       const c = group.children.pop();
       if (c.geometry) c.geometry.dispose();
@@ -328,6 +372,7 @@
     for (const tr of document.querySelectorAll(".class-row[data-run='" + view.ri + "']"))
       tr.classList.toggle("selected", tr.dataset.type === section.label && Number(tr.dataset.dim) === section.dim &&
         Number(tr.dataset.class) === cls.id);
+    view.toDeath.disabled = cls.death === null;
     view.setTime(cls.birth, true);
   }
 
@@ -417,7 +462,8 @@
       c.cc3d.forEach((id, v) => { if (want.has(id)) out.add(c.type[v]); });
       return [...out];
     },
-    // {CC3D id: [x, y, z]} of the cells present at time t (the last trajectory of an id wins).
+    // {CC3D id: [x, y, z]} of the cells present at time t (the last trajectory of an id wins), before
+    // any periodic image is taken.
     positions: (ri, t) => {
       const v = viewOf(ri), pos = positionsAt(v.classes, t), out = {};
       pos.forEach((x, i) => { if (x) out[v.classes.cells.cc3d[i]] = x; });
