@@ -195,7 +195,11 @@
     toDeath.addEventListener("click", () => view.cls && view.cls.death !== null && setTime(view.cls.death));
     context.addEventListener("change", () => { view.context = context.value; draw(view, false); });
 
+    // Asked first: three.js reports a missing WebGL as a console error.
+    const probe = document.createElement("canvas");
+    const webgl = typeof THREE !== "undefined" && (probe.getContext("webgl") || probe.getContext("experimental-webgl"));
     try {
+      if (!webgl) throw new Error("no WebGL");
       const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
       renderer.setPixelRatio(window.devicePixelRatio || 1);
       renderer.setClearColor(0xffffff);
