@@ -166,7 +166,7 @@
       html("i", { style: "background:" + typeColour(t) }, s);
       s.appendChild(document.createTextNode("type " + t + (f && f.name ? " " + f.name : "")));
     }
-    for (const [colour, text] of [["#222", "the class's edges"], ["#f2b701", "its triangles"], ["#00a651", "the cell that formed it"],
+    for (const [colour, text] of [["#222", "the class's edges (contacts of its cells when it formed)"], ["#f2b701", "its triangles"], ["#00a651", "the cell that formed it"],
       ["#c51b8a", "the cell that killed it"]]) {
       const s = html("span", {}, legend);
       html("i", { style: "background:" + colour }, s);
