@@ -166,8 +166,8 @@
       html("i", { style: "background:" + typeColour(t) }, s);
       s.appendChild(document.createTextNode("type " + t + (f && f.name ? " " + f.name : "")));
     }
-    for (const [colour, text] of [["#222", "the class's edges (contacts of its cells when it formed)"], ["#f2b701", "its triangles"], ["#00a651", "the cell that formed it"],
-      ["#c51b8a", "the cell that killed it"]]) {
+    for (const [colour, text] of [["#222", "the class's edges (contacts between its cells by the time it formed)"], ["#f2b701", "its triangles"], ["#00a651", "the contact that formed it"],
+      ["#c51b8a", "the contact that filled or merged it"]]) {
       const s = html("span", {}, legend);
       html("i", { style: "background:" + colour }, s);
       s.appendChild(document.createTextNode(text));
