@@ -57,7 +57,7 @@ void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
   }
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       << "<title>medusa report: " << xml_escape(names) << "</title>\n<style>\n"
-      << report_css << "</style>\n</head>\n<body>\n"
+      << report_css << report_classes_css << "</style>\n</head>\n<body>\n"
       << "<h1>medusa report</h1>\n<p class=\"sub\">" << xml_escape(names) << " · medusa " << medusa::version
       << "</p>\n"
       << "<section id=\"glance\">\n<h2>Did the cells sort, when, and at which radius?</h2>\n"
@@ -97,7 +97,10 @@ void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
       << "<script type=\"application/json\" id=\"report-data\">"
       << script_safe(data.dump(-1, ' ', true, nlohmann::ordered_json::error_handler_t::replace))
       << "</script>\n<script>\n"
-      << report_js << "</script>\n</body>\n</html>\n";
+      << report_js << "</script>\n<script>\n"
+      << three_js << "\n</script>\n<script>\n"
+      << three_orbit_controls_js << "\n</script>\n<script>\n"
+      << report_classes_js << "</script>\n</body>\n</html>\n";
 }
 
 } // namespace medusa::cli

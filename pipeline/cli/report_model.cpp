@@ -5,6 +5,7 @@
 #include "forward_counts.h"
 #include "interrupt.h"
 #include "report_answer.h"
+#include "report_classes.h"
 #include "run_summary.h"
 
 #include "medusa/core/error.h"
@@ -187,6 +188,8 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
   j["headlines"] = std::move(headlines);
   j["verdict"] = run_verdict(verdict_types, j["facts"]["radius"].get<std::string>());
   j["panels"] = std::move(panels);
+  // A handful per type and degree: the page's tables stay short, the rest is in `medusa classes`.
+  j["classes"] = report_classes(store, medusa, 5);
   return run;
 }
 

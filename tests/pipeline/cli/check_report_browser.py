@@ -4,7 +4,8 @@ no SEVERE console message; one panel per type and degree; in each panel as many 
 `medusa barcode --format csv --filtration forward` has pairs of that type and degree (capped by
 --max-bars); hovering bars shows the birth and death times and the CC3D ids of the cells that formed
 and killed the class, checked against the store itself (h5py: /persistence, /cells, /input); the
-CROCKER plot of a sweep next to the store is shown; the page renders (a non-blank screenshot).
+CROCKER plot of a sweep next to the store is shown; the page renders (a non-blank screenshot); the
+classes section agrees with `medusa classes` and `medusa at` (report_classes_check.py).
 
 The answer on top, for the sorting runs and the control at the default radius, `medusa run` +
 `medusa report` as a user types them: each run's verdict and each type's clusters at the first frame
@@ -14,7 +15,7 @@ type, and the table of clusters per radius equal those derived here from `medusa
 documented default radii; the page says the sweep was computed at report time; "joins", never
 "merges"; the H0 panels are zoomed to the joins.
 
-Usage: check_report_browser.py <medusa> <source dir> <workdir> [screenshot.png]"""
+Usage: check_report_browser.py <medusa> <source dir> <workdir> [screenshot.png [class.png]]"""
 import csv
 import io
 import os
@@ -34,9 +35,15 @@ from selenium.webdriver.chrome.options import Options
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 
+from report_classes_check import check_classes
+
 medusa, source, work = sys.argv[1:4]
 screenshot_copy = os.path.abspath(sys.argv[4]) if len(sys.argv) > 4 else None
+class_screenshot = os.path.abspath(sys.argv[5]) if len(sys.argv) > 5 else None
 MAX_BARS = 300
+# The class of sorting_3d selected last on one.html, whose 3D view is saved as the class screenshot:
+# (type, degree, class id as `medusa classes` lists it).
+CLASS_SHOWN = ("1", 1, 129)
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 os.chdir(work)
@@ -196,6 +203,7 @@ options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
 driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
 failures = []
 hovered = 0
+class_clicks = 0
 try:
     for page, stores in [("one.html", ["filed/sorting_3d"]), ("three.html", list(runs))]:
         driver.get("file://" + os.path.abspath(page))
@@ -271,6 +279,11 @@ try:
             if drawn_total == 0:
                 failures.append(f"{page} {name}: no bars drawn")
             print(f"{page} {name}: {drawn_total} bars in {len(expected)} panels with pairs")
+        class_clicks += check_classes(driver, call, page, stores, failures, class_screenshot if page == "one.html" else None,
+                                      CLASS_SHOWN)
+        severe = [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]
+        if severe:
+            failures.append(f"{page}: console errors after selecting classes {severe}")
         if page == "three.html":
             # The README's picture: tall enough for the answer and the first table of the radii.
             driver.set_window_size(1400, 1180)
@@ -307,9 +320,11 @@ try:
 finally:
     driver.quit()
 
-print(f"{hovered} hovers checked against the store")
+print(f"{hovered} hovers checked against the store, {class_clicks} classes selected")
 if hovered == 0:
     failures.append("no bar hovered")
+if class_clicks == 0:
+    failures.append("no class selected")
 for f in failures:
     print("FAIL:", f)
 sys.exit(1 if failures else 0)

@@ -1,0 +1,149 @@
+"""The classes section of a `medusa report` page, checked in the browser against `medusa classes` and
+`medusa at`: each table lists the longest-lived classes of its type and degree in the order of
+`medusa classes --sort lifetime` and says how many there are; clicking a row selects the class, and
+exactly the CC3D cells `medusa classes --format json` gives for it are drawn highlighted (read back
+through window.medusaReport and seen in the canvas as the type's colour); the positions the view
+interpolates at a time between frames are those `medusa at --time T` writes."""
+import json
+import time
+
+import numpy as np
+from PIL import Image
+
+TOP = 5
+
+
+def orange(p):  # type 1 of the page's 3D view (classes3d.js, #e6550d), shaded; not the pale context
+    r, g, b = p[:, 0], p[:, 1], p[:, 2]
+    return (r > 80) & (g < 0.5 * r) & (b < 0.25 * r)
+
+
+def blue(p):  # type 2 (#3182bd), shaded
+    r, g, b = p[:, 0], p[:, 1], p[:, 2]
+    return (b > 80) & (r < 0.4 * b) & (g < 0.8 * b)
+
+
+TYPE_COLOURS = {1: orange, 2: blue}
+
+
+def classes_json(call, store, label, dim):
+    text = call("classes", store, "--type", label, "--dim", str(dim), "--format", "json")
+    return json.loads(text)["classes"]
+
+
+def vtk_positions(path):
+    """{CC3D id: (x, y, z)} of the points of a legacy ASCII VTK file written by `medusa at`."""
+    tokens = open(path).read().split()
+    i = tokens.index("POINTS")
+    n = int(tokens[i + 1])
+    xyz = np.array([float(t) for t in tokens[i + 3:i + 3 + 3 * n]]).reshape(n, 3)
+    j = tokens.index("cell_id", tokens.index("POINT_DATA"))
+    # SCALARS cell_id int 1 / LOOKUP_TABLE default / values
+    k = tokens.index("default", j) + 1
+    ids = [int(t) for t in tokens[k:k + n]]
+    return dict(zip(ids, map(tuple, xyz)))
+
+
+def canvas_has_colour(view, colour, png):
+    view.find_element("css selector", "canvas").screenshot(png)
+    pixels = np.asarray(Image.open(png).convert("RGB")).reshape(-1, 3).astype(float)
+    return int(np.sum(colour(pixels)))
+
+
+def check_classes(driver, call, page, stores, failures, screenshot=None, shown=None):
+    """Checks the classes section of each run of the loaded page; returns the number of clicks checked.
+    `shown` = (type label, dim, class id) of sorting_3d is selected last and its view saved to `screenshot`."""
+    clicks = 0
+    for ri, name in enumerate(stores):
+        store = f"{name}.h5"
+        tables = driver.find_elements("css selector", f".class-table[data-run='{ri}']")
+        if len(tables) != 9:
+            failures.append(f"{page} {name}: {len(tables)} class tables, expected 9 (types all, 1, 2 x H0-H2)")
+        expected = {}
+        for table in tables:
+            label, dim = table.get_attribute("data-type"), int(table.get_attribute("data-dim"))
+            listed = classes_json(call, store, label, dim)
+            expected[(label, dim)] = {c["id"]: c for c in listed}
+            rows = table.find_elements("css selector", ".class-row")
+            ids = [int(r.get_attribute("data-class")) for r in rows]
+            want = [c["id"] for c in listed[:TOP]]
+            if ids != want or int(table.get_attribute("data-total")) != len(listed):
+                failures.append(f"{page} {name} type {label} H{dim}: rows {ids} of {table.get_attribute('data-total')}, "
+                                f"medusa classes lists {want} of {len(listed)}")
+        # Click the first row of each cell type's loops and cavities, and of the H0 table with the most
+        # rows of several cells; the selection must show exactly the class's cells.
+        picks = []
+        for label in ["1", "2", "all"]:
+            for dim in [1, 2, 0]:
+                rows = driver.find_elements("css selector",
+                                            f".class-row[data-run='{ri}'][data-type='{label}'][data-dim='{dim}']")
+                if rows and (dim > 0 or label != "all"):
+                    picks.append((label, dim, rows[min(1, len(rows) - 1)] if dim == 0 else rows[0]))
+        if shown and name == "sorting_3d":
+            label, dim, cid = shown
+            row = driver.find_elements("css selector",
+                                       f".class-row[data-run='{ri}'][data-type='{label}'][data-dim='{dim}'][data-class='{cid}']")
+            if not row:
+                failures.append(f"{page} {name}: class {cid} of type {label} H{dim} is not in its table")
+            else:
+                picks.append((label, dim, row[0]))
+        if not picks:
+            failures.append(f"{page} {name}: no class row to click")
+        view = driver.find_element("css selector", f".view3d[data-run='{ri}']")
+        for label, dim, row in picks:
+            cid = int(row.get_attribute("data-class"))
+            driver.execute_script("arguments[0].scrollIntoView({block: 'center'})", row)
+            row.click()
+            time.sleep(0.2)
+            got = driver.execute_script(f"return window.medusaReport.highlighted({ri})")
+            want = expected[(label, dim)].get(cid)
+            what = f"{page} {name} type {label} H{dim} class {cid}"
+            if want is None:
+                failures.append(f"{what}: not listed by medusa classes")
+                continue
+            selected = driver.find_elements("css selector", f".class-row.selected[data-run='{ri}']")
+            if len(selected) != 1 or selected[0] != row:
+                failures.append(f"{what}: {len(selected)} rows marked selected after the click")
+            if (got["type"], got["dim"], got["id"]) != (label, dim, cid):
+                failures.append(f"{what}: the view shows {got['type']} H{got['dim']} class {got['id']}")
+            if not got["webgl"]:
+                failures.append(f"{what}: no WebGL, the 3D view was not drawn")
+            if abs(got["time"] - want["birth"]) > 1e-9 * max(1, abs(want["birth"])):
+                failures.append(f"{what}: shown at MCS {got['time']}, born at {want['birth']}")
+            if sorted(got["cells"]) != want["cells"] or got["absent"]:
+                failures.append(f"{what}: highlighted {got['cells']} (absent {got['absent']}), "
+                                f"medusa classes: {want['cells']}")
+            if got["webgl"]:
+                types = set(driver.execute_script(f"return window.medusaReport.types({ri}, arguments[0])", want["cells"]))
+                for t in types:
+                    if t in TYPE_COLOURS and canvas_has_colour(view, TYPE_COLOURS[t], f"class_{ri}_{cid}.png") < 20:
+                        failures.append(f"{what}: no cell drawn in the colour of type {t} in the 3D view")
+            clicks += 1
+        if screenshot and shown and name == "sorting_3d":
+            driver.execute_script("arguments[0].scrollIntoView({block: 'start'})", view)
+            time.sleep(0.3)
+            view.screenshot("class_view.png")
+            Image.open("class_view.png").convert("RGB").save(screenshot, optimize=True)
+        # Positions between frames: those `medusa at` interpolates.
+        t0, t1 = driver.execute_script(f"return [window.medusaReport.range({ri})[0], window.medusaReport.range({ri})[1]]")
+        t = t0 + (t1 - t0) * 0.6173
+        call("at", store, "--time", repr(t), "-o", f"at_{ri}.vtk")
+        at = vtk_positions(f"at_{ri}.vtk")
+        page_xyz = driver.execute_script(f"return window.medusaReport.positions({ri}, arguments[0])", t)
+        worst = 0.0
+        for cid, x in at.items():
+            y = page_xyz.get(str(cid))
+            if y is None:
+                failures.append(f"{page} {name}: CC3D cell {cid} is in medusa at's complex at MCS {t} but not in the view")
+                break
+            worst = max(worst, max(abs(a - b) for a, b in zip(x, y)))
+        if not at or worst > 2e-3:
+            failures.append(f"{page} {name}: positions at MCS {t} differ from medusa at by {worst} ({len(at)} points)")
+        # The time input moves the view.
+        box = view.find_element("css selector", ".class-time-number")
+        driver.execute_script("arguments[0].value = arguments[1]; arguments[0].dispatchEvent(new Event('change'))", box, t)
+        if abs(driver.execute_script(f"return window.medusaReport.highlighted({ri}).time") - t) > 1e-6:
+            failures.append(f"{page} {name}: the time input did not move the view to MCS {t}")
+        print(f"{page} {name}: classes section: {len(tables)} tables, {len(picks)} classes clicked, "
+              f"positions at MCS {t:.4g} within {worst:.2g} of medusa at ({len(at)} cells)")
+    return clicks
