@@ -148,6 +148,7 @@ void write_classes(hid_t parent, const ClassRepresentatives& classes, std::size_
   write_int(group.get(), "format_version", classes_format_version, path);
   write_int(group.get(), "max_dimension", classes.options.max_dim, path);
   write_int(group.get(), "zero_length", classes.options.zero_length ? 1 : 0, path);
+  write_int(group.get(), "shortened", classes.options.shorten ? 1 : 0, path);
   write_column(group.get(), "row", std::vector<std::uint64_t>(classes.rows.begin(), classes.rows.end()),
                path);
   std::vector<std::uint64_t> offsets, values;
@@ -193,6 +194,9 @@ std::optional<ClassRepresentatives> read_classes(const std::string& store_path,
   ClassRepresentatives classes;
   classes.options.max_dim = static_cast<int>(read_int(group.get(), "max_dimension", store_path, at));
   classes.options.zero_length = read_int(group.get(), "zero_length", store_path, at) != 0;
+  // Stores written before shortening existed hold the unshortened cycles and no attribute.
+  classes.options.shorten =
+      H5Aexists(group.get(), "shortened") > 0 && read_int(group.get(), "shortened", store_path, at) != 0;
   const auto rows = read_column(group.get(), "row", store_path, at);
   for (std::size_t i = 0; i < rows.size(); ++i)
     check(rows[i] < points && (i == 0 || rows[i - 1] < rows[i]), store_path,

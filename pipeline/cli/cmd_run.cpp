@@ -57,6 +57,7 @@ struct RunArguments {
   bool audit = false, snap = false, exact_vtk = false, periodic_as_open = false, quiet = false,
        progress = false, force = false;
   bool skip_unreadable_frames = false;
+  bool shorten_representatives = false;
 };
 
 // --radius: 'auto' or a positive decimal (digits with at most one point, as the exact grid needs:
@@ -186,7 +187,8 @@ void write_temporary(const std::string& path, const std::string& shown,
 // Diagrams from the stored cells, so that what later commands see is what the summary describes.
 // Everything goes to the temporaries of `outputs`; nothing is published here.
 RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id, unsigned threads,
-                           ProgressMeter& meter, StageTimings& timings) {
+                           const persistence::RepresentativeOptions& representatives, ProgressMeter& meter,
+                           StageTimings& timings) {
   const std::string& store = outputs.store_temporary();
   meter.stage("medusa store: reading back " + outputs.final_name(0));
   StageClock clock;
@@ -211,8 +213,8 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   persistence::DiagramPhaseSeconds phases;
   // The forward diagrams are the summary's: their classes get representatives (docs/MATH.md §7.11).
   std::vector<persistence::ClassRepresentatives> classes;
-  result.diagrams =
-      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, threads, &phases, &classes);
+  result.diagrams = persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, threads, &phases,
+                                                         &classes, representatives);
   std::vector<persistence::Diagram>& diagrams = result.diagrams;
   const double both = phases.filtrations + phases.reduction;
   const double share = both > 0 ? phases.filtrations / both : 0.5;
@@ -449,7 +451,9 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   release_free_memory();
 
   check_interrupted();
-  const RunResult result = compute_diagrams(outputs, run_id, threads, meter, timings);
+  persistence::RepresentativeOptions representatives;
+  representatives.shorten = args.shorten_representatives;
+  const RunResult result = compute_diagrams(outputs, run_id, threads, representatives, meter, timings);
   if (!args.timings.empty())
     write_timings(outputs, run_id, resolved, data, radius, timings, stats, peak_rss_at_frame, result.facts,
                   threads);
@@ -500,6 +504,11 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
   run->add_flag("--skip-unreadable-frames", args->skip_unreadable_frames,
                 "go on, with a warning naming each, past LatticeData snapshots that cannot be read (dangling "
                 "link, FIFO, folder, no permission) or are missing from the series, instead of stopping");
+  run->add_flag("--shorten-representatives", args->shorten_representatives,
+                "store shortened class representatives (degrees 1 and 2: each cycle greedily reduced by "
+                "boundaries of cells entered before the class dies; the same class, not necessarily the "
+                "shortest cycle, docs/MATH.md §7.12); `medusa classes --shorten` does it for one diagram "
+                "on demand");
   run->add_flag("--audit", args->audit,
                 "check the kinetic structure against static CGAL computations (slow)");
   run->add_flag("--progress", args->progress,
