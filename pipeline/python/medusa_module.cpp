@@ -86,8 +86,8 @@ py::object diagrams(StoreView& store, const py::object& type, std::optional<int>
 py::object time_value(double t) { return py::float_(t); }
 
 py::list classes(StoreView& store, const py::object& type, std::optional<int> dim,
-                 const std::string& filtration, bool zero_length) {
-  const auto records = store.classes(direction_of(filtration), type_of(type), dim, zero_length);
+                 const std::string& filtration, bool zero_length, bool shorten) {
+  const auto records = store.classes(direction_of(filtration), type_of(type), dim, zero_length, shorten);
   py::list out;
   for (const persistence::ClassRecord& r : records) {
     py::dict c;
@@ -236,9 +236,10 @@ PYBIND11_MODULE(medusa, m) {
            "an array. layout='giotto': an (n, 3) array of (birth, death, degree). Essential classes have "
            "death inf (forward) or -inf (reverse, whose births are >= deaths: docs/MATH.md §7.3).")
       .def("classes", &classes, py::arg("type") = py::none(), py::arg("dim") = py::none(),
-           py::arg("filtration") = "forward", py::arg("zero_length") = false,
+           py::arg("filtration") = "forward", py::arg("zero_length") = false, py::arg("shorten") = false,
            "The classes with their representatives (docs/MATH.md §7.11), one dict each, in diagram order; "
-           "the keys of `medusa classes --format json`.")
+           "the keys of `medusa classes --format json`. shorten=True: shortened representatives, as "
+           "`medusa classes --shorten` (docs/MATH.md §7.12).")
       .def(
           "K_at",
           [](const StoreView& s, double t, std::optional<int> type) {

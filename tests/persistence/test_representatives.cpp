@@ -65,6 +65,15 @@ std::vector<CellSpec> square(double end) {
   return s;
 }
 
+// The square, filled at t=5 by the diagonal 02 and the triangles 012 and 023.
+std::vector<CellSpec> filled_square() {
+  auto s = square(6);
+  s.push_back({{0, 2}, vt(5, 0, 5), vt(6, 0, 6)});
+  s.push_back({{0, 1, 2}, vt(5, 0, 5), vt(6, 0, 6)});
+  s.push_back({{0, 2, 3}, vt(5, 0, 5), vt(6, 0, 6)});
+  return s;
+}
+
 // Octahedron: 0/1 = +-x, 2/3 = +-y, 4/5 = +-z. Edges: every pair but 01, 23, 45; triangles: one
 // vertex from each of {0,1}, {2,3}, {4,5}. All at t=0 except the triangle 135 at t=1.
 std::vector<CellSpec> hollow_octahedron(double end) {
@@ -102,11 +111,7 @@ std::set<CellId> octahedron_faces(const std::vector<Cell>& cells) {
 // R[012] = 01+12+02 leaves 01+12+23+03, low 03. So (03, 023) is the pair, t = (4, 5), and its
 // representative is exactly the square, whose last cell is the birth cell 03.
 TEST_CASE("A square that closes and is then filled is represented by its four edges") {
-  auto s = square(6);
-  s.push_back({{0, 2}, vt(5, 0, 5), vt(6, 0, 6)});
-  s.push_back({{0, 1, 2}, vt(5, 0, 5), vt(6, 0, 6)});
-  s.push_back({{0, 2, 3}, vt(5, 0, 5), vt(6, 0, 6)});
-  const auto cells = make_cells(s);
+  const auto cells = make_cells(filled_square());
   const auto classes = classes_of(cells, Direction::forward);
   const auto it = classes.find({1, id_of(cells, {0, 3})});
   REQUIRE(it != classes.end());
@@ -208,11 +213,7 @@ TEST_CASE("Two clusters merging: the younger one is the class's cluster and its 
 
 // Options: zero-length pairs on request, and degrees above max_dim left out.
 TEST_CASE("Representatives follow the options for zero-length pairs and degrees") {
-  auto s = square(6);
-  s.push_back({{0, 2}, vt(5, 0, 5), vt(6, 0, 6)});
-  s.push_back({{0, 1, 2}, vt(5, 0, 5), vt(6, 0, 6)});
-  s.push_back({{0, 2, 3}, vt(5, 0, 5), vt(6, 0, 6)});
-  const auto cells = make_cells(s);
+  const auto cells = make_cells(filled_square());
   const Filtration f = make_filtration(cells, Direction::forward);
   RepresentativeOptions all;
   all.zero_length = true;
@@ -305,11 +306,7 @@ TEST_CASE("An essential loop is shortened through a triangle entered after its b
 // In the square filled at t=5 (first case above) the only triangles sharing two edges with the square
 // use the diagonal 02, which enters after the birth cell 03: the square stays as it is.
 TEST_CASE("A loop is not shortened through edges entered after its birth") {
-  auto s = square(6);
-  s.push_back({{0, 2}, vt(5, 0, 5), vt(6, 0, 6)});
-  s.push_back({{0, 1, 2}, vt(5, 0, 5), vt(6, 0, 6)});
-  s.push_back({{0, 2, 3}, vt(5, 0, 5), vt(6, 0, 6)});
-  const auto cells = make_cells(s);
+  const auto cells = make_cells(filled_square());
   const auto shorter = classes_of(cells, Direction::forward, shortened()).at({1, id_of(cells, {0, 3})});
   CHECK(shorter.cycle == std::vector<CellId>{id_of(cells, {0, 1}), id_of(cells, {1, 2}), id_of(cells, {2, 3}),
                                              id_of(cells, {0, 3})});

@@ -57,15 +57,7 @@ def check_homologous(s, forward, pairs):
             z ^= 1 << index[s.row_of[x]]
         return z
     for kdim in {p[0] for p in pairs}:
-        pivots = {}
-
-        def reduce(col):
-            while col:
-                low = col.bit_length() - 1
-                if low not in pivots:
-                    return col
-                col ^= pivots[low]
-            return 0
+        boundaries = oracle.Boundaries()
         waiting = {}
         for dim, death, plain, short, label in pairs:
             if dim == kdim:
@@ -73,14 +65,12 @@ def check_homologous(s, forward, pairs):
                 waiting.setdefault(limit, []).append((bits(plain) ^ bits(short), label))
         for j, r in enumerate(members + [None]):
             for z, label in waiting.get(j, []):
-                assert reduce(z) == 0, f"{label}: shortened cycle not homologous to the unshortened one"
+                assert boundaries.reduce(z) == 0, f"{label}: shortened cycle not homologous to the unshortened one"
             if r is not None and dim_of(r) == kdim + 1:
                 col = 0
                 for fid in s.facets[s.foff[r]:s.foff[r + 1]]:
                     col ^= 1 << index[s.row_of[fid]]
-                col = reduce(col)
-                if col:
-                    pivots[col.bit_length() - 1] = col
+                boundaries.add(col)
 
 
 def main():
