@@ -1,6 +1,7 @@
 # `cmake --install build --prefix DIR`: the `medusa` binary, the static libraries with their public
 # headers and a CMake package (find_package(medusa): medusa::core, medusa::kinetic, medusa::medusa,
-# medusa::persistence, medusa::io), the documentation and the examples with the bundled run.
+# medusa::persistence, medusa::io), the Python module, the documentation and the examples with the
+# bundled run.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -19,6 +20,17 @@ install(TARGETS medusa_core medusa_kinetic medusa_medusa medusa_persistence medu
         EXPORT medusaTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS medusa RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+
+# The Python module goes where Debian's /usr/bin/python3 looks for a prefix's modules:
+# <prefix>/lib/python3.X/dist-packages is on its default sys.path for the prefixes /usr/local and /usr;
+# for any other prefix, PYTHONPATH=<prefix>/lib/python3.X/dist-packages (README, "Install").
+if(TARGET medusa_python)
+  set(Python3_EXECUTABLE /usr/bin/python3)
+  find_package(Python3 COMPONENTS Interpreter REQUIRED)
+  set(MEDUSA_INSTALL_PYTHONDIR lib/python${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}/dist-packages
+      CACHE STRING "where `cmake --install` puts the Python module medusa, relative to the prefix")
+  install(TARGETS medusa_python LIBRARY DESTINATION ${MEDUSA_INSTALL_PYTHONDIR})
+endif()
 
 foreach(dir libcore/include libkinetic/include libmedusa/include libpersistence/include pipeline/io/include)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

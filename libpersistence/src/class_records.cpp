@@ -26,6 +26,12 @@ std::string diagram_name(Direction direction, int cell_type) {
   return diagram_group_name(d);
 }
 
+Filtration filtration_of(const medusa::Medusa& medusa, const std::vector<int>& vertex_type,
+                         Direction direction, int cell_type) {
+  return cell_type == all_types ? make_filtration(medusa.cells, direction)
+                                : make_type_filtration(medusa.cells, vertex_type, cell_type, direction);
+}
+
 } // namespace
 
 double ClassRecord::lifetime() const {
@@ -75,15 +81,19 @@ DiagramWithClasses diagram_with_classes(const std::string& store_path, const med
         c.rows.resize(kept);
         c.cycles.resize(kept);
         c.clusters.resize(kept);
+        // Shortened cycles stay so: they are what the store holds, and as valid (docs/MATH.md §7.13).
+        const bool shortened = c.options.shorten;
         c.options = options;
+        c.options.shorten = shortened;
+        if (options.shorten && !shortened)
+          shorten_representatives(medusa.cells, filtration_of(medusa, vertex_type, direction, cell_type),
+                                  out.diagram, c);
         return out;
       }
     throw StoreError("store " + store_path + ": /persistence/" + name + "/classes without its diagram");
   }
-  const Filtration f = cell_type == all_types
-                           ? make_filtration(medusa.cells, direction)
-                           : make_type_filtration(medusa.cells, vertex_type, cell_type, direction);
-  return compute_diagram_with_classes(medusa.cells, f, options);
+  return compute_diagram_with_classes(medusa.cells, filtration_of(medusa, vertex_type, direction, cell_type),
+                                      options);
 }
 
 std::vector<ClassRecord> class_records(const medusa::Medusa& medusa, const DiagramWithClasses& classes) {

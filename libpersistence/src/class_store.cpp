@@ -62,6 +62,7 @@ void write_classes(hid_t parent, const ClassRepresentatives& classes, std::size_
   h5::write_attribute(group.get(), "format_version", classes_format_version, path);
   h5::write_attribute(group.get(), "max_dimension", std::int64_t{classes.options.max_dim}, path);
   h5::write_attribute(group.get(), "zero_length", std::int64_t{classes.options.zero_length ? 1 : 0}, path);
+  h5::write_attribute(group.get(), "shortened", std::int64_t{classes.options.shorten ? 1 : 0}, path);
   h5::write_column(group.get(), "row", std::vector<std::uint64_t>(classes.rows.begin(), classes.rows.end()),
                    path);
   std::vector<std::uint64_t> offsets, values;
@@ -108,6 +109,9 @@ std::optional<ClassRepresentatives> read_classes(const std::string& store_path,
   classes.options.max_dim =
       static_cast<int>(h5::read_int_attribute(group.get(), "max_dimension", store_path));
   classes.options.zero_length = h5::read_int_attribute(group.get(), "zero_length", store_path) != 0;
+  // Stores written before shortening existed hold the unshortened cycles and no attribute.
+  classes.options.shorten = H5Aexists(group.get(), "shortened") > 0 &&
+                            h5::read_int_attribute(group.get(), "shortened", store_path) != 0;
   const auto rows = h5::read_column<std::uint64_t>(group.get(), at.substr(1), "row", store_path);
   for (std::size_t i = 0; i < rows.size(); ++i)
     check(rows[i] < points && (i == 0 || rows[i - 1] < rows[i]), store_path,

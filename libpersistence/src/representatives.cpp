@@ -3,10 +3,13 @@
 #include "medusa/core/error.h"
 #include "medusa/persistence/boundary_matrix.h"
 
+#include "cycle_shortening.h"
+
 #include <phat/algorithms/twist_reduction.h>
 
 #include <algorithm>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -214,6 +217,14 @@ bool is_cycle(const Filtration& f, const Chain& z) {
   return true;
 }
 
+// The defining properties that are cheap to check (docs/MATH.md §7.11): a cycle whose last cell is the
+// birth cell. Not being a boundary before the death follows from the pivots, and is kept by shortening.
+void check_cycle(const Filtration& f, Index birth, const Chain& z) {
+  if (z.empty() || z.back() != birth || !is_cycle(f, z))
+    throw InternalError("representatives: the cycle of the class born at filtration index " +
+                        std::to_string(birth) + " is not a cycle ending at its birth cell");
+}
+
 std::vector<medusa::CellId> cell_ids(const std::vector<medusa::Cell>& cells, const Filtration& f,
                                      const Chain& z) {
   std::vector<medusa::CellId> ids;
@@ -250,16 +261,19 @@ DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>&
   std::vector<Chain> cycles(classes.rows.size()), clusters(classes.rows.size());
   degree_zero(filtration, diagram, classes.rows, cycles, clusters);
   EssentialCycles essential(matrix, filtration, pairs);
+  std::optional<detail::Cofaces> cofaces;
+  if (options.shorten && options.max_dim >= 1)
+    cofaces.emplace(filtration, options.max_dim);
   for (std::size_t i = 0; i < classes.rows.size(); ++i) {
     const PersistencePair& p = diagram.pairs[classes.rows[i]];
     if (p.dim == 0)
       continue;
     cycles[i] = p.essential ? essential.cycle_of(p.birth_index) : reduced_column(matrix, p.death_index);
-    // The defining properties that are cheap to check (docs/MATH.md §7.11): a cycle whose last cell is
-    // the birth cell. Not being a boundary before the death follows from the pivots.
-    if (cycles[i].empty() || cycles[i].back() != p.birth_index || !is_cycle(filtration, cycles[i]))
-      throw InternalError("representatives: the cycle of the class born at filtration index " +
-                          std::to_string(p.birth_index) + " is not a cycle ending at its birth cell");
+    // Cells added by shortening enter before the death, or anywhere for an essential class (§7.13).
+    if (cofaces)
+      detail::shorten_cycle(filtration, *cofaces,
+                            p.essential ? static_cast<Index>(filtration.size()) : p.death_index, cycles[i]);
+    check_cycle(filtration, p.birth_index, cycles[i]);
   }
   classes.cycles.reserve(cycles.size());
   classes.clusters.reserve(cycles.size());
@@ -270,6 +284,41 @@ DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>&
     Chain().swap(clusters[i]);
   }
   return out;
+}
+
+void shorten_representatives(const std::vector<medusa::Cell>& cells, const Filtration& filtration,
+                             const Diagram& diagram, ClassRepresentatives& classes) {
+  if (!classes.options.shorten && classes.options.max_dim >= 1) {
+    std::unordered_map<medusa::CellId, Index> index_of;
+    index_of.reserve(filtration.size());
+    for (std::size_t j = 0; j < filtration.size(); ++j)
+      index_of.emplace(cells[filtration.cells[j]].id, static_cast<Index>(j));
+    const detail::Cofaces cofaces(filtration, classes.options.max_dim);
+    for (std::size_t i = 0; i < classes.size(); ++i) {
+      const PersistencePair& p = diagram.pairs.at(classes.rows[i]);
+      if (p.dim == 0)
+        continue;
+      // Stored diagrams keep cell ids, not filtration indices: both are looked up.
+      const auto index = [&](medusa::CellId id) {
+        const auto it = index_of.find(id);
+        if (it == index_of.end())
+          throw InputError("representatives: cell " + std::to_string(id) + " of the class born at cell " +
+                           std::to_string(p.birth_cell) + " is not in its diagram's filtration");
+        return it->second;
+      };
+      Chain z;
+      z.reserve(classes.cycles[i].size());
+      for (medusa::CellId id : classes.cycles[i])
+        z.push_back(index(id));
+      std::sort(z.begin(), z.end());
+      const Index birth = index(p.birth_cell);
+      detail::shorten_cycle(filtration, cofaces,
+                            p.essential ? static_cast<Index>(filtration.size()) : index(p.death_cell), z);
+      check_cycle(filtration, birth, z);
+      classes.cycles[i] = cell_ids(cells, filtration, z);
+    }
+  }
+  classes.options.shorten = true;
 }
 
 } // namespace medusa::persistence

@@ -31,6 +31,7 @@ struct ClassesArguments {
   std::string format = "table";
   std::string output;
   bool zero_length = false;
+  bool shorten = false;
 };
 
 // Cells shown per list in the table before "...".
@@ -97,7 +98,7 @@ nlohmann::json time_json(double t) {
 }
 
 void write_classes_json(std::ostream& out, const std::vector<persistence::ClassRecord>& records,
-                        int cell_type, persistence::Direction direction) {
+                        int cell_type, persistence::Direction direction, bool shortened) {
   nlohmann::json list = nlohmann::json::array();
   for (const persistence::ClassRecord& r : records) {
     nlohmann::json death_kind =
@@ -121,6 +122,7 @@ void write_classes_json(std::ostream& out, const std::vector<persistence::ClassR
   }
   out << nlohmann::json{{"type", type_label(cell_type)},
                         {"direction", direction_name(direction)},
+                        {"shortened", shortened},
                         {"classes", list}}
              .dump(1)
       << '\n';
@@ -136,6 +138,7 @@ void classes_command(const ClassesArguments& args) {
   persistence::RepresentativeOptions options;
   options.max_dim = args.dim ? *args.dim : 2;
   options.zero_length = args.zero_length;
+  options.shorten = args.shorten;
   const persistence::DiagramWithClasses classes =
       persistence::diagram_with_classes(args.store, medusa, direction, cell_type, options);
   std::vector<persistence::ClassRecord> records;
@@ -149,7 +152,7 @@ void classes_command(const ClassesArguments& args) {
     if (args.format == "csv")
       write_classes_csv(out, records);
     else if (args.format == "json")
-      write_classes_json(out, records, cell_type, direction);
+      write_classes_json(out, records, cell_type, direction, classes.classes.options.shorten);
     else
       write_table(out, records);
   };
@@ -201,10 +204,16 @@ void add_classes_command(CLI::App& app) {
   classes->add_option("-o,--output", args->output, "output file (default: stdout)");
   classes->add_flag("--zero-length", args->zero_length,
                     "also the zero-length classes (birth and death in the same batch)");
-  classes->footer("A class's representative is a cycle of medusa cells born with it (docs/MATH.md §7.11): "
-                  "for degree 0 the cells of the cluster that merged, for degrees 1 and 2 the cells on the "
-                  "loop or the shell. Stored by `medusa run` for the forward diagrams (degrees 0-2); "
-                  "computed on demand for the others.");
+  classes->add_flag("--shorten", args->shorten,
+                    "shorter representatives of degrees 1 and 2: each cycle greedily reduced by boundaries "
+                    "of cells entered before the class dies, as long as it gets shorter; the same class, "
+                    "not necessarily the shortest cycle (docs/MATH.md §7.13)");
+  classes->footer(
+      "A class's representative is a cycle of medusa cells born with it (docs/MATH.md §7.11): "
+      "for degree 0 the cells of the cluster that merged, for degrees 1 and 2 the cells on the "
+      "loop or the shell. Stored by `medusa run` for the forward diagrams (degrees 0-2); "
+      "computed on demand for the others. A store written with `medusa run --shorten-representatives` holds "
+      "shortened cycles and lists them with or without --shorten.");
   classes->callback([args] { classes_command(*args); });
 }
 

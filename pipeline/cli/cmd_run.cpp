@@ -4,6 +4,7 @@
 #include "diagram_export.h"
 #include "diagram_selection.h"
 #include "interrupt.h"
+#include "kinetic_stage.h"
 #include "progress_meter.h"
 #include "run_input.h"
 #include "run_outputs.h"
@@ -57,6 +58,7 @@ struct RunArguments {
   bool audit = false, snap = false, exact_vtk = false, periodic_as_open = false, quiet = false,
        progress = false, force = false;
   bool skip_unreadable_frames = false;
+  bool shorten_representatives = false;
 };
 
 // --radius: 'auto' or a positive decimal (digits with at most one point, as the exact grid needs:
@@ -75,41 +77,33 @@ std::string radius_problem(const std::string& value) {
   return "";
 }
 
-// Forwards the event stream to the builder; reports progress and polls for interrupts. It also
-// times the builder (which streams the store) apart from the kinetic engine that calls it.
-// libkinetic reports t_end with the batch index of the last event batch, while the builder wants
-// the end strictly after every batch (docs/MATH.md §6.2: cells alive at t_end die at the final virtual
-// time); the end is then given the next batch index.
+// Forwards the event stream to the builder (through EndAfterLastBatch, which also polls for
+// interrupts) and reports progress. It also times the builder (which streams the store) apart from
+// the kinetic engine that calls it.
 class ProgressObserver : public kinetic::Observer {
 public:
   ProgressObserver(kinetic::Observer& next, const kinetic::KineticAlphaComplex& engine, ProgressMeter& meter,
                    std::size_t frames)
       : next_(next), engine_(engine), meter_(meter), frames_(frames) {}
   void initial(const kinetic::EventTime& t0, const std::vector<kinetic::Simplex>& complex) override {
-    last_batch_ = t0.batch;
     timed([&] { next_.initial(t0, complex); });
     peak_rss_at_frame_.push_back(peak_rss_bytes());
     meter_.update(1, 0);
   }
   void batch(const kinetic::EventTime& time, const std::vector<kinetic::Step>& steps) override {
-    check_interrupted();
-    last_batch_ = std::max(last_batch_, time.batch);
     timed([&] { next_.batch(time, steps); });
     meter_.update(frames_reached_, engine_.statistics().events());
   }
   void frame(std::size_t k, const kinetic::EventTime& time) override {
-    check_interrupted();
     timed([&] { next_.frame(k, time); });
     frames_reached_ = k + 1;
     peak_rss_at_frame_.push_back(peak_rss_bytes());
     meter_.update(frames_reached_, engine_.statistics().events());
   }
   void finish(const kinetic::EventTime& t_end) override {
-    kinetic::EventTime end = t_end;
-    end.batch = std::max(end.batch, last_batch_ + 1);
     meter_.finish_kinetic(engine_.statistics().events());
     meter_.stage("medusa store: closing");
-    timed([&] { next_.finish(end); });
+    timed([&] { next_.finish(t_end); });
     peak_rss_at_frame_.push_back(peak_rss_bytes());
   }
   // Wall seconds spent in the builder and the store writer.
@@ -132,7 +126,6 @@ private:
   ProgressMeter& meter_;
   std::size_t frames_;
   std::size_t frames_reached_ = 1;
-  std::size_t last_batch_ = 0;
   double builder_seconds_ = 0.0;
   std::vector<std::int64_t> peak_rss_at_frame_;
 };
@@ -187,7 +180,8 @@ void write_temporary(const std::string& path, const std::string& shown,
 // Diagrams from the stored cells, so that what later commands see is what the summary describes.
 // Everything goes to the temporaries of `outputs`; nothing is published here.
 RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id, unsigned threads,
-                           ProgressMeter& meter, StageTimings& timings) {
+                           const persistence::RepresentativeOptions& representatives, ProgressMeter& meter,
+                           StageTimings& timings) {
   const std::string& store = outputs.store_temporary();
   meter.stage("medusa store: reading back " + outputs.final_name(0));
   StageClock clock;
@@ -212,8 +206,8 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   persistence::DiagramPhaseSeconds phases;
   // The forward diagrams are the summary's: their classes get representatives (docs/MATH.md §7.11).
   std::vector<persistence::ClassRepresentatives> classes;
-  result.diagrams =
-      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, threads, &phases, &classes);
+  result.diagrams = persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, threads, &phases,
+                                                         &classes, representatives);
   std::vector<persistence::Diagram>& diagrams = result.diagrams;
   const double both = phases.filtrations + phases.reduction;
   const double share = both > 0 ? phases.filtrations / both : 0.5;
@@ -401,16 +395,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
                 << " trajectories of periodic copies of cells near them (docs/MATH.md §8)\n";
   }
 
-  medusa::RunInfo info;
-  info.radius = std::stod(radius);
-  info.radius_text = radius;
-  info.source_files = data.sources;
-  info.command_line = command_line;
-  info.software_version = medusa::version;
-  info.position_source = data.position_convention;
-  info.snap_policy = data.used == io::RunSource::vtk && data.snap.snapped ? "nearest-ties-to-even" : "exact";
-  info.snapped_positions = static_cast<std::uint64_t>(data.snap.moved);
-  info.snap_max_displacement = data.snap.max_displacement();
+  medusa::RunInfo info = run_info(data, radius, command_line);
   info.run_id = run_id;
   if (cover) {
     info.periodic_axes = data.domain.axes();
@@ -434,7 +419,8 @@ void run_command(const RunArguments& args, const std::string& command_line) {
       beside.emplace(builder);
     kinetic::Observer& store_side = beside ? static_cast<kinetic::Observer&>(*beside) : builder;
     meter.start_kinetic(data.trajectories.frames());
-    ProgressObserver observer(store_side, engine, meter, data.trajectories.frames());
+    EndAfterLastBatch ended(store_side);
+    ProgressObserver observer(ended, engine, meter, data.trajectories.frames());
     std::optional<periodic::CanonicalFilter> torus;
     if (cover)
       torus.emplace(*cover, observer);
@@ -454,7 +440,9 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   release_free_memory();
 
   check_interrupted();
-  const RunResult result = compute_diagrams(outputs, run_id, threads, meter, timings);
+  persistence::RepresentativeOptions representatives;
+  representatives.shorten = args.shorten_representatives;
+  const RunResult result = compute_diagrams(outputs, run_id, threads, representatives, meter, timings);
   if (!args.timings.empty())
     write_timings(outputs, run_id, resolved, data, radius, timings, stats, peak_rss_at_frame, result.facts,
                   threads);
@@ -506,6 +494,11 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
   run->add_flag("--skip-unreadable-frames", args->skip_unreadable_frames,
                 "go on, with a warning naming each, past LatticeData snapshots that cannot be read (dangling "
                 "link, FIFO, folder, no permission) or are missing from the series, instead of stopping");
+  run->add_flag("--shorten-representatives", args->shorten_representatives,
+                "store shortened class representatives (degrees 1 and 2: each cycle greedily reduced by "
+                "boundaries of cells entered before the class dies; the same class, not necessarily the "
+                "shortest cycle, docs/MATH.md §7.13); `medusa classes --shorten` does it for one diagram "
+                "on demand");
   run->add_flag("--audit", args->audit,
                 "check the kinetic structure against static CGAL computations (slow)");
   run->add_flag("--progress", args->progress,

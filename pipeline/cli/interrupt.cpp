@@ -1,10 +1,12 @@
 #include "interrupt.h"
 
+#include <atomic>
 #include <csignal>
 
 namespace medusa::cli {
 namespace {
 volatile std::sig_atomic_t interrupted = 0;
+std::atomic<InterruptHook> hook{nullptr};
 extern "C" void on_signal(int) { interrupted = 1; }
 } // namespace
 
@@ -16,6 +18,10 @@ void install_interrupt_handlers() {
 void check_interrupted() {
   if (interrupted != 0)
     throw Interrupted();
+  if (const InterruptHook h = hook.load(); h != nullptr && h())
+    throw Interrupted();
 }
+
+void set_interrupt_hook(InterruptHook h) { hook.store(h); }
 
 } // namespace medusa::cli

@@ -12,7 +12,13 @@ public:
 };
 
 void install_interrupt_handlers();
-// Throws Interrupted if a signal arrived.
+// Throws Interrupted if a signal arrived, or if the interrupt hook says so.
 void check_interrupted();
+
+// A further source of interrupts that check_interrupted() polls, on the thread that calls it: returns
+// true when the work is to stop. The Python module installs one that asks the interpreter for pending
+// signals (its own SIGINT handling stays in place). nullptr removes it.
+using InterruptHook = bool (*)();
+void set_interrupt_hook(InterruptHook hook);
 
 } // namespace medusa::cli

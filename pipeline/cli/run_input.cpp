@@ -2,6 +2,7 @@
 
 #include "medusa/core/error.h"
 
+#include "medusa/core/version.h"
 #include "medusa/io/cell_volumes.h"
 
 #include <cstdio>
@@ -53,6 +54,21 @@ std::pair<std::string, std::string> radius_from_volumes(const io::RunData& data)
                 data.trajectories.dimension == 2 ? "disc" : "ball", volume,
                 data.trajectories.dimension == 2 ? "pixels" : "voxels");
   return {buffer, note};
+}
+
+medusa::RunInfo run_info(const io::RunData& data, const std::string& radius,
+                         const std::string& command_line) {
+  medusa::RunInfo info;
+  info.radius = std::stod(radius);
+  info.radius_text = radius;
+  info.source_files = data.sources;
+  info.command_line = command_line;
+  info.software_version = medusa::version;
+  info.position_source = data.position_convention;
+  info.snap_policy = data.used == io::RunSource::vtk && data.snap.snapped ? "nearest-ties-to-even" : "exact";
+  info.snapped_positions = static_cast<std::uint64_t>(data.snap.moved);
+  info.snap_max_displacement = data.snap.max_displacement();
+  return info;
 }
 
 } // namespace medusa::cli

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "medusa/io/run_reader.h"
+#include "medusa/medusa/run_info.h"
 
 #include <string>
 #include <utility>
@@ -19,5 +20,10 @@ io::RunSource choose_source(const std::string& input, const std::string& source)
 // --radius auto (docs/MATH.md §7.10): the equivalent-sphere (disc in 2D) radius of the median cell
 // volume as decimal text with 6 digits, and how it was chosen, for the summary.
 std::pair<std::string, std::string> radius_from_volumes(const io::RunData& data);
+
+// What the store records of a run read as `data` at radius `radius` (decimal text): radius, sources,
+// positions and their snapping, command line and version. The caller adds the run id and the periodic
+// axes when there are any.
+medusa::RunInfo run_info(const io::RunData& data, const std::string& radius, const std::string& command_line);
 
 } // namespace medusa::cli

@@ -1,6 +1,7 @@
 // The Python module `medusa`: open a store, read its persistence diagrams as numpy arrays (GUDHI's
 // and giotto-tda's layouts), its classes with the CompuCell3D cells that make them (docs/MATH.md §7.11),
 // the complexes K(t) and the Betti curves; run the pipeline in-process (pipeline/python/README.md).
+#include "interrupt.h"
 #include "python_run.h"
 #include "python_store.h"
 
@@ -12,6 +13,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -84,8 +86,8 @@ py::object diagrams(StoreView& store, const py::object& type, std::optional<int>
 py::object time_value(double t) { return py::float_(t); }
 
 py::list classes(StoreView& store, const py::object& type, std::optional<int> dim,
-                 const std::string& filtration, bool zero_length) {
-  const auto records = store.classes(direction_of(filtration), type_of(type), dim, zero_length);
+                 const std::string& filtration, bool zero_length, bool shorten) {
+  const auto records = store.classes(direction_of(filtration), type_of(type), dim, zero_length, shorten);
   py::list out;
   for (const persistence::ClassRecord& r : records) {
     py::dict c;
@@ -143,8 +145,43 @@ std::shared_ptr<StoreView> open_store(const std::string& path) {
   return std::make_shared<StoreView>(path);
 }
 
+// Ctrl-C during medusa.run: Python's own SIGINT handler only sets a flag while the GIL is released,
+// so the pipeline's interrupt hook asks the interpreter (at most every 50 ms) to run its pending
+// signal handlers. The exception a handler raised (KeyboardInterrupt by default) is kept here while
+// the pipeline unwinds, removing its temporary store, and raised again when medusa.run returns.
+struct PendingSignal {
+  PyObject* type = nullptr;
+  PyObject* value = nullptr;
+  PyObject* traceback = nullptr;
+};
+PendingSignal pending_signal; // guarded by the GIL
+
+bool python_signal_raised() {
+  using clock = std::chrono::steady_clock;
+  static thread_local clock::time_point next{};
+  const clock::time_point now = clock::now();
+  if (now < next)
+    return false;
+  next = now + std::chrono::milliseconds(50);
+  py::gil_scoped_acquire gil;
+  if (PyErr_CheckSignals() == 0)
+    return false;
+  PyErr_Fetch(&pending_signal.type, &pending_signal.value, &pending_signal.traceback);
+  return true;
+}
+
+// Installs the hook for the duration of one medusa.run.
+class SignalHook {
+public:
+  SignalHook() { medusa::cli::set_interrupt_hook(&python_signal_raised); }
+  ~SignalHook() { medusa::cli::set_interrupt_hook(nullptr); }
+  SignalHook(const SignalHook&) = delete;
+  SignalHook& operator=(const SignalHook&) = delete;
+};
+
 std::shared_ptr<StoreView> run(const std::string& input, const py::object& radius, const std::string& output,
-                               const std::string& source, bool snap, unsigned threads, bool force) {
+                               const std::string& source, bool snap, unsigned threads, bool force,
+                               bool shorten_representatives) {
   RunRequest request;
   request.input = input;
   request.radius =
@@ -154,8 +191,10 @@ std::shared_ptr<StoreView> run(const std::string& input, const py::object& radiu
   request.snap = snap;
   request.threads = threads;
   request.force = force;
+  request.shorten_representatives = shorten_representatives;
   std::string path;
   {
+    const SignalHook hook;
     py::gil_scoped_release release;
     path = run_pipeline(request, "medusa.run(" + input + ", radius=" + request.radius + ") [python]");
     return std::make_shared<StoreView>(path);
@@ -171,6 +210,18 @@ PYBIND11_MODULE(medusa, m) {
       "medusa: exact topology of CompuCell3D cell-sorting runs (docs/MATH.md); see pipeline/python/README.md";
   auto error = py::register_exception<medusa::Error>(m, "Error", PyExc_RuntimeError);
   (void)error;
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p)
+        std::rethrow_exception(p);
+    } catch (const medusa::cli::Interrupted&) {
+      if (pending_signal.type != nullptr)
+        PyErr_Restore(pending_signal.type, pending_signal.value, pending_signal.traceback);
+      else
+        PyErr_SetNone(PyExc_KeyboardInterrupt);
+      pending_signal = PendingSignal{};
+    }
+  });
 
   py::class_<StoreView, std::shared_ptr<StoreView>>(m, "Store", "A medusa store (run.h5) read into memory")
       .def_property_readonly("path", &StoreView::path)
@@ -185,9 +236,10 @@ PYBIND11_MODULE(medusa, m) {
            "an array. layout='giotto': an (n, 3) array of (birth, death, degree). Essential classes have "
            "death inf (forward) or -inf (reverse, whose births are >= deaths: docs/MATH.md §7.3).")
       .def("classes", &classes, py::arg("type") = py::none(), py::arg("dim") = py::none(),
-           py::arg("filtration") = "forward", py::arg("zero_length") = false,
+           py::arg("filtration") = "forward", py::arg("zero_length") = false, py::arg("shorten") = false,
            "The classes with their representatives (docs/MATH.md §7.11), one dict each, in diagram order; "
-           "the keys of `medusa classes --format json`.")
+           "the keys of `medusa classes --format json`. shorten=True: shortened representatives, as "
+           "`medusa classes --shorten` (docs/MATH.md §7.13).")
       .def(
           "K_at",
           [](const StoreView& s, double t, std::optional<int> type) {
@@ -204,7 +256,9 @@ PYBIND11_MODULE(medusa, m) {
   m.def("open", &open_store, py::arg("path"), "Open a store written by `medusa run` or medusa.run");
   m.def("run", &run, py::arg("input"), py::arg("radius") = "auto", py::arg("output") = "",
         py::arg("source") = "", py::arg("snap") = false, py::arg("threads") = 0, py::arg("force") = false,
+        py::arg("shorten_representatives") = false,
         "Run the pipeline of `medusa run` in this process (the GIL is released) on a CC3D output folder "
         "or cells.csv[.gz], write the store (default <input name>.h5; an existing one only with force=True) "
-        "and return it opened");
+        "and return it opened. Ctrl-C stops it with KeyboardInterrupt and leaves no store. "
+        "shorten_representatives: as `medusa run --shorten-representatives` (docs/MATH.md §7.13).");
 }

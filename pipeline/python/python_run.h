@@ -8,18 +8,20 @@
 namespace medusa::python {
 
 struct RunRequest {
-  std::string input;           // CC3D output folder or cells.csv[.gz]
-  std::string radius = "auto"; // decimal, or "auto": the equivalent radius of the median cell volume
-  std::string output;          // the store to write (default: <input name>.h5 in the working folder)
-  std::string source;          // "", "csv" or "vtk", as `medusa run --source`
-  bool snap = false;           // as `medusa run --snap`
-  unsigned threads = 0;        // 0: one per hardware thread
-  bool force = false;          // replace an existing store (as `medusa run --force`)
+  std::string input;                    // CC3D output folder or cells.csv[.gz]
+  std::string radius = "auto";          // decimal, or "auto": the equivalent radius of the median cell volume
+  std::string output;                   // the store to write (default: <input name>.h5 in the working folder)
+  std::string source;                   // "", "csv" or "vtk", as `medusa run --source`
+  bool snap = false;                    // as `medusa run --snap`
+  unsigned threads = 0;                 // 0: one per hardware thread
+  bool force = false;                   // replace an existing store (as `medusa run --force`)
+  bool shorten_representatives = false; // as `medusa run --shorten-representatives`
 };
 
 // Runs the pipeline and returns the path of the complete store. An existing store is an InputError
-// unless `force`. Throws medusa::Error (a failed run leaves no store: StoreWriter deletes its
-// temporary file).
+// unless `force`. Polls cli::check_interrupted() (throws cli::Interrupted). Throws medusa::Error; a
+// failed or interrupted run leaves no store (nor replaces an existing one): the store is published
+// only once complete with its diagrams.
 std::string run_pipeline(const RunRequest& request, const std::string& command_line);
 
 } // namespace medusa::python

@@ -74,10 +74,12 @@ const persistence::Diagram& StoreView::diagram(persistence::Direction direction,
 }
 
 std::vector<persistence::ClassRecord> StoreView::classes(persistence::Direction direction, int cell_type,
-                                                         std::optional<int> dim, bool zero_length) {
+                                                         std::optional<int> dim, bool zero_length,
+                                                         bool shorten) {
   persistence::RepresentativeOptions options;
   options.max_dim = dim ? *dim : 2;
   options.zero_length = zero_length;
+  options.shorten = shorten;
   std::vector<persistence::ClassRecord> out;
   for (persistence::ClassRecord& r : persistence::class_records(
            medusa_, persistence::diagram_with_classes(path_, medusa_, direction, cell_type, options)))

@@ -27,9 +27,10 @@ public:
   // for a type that does not occur.
   const persistence::Diagram& diagram(persistence::Direction direction, int cell_type);
 
-  // The classes of that diagram in degree `dim` (or 0-2), with their representatives.
+  // The classes of that diagram in degree `dim` (or 0-2), with their representatives, shortened on
+  // request (docs/MATH.md §7.13; a store written with shortened ones holds only those).
   std::vector<persistence::ClassRecord> classes(persistence::Direction direction, int cell_type,
-                                                std::optional<int> dim, bool zero_length);
+                                                std::optional<int> dim, bool zero_length, bool shorten);
 
   // K(t+) (K(t_end-) at the end, docs/MATH.md §6.6) as simplices of CC3D cell ids, sorted by dimension
   // then ids; the type-X subcomplex when `type` is given. Throws InputError outside [t_0, t_end].

@@ -3,6 +3,7 @@
 #   check_install.sh install  <build dir> <work dir>           install into <work dir>/prefix
 #   check_install.sh run      <work dir>                       the installed medusa on the installed example
 #   check_install.sh consumer <work dir> <consumer source> <version>   find_package(medusa) in a new project
+#   check_install.sh python   <work dir> <python dir>          /usr/bin/python3 imports the installed module
 set -eu
 step=$1
 case $step in
@@ -48,6 +49,30 @@ consumer)
   echo "$out" | grep -q "^medusa $version\$" || { echo "wrong version" >&2; exit 1; }
   echo "$out" | grep -q "^store version $version, 251 trajectories, $expected_cells medusa cells\$" ||
     { echo "the consumer does not read the store as medusa info does" >&2; exit 1; }
+  echo "ok"
+  ;;
+python)
+  work=$2 pythondir=$3
+  prefix=$work/prefix
+  test -d "$prefix/$pythondir" || { echo "no $pythondir under the prefix" >&2; exit 1; }
+  # The module's folder is on /usr/bin/python3's default path for the prefixes /usr/local and /usr.
+  /usr/bin/python3 -c "import sys; assert '/usr/local/$pythondir' in sys.path and '/usr/$pythondir' in sys.path, sys.path" ||
+    { echo "/usr/bin/python3 does not look in <prefix>/$pythondir" >&2; exit 1; }
+  # The installed module (not the build tree's) reads the store of the installed medusa; its diagrams
+  # have as many points as `medusa barcode` lists.
+  expected=$("$prefix/bin/medusa" barcode "$work/x.h5" --format csv | grep -c ',all,forward$' || true)
+  cd "$work"
+  PYTHONPATH=$prefix/$pythondir /usr/bin/python3 - "$prefix" "$work/x.h5" "$expected" <<'PY'
+import sys
+import medusa
+prefix, store, expected = sys.argv[1], sys.argv[2], int(sys.argv[3])
+assert medusa.__file__.startswith(prefix + "/"), f"imported {medusa.__file__}, not the installed module"
+s = medusa.open(store)
+points = sum(len(a) for a in s.diagrams().values())
+assert expected > 0 and points == expected, f"{points} points, medusa barcode lists {expected}"
+assert len(s.classes(type=1, dim=1)) > 0
+print(f"imported {medusa.__file__}: {points} points")
+PY
   echo "ok"
   ;;
 esac

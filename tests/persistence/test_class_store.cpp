@@ -29,7 +29,7 @@ struct StoredRun {
   std::vector<ClassRepresentatives> classes;
 };
 
-StoredRun make_store(const std::string& name) {
+StoredRun make_store(const std::string& name, const RepresentativeOptions& representatives = {}) {
   StoredRun run{temp_path(name), {}, {}};
   const kinetic::Trajectories t = kinetic::testing::random_walk(91, 24, 4, 5800, 600);
   kinetic::KineticOptions options;
@@ -48,7 +48,8 @@ StoredRun make_store(const std::string& name) {
   std::vector<int> vertex_type;
   for (const kinetic::Trajectory& c : m.input.cells)
     vertex_type.push_back(c.type);
-  run.diagrams = compute_medusa_diagrams(m.cells, vertex_type, {1, 2}, 1, nullptr, &run.classes);
+  run.diagrams =
+      compute_medusa_diagrams(m.cells, vertex_type, {1, 2}, 1, nullptr, &run.classes, representatives);
   std::vector<const ClassRepresentatives*> stored;
   for (std::size_t i = 0; i < run.diagrams.size(); ++i)
     stored.push_back(run.diagrams[i].direction == Direction::forward ? &run.classes[i] : nullptr);
@@ -94,6 +95,39 @@ TEST_CASE("Stored class representatives read back as they were computed, for the
   CHECK(stored.classes.cycles == fresh.classes.cycles);
   CHECK(stored.classes.clusters == fresh.classes.clusters);
   CHECK_THROWS_AS(diagram_with_classes(run.path, m, Direction::forward, 9, {}), InputError);
+}
+
+// Shortened cycles (docs/MATH.md §7.13) are stored as such and read back as such; asked for on a
+// store of unshortened ones, they are shortened on reading, to what a shortened run stores.
+TEST_CASE("Stored representatives say whether they are shortened, and shortening on reading matches") {
+  RepresentativeOptions shorten;
+  shorten.shorten = true;
+  const StoredRun plain = make_store("classes_plain.h5");
+  const StoredRun shortened = make_store("classes_shortened.h5", shorten);
+  const medusa::Medusa m = medusa::read_store(plain.path);
+  for (int type : {all_types, 1, 2}) {
+    Diagram d;
+    d.cell_type = type;
+    const auto stored_plain = read_classes(plain.path, diagram_group_name(d));
+    const auto stored_short = read_classes(shortened.path, diagram_group_name(d));
+    REQUIRE(stored_plain.has_value());
+    REQUIRE(stored_short.has_value());
+    CHECK_FALSE(stored_plain->options.shorten);
+    CHECK(stored_short->options.shorten);
+    const DiagramWithClasses on_reading =
+        diagram_with_classes(plain.path, m, Direction::forward, type, shorten);
+    CHECK(on_reading.classes.options.shorten);
+    CHECK(on_reading.classes.rows == stored_short->rows);
+    CHECK(on_reading.classes.cycles == stored_short->cycles);
+    REQUIRE(stored_short->size() == stored_plain->size());
+    for (std::size_t i = 0; i < stored_plain->size(); ++i)
+      CHECK(stored_short->cycles[i].size() <= stored_plain->cycles[i].size());
+    // Without --shorten a shortened store still gives its shortened cycles, marked so.
+    const DiagramWithClasses as_stored =
+        diagram_with_classes(shortened.path, m, Direction::forward, type, {});
+    CHECK(as_stored.classes.options.shorten);
+    CHECK(as_stored.classes.cycles == stored_short->cycles);
+  }
 }
 
 TEST_CASE("Class representatives whose rows run past their diagram are a store error") {

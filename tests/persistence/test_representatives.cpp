@@ -38,9 +38,10 @@ struct Found {
 };
 
 // The represented classes of positive length or essential, by (dim, birth cell).
-std::map<std::pair<int, CellId>, Found> classes_of(const std::vector<Cell>& cells, Direction direction) {
+std::map<std::pair<int, CellId>, Found> classes_of(const std::vector<Cell>& cells, Direction direction,
+                                                   const RepresentativeOptions& options = {}) {
   const Filtration f = make_filtration(cells, direction);
-  const DiagramWithClasses d = compute_diagram_with_classes(cells, f);
+  const DiagramWithClasses d = compute_diagram_with_classes(cells, f, options);
   std::map<std::pair<int, CellId>, Found> out;
   for (std::size_t i = 0; i < d.classes.size(); ++i) {
     const PersistencePair& p = d.diagram.pairs[d.classes.rows[i]];
@@ -61,6 +62,15 @@ std::vector<CellSpec> square(double end) {
   s.push_back({{1, 2}, vt(2, 0, 2), vt(e, 0, end)});
   s.push_back({{2, 3}, vt(3, 0, 3), vt(e, 0, end)});
   s.push_back({{0, 3}, vt(4, 0, 4), vt(e, 0, end)});
+  return s;
+}
+
+// The square, filled at t=5 by the diagonal 02 and the triangles 012 and 023.
+std::vector<CellSpec> filled_square() {
+  auto s = square(6);
+  s.push_back({{0, 2}, vt(5, 0, 5), vt(6, 0, 6)});
+  s.push_back({{0, 1, 2}, vt(5, 0, 5), vt(6, 0, 6)});
+  s.push_back({{0, 2, 3}, vt(5, 0, 5), vt(6, 0, 6)});
   return s;
 }
 
@@ -101,11 +111,7 @@ std::set<CellId> octahedron_faces(const std::vector<Cell>& cells) {
 // R[012] = 01+12+02 leaves 01+12+23+03, low 03. So (03, 023) is the pair, t = (4, 5), and its
 // representative is exactly the square, whose last cell is the birth cell 03.
 TEST_CASE("A square that closes and is then filled is represented by its four edges") {
-  auto s = square(6);
-  s.push_back({{0, 2}, vt(5, 0, 5), vt(6, 0, 6)});
-  s.push_back({{0, 1, 2}, vt(5, 0, 5), vt(6, 0, 6)});
-  s.push_back({{0, 2, 3}, vt(5, 0, 5), vt(6, 0, 6)});
-  const auto cells = make_cells(s);
+  const auto cells = make_cells(filled_square());
   const auto classes = classes_of(cells, Direction::forward);
   const auto it = classes.find({1, id_of(cells, {0, 3})});
   REQUIRE(it != classes.end());
@@ -207,11 +213,7 @@ TEST_CASE("Two clusters merging: the younger one is the class's cluster and its 
 
 // Options: zero-length pairs on request, and degrees above max_dim left out.
 TEST_CASE("Representatives follow the options for zero-length pairs and degrees") {
-  auto s = square(6);
-  s.push_back({{0, 2}, vt(5, 0, 5), vt(6, 0, 6)});
-  s.push_back({{0, 1, 2}, vt(5, 0, 5), vt(6, 0, 6)});
-  s.push_back({{0, 2, 3}, vt(5, 0, 5), vt(6, 0, 6)});
-  const auto cells = make_cells(s);
+  const auto cells = make_cells(filled_square());
   const Filtration f = make_filtration(cells, Direction::forward);
   RepresentativeOptions all;
   all.zero_length = true;
@@ -228,4 +230,98 @@ TEST_CASE("Representatives follow the options for zero-length pairs and degrees"
   for (std::size_t r : low.classes.rows)
     CHECK(low.diagram.pairs[r].dim == 0);
   CHECK(low.classes.size() == 4); // three merges of positive length and the survivor
+}
+
+namespace {
+
+RepresentativeOptions shortened() {
+  RepresentativeOptions o;
+  o.shorten = true;
+  return o;
+}
+
+// Square 0-1-2-3 with the chord 02 from the start: vertices at t=0; edges 01, 02, 12, 23 at t=1 (12
+// closes the triangle loop 0-1-2); 03 at t=2 closes the square; the triangle 012 fills the triangle
+// loop at t=3; at t=4 the edge 13 and the triangles 013, 123.
+std::vector<CellSpec> square_with_chord() {
+  std::vector<CellSpec> s;
+  for (int v = 0; v < 4; ++v)
+    s.push_back({{v}, vt(0, 0, 0), vt(5, 0, 5)});
+  for (std::vector<kinetic::VertexId> e : {std::vector<kinetic::VertexId>{0, 1}, {0, 2}, {1, 2}, {2, 3}})
+    s.push_back({e, vt(1, 0, 1), vt(5, 0, 5)});
+  s.push_back({{0, 3}, vt(2, 0, 2), vt(5, 0, 5)});
+  s.push_back({{0, 1, 2}, vt(3, 0, 3), vt(5, 0, 5)});
+  s.push_back({{1, 3}, vt(4, 0, 4), vt(5, 0, 5)});
+  s.push_back({{0, 1, 3}, vt(4, 0, 4), vt(5, 0, 5)});
+  s.push_back({{1, 2, 3}, vt(4, 0, 4), vt(5, 0, 5)});
+  return s;
+}
+
+} // namespace
+
+// In square_with_chord the loop born with 03 (t=2) dies at t=4: 13 is killed at once by 013 (low 13),
+// and ∂123 = 12+13+23 has low 13, so adding R[013] = 01+03+13 leaves 01+12+23+03, low 03: the reduced
+// column is the square. The triangle 012 entered before the death and its edges before 03; it shares
+// 01 and 12 with the square, so adding its boundary 01+02+12 leaves 02+23+03 (three edges). Then no
+// triangle entered before 123 with all edges before 03 shares two edges with it (013 has the edge 13,
+// entered after 03; 123 is the death cell): the shortened cycle is 02+23+03.
+TEST_CASE("A loop is shortened through a filled triangle whose edges entered before its birth") {
+  const auto cells = make_cells(square_with_chord());
+  const CellId birth = id_of(cells, {0, 3});
+  const auto plain = classes_of(cells, Direction::forward).at({1, birth});
+  CHECK(plain.pair.death_cell == id_of(cells, {1, 2, 3}));
+  CHECK(plain.cycle ==
+        std::vector<CellId>{id_of(cells, {0, 1}), id_of(cells, {1, 2}), id_of(cells, {2, 3}), birth});
+  const auto shorter = classes_of(cells, Direction::forward, shortened()).at({1, birth});
+  CHECK(shorter.pair.death_cell == id_of(cells, {1, 2, 3}));
+  CHECK(shorter.cycle == std::vector<CellId>{id_of(cells, {0, 2}), id_of(cells, {2, 3}), birth});
+  // The triangle loop's representative R[012] is its boundary already.
+  CHECK(classes_of(cells, Direction::forward, shortened()).at({1, id_of(cells, {1, 2})}).cycle ==
+        std::vector<CellId>{id_of(cells, {0, 1}), id_of(cells, {0, 2}), id_of(cells, {1, 2})});
+}
+
+// Vertices at t=0; edges 01, 12, 23 at t=1 (a path), the chord 02 at t=2, 03 at t=3, the triangle 012
+// at t=4, and nothing fills the rest. The loop born with 03 is essential; its cycle from the columns
+// (03 + W(23) + W(12) + W(01), each W the edge itself) is the square. Adding ∂012 = 01+12+02 (012
+// enters after 03, but every edge of it before) leaves 02+23+03, in filtration order 23, 02, 03.
+TEST_CASE("An essential loop is shortened through a triangle entered after its birth") {
+  std::vector<CellSpec> s;
+  for (int v = 0; v < 4; ++v)
+    s.push_back({{v}, vt(0, 0, 0), vt(5, 0, 5)});
+  for (std::vector<kinetic::VertexId> e : {std::vector<kinetic::VertexId>{0, 1}, {1, 2}, {2, 3}})
+    s.push_back({e, vt(1, 0, 1), vt(5, 0, 5)});
+  s.push_back({{0, 2}, vt(2, 0, 2), vt(5, 0, 5)});
+  s.push_back({{0, 3}, vt(3, 0, 3), vt(5, 0, 5)});
+  s.push_back({{0, 1, 2}, vt(4, 0, 4), vt(5, 0, 5)});
+  const auto cells = make_cells(s);
+  const CellId birth = id_of(cells, {0, 3});
+  const auto plain = classes_of(cells, Direction::forward).at({1, birth});
+  REQUIRE(plain.pair.essential);
+  CHECK(plain.cycle ==
+        std::vector<CellId>{id_of(cells, {0, 1}), id_of(cells, {1, 2}), id_of(cells, {2, 3}), birth});
+  const auto shorter = classes_of(cells, Direction::forward, shortened()).at({1, birth});
+  CHECK(shorter.cycle == std::vector<CellId>{id_of(cells, {2, 3}), id_of(cells, {0, 2}), birth});
+}
+
+// In the square filled at t=5 (first case above) the only triangles sharing two edges with the square
+// use the diagonal 02, which enters after the birth cell 03: the square stays as it is.
+TEST_CASE("A loop is not shortened through edges entered after its birth") {
+  const auto cells = make_cells(filled_square());
+  const auto shorter = classes_of(cells, Direction::forward, shortened()).at({1, id_of(cells, {0, 3})});
+  CHECK(shorter.cycle == std::vector<CellId>{id_of(cells, {0, 1}), id_of(cells, {1, 2}), id_of(cells, {2, 3}),
+                                             id_of(cells, {0, 3})});
+}
+
+// Shortening stored cycles afterwards gives what shortening while computing them gives, and marks them.
+TEST_CASE("Shortening computed representatives afterwards equals shortening them at once") {
+  const auto cells = make_cells(square_with_chord());
+  const Filtration f = make_filtration(cells, Direction::forward);
+  DiagramWithClasses plain = compute_diagram_with_classes(cells, f);
+  const DiagramWithClasses at_once = compute_diagram_with_classes(cells, f, shortened());
+  CHECK_FALSE(plain.classes.options.shorten);
+  shorten_representatives(cells, f, plain.diagram, plain.classes);
+  CHECK(plain.classes.options.shorten);
+  CHECK(plain.classes.rows == at_once.classes.rows);
+  CHECK(plain.classes.cycles == at_once.classes.cycles);
+  CHECK(plain.classes.clusters == at_once.classes.clusters);
 }

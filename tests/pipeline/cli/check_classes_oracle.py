@@ -28,6 +28,27 @@ if not __debug__:
     sys.exit("these checks are assert statements: run without -O and without PYTHONOPTIMIZE")
 
 
+class Boundaries:
+    """Z/2 columns (Python integers, bit j = filtration index j) added one by one and kept reduced: a
+    column reduces to zero exactly when it is a sum of the columns added so far."""
+
+    def __init__(self):
+        self.pivots = {}
+
+    def reduce(self, col):
+        while col:
+            low = col.bit_length() - 1
+            if low not in self.pivots:
+                return col
+            col ^= self.pivots[low]
+        return 0
+
+    def add(self, col):
+        col = self.reduce(col)
+        if col:
+            self.pivots[col.bit_length() - 1] = col
+
+
 class Store:
     """The cells of a store, read with h5py alone (docs/FORMAT.md)."""
 
@@ -116,15 +137,8 @@ def check_classes(s, name, forward, cell_type, entries):
     # Rank test: eliminate the boundaries of (k+1)-cells in filtration order; just before a class's
     # death cell enters its cycle must not reduce to zero, and right after it must.
     for kdim, classes in by_dim.items():
-        pivots = {}
-
-        def reduce(col):
-            while col:
-                low = col.bit_length() - 1
-                if low not in pivots:
-                    return col
-                col ^= pivots[low]
-            return 0
+        boundaries = Boundaries()
+        reduce = boundaries.reduce
         dying = defaultdict(list)
         for death, z, where in classes:
             dying[death].append((z, where))
@@ -132,9 +146,7 @@ def check_classes(s, name, forward, cell_type, entries):
             for z, where in dying.get(j, []):
                 assert reduce(z) != 0, f"{where}: a boundary before its death cell"
             if dim_of(r) == kdim + 1:
-                col = reduce(boundary_bits(r))
-                if col:
-                    pivots[col.bit_length() - 1] = col
+                boundaries.add(boundary_bits(r))
             for z, where in dying.get(j, []):
                 assert reduce(z) == 0, f"{where}: not a boundary once its death cell has entered"
         for z, where in dying.get(None, []):

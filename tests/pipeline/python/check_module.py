@@ -72,7 +72,9 @@ def check_classes(binary, store, s):
     total = 0
     for options, kwargs in ((["--type", "all"], {}), (["--type", "1"], {"type": 1}),
                             (["--type", "2", "--filtration", "reverse"], {"type": 2, "filtration": "reverse"}),
-                            (["--dim", "0"], {"dim": 0})):
+                            (["--dim", "0"], {"dim": 0}), (["--shorten"], {"shorten": True}),
+                            (["--type", "1", "--filtration", "reverse", "--shorten"],
+                             {"type": 1, "filtration": "reverse", "shorten": True})):
         listed = json.loads(cli(binary, "classes", store, "--format", "json", *options))["classes"]
         got = s.classes(**kwargs)
         assert len(got) == len(listed) > 0, (options, len(got), len(listed))

@@ -32,7 +32,9 @@ struct ClassRecord {
 
 // The diagram (direction, cell type or all_types) of the medusa read from `store_path`, with the
 // representatives of its classes in degrees 0..options.max_dim: those stored under /persistence when
-// they cover the options, else computed from the cells (and then not stored). Throws InputError for
+// they cover the options, else computed from the cells (and then not stored). With options.shorten
+// the cycles are shortened (docs/MATH.md §7.13); stored shortened cycles are returned as they are, and
+// result.classes.options.shorten says which kind was returned. Throws InputError for
 // a type that does not occur in the store, StoreError for a malformed /persistence group.
 DiagramWithClasses diagram_with_classes(const std::string& store_path, const medusa::Medusa& medusa,
                                         Direction direction, int cell_type,

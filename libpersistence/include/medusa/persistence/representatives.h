@@ -16,6 +16,9 @@ namespace medusa::persistence {
 struct RepresentativeOptions {
   int max_dim = 2;          // homology degrees 0..max_dim
   bool zero_length = false; // also the zero-length pairs (on the diagonal)
+  // Degrees >= 1: shorten each cycle greedily by boundaries of the filtration (docs/MATH.md §7.13);
+  // shorter, homologous before the death, not necessarily the shortest.
+  bool shorten = false;
 };
 
 // The representatives of one diagram, aligned with its points: entry i belongs to
@@ -50,5 +53,12 @@ struct DiagramWithClasses {
 DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>& cells,
                                                 const Filtration& filtration,
                                                 const RepresentativeOptions& options = {});
+
+// Shortens the representatives `classes` of `diagram` in place, as options.shorten does, and marks them
+// shortened; `diagram` and `classes` are those of `filtration` over `cells` (stored ones, for example).
+// Throws InputError for a cycle cell outside the filtration, InternalError when a shortened cycle
+// fails its defining properties (a bug).
+void shorten_representatives(const std::vector<medusa::Cell>& cells, const Filtration& filtration,
+                             const Diagram& diagram, ClassRepresentatives& classes);
 
 } // namespace medusa::persistence
