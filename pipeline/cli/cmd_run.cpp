@@ -11,6 +11,7 @@
 #include "side_outputs.h"
 #include "stage_timings.h"
 #include "svg_plot.h"
+#include "wrapping_summary.h"
 
 #include "medusa/core/error.h"
 #include "medusa/core/version.h"
@@ -467,6 +468,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   outputs.publish();
   const std::vector<std::string> warnings =
       write_run_summary(std::cout, result.medusa, stats, result.diagrams, radius, radius_note);
+  write_wrapping_loops(std::cout, result.medusa, outputs.final_name(0));
   if (!args.quiet)
     for (const std::string& w : warnings)
       std::cerr << "medusa: warning: " << w << "\n";

@@ -79,6 +79,17 @@ def hand(medusa, work):
         lengths = [int(f.attrs["periodic_length_" + a]) for a in "xyz"]
         assert lengths == [10000000, 0, 0], lengths
     print("ok: ring closing across the seam: one H1 class born at MCS 80")
+    # Its representative winds once along x (docs/MATH.md §8.8): the summary and `medusa classes` say so.
+    p = subprocess.run([medusa, "run", folder, "--radius", "1.1", "-o", os.path.join(work, "ring_words.h5")],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    assert "1 of 1 loop of all cells wraps around the domain along x (not a hole in the tissue" in p.stdout, p.stdout
+    p = subprocess.run([medusa, "classes", os.path.join(work, "ring.h5"), "--dim", "1", "--format", "csv"],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    classes = list(csv.DictReader(io.StringIO(p.stdout)))
+    assert [r["wraps"] for r in classes] == ["x"], p.stdout
+    print("ok: its loop wraps around the domain along x, in the summary and in medusa classes")
 
     # The same ring translated by 3 along x and wrapped: other cells are now the originals near the
     # seam, and the ring closes across another pair. The torus is the same: the same medusa.
