@@ -15,6 +15,7 @@
 #include "medusa/core/version.h"
 #include "medusa/io/run_reader.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "medusa/periodic/periodic_cover.h"
 #include "medusa/persistence/medusa_diagrams.h"
 
 #include <algorithm>
@@ -150,11 +151,11 @@ struct RadiusResult {
 };
 
 RadiusResult sweep_one(const kinetic::Trajectories& trajectories, const medusa::RunInfo& base,
-                       const std::string& radius) {
+                       const std::string& radius, const io::PeriodicDomain& domain) {
   medusa::RunInfo info = base;
   info.radius_text = radius;
   info.radius = std::stod(radius);
-  const medusa::Medusa medusa = medusa_in_memory(trajectories, info);
+  const medusa::Medusa medusa = medusa_in_memory(trajectories, info, domain);
   check_interrupted();
   RadiusResult result;
   result.radius = radius;
@@ -173,7 +174,8 @@ RadiusResult sweep_one(const kinetic::Trajectories& trajectories, const medusa::
 // Every radius on a pool of `workers` threads; the first error (an interrupt first) is rethrown here
 // once all have stopped.
 std::vector<RadiusResult> sweep_all(const kinetic::Trajectories& trajectories, const medusa::RunInfo& info,
-                                    const std::vector<std::string>& radii, unsigned workers, bool quiet) {
+                                    const std::vector<std::string>& radii, const io::PeriodicDomain& domain,
+                                    unsigned workers, bool quiet) {
   std::vector<RadiusResult> results(radii.size());
   std::vector<std::exception_ptr> errors(radii.size());
   std::atomic<std::size_t> next{0};
@@ -182,7 +184,7 @@ std::vector<RadiusResult> sweep_all(const kinetic::Trajectories& trajectories, c
   auto work = [&] {
     for (std::size_t i = next++; i < radii.size() && !failed; i = next++) {
       try {
-        results[i] = sweep_one(trajectories, info, radii[i]);
+        results[i] = sweep_one(trajectories, info, radii[i], domain);
         if (!quiet) {
           const std::lock_guard<std::mutex> lock(print);
           std::cerr << "medusa sweep: radius " << radii[i] << " done\n";
@@ -265,12 +267,19 @@ void sweep_command(const SweepArguments& args) {
   options.source = choose_source(args.input, args.source);
   options.snap = args.snap;
   options.allow_periodic_as_open = args.periodic_as_open;
+  options.read_periodic = !args.periodic_as_open;
   const io::RunData data = io::read_run(args.input, options);
   if (!args.quiet)
     for (const std::string& w : data.warnings)
       std::cerr << "medusa: warning: " << w << "\n";
-  for (const std::string& r : radii) // bad radius text fails here, before any work
-    (void)kinetic::squared_radius_from_decimal(r, data.trajectories.scale);
+  // Bad radius text, and on a periodic run a radius too large for the period (docs/MATH.md §8.3),
+  // fail here, before any work.
+  for (const std::string& r : radii) {
+    const kinetic::SquaredRadius rho2 = kinetic::squared_radius_from_decimal(r, data.trajectories.scale);
+    if (data.domain.any() && !args.periodic_as_open)
+      periodic::check_periodic_radius(data.domain, rho2, r);
+  }
+  const io::PeriodicDomain domain = args.periodic_as_open ? io::PeriodicDomain{} : data.domain;
   medusa::RunInfo info;
   info.source_files = data.sources;
   info.software_version = medusa::version;
@@ -278,7 +287,8 @@ void sweep_command(const SweepArguments& args) {
   if (!args.quiet)
     std::cerr << "medusa sweep: " << radii.size() << " radii on "
               << std::min<std::size_t>(workers, radii.size()) << " thread(s)\n";
-  const std::vector<RadiusResult> results = sweep_all(data.trajectories, info, radii, workers, args.quiet);
+  const std::vector<RadiusResult> results =
+      sweep_all(data.trajectories, info, radii, domain, workers, args.quiet);
 
   std::vector<CrockerRow> rows;
   for (const RadiusResult& r : results)
