@@ -95,8 +95,10 @@ void TorusAudit::batch(const kinetic::EventTime& time, const std::vector<kinetic
 }
 
 void TorusAudit::frame(std::size_t k, const kinetic::EventTime& time) {
-  audit_until(k, 0.0);
+  // Unless a batch at the frame has just audited it, the complex held since the last batch is
+  // audited up to the frame.
   if (slab_ < k) {
+    audit_until(k, 0.0);
     slab_ = k;
     u_ = 0.0;
   }
