@@ -41,50 +41,60 @@ std::array<std::int64_t, 3> cycle_winding(const medusa::Medusa& medusa,
   // number of periods n between v's copy at the edge's end and v itself is constant and is read off
   // the unwrapped difference at any moment of that life, rounded to the nearest period (the rounding
   // has a margin of L/4, far above the doubles' error).
-  struct Edge {
-    kinetic::VertexId u, v;
-    std::array<std::int64_t, 3> periods; // going from u to v
-    bool used = false;
-  };
-  std::vector<Edge> edges;
-  std::map<kinetic::VertexId, std::vector<std::size_t>> at;
+  // Over Z/2 only the parity of the sum of the n_a along the cycle is defined: it is the image of
+  // the cycle in H1(torus; Z/2), zero for a boundary (docs/MATH.md §8.8).
   for (medusa::CellId id : cycle) {
     const medusa::Cell& c = medusa.cell(id);
     if (c.dim() != 1)
       return {};
-    Edge e{c.vertices[0], c.vertices[1], {}, false};
-    const auto pu = position_at(medusa.input, e.u, c.birth.time);
-    const auto pv = position_at(medusa.input, e.v, c.birth.time);
+    const auto pu = position_at(medusa.input, c.vertices[0], c.birth.time);
+    const auto pv = position_at(medusa.input, c.vertices[1], c.birth.time);
     for (std::size_t a = 0; a < 3; ++a)
       if (lengths[a] > 0)
-        e.periods[a] = -std::llround((pv[a] - pu[a]) / static_cast<double>(lengths[a]));
-    at[e.u].push_back(edges.size());
-    at[e.v].push_back(edges.size());
-    edges.push_back(e);
-  }
-  // Over Z/2 every vertex of the cycle has even degree: walk it as closed walks, each edge once in
-  // the direction of travel (the winding of the walks adds up).
-  for (std::size_t start = 0; start < edges.size(); ++start) {
-    if (edges[start].used)
-      continue;
-    kinetic::VertexId here = edges[start].u;
-    std::size_t next = start;
-    while (true) {
-      Edge& e = edges[next];
-      e.used = true;
-      const bool forward = e.u == here;
-      for (std::size_t a = 0; a < 3; ++a)
-        winding[a] += forward ? e.periods[a] : -e.periods[a];
-      here = forward ? e.v : e.u;
-      const auto& around = at[here];
-      const auto it =
-          std::find_if(around.begin(), around.end(), [&](std::size_t i) { return !edges[i].used; });
-      if (it == around.end())
-        break;
-      next = *it;
-    }
+        winding[a] ^= std::llround((pv[a] - pu[a]) / static_cast<double>(lengths[a])) & 1;
   }
   return winding;
+}
+
+std::vector<std::string> class_wrapping_axes(const medusa::Medusa& medusa,
+                                             const DiagramWithClasses& classes) {
+  const ClassRepresentatives& reps = classes.classes;
+  std::vector<std::string> out(reps.size());
+  if (medusa.run.periodic_axes.empty())
+    return out;
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < reps.size(); ++i)
+    if (classes.diagram.pairs[reps.rows[i]].dim == 1)
+      order.push_back(i);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return classes.diagram.pairs[reps.rows[a]].birth_index < classes.diagram.pairs[reps.rows[b]].birth_index;
+  });
+  // Gaussian elimination over Z/2 in birth order: an essential class may take the sum of its
+  // representative and older essential ones, which keeps its birth (the elder rule); so it wraps only
+  // where its winding is not that of a sum of older wrapping classes.
+  std::vector<std::pair<unsigned, unsigned>> basis; // (winding bits, pivot bit)
+  for (std::size_t i : order) {
+    const auto w = cycle_winding(medusa, reps.cycles[i]);
+    unsigned bits = 0;
+    for (std::size_t a = 0; a < 3; ++a)
+      bits |= static_cast<unsigned>(w[a] & 1) << a;
+    const bool essential = classes.diagram.pairs[reps.rows[i]].death_index < 0;
+    if (essential)
+      for (const auto& [b, pivot] : basis)
+        if (bits & pivot)
+          bits ^= b;
+    if (essential && bits != 0) {
+      unsigned pivot = 1;
+      while (!(bits & pivot))
+        pivot <<= 1;
+      basis.emplace_back(bits, pivot);
+    }
+    std::array<std::int64_t, 3> reduced{};
+    for (std::size_t a = 0; a < 3; ++a)
+      reduced[a] = (bits >> a) & 1;
+    out[i] = winding_axes(reduced);
+  }
+  return out;
 }
 
 std::string winding_axes(const std::array<std::int64_t, 3>& winding) {

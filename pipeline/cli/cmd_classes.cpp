@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -72,14 +73,18 @@ void sort_records(std::vector<persistence::ClassRecord>& records, const std::str
 // On a periodic run, per record: the axes its loop wraps around ("x", "x,y"; "-" for none), else empty.
 using Wraps = std::vector<std::string>;
 
-Wraps wrapping_axes(const medusa::Medusa& medusa, const std::vector<persistence::ClassRecord>& records) {
+Wraps wrapping_axes(const medusa::Medusa& medusa, const persistence::DiagramWithClasses& classes,
+                    const std::vector<persistence::ClassRecord>& records) {
   Wraps wraps;
   if (medusa.run.periodic_axes.empty())
     return wraps;
+  const std::vector<std::string> axes = persistence::class_wrapping_axes(medusa, classes);
+  std::map<std::size_t, std::string> by_row;
+  for (std::size_t i = 0; i < classes.classes.size(); ++i)
+    by_row[classes.classes.rows[i]] = axes[i];
   for (const persistence::ClassRecord& r : records) {
-    const std::string axes =
-        r.dim == 1 ? persistence::winding_axes(persistence::cycle_winding(medusa, r.cycle)) : "";
-    wraps.push_back(axes.empty() ? "-" : axes);
+    const std::string& a = by_row[r.id];
+    wraps.push_back(a.empty() ? "-" : a);
   }
   return wraps;
 }
@@ -175,7 +180,7 @@ void classes_command(const ClassesArguments& args) {
   sort_records(records, args.sort, direction == persistence::Direction::forward);
   if (args.top > 0 && records.size() > args.top)
     records.resize(args.top);
-  const Wraps wraps = wrapping_axes(medusa, records);
+  const Wraps wraps = wrapping_axes(medusa, classes, records);
   auto write = [&](std::ostream& out) {
     if (args.format == "csv")
       write_classes_csv(out, records, wraps);

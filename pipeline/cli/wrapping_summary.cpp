@@ -14,16 +14,15 @@ void write_wrapping_loops(std::ostream& out, const medusa::Medusa& medusa, const
   options.max_dim = 1;
   const persistence::DiagramWithClasses classes = persistence::diagram_with_classes(
       store_path, medusa, persistence::Direction::forward, persistence::all_types, options);
+  const std::vector<std::string> axes = persistence::class_wrapping_axes(medusa, classes);
   std::size_t loops = 0;
   std::map<std::string, std::size_t> wrapping; // by axes
   for (std::size_t i = 0; i < classes.classes.size(); ++i) {
     if (classes.diagram.pairs[classes.classes.rows[i]].dim != 1)
       continue;
     ++loops;
-    const std::string axes =
-        persistence::winding_axes(persistence::cycle_winding(medusa, classes.classes.cycles[i]));
-    if (!axes.empty())
-      ++wrapping[axes];
+    if (!axes[i].empty())
+      ++wrapping[axes[i]];
   }
   std::size_t wraps = 0;
   std::string along;
