@@ -8,6 +8,7 @@
 #include "medusa/core/error.h"
 #include "medusa/medusa/store_reader.h"
 #include "medusa/persistence/class_records.h"
+#include "medusa/persistence/class_winding.h"
 
 #include <nlohmann/json.hpp>
 
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -69,19 +71,46 @@ void sort_records(std::vector<persistence::ClassRecord>& records, const std::str
                    });
 }
 
-void write_table(std::ostream& out, const std::vector<persistence::ClassRecord>& records) {
-  out << "id\tdim\tbirth\tdeath\tlifetime\tbirth cells\tdeath cells\tsimplices\tcells\trepresentative\n";
-  for (const persistence::ClassRecord& r : records)
+// On a periodic run, per record: the axes its loop wraps around ("x", "x,y"; "-" for none), else empty.
+using Wraps = std::vector<std::string>;
+
+Wraps wrapping_axes(const medusa::Medusa& medusa, const persistence::DiagramWithClasses& classes,
+                    const std::vector<persistence::ClassRecord>& records) {
+  Wraps wraps;
+  if (medusa.run.periodic_axes.empty())
+    return wraps;
+  const std::vector<std::string> axes = persistence::class_wrapping_axes(medusa, classes);
+  std::map<std::size_t, std::string> by_row;
+  for (std::size_t i = 0; i < classes.classes.size(); ++i)
+    by_row[classes.classes.rows[i]] = axes[i];
+  for (const persistence::ClassRecord& r : records) {
+    const std::string& a = by_row[r.id];
+    wraps.push_back(a.empty() ? "-" : a);
+  }
+  return wraps;
+}
+
+void write_table(std::ostream& out, const std::vector<persistence::ClassRecord>& records,
+                 const Wraps& wraps) {
+  out << "id\tdim\tbirth\tdeath\tlifetime\tbirth cells\tdeath cells\tsimplices\tcells\trepresentative"
+      << (wraps.empty() ? "" : "\twraps") << "\n";
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const persistence::ClassRecord& r = records[i];
     out << r.id << '\t' << r.dim << '\t' << short_time(r.birth) << '\t' << short_time(r.death) << '\t'
         << short_time(r.lifetime()) << '\t' << joined(r.birth_cells, " ") << '\t'
         << (r.essential ? "-" : joined(r.death_cells, " ")) << '\t' << r.simplices.size() << '\t'
-        << r.cells.size() << '\t' << joined(r.cells, " ", table_list_limit) << '\n';
+        << r.cells.size() << '\t' << joined(r.cells, " ", table_list_limit)
+        << (wraps.empty() ? "" : "\t" + wraps[i]) << '\n';
+  }
 }
 
-void write_classes_csv(std::ostream& out, const std::vector<persistence::ClassRecord>& records) {
+void write_classes_csv(std::ostream& out, const std::vector<persistence::ClassRecord>& records,
+                       const Wraps& wraps) {
   out << "id,dimension,birth,death,lifetime,birth_kind,death_kind,birth_cells,death_cells,cell_count,cells,"
-         "simplex_count,simplices\n";
-  for (const persistence::ClassRecord& r : records) {
+         "simplex_count,simplices"
+      << (wraps.empty() ? "" : ",wraps") << "\n";
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const persistence::ClassRecord& r = records[i];
     std::string simplices;
     for (const auto& s : r.simplices)
       simplices += (simplices.empty() ? "" : ";") + joined(s, " ");
@@ -89,7 +118,10 @@ void write_classes_csv(std::ostream& out, const std::vector<persistence::ClassRe
         << format_time(r.lifetime()) << ',' << persistence::cell_kind_name(r.birth_kind) << ','
         << (r.essential ? "" : persistence::cell_kind_name(r.death_kind)) << ',' << joined(r.birth_cells, " ")
         << ',' << joined(r.death_cells, " ") << ',' << r.cells.size() << ',' << joined(r.cells, " ") << ','
-        << r.simplices.size() << ',' << simplices << '\n';
+        << r.simplices.size() << ',' << simplices;
+    if (!wraps.empty())
+      out << ",\"" << (wraps[i] == "-" ? "" : wraps[i]) << '"';
+    out << '\n';
   }
 }
 
@@ -98,9 +130,10 @@ nlohmann::json time_json(double t) {
 }
 
 void write_classes_json(std::ostream& out, const std::vector<persistence::ClassRecord>& records,
-                        int cell_type, persistence::Direction direction, bool shortened) {
+                        const Wraps& wraps, int cell_type, persistence::Direction direction, bool shortened) {
   nlohmann::json list = nlohmann::json::array();
-  for (const persistence::ClassRecord& r : records) {
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const persistence::ClassRecord& r = records[i];
     nlohmann::json death_kind =
         r.essential ? nlohmann::json(nullptr) : nlohmann::json(persistence::cell_kind_name(r.death_kind));
     list.push_back(
@@ -119,6 +152,8 @@ void write_classes_json(std::ostream& out, const std::vector<persistence::ClassR
          {"medusa_death_cell", r.essential ? nlohmann::json(nullptr) : nlohmann::json(r.death_cell)},
          {"medusa_cycle", r.cycle},
          {"simplices", r.simplices}});
+    if (!wraps.empty()) // the axes the loop wraps around, on a periodic run (docs/MATH.md §8.8)
+      list.back()["wraps"] = wraps[i] == "-" ? "" : wraps[i];
   }
   out << nlohmann::json{{"type", type_label(cell_type)},
                         {"direction", direction_name(direction)},
@@ -148,13 +183,14 @@ void classes_command(const ClassesArguments& args) {
   sort_records(records, args.sort, direction == persistence::Direction::forward);
   if (args.top > 0 && records.size() > args.top)
     records.resize(args.top);
+  const Wraps wraps = wrapping_axes(medusa, classes, records);
   auto write = [&](std::ostream& out) {
     if (args.format == "csv")
-      write_classes_csv(out, records);
+      write_classes_csv(out, records, wraps);
     else if (args.format == "json")
-      write_classes_json(out, records, cell_type, direction, classes.classes.options.shorten);
+      write_classes_json(out, records, wraps, cell_type, direction, classes.classes.options.shorten);
     else
-      write_table(out, records);
+      write_table(out, records, wraps);
   };
   if (args.output.empty() || args.output == "-")
     write(std::cout);

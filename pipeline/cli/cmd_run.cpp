@@ -12,6 +12,7 @@
 #include "side_outputs.h"
 #include "stage_timings.h"
 #include "svg_plot.h"
+#include "wrapping_summary.h"
 
 #include "medusa/core/error.h"
 #include "medusa/core/version.h"
@@ -23,6 +24,7 @@
 #include "medusa/medusa/store_writer.h"
 #include "medusa/periodic/canonical_filter.h"
 #include "medusa/periodic/periodic_cover.h"
+#include "medusa/periodic/torus_audit.h"
 #include "medusa/persistence/diagram_store.h"
 #include "medusa/persistence/medusa_diagrams.h"
 
@@ -421,9 +423,15 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     meter.start_kinetic(data.trajectories.frames());
     EndAfterLastBatch ended(store_side);
     ProgressObserver observer(ended, engine, meter, data.trajectories.frames());
+    // With --audit, the complex on the torus is checked against static CGAL as it leaves the
+    // canonical filter (docs/MATH.md §8.7), besides the engine's own audit of the covering space.
+    std::optional<periodic::TorusAudit> torus_audit;
+    if (cover && args.audit)
+      torus_audit.emplace(*cover, data.domain, kinetic_options.rho2, data.trajectories.dimension,
+                          kinetic_options.audit_stride, observer);
     std::optional<periodic::CanonicalFilter> torus;
     if (cover)
-      torus.emplace(*cover, observer);
+      torus.emplace(*cover, torus_audit ? static_cast<kinetic::Observer&>(*torus_audit) : observer);
     engine.run(torus ? static_cast<kinetic::Observer&>(*torus) : observer);
     // The engine's wall time includes the time spent in the store side's callbacks (with a thread of
     // its own: queueing the calls, and waiting for it at the end), which belongs to the store stage;
@@ -432,6 +440,8 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     timings.add("kinetic", clock.wall_seconds() - observer.builder_seconds(), clock.cpu_seconds());
     timings.add("medusa_store", observer.builder_seconds(), 0.0);
     stats = engine.statistics();
+    if (torus_audit && !args.quiet)
+      std::cerr << "medusa: " << periodic::describe(torus_audit->statistics()) << "\n";
     peak_rss_at_frame = observer.peak_rss_at_frame();
   }
   // The engine is gone: the stages below (which hold the whole medusa) reuse its memory instead of
@@ -452,6 +462,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   const std::vector<std::string> warnings =
       write_run_summary(std::cout, result.medusa, stats, result.diagrams, radius, radius_note, result.longest,
                         outputs.final_name(0));
+  write_wrapping_loops(std::cout, result.medusa, outputs.final_name(0));
   if (!args.quiet)
     for (const std::string& w : warnings)
       std::cerr << "medusa: warning: " << w << "\n";

@@ -13,6 +13,7 @@
 #include "medusa/core/version.h"
 #include "medusa/io/run_reader.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "medusa/periodic/periodic_cover.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -98,12 +99,19 @@ void sweep_command(const SweepArguments& args) {
   options.source = choose_source(args.input, args.source);
   options.snap = args.snap;
   options.allow_periodic_as_open = args.periodic_as_open;
+  options.read_periodic = !args.periodic_as_open;
   const io::RunData data = io::read_run(args.input, options);
   if (!args.quiet)
     for (const std::string& w : data.warnings)
       std::cerr << "medusa: warning: " << w << "\n";
-  for (const std::string& r : radii) // bad radius text fails here, before any work
-    (void)kinetic::squared_radius_from_decimal(r, data.trajectories.scale);
+  // Bad radius text, and on a periodic run a radius too large for the period (docs/MATH.md §8.3),
+  // fail here, before any work.
+  for (const std::string& r : radii) {
+    const kinetic::SquaredRadius rho2 = kinetic::squared_radius_from_decimal(r, data.trajectories.scale);
+    if (data.domain.any() && !args.periodic_as_open)
+      periodic::check_periodic_radius(data.domain, rho2, r);
+  }
+  const io::PeriodicDomain domain = args.periodic_as_open ? io::PeriodicDomain{} : data.domain;
   medusa::RunInfo info;
   info.source_files = data.sources;
   info.software_version = medusa::version;
@@ -112,7 +120,7 @@ void sweep_command(const SweepArguments& args) {
     std::cerr << "medusa sweep: " << radii.size() << " radii on "
               << std::min<std::size_t>(workers, radii.size()) << " thread(s)\n";
   const std::vector<RadiusResult> results =
-      sweep_radii(data.trajectories, info, radii, workers, true,
+      sweep_radii(data.trajectories, info, domain, radii, workers, true,
                   [&args](const std::string& radius, std::size_t, std::size_t) {
                     if (!args.quiet)
                       std::cerr << "medusa sweep: radius " << radius << " done\n";

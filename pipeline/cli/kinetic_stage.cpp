@@ -4,8 +4,11 @@
 
 #include "medusa/kinetic/kinetic_alpha_complex.h"
 #include "medusa/medusa/medusa_builder.h"
+#include "medusa/periodic/canonical_filter.h"
+#include "medusa/periodic/periodic_cover.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace medusa::cli {
 
@@ -32,14 +35,26 @@ void EndAfterLastBatch::finish(const kinetic::EventTime& t_end) {
 }
 
 void build_medusa(const kinetic::Trajectories& trajectories, const medusa::RunInfo& info,
-                  medusa::CellSink& sink) {
+                  medusa::CellSink& sink, const io::PeriodicDomain& domain) {
   kinetic::KineticOptions options;
   options.rho2 = kinetic::squared_radius_from_decimal(info.radius_text, trajectories.scale);
-  kinetic::KineticAlphaComplex engine(trajectories, options);
+  // As in `medusa run`: a periodic run goes through the covering space and the canonical filter.
+  std::optional<periodic::PeriodicCover> cover;
+  if (domain.any())
+    cover = periodic::cover_trajectories(trajectories, domain, options.rho2);
+  kinetic::KineticAlphaComplex engine(cover ? cover->trajectories : trajectories, options);
   medusa::MedusaBuilder builder(sink);
-  builder.set_run(info, trajectories);
+  medusa::RunInfo run = info;
+  if (cover) {
+    run.periodic_axes = domain.axes();
+    run.periodic_lengths = domain.period;
+  }
+  builder.set_run(run, trajectories);
   EndAfterLastBatch observer(builder);
-  engine.run(observer);
+  std::optional<periodic::CanonicalFilter> torus;
+  if (cover)
+    torus.emplace(*cover, observer);
+  engine.run(torus ? static_cast<kinetic::Observer&>(*torus) : observer);
 }
 
 } // namespace medusa::cli

@@ -3,6 +3,7 @@
 // `medusa sweep` (medusa_in_memory) and the Python module's `medusa.run`.
 #pragma once
 
+#include "medusa/io/periodic_domain.h"
 #include "medusa/kinetic/observer.h"
 #include "medusa/kinetic/trajectories.h"
 #include "medusa/medusa/cell_sink.h"
@@ -30,8 +31,10 @@ private:
 };
 
 // Runs the engine on `trajectories` at radius `info.radius_text` (decimal text, exact, docs/MATH.md
-// §1) and streams the medusa into `sink`. Polls for interrupts (throws Interrupted).
+// §1) and streams the medusa into `sink`. Polls for interrupts (throws Interrupted). With periodic axes
+// in `domain`, the complex on the torus (docs/MATH.md §8): the radius must pass
+// periodic::check_periodic_radius.
 void build_medusa(const kinetic::Trajectories& trajectories, const medusa::RunInfo& info,
-                  medusa::CellSink& sink);
+                  medusa::CellSink& sink, const io::PeriodicDomain& domain = {});
 
 } // namespace medusa::cli

@@ -4,9 +4,10 @@
 
 namespace medusa::cli {
 
-medusa::Medusa medusa_in_memory(const kinetic::Trajectories& trajectories, const medusa::RunInfo& info) {
+medusa::Medusa medusa_in_memory(const kinetic::Trajectories& trajectories, const medusa::RunInfo& info,
+                                const io::PeriodicDomain& domain) {
   medusa::MedusaCollector collector;
-  build_medusa(trajectories, info, collector);
+  build_medusa(trajectories, info, collector, domain);
   return collector.take();
 }
 

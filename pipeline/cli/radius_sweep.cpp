@@ -24,11 +24,11 @@ std::int64_t rescaled(const Decimal& d, int decimals) {
 }
 
 RadiusResult sweep_one(const kinetic::Trajectories& trajectories, const medusa::RunInfo& base,
-                       const std::string& radius, bool diagrams) {
+                       const io::PeriodicDomain& domain, const std::string& radius, bool diagrams) {
   medusa::RunInfo info = base;
   info.radius_text = radius;
   info.radius = std::stod(radius);
-  const medusa::Medusa medusa = medusa_in_memory(trajectories, info);
+  const medusa::Medusa medusa = medusa_in_memory(trajectories, info, domain);
   check_interrupted();
   RadiusResult result;
   result.radius = radius;
@@ -126,8 +126,8 @@ std::vector<std::string> sorted_radii(const std::vector<std::string>& texts) {
 
 std::vector<RadiusResult>
 sweep_radii(const kinetic::Trajectories& trajectories, const medusa::RunInfo& info,
-            const std::vector<std::string>& radii, unsigned workers, bool diagrams,
-            const std::function<void(const std::string&, std::size_t, std::size_t)>& done) {
+            const io::PeriodicDomain& domain, const std::vector<std::string>& radii, unsigned workers,
+            bool diagrams, const std::function<void(const std::string&, std::size_t, std::size_t)>& done) {
   std::vector<RadiusResult> results(radii.size());
   std::vector<std::exception_ptr> errors(radii.size());
   std::atomic<std::size_t> next{0};
@@ -137,7 +137,7 @@ sweep_radii(const kinetic::Trajectories& trajectories, const medusa::RunInfo& in
   auto work = [&] {
     for (std::size_t i = next++; i < radii.size() && !failed; i = next++) {
       try {
-        results[i] = sweep_one(trajectories, info, radii[i], diagrams);
+        results[i] = sweep_one(trajectories, info, domain, radii[i], diagrams);
         const std::lock_guard<std::mutex> lock(print);
         ++finished;
         if (done)

@@ -8,6 +8,7 @@
 #include "crocker.h"
 #include "forward_counts.h"
 
+#include "medusa/io/periodic_domain.h"
 #include "medusa/kinetic/trajectories.h"
 #include "medusa/medusa/run_info.h"
 
@@ -50,11 +51,12 @@ struct RadiusResult {
 // Every radius on a pool of `workers` threads, each with the Betti numbers of K_t at the frames and,
 // with `diagrams`, the forward diagrams' counts. `done(radius, finished, total)` is called (under a
 // lock) after each radius. The first error (an interrupt first) is rethrown once all have stopped;
-// polls for interrupts.
+// polls for interrupts. With periodic axes in `domain`, on the torus (docs/MATH.md §8; every radius
+// must pass periodic::check_periodic_radius).
 std::vector<RadiusResult>
 sweep_radii(const kinetic::Trajectories& trajectories, const medusa::RunInfo& info,
-            const std::vector<std::string>& radii, unsigned workers, bool diagrams,
-            const std::function<void(const std::string&, std::size_t, std::size_t)>& done);
+            const io::PeriodicDomain& domain, const std::vector<std::string>& radii, unsigned workers,
+            bool diagrams, const std::function<void(const std::string&, std::size_t, std::size_t)>& done);
 
 // One CROCKER row per radius, frame and type (as `medusa sweep` writes them).
 std::vector<CrockerRow> crocker_rows(const std::vector<RadiusResult>& results,

@@ -321,7 +321,7 @@ ScaleSection report_scale(std::vector<ReportRun>& runs, const ScaleOptions& opti
         std::cerr << "medusa report: radius sweep of " << runs[i].name << " at " << computed_radii.size()
                   << " radii on " << std::min<std::size_t>(workers, computed_radii.size()) << " thread(s)\n";
       const std::vector<RadiusResult> results =
-          sweep_radii(runs[i].input, runs[i].run_info, computed_radii, workers, false,
+          sweep_radii(runs[i].input, runs[i].run_info, io::PeriodicDomain{}, computed_radii, workers, false,
                       [&](const std::string& radius, std::size_t done, std::size_t total) {
                         if (!options.quiet)
                           std::cerr << "medusa report: " << runs[i].name << " radius " << radius << " done ("

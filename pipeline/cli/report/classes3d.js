@@ -32,7 +32,7 @@
     if (ids.length <= limit) return ids.join(" ");
     return ids.slice(0, limit).join(" ") + " … (+" + (ids.length - limit) + ")";
   }
-  function deathWord(k) { return k === 0 ? "merged" : "filled"; }
+  function deathWord(k) { return k === 0 ? "joined" : "filled"; }
 
   // Positions of every trajectory at time t: [x, y, z] or null, interpolated between the embedded frames.
   function positionsAt(classes, t) {
@@ -167,7 +167,7 @@
       s.appendChild(document.createTextNode("type " + t + (f && f.name ? " " + f.name : "")));
     }
     for (const [colour, text] of [["#222", "the class's edges (contacts between its cells by the time it formed)"], ["#f2b701", "its triangles"], ["#00a651", "the contact that formed it"],
-      ["#c51b8a", "the contact that filled or merged it"]]) {
+      ["#c51b8a", "the contact that filled it or joined it to an older cluster"]]) {
       const s = html("span", {}, legend);
       html("i", { style: "background:" + colour }, s);
       s.appendChild(document.createTextNode(text));
@@ -419,8 +419,8 @@
       const sec = html("div", { class: "classes", id: "classes-" + ri, "data-run": ri }, parent);
       html("h3", {}, sec, "Which cells? The longest-lived classes and the cells that make them (forward filtration)");
       html("p", { class: "note" }, sec, "Per cell type and degree, the " + run.classes.top + " classes that lived longest " +
-        "(the ones never filled or merged first). A class's cells are those of its representative: for a cluster the cells " +
-        "in it just before it merged into an older one, for a loop or a cavity the cells on a ring or a shell around it " +
+        "(the ones never filled or joined first). A class's cells are those of its representative: for a cluster the cells " +
+        "in it just before it joined an older one, for a loop or a cavity the cells on a ring or a shell around it " +
         "when it formed (docs/MATH.md §7.11). 'Formed by' and 'killed by' are the cells whose contact created and " +
         "ended it: the last edge or triangle that closed it, the triangle or tetrahedron that filled it. Click a row " +
         "to see the class in 3D at the time it formed; move the time to watch it close and fill. The full lists: " +

@@ -79,6 +79,30 @@ def hand(medusa, work):
         lengths = [int(f.attrs["periodic_length_" + a]) for a in "xyz"]
         assert lengths == [10000000, 0, 0], lengths
     print("ok: ring closing across the seam: one H1 class born at MCS 80")
+    # Its representative winds once along x (docs/MATH.md §8.8): the summary and `medusa classes` say so.
+    p = subprocess.run([medusa, "run", folder, "--radius", "1.1", "-o", os.path.join(work, "ring_words.h5")],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    assert "1 of 1 loop of all cells wraps around the domain along x (not a hole in the tissue" in p.stdout, p.stdout
+    p = subprocess.run([medusa, "classes", os.path.join(work, "ring.h5"), "--dim", "1", "--format", "csv"],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    classes = list(csv.DictReader(io.StringIO(p.stdout)))
+    assert [r["wraps"] for r in classes] == ["x"], p.stdout
+    print("ok: its loop wraps around the domain along x, in the summary and in medusa classes")
+    # medusa sweep runs on the torus too: at radius 1.1 the ring is closed at MCS 100 (b1 = 1, which
+    # the run read as open never has); a radius with 4 x radius >= L is refused before any output.
+    out = os.path.join(work, "ring_sweep")
+    p = subprocess.run([medusa, "sweep", folder, "--radius", "1.1", "-o", out, "-q"], capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    with open(out + ".crocker.csv") as f:
+        crocker = [r for r in csv.DictReader(line for line in f if not line.startswith("#"))]
+    assert [(r["time"], r["b1"]) for r in crocker if r["type"] == "all"] == [("0", "0"), ("100", "1")], crocker
+    out = os.path.join(work, "ring_sweep_large")
+    p = subprocess.run([medusa, "sweep", folder, "--radii", "1.1:2.6:1.4", "-o", out], capture_output=True, text=True)
+    assert p.returncode == 4 and "radius 2.5 is too large" in p.stderr and p.stderr.count("\n") == 1, p.stderr
+    assert not any(n.startswith("ring_sweep_large") for n in os.listdir(work)), os.listdir(work)
+    print("ok: medusa sweep on the torus: the ring closes; a radius too large for the period is refused")
 
     # The same ring translated by 3 along x and wrapped: other cells are now the originals near the
     # seam, and the ring closes across another pair. The torus is the same: the same medusa.
