@@ -5,6 +5,7 @@ exactly the CC3D cells `medusa classes --format json` gives for it are drawn hig
 through window.medusaReport and seen in the canvas as the type's colour); the positions the view
 interpolates at a time between frames are those `medusa at --time T` writes."""
 import json
+import os
 import time
 
 import numpy as np
@@ -79,7 +80,7 @@ def check_classes(driver, call, page, stores, failures, screenshot=None, shown=N
                                             f".class-row[data-run='{ri}'][data-type='{label}'][data-dim='{dim}']")
                 if rows and (dim > 0 or label != "all"):
                     picks.append((label, dim, rows[min(1, len(rows) - 1)] if dim == 0 else rows[0]))
-        if shown and name == "sorting_3d":
+        if shown and os.path.basename(name) == "sorting_3d":
             label, dim, cid = shown
             row = driver.find_elements("css selector",
                                        f".class-row[data-run='{ri}'][data-type='{label}'][data-dim='{dim}'][data-class='{cid}']")
@@ -119,7 +120,7 @@ def check_classes(driver, call, page, stores, failures, screenshot=None, shown=N
                     if t in TYPE_COLOURS and canvas_has_colour(view, TYPE_COLOURS[t], f"class_{ri}_{cid}.png") < 20:
                         failures.append(f"{what}: no cell drawn in the colour of type {t} in the 3D view")
             clicks += 1
-        if screenshot and shown and name == "sorting_3d":
+        if screenshot and shown and os.path.basename(name) == "sorting_3d":
             driver.execute_script("arguments[0].scrollIntoView({block: 'start'})", view)
             time.sleep(0.3)
             view.screenshot("class_view.png")
