@@ -223,7 +223,8 @@ std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medu
       << " are those of the complex at that frame (b0, b1, b2 of `medusa curves --frames-only`). Joins, "
          "filled and never-filled "
       << (input.dimension == 2 ? "loops" : "loops and cavities")
-      << " come from the forward filtration (docs/MATH.md §7.6, §7.12): one that broke open without being filled "
+      << " come from the forward filtration (docs/MATH.md §7.6, §7.12): one that broke open without being "
+         "filled "
          "stays a class of the space-time medusa (README, Reading the summary).\n"
       << "Times between frames come from linear interpolation of the cell centres between frames "
          "(docs/MATH.md §2.2).\n";

@@ -7,26 +7,10 @@
 "use strict";
 (function () {
   const data = JSON.parse(document.getElementById("report-data").textContent);
-  const featureNames = [["cluster", "clusters"], ["loop", "loops"], ["cavity", "cavities"]];
   const typeColours = ["#7f7f7f", "#e6550d", "#3182bd", "#31a354", "#756bb1", "#8c564b", "#e377c2", "#17becf"];
   const views = [];
 
-  function html(tag, attrs, parent, text) {
-    const e = document.createElement(tag);
-    for (const k in attrs) e.setAttribute(k, attrs[k]);
-    if (text !== undefined) e.textContent = text;
-    if (parent) parent.appendChild(e);
-    return e;
-  }
-  function fmt(t) { return String(Number(Number(t).toPrecision(6))); }
-  function typeTitle(label, name) {
-    if (label === "all") return "all cells";
-    return "type " + label + (name ? " (" + name + ")" : "");
-  }
-  function names(run, k) {
-    if (k === 2 && run.facts.dimension === 2) return ["space-time bubble", "space-time bubbles"];
-    return featureNames[k];
-  }
+  const { html, fmt, typeTitle, degreeName: names } = window.medusaReportText;
   function typeColour(type) { return typeColours[((type % typeColours.length) + typeColours.length) % typeColours.length]; }
   function list(ids, limit) {
     if (ids.length <= limit) return ids.join(" ");

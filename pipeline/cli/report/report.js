@@ -35,6 +35,8 @@
     if (k === 2 && run.facts.dimension === 2) return ["space-time bubble", "space-time bubbles"];
     return featureNames[k];
   }
+  // The page's other sections (classes3d.js) write with the same words and numbers.
+  window.medusaReportText = { html, fmt, typeTitle, degreeName };
   function showTip(evt, text) {
     tooltip.textContent = text;
     tooltip.style.display = "block";
