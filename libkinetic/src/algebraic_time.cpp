@@ -245,6 +245,39 @@ void SlabTime::tighten() const {
   narrow_root(root_->bisection_polynomial(), root_->lo, root_->hi, root_->sign_lo, 0.0);
 }
 
+namespace {
+
+// Whether f = c g for a non-zero rational c: the same roots.
+bool proportional(const ExactPoly& f, const ExactPoly& g) {
+  if (f.degree() != g.degree())
+    return false;
+  const CGAL::Gmpz &a = f.lcoeff(), &b = g.lcoeff();
+  for (int i = 0; i <= f.degree(); ++i)
+    if (f[i] * b != g[i] * a)
+      return false;
+  return true;
+}
+
+// Two isolated roots whose exact polynomials are proportional, compared as roots of one polynomial
+// (the reasoning of compare below, on the exact polynomial evaluated exactly at the intersection's
+// ends): -1, 0 or 1, or 2 when the polynomials differ or an end is a root. A certificate on translated
+// copies of its cells has the same exact polynomial, up to sign, as the original's (docs/MATH.md
+// §8.6): its copies' event times are equal, and told so here without algebraic reals.
+int compare_as_one_polynomial(const IsolatedRoot& x, const IsolatedRoot& y) {
+  const ExactPoly& f = x.exact_polynomial();
+  if (!proportional(f, y.exact_polynomial()))
+    return 2;
+  const double xl = x.lo, xh = x.hi, yl = y.lo, yh = y.hi;
+  if ((yl <= xl && xh <= yh) || (xl <= yl && yh <= xh))
+    return 0;
+  const CGAL::Sign s_lo = f.sign_at(Rational(std::max(xl, yl))), s_hi = f.sign_at(Rational(std::min(xh, yh)));
+  if (s_lo == CGAL::ZERO || s_hi == CGAL::ZERO)
+    return 2;
+  return s_lo != s_hi ? 0 : (xl < yl ? -1 : 1);
+}
+
+} // namespace
+
 int compare(const SlabTime& x, const SlabTime& y) {
   if (x.root_ && x.root_ == y.root_)
     return 0;
@@ -292,6 +325,12 @@ int compare(const SlabTime& x, const SlabTime& y) {
         break;
       if (const int order = separated(); order != 0)
         return order;
+    }
+  }
+  if (x.root_ && y.root_ && x.root_->sharp && y.root_->sharp) {
+    if (const int order = compare_as_one_polynomial(*x.root_, *y.root_); order != 2) {
+      ++comparison_counts.proportional;
+      return order;
     }
   }
   ++comparison_counts.algebraic;

@@ -142,6 +142,7 @@ private:
 struct TimeComparisonCounts {
   std::uint64_t sharpened = 0;        // isolated roots given their exact polynomial rounded to intervals
   std::uint64_t algebraic = 0;        // comparisons decided on CGAL's algebraic reals
+  std::uint64_t proportional = 0;     // decided on one exact polynomial shared up to a factor (§3.7)
   std::uint64_t reported_exactly = 0; // grid points of a reported time decided exactly (§3.12)
 };
 TimeComparisonCounts time_comparison_counts();

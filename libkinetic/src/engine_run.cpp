@@ -72,6 +72,7 @@ void Engine::run(Observer& observer) {
   const TimeComparisonCounts comparisons_after = time_comparison_counts();
   stats.times_sharpened = comparisons_after.sharpened - comparisons_before.sharpened;
   stats.times_compared_algebraically = comparisons_after.algebraic - comparisons_before.algebraic;
+  stats.times_compared_as_one_polynomial = comparisons_after.proportional - comparisons_before.proportional;
   stats.times_reported_exactly = comparisons_after.reported_exactly - comparisons_before.reported_exactly;
   // The last frame is reached but never starts a slab (frame() is not called for it): its positions
   // are checked here, as frame() checks the others' (docs/MATH.md §2.5).

@@ -302,7 +302,14 @@ void write_timings(const RunOutputs& outputs, const std::string& run_id, const R
                        {"local_deletions", stats.local_deletions},
                        {"batches", stats.batches},
                        {"certificates_built", stats.certificates_built},
-                       {"static_rebuilds", stats.static_rebuilds}};
+                       {"static_rebuilds", stats.static_rebuilds},
+                       {"repairs_at_algebraic_times", stats.repairs_at_algebraic_times},
+                       {"frames_repaired_for_flat_simplices", stats.frames_repaired_for_flat_simplices},
+                       {"hull_ridges_folded_at_now", stats.hull_ridges_folded_at_now},
+                       {"hull_touches_repaired", stats.hull_touches_repaired},
+                       {"hull_flips_refused_touching", stats.hull_flips_refused_touching},
+                       {"times_compared_algebraically", stats.times_compared_algebraically},
+                       {"times_compared_as_one_polynomial", stats.times_compared_as_one_polynomial}};
   j["kinetic_seconds_per_frame"] = stats.seconds_per_frame;
   std::error_code ec;
   const auto bytes = fs::file_size(outputs.store_temporary(), ec);

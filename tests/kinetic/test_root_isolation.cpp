@@ -115,10 +115,10 @@ TEST_CASE("refinement narrows an isolating interval to the root and finds dyadic
 
 TEST_CASE("times isolated in doubles compare exactly, equal roots of different polynomials included",
           "[kinetic][isolation]") {
-  // 2u^2 - 1 and 6u^2 - 3 (= 3 (2u^2 - 1)) have the same root 1/sqrt(2): the enclosures cannot separate
-  // them, so the comparison goes exact and answers equal.
+  // 2u^2 - 1 and 2u^3 + 2u^2 - u - 1 (= (2u^2 - 1)(u + 1)) have the same root 1/sqrt(2) in [0, 1]: the
+  // enclosures cannot separate them, so the comparison goes exact and answers equal.
   SlabTime a = isolated_time({-1, 0, 2});
-  SlabTime b = isolated_time({-3, 0, 6});
+  SlabTime b = isolated_time({-1, -1, 2, 2});
   const TimeComparisonCounts before = time_comparison_counts();
   REQUIRE(compare(a, b) == 0);
   REQUIRE(time_comparison_counts().algebraic - before.algebraic == 1);
@@ -410,4 +410,21 @@ TEST_CASE("reported times follow the exact order of the times", "[kinetic][isola
   CHECK(first.reported_time(0, 10) == 2.5);
   CHECK(middle.reported_time(0, 10) == 3.75);
   CHECK(second.reported_time(0, 10) == 7.5);
+}
+
+TEST_CASE("times of proportional polynomials compare equal without algebraic reals", "[kinetic][isolation]") {
+  // A certificate on translated copies of its cells (docs/MATH.md §8.6) has the exact polynomial of
+  // the original's up to sign: here 2u^2 - 1 and -6u^2 + 3, both with the root 1/sqrt(2) alone in
+  // [0, 1]. Stuck in doubles, they are told equal on the exact polynomial, with no algebraic real.
+  SlabTime a = isolated_time({-1, 0, 2});
+  SlabTime b = isolated_time({3, 0, -6});
+  const TimeComparisonCounts before = time_comparison_counts();
+  REQUIRE(compare(a, b) == 0);
+  REQUIRE(compare(b, a) == 0);
+  REQUIRE(time_comparison_counts().proportional - before.proportional == 2);
+  REQUIRE(time_comparison_counts().algebraic - before.algebraic == 0);
+  // Against a root of another polynomial close to it, still decided and in the right order:
+  // 1/sqrt(2) < 6369051672525773 / 2^53, the double nearest to it (2 x^2 > 1 for that x).
+  SlabTime above(Rational(CGAL::Gmpz("6369051672525773"), CGAL::Gmpz("9007199254740992")));
+  REQUIRE(compare(b, above) == -1);
 }

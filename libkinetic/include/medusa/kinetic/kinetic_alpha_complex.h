@@ -83,6 +83,10 @@ struct KineticStatistics {
   // Event times whose isolating intervals overlapped and stayed stuck in doubles (docs/MATH.md §3.7): roots
   // given their exact polynomial rounded to intervals, and comparisons left to algebraic reals.
   std::size_t times_sharpened = 0, times_compared_algebraically = 0;
+  // Of the comparisons left stuck in doubles, those of two roots of proportional exact polynomials
+  // (e.g. one certificate on translated copies of its cells, docs/MATH.md §8.6), decided without
+  // algebraic reals.
+  std::size_t times_compared_as_one_polynomial = 0;
   // Reported batch times whose rounding to the 2^-32 MCS grid needed an exact comparison (docs/MATH.md
   // §3.12): the time lay within rounding noise of a grid point.
   std::size_t times_reported_exactly = 0;
