@@ -66,6 +66,8 @@ std::optional<std::vector<VertexId>> canonical_image(const PeriodicCover& cover,
   image.reserve(vertices.size());
   for (VertexId v : vertices) {
     const CoverVertex& c = cover.vertices[static_cast<std::size_t>(v)];
+    if (c.is_sentinel())
+      return std::nullopt;
     if (smallest == nullptr || c.original < smallest->original)
       smallest = &c;
     image.push_back(c.original);
@@ -105,7 +107,9 @@ void CanonicalFilter::batch(const kinetic::EventTime& time, const std::vector<St
     case StepKind::flip23:
     case StepKind::flip32:
     case StepKind::flip22:
-      if (st.flip) {
+      if (st.flip && std::none_of(st.flip->vertices.begin(), st.flip->vertices.end(), [&](VertexId v) {
+            return cover_.vertices[static_cast<std::size_t>(v)].is_sentinel();
+          })) {
         key = torus_key(cover_, 0, st.flip->vertices);
         break;
       }

@@ -38,6 +38,79 @@ struct Box {
   bool empty = true;
 };
 
+// splitmix64: a fixed pseudo-random sequence, so that the sentinels are the same on every machine.
+std::uint64_t next_random(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+// Static sentinels on the faces of the box holding every covering position at every frame, grown by
+// 2 r + 1 (so more than 2 rho from every point at every time: positions between frames are convex
+// combinations of positions at frames), about max(2 r + 1, L_min / 4) apart and jittered off the grid
+// outwards (general position). Copies are exact translates, so copies on the cover's own hull lie
+// permanently in one plane, and the hull events around them ended in static repairs; inside the
+// sentinels' hull, which never changes, there are none (docs/MATH.md §8.4).
+void add_sentinels(PeriodicCover& cover, const io::PeriodicDomain& domain, std::int64_t r) {
+  const std::size_t dims = static_cast<std::size_t>(cover.trajectories.dimension);
+  std::array<std::int64_t, 3> lo{}, hi{};
+  bool first = true;
+  for (const kinetic::Trajectory& c : cover.trajectories.cells)
+    for (const kinetic::GridPoint& p : c.positions) {
+      for (std::size_t a = 0; a < dims; ++a) {
+        lo[a] = first ? p[a] : std::min(lo[a], p[a]);
+        hi[a] = first ? p[a] : std::max(hi[a], p[a]);
+      }
+      first = false;
+    }
+  if (first)
+    return;
+  std::int64_t spacing = 2 * r + 1;
+  for (std::size_t a = 0; a < 3; ++a)
+    if (domain.periodic[a])
+      spacing = std::max(spacing, domain.period[a] / 4);
+  std::array<std::int64_t, 3> count{}, step{};
+  for (std::size_t a = 0; a < dims; ++a) {
+    lo[a] -= 2 * r + 1;
+    hi[a] += 2 * r + 1;
+    count[a] = std::max<std::int64_t>(1, (hi[a] - lo[a]) / spacing);
+    step[a] = (hi[a] - lo[a]) / count[a];
+  }
+  std::uint64_t state = 0;
+  const auto jitter = [&](std::int64_t a) {
+    return static_cast<std::int64_t>(next_random(state) %
+                                     static_cast<std::uint64_t>(std::max<std::int64_t>(1, a)));
+  };
+  const std::size_t frames = cover.trajectories.frames();
+  std::array<std::int64_t, 3> i{};
+  for (i[0] = 0; i[0] <= count[0]; ++i[0])
+    for (i[1] = 0; i[1] <= count[1]; ++i[1])
+      for (i[2] = 0; i[2] <= (dims == 3 ? count[2] : 0); ++i[2]) {
+        bool on_face = false;
+        for (std::size_t a = 0; a < dims; ++a)
+          on_face = on_face || i[a] == 0 || i[a] == count[a];
+        if (!on_face)
+          continue;
+        kinetic::GridPoint p{0, 0, 0};
+        for (std::size_t a = 0; a < dims; ++a) {
+          const std::int64_t j = jitter(step[a] / 3);
+          p[a] = i[a] == 0          ? lo[a] - j
+                 : i[a] == count[a] ? hi[a] + j
+                                    : lo[a] + i[a] * step[a] + j - step[a] / 6;
+        }
+        kinetic::Trajectory t;
+        t.cell_id = -1;
+        t.type = cover.trajectories.cells.front().type;
+        t.positions.assign(frames, p);
+        cover.trajectories.cells.push_back(std::move(t));
+        CoverVertex v;
+        v.original = -1;
+        cover.vertices.push_back(v);
+        ++cover.sentinels;
+      }
+}
+
 } // namespace
 
 void check_periodic_radius(const io::PeriodicDomain& domain, const kinetic::SquaredRadius& rho2,
@@ -173,6 +246,7 @@ PeriodicCover cover_trajectories(const kinetic::Trajectories& originals, const i
         break;
     }
   }
+  add_sentinels(cover, domain, r);
   if (cover.vertices.size() > static_cast<std::size_t>(std::numeric_limits<kinetic::VertexId>::max()))
     throw GeometryError("too many cells with their periodic copies for 32-bit vertex ids");
   return cover;

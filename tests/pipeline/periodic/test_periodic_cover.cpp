@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 
 using namespace medusa;
 using namespace medusa::periodic;
@@ -118,4 +119,52 @@ TEST_CASE("A simplex is canonical when its smallest cell is an original, and nam
   CHECK(canonical_image(cover, {5, 1, 0}) == std::vector<kinetic::VertexId>{0, 1, 2});
   CHECK(!canonical_image(cover, {5, 4, 3}));
   CHECK_THROWS_AS(canonical_image(cover, {0, 3}), InternalError);
+  // A sentinel (no cell) makes any simplex non-canonical, even one with an original as smallest cell.
+  cover.vertices.push_back({-1, {0, 0, 0}});
+  cover.sentinels = 1;
+  CHECK(cover.ghosts() == 3);
+  CHECK(!canonical_image(cover, {0, 6}));
+  CHECK(!canonical_image(cover, {6, 1, 2}));
+}
+
+TEST_CASE("Static sentinels enclose the cover, more than 2 rho from every point at every time",
+          "[periodic]") {
+  // Cells moving in the plane on a band periodic along x (period 10, rho = 1: r = 1, margin 2 r + 1 =
+  // 3, spacing max(3, 10 / 4) = 3). Every position of originals and copies lies in their box; the
+  // sentinels must lie outside the box grown by 3 (so more than 2 rho from every point, positions
+  // between frames being convex combinations), and beyond each of its corners there must be one, so
+  // that their hull holds every point strictly inside.
+  const auto c = cover_trajectories(
+      run({cell(1, {{500000, 0, 0}, {S, 2 * S, 0}}), cell(2, {{9 * S, 3 * S, 0}, {8 * S, 4 * S, 0}}),
+           cell(3, {{5 * S, 6 * S, 0}, {4 * S, 7 * S, 0}})},
+          2),
+      x_period_10(), radius_one());
+  REQUIRE(c.sentinels > 4);
+  REQUIRE(c.originals + c.ghosts() + c.sentinels == c.trajectories.cells.size());
+  std::array<std::int64_t, 2> lo{c.trajectories.cells[0].positions[0][0],
+                                 c.trajectories.cells[0].positions[0][1]};
+  std::array<std::int64_t, 2> hi = lo;
+  for (std::size_t v = 0; v < c.originals + c.ghosts(); ++v)
+    for (const kinetic::GridPoint& p : c.trajectories.cells[v].positions)
+      for (std::size_t a = 0; a < 2; ++a) {
+        lo[a] = std::min(lo[a], p[a]);
+        hi[a] = std::max(hi[a], p[a]);
+      }
+  std::array<bool, 4> corner{};
+  for (std::size_t v = c.originals + c.ghosts(); v < c.trajectories.cells.size(); ++v) {
+    const kinetic::Trajectory& t = c.trajectories.cells[v];
+    CHECK(c.vertices[v].is_sentinel());
+    CHECK(t.cell_id == -1);
+    REQUIRE(t.positions.size() == 2);
+    CHECK(t.positions[0] == t.positions[1]);
+    const kinetic::GridPoint& p = t.positions[0];
+    CHECK(p[2] == 0);
+    const bool outside =
+        p[0] < lo[0] - 3 * S || p[0] > hi[0] + 3 * S || p[1] < lo[1] - 3 * S || p[1] > hi[1] + 3 * S;
+    CHECK(outside);
+    for (std::size_t k = 0; k < 4; ++k)
+      if ((k & 1 ? p[0] > hi[0] : p[0] < lo[0]) && (k & 2 ? p[1] > hi[1] : p[1] < lo[1]))
+        corner[k] = true;
+  }
+  CHECK(corner == std::array<bool, 4>{true, true, true, true});
 }

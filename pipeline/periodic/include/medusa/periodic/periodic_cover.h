@@ -15,21 +15,24 @@
 namespace medusa::periodic {
 
 // Covering vertex v is original `original` translated by offset[a] periods along each axis a
-// (offset 0 on open axes; all zero for the originals).
+// (offset 0 on open axes; all zero for the originals), or a sentinel (no cell).
 struct CoverVertex {
-  kinetic::VertexId original = 0;
+  kinetic::VertexId original = 0; // -1 for a sentinel
   std::array<std::int64_t, 3> offset{};
-  bool is_original() const { return offset[0] == 0 && offset[1] == 0 && offset[2] == 0; }
+  bool is_sentinel() const { return original < 0; }
+  bool is_original() const { return !is_sentinel() && offset[0] == 0 && offset[1] == 0 && offset[2] == 0; }
 };
 
 struct PeriodicCover {
-  // Originals first, with their vertex ids (0 .. originals-1), then the ghosts; a ghost carries its
-  // original's cell id and type, and is present on the frames where it may come within 2 rho of an
-  // original (several trajectories when those frames are not consecutive).
+  // Originals first, with their vertex ids (0 .. originals-1), then the ghosts, then the sentinels. A
+  // ghost carries its original's cell id and type, and is present on the frames where it may come
+  // within 2 rho of an original (several trajectories when those frames are not consecutive). A
+  // sentinel is a static point (cell id -1) more than 2 rho from every other point at every time, on
+  // a box around them all: the covering space's convex hull is theirs (docs/MATH.md §8.4).
   kinetic::Trajectories trajectories;
   std::vector<CoverVertex> vertices; // per covering vertex
-  std::size_t originals = 0;
-  std::size_t ghosts() const { return vertices.size() - originals; }
+  std::size_t originals = 0, sentinels = 0;
+  std::size_t ghosts() const { return vertices.size() - originals - sentinels; }
 };
 
 // Throws GeometryError unless 4 rho is below every period, the condition under which the quotient of
@@ -41,7 +44,7 @@ void check_periodic_radius(const io::PeriodicDomain& domain, const kinetic::Squa
 // The originals (unwrapped, docs/MATH.md §8.2) and the ghosts needed for slab s: every copy whose position
 // at frame s lies within 2 rho + 2 D_s of the bounding box of the originals at frame s along every
 // periodic axis, D_s the largest coordinate displacement of any cell over slab s; and for every
-// frame, the copies within 2 rho of that frame's box (docs/MATH.md §8.4).
+// frame, the copies within 2 rho of that frame's box (docs/MATH.md §8.4); and the sentinels around them.
 PeriodicCover cover_trajectories(const kinetic::Trajectories& originals, const io::PeriodicDomain& domain,
                                  const kinetic::SquaredRadius& rho2);
 
