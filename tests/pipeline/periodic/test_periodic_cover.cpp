@@ -129,11 +129,11 @@ TEST_CASE("A simplex is canonical when its smallest cell is an original, and nam
 
 TEST_CASE("Static sentinels enclose the cover, more than 2 rho from every point at every time",
           "[periodic]") {
-  // Cells moving in the plane on a band periodic along x (period 10, rho = 1: r = 1, margin 2 r + 1 =
-  // 3, spacing max(3, 10 / 4) = 3). Every position of originals and copies lies in their box; the
-  // sentinels must lie outside the box grown by 3 (so more than 2 rho from every point, positions
-  // between frames being convex combinations), and beyond each of its corners there must be one, so
-  // that their hull holds every point strictly inside.
+  // Cells moving in the plane on a band periodic along x (period 10, rho = 1: r = 1 lattice unit = S
+  // grid units). Every position of originals and copies lies in their box; the sentinels must lie
+  // outside the box grown by 2 r (more than 2 rho from every point at every time, positions between
+  // frames being convex combinations), and beyond each of its corners there must be one, so that
+  // their hull holds every point strictly inside.
   const auto c = cover_trajectories(
       run({cell(1, {{500000, 0, 0}, {S, 2 * S, 0}}), cell(2, {{9 * S, 3 * S, 0}, {8 * S, 4 * S, 0}}),
            cell(3, {{5 * S, 6 * S, 0}, {4 * S, 7 * S, 0}})},
@@ -160,7 +160,7 @@ TEST_CASE("Static sentinels enclose the cover, more than 2 rho from every point 
     const kinetic::GridPoint& p = t.positions[0];
     CHECK(p[2] == 0);
     const bool outside =
-        p[0] < lo[0] - 3 * S || p[0] > hi[0] + 3 * S || p[1] < lo[1] - 3 * S || p[1] > hi[1] + 3 * S;
+        p[0] < lo[0] - 2 * S || p[0] > hi[0] + 2 * S || p[1] < lo[1] - 2 * S || p[1] > hi[1] + 2 * S;
     CHECK(outside);
     for (std::size_t k = 0; k < 4; ++k)
       if ((k & 1 ? p[0] > hi[0] : p[0] < lo[0]) && (k & 2 ? p[1] > hi[1] : p[1] < lo[1]))
