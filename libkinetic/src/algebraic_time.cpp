@@ -301,8 +301,9 @@ int compare(const SlabTime& x, const SlabTime& y) {
     return order;
   // Overlapping enclosures (rare in a queue of isolated roots): decide whether both are roots of one
   // polynomial, then narrow the wider isolated root, then the other one.
-  const bool same_polynomial = x.root_ && y.root_ && x.root_->key[0] >= 0 && x.root_->slab == y.root_->slab &&
-                               x.root_->key == y.root_->key;
+  const bool same_polynomial =
+      x.root_ && y.root_ && x.root_->slab == y.root_->slab &&
+      ((x.root_->key[0] >= 0 && x.root_->key == y.root_->key) || x.root_->same_polynomial_as(*y.root_));
   {
     CGAL::Protect_FPU_rounding<true> guard;
     for (;;) {

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -69,12 +70,33 @@ struct IsolatedRoot {
   mutable std::unique_ptr<const ExactPoly> exact_memo; // exact_polynomial()
   // The polynomial that bisection and narrowing evaluate: the sharp one once it exists.
   const IntervalPoly& bisection_polynomial() const { return sharp ? *sharp : enclosure; }
+  // Whether other's polynomial is this one's up to a non-zero factor, known without computing either
+  // (the same certificate on translated points, docs/MATH.md §3.7); false when not known.
+  virtual bool same_polynomial_as(const IsolatedRoot& other) const = 0;
 };
 
-// An isolated root whose exact polynomial is source() (a callable returning ExactPoly).
+namespace internal {
+template <class S, class = void> struct knows_translates : std::false_type {};
+template <class S>
+struct knows_translates<
+    S, std::void_t<decltype(std::declval<const S&>().translate_of(std::declval<const S&>()))>>
+    : std::true_type {};
+} // namespace internal
+
+// An isolated root whose exact polynomial is source() (a callable returning ExactPoly). A source with
+// `bool translate_of(const Source&) const` says when two sources are one polynomial on translated
+// points.
 template <class Source> struct IsolatedRootOf final : IsolatedRoot {
   explicit IsolatedRootOf(Source s) : source(std::move(s)) {}
   ExactPoly exact() const override { return source(); }
+  bool same_polynomial_as(const IsolatedRoot& other) const override {
+    if constexpr (internal::knows_translates<Source>::value) {
+      const auto* o = dynamic_cast<const IsolatedRootOf*>(&other);
+      return o != nullptr && source.translate_of(o->source);
+    } else {
+      return false;
+    }
+  }
   Source source;
 };
 

@@ -80,6 +80,12 @@ struct Engine {
   std::vector<std::pair<int, std::uint32_t>> pending_radius; // (certificate, version)
   std::vector<std::pair<int, std::uint32_t>> pending_touch;  // radius touches at now (certificate, version)
   std::vector<std::pair<int, std::uint32_t>> pending_hull_touch; // hull orientations touching zero at now
+  // The time each certificate fired in this batch was scheduled at: equal to now, but as the root of
+  // that certificate's own polynomial. A failure is resolved with now set to it, so that the
+  // certificates built there recognise their own root (sign_after_own_root) whichever of the batch's
+  // equal times was popped first: on a periodic run the copies of one event are such a batch
+  // (docs/MATH.md §8.6).
+  std::unordered_map<int, SlabTime> fired_times;
   // Set when a hull ridge is found folded at now around a simplex that is not flat
   // (hull_ridge_folded_at_now), or a hull flip would add a top simplex flat at now without turning
   // there (flat_without_turning_at_now, flippable): the triangulation is not embedded just after
@@ -439,6 +445,7 @@ struct Engine {
   void emit_batch(Observer& observer, std::vector<Step>& steps, bool at_frame);
   void process_batch(std::vector<Step>& steps);
   void fire(const QueueEntry& e);
+  void at_own_time(int cert); // now = the time cert fired at, if it fired in this batch
   void run_slab(Observer& observer);
 
   // ------------------------------------ static rebuilds with CGAL (engine_static_rebuild.cpp)

@@ -58,8 +58,14 @@ void Engine::process_batch(std::vector<Step>& steps) {
   steps.push_back(std::move(settle));
 }
 
+void Engine::at_own_time(int cert) {
+  if (auto it = fired_times.find(cert); it != fired_times.end())
+    now = it->second;
+}
+
 // A popped entry at now: its certificate fails, or its simplex touches rho.
 void Engine::fire(const QueueEntry& e) {
+  fired_times.insert_or_assign(static_cast<int>(e.cert), e.u);
   if (e.touch && certs[e.cert].kind == CertKind::radius)
     pending_touch.emplace_back(static_cast<int>(e.cert), e.version);
   else if (e.touch)
@@ -95,8 +101,11 @@ void Engine::run_slab(Observer& observer) {
       if (ce.alive && ce.version == e.version)
         fire(e);
     }
+    const SlabTime batch_time = now; // narrowed: the reported time rounds it in doubles (§3.12)
     std::vector<Step> steps;
     process_batch(steps);
+    fired_times.clear();
+    now = batch_time;
     emit_batch(observer, steps, false);
     if (options.audit && ++batches_since_audit >= options.audit_stride) {
       batches_since_audit = 0;

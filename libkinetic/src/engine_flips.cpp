@@ -201,6 +201,7 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
         }
         if (flippable(facet, change)) {
           pending_delaunay.erase(it);
+          at_own_time(id);
           flip(facet, change, steps);
           ++flips_in_batch;
           flipped = true;
@@ -240,6 +241,7 @@ void Engine::resolve_touches(OldMembership& old_k) {
     if (!c.alive || c.version != version)
       continue;
     const Simplex s = c.key; // install_radius replaces the certificate
+    at_own_time(id);
     ++stats.radius_touches;
     tri.for_each_tet_containing(
         s, [&](const Simplex& t) { for_each_face(t, [&](const Simplex& f) { old_k.emplace(f, in_k(f)); }); });
@@ -325,6 +327,7 @@ void Engine::resolve_radius(Step& settle, OldMembership& old_k) {
     if (!c.alive || c.version != version)
       continue;
     Simplex s = c.key;
+    at_own_time(id);
     for_each_face(s, [&](const Simplex& f) { old_k.emplace(f, in_k(f)); });
     // Faces' membership depends on cofaces: also record the cofaces' faces through the closure.
     Face& f = faces.at(s);

@@ -60,6 +60,34 @@ bool KeyPolynomial::vanishes_at_start() const {
   return f.degree_bound() < 0 || f[0] == 0;
 }
 
+bool KeyPolynomial::translate_of(const KeyPolynomial& other) const {
+  if (kind != other.kind || count != other.count || count == 0 || (kind == 2 && rho2 != other.rho2))
+    return false;
+  const auto n = static_cast<std::size_t>(count);
+  const auto moved_to = [](const MovingPoint& p, const std::array<std::int64_t, 3>& t, const MovingPoint& q) {
+    return p.b == q.b && p.a[0] + t[0] == q.a[0] && p.a[1] + t[1] == q.a[1] && p.a[2] + t[2] == q.a[2];
+  };
+  const bool any_order = kind == 0 || kind == 1 || kind == 2;
+  for (std::size_t j = 0; j < (any_order ? n : 1); ++j) {
+    const std::array<std::int64_t, 3> t{other.pts[j].a[0] - pts[0].a[0], other.pts[j].a[1] - pts[0].a[1],
+                                        other.pts[j].a[2] - pts[0].a[2]};
+    bool all = true;
+    for (std::size_t i = 0; i < n && all; ++i) {
+      if (!any_order) {
+        all = moved_to(pts[i], t, other.pts[i]);
+        continue;
+      }
+      bool found = false;
+      for (std::size_t k = 0; k < n && !found; ++k)
+        found = moved_to(pts[i], t, other.pts[k]);
+      all = found;
+    }
+    if (all)
+      return true;
+  }
+  return false;
+}
+
 ExactPoly KeyPolynomial::operator()() const {
   const Poly<mpz_class> f = coefficients(pts);
   // Divide out u^m: the same roots in (0, 1], and no root at 0, where an isolating interval

@@ -45,6 +45,12 @@ struct KeyPolynomial {
 
   ExactPoly operator()() const;
 
+  // Whether other is this polynomial on the same points translated by one integer vector, in any
+  // order where the polynomial is alternating or symmetric in its points (in-sphere, orientation,
+  // radius) and in the same order otherwise: then the two are equal up to sign (translation
+  // invariance), with the same roots (docs/MATH.md §3.7; the copies of a periodic run, §8.6).
+  bool translate_of(const KeyPolynomial& other) const;
+
   // Whether the polynomial vanishes at u = 0, exactly: its value there is the static determinant of
   // the points frozen at the slab start, far cheaper than the whole polynomial in exact integers.
   bool vanishes_at_start() const;

@@ -1,6 +1,7 @@
 // Certified root isolation in doubles (root_isolation.h) and exact comparison of the times it
 // produces (SlabTime over IsolatedRoot). Expected roots are derived on paper.
 #include "algebraic_time.h"
+#include "root_cache.h"
 #include "root_isolation.h"
 
 #include <CGAL/FPU.h>
@@ -427,4 +428,56 @@ TEST_CASE("times of proportional polynomials compare equal without algebraic rea
   // 1/sqrt(2) < 6369051672525773 / 2^53, the double nearest to it (2 x^2 > 1 for that x).
   SlabTime above(Rational(CGAL::Gmpz("6369051672525773"), CGAL::Gmpz("9007199254740992")));
   REQUIRE(compare(b, above) == -1);
+}
+
+TEST_CASE("a certificate on translated points is known to be the same polynomial without computing it",
+          "[kinetic][isolation]") {
+  // Five moving points and their translates by (7, -3, 11), listed in another order: the in-sphere
+  // polynomial is alternating in its points and translation invariant, so the two are equal up to sign
+  // (checked here in exact integers). Changing one displacement, or (for the fold test, whose points
+  // are ordered) the order, breaks it.
+  std::array<MovingPoint, 5> p{{{{0, 0, 0}, {1, 2, 0}},
+                                {{5, 1, 0}, {0, -1, 3}},
+                                {{1, 6, 2}, {2, 0, 1}},
+                                {{2, 2, 7}, {-1, 1, 0}},
+                                {{4, 5, 5}, {0, 0, -2}}}};
+  const std::array<std::int64_t, 3> t{7, -3, 11};
+  std::array<MovingPoint, 5> q;
+  const std::array<std::size_t, 5> order{3, 0, 4, 1, 2};
+  for (std::size_t i = 0; i < 5; ++i) {
+    q[i] = p[order[i]];
+    for (std::size_t a = 0; a < 3; ++a)
+      q[i].a[a] += t[a];
+  }
+  const auto key = [](int kind, int count, const std::array<MovingPoint, 5>& pts) {
+    detail::KeyPolynomial k;
+    k.kind = kind;
+    k.count = count;
+    k.pts = pts;
+    return k;
+  };
+  const detail::KeyPolynomial a = key(0, 5, p), b = key(0, 5, q);
+  REQUIRE(a.translate_of(b));
+  REQUIRE(b.translate_of(a));
+  const ExactPoly fa = a(), fb = b();
+  REQUIRE((fa == fb || fa == -fb));
+  REQUIRE(make_isolated_root(a)->same_polynomial_as(*make_isolated_root(b)));
+
+  std::array<MovingPoint, 5> r = q;
+  r[2].b[0] += 1;
+  REQUIRE(!a.translate_of(key(0, 5, r)));
+  REQUIRE(!make_isolated_root(a)->same_polynomial_as(*make_isolated_root(key(0, 5, r))));
+
+  // The fold test (kind 3) of a ridge p0 p1 with apices p2, p3 is not symmetric in its points.
+  REQUIRE(key(3, 4, p).translate_of(key(3, 4, [&] {
+    std::array<MovingPoint, 5> s = p;
+    for (MovingPoint& m : s)
+      for (std::size_t x = 0; x < 3; ++x)
+        m.a[x] += t[x];
+    return s;
+  }())));
+  std::array<MovingPoint, 5> swapped = p; // the ridge's two points exchanged: the same set of points
+  std::swap(swapped[0], swapped[1]);
+  REQUIRE(key(0, 4, p).translate_of(key(0, 4, swapped)));
+  REQUIRE(!key(3, 4, p).translate_of(key(3, 4, swapped)));
 }
