@@ -125,7 +125,8 @@ void add_report_command(CLI::App& app) {
       ->add_option("--sweep-radii", args->sweep_radii,
                    "radii A:B:STEP of the radius sweep computed at report time (default: nine radii from "
                    "half to one and a half times the first store's radius); may be repeated; sweep files "
-                   "beside the stores are then not used")
+                   "beside the stores are then not used; a periodic run leaves out, with a note on the page, "
+                   "the radii with 4 x radius not below its shortest period")
       ->check(CLI::Validator([](std::string& value) { return expand_range(value, nullptr); }, "A:B:STEP"));
   report->add_flag("--no-sweep", args->no_sweep,
                    "compute no radius sweep: show only the sweeps of `medusa sweep` found or given");

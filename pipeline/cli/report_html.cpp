@@ -72,10 +72,11 @@ void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
       << "<div id=\"headlines\" class=\"cards\"></div>\n<div id=\"radius-answer\"></div>\n"
       << "<div id=\"glance-charts\" class=\"charts\"></div>\n";
   if (crocker.empty())
-    out << "<p class=\"note\">At which radius? No radius sweep was computed (<code>--no-sweep</code>, or a "
-           "periodic run): these counts are at one radius. <code>medusa report</code> without "
-           "<code>--no-sweep</code>, or <code>medusa sweep RUN --radii 2:4:0.25</code> in the folder of the "
-           "store, adds the radii.</p>\n";
+    out << "<p class=\"note\">At which radius? No radius sweep was computed (<code>--no-sweep</code>, or on "
+           "a periodic run no swept radius with 4 x radius below the shortest period, docs/MATH.md §8.3): "
+           "these counts are at one radius. <code>medusa report</code> without <code>--no-sweep</code> (with "
+           "<code>--sweep-radii</code> small enough for the period), or <code>medusa sweep RUN --radii "
+           "2:4:0.25</code> in the folder of the store, adds the radii.</p>\n";
   out << "</section>\n";
   if (!crocker.empty()) {
     out << "<section id=\"crocker\">\n<h2>At which radius? CROCKER plots of the radius sweeps</h2>\n"

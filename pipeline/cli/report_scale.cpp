@@ -3,8 +3,11 @@
 #include "diagram_selection.h"
 #include "interrupt.h"
 #include "radius_sweep.h"
+#include "recorded_domain.h"
 
 #include "medusa/core/error.h"
+#include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "medusa/periodic/periodic_cover.h"
 
 #include <algorithm>
 #include <array>
@@ -58,6 +61,24 @@ std::string radii_text(const std::vector<std::string>& radii, const std::vector<
   for (std::size_t i = 0; i < radii.size(); ++i)
     text += (i == 0 ? "" : i + 1 == radii.size() ? " and " : ", ") + radii[i];
   return text;
+}
+
+// The note on radii left out of the sweep of a periodic run: 4 x radius not below its shortest period.
+std::string too_large_note(const std::string& name, const io::PeriodicDomain& domain, std::int64_t scale,
+                           const std::vector<std::string>& left_out, const std::vector<std::string>& grid,
+                           bool none_left) {
+  std::size_t shortest = 3;
+  for (std::size_t a = 0; a < 3; ++a)
+    if (domain.periodic[a] && (shortest == 3 || domain.period[a] < domain.period[shortest]))
+      shortest = a;
+  std::ostringstream period;
+  period << static_cast<double>(domain.period[shortest]) / static_cast<double>(scale);
+  return name + " is periodic along " + domain.axes() + ": " +
+         (none_left ? std::string("no radius sweep is computed for it, its radii ")
+                    : "radi" + std::string(left_out.size() == 1 ? "us " : "i ")) +
+         radii_text(left_out, grid) + (none_left || left_out.size() > 1 ? " are" : " is") +
+         " left out, as the complex on the torus needs 4 x radius below the shortest period, " +
+         period.str() + " along " + char('x' + shortest) + " (docs/MATH.md §8.3)";
 }
 
 // One sweep: per type, per radius, the Betti numbers at each frame.
@@ -313,15 +334,31 @@ ScaleSection report_scale(std::vector<ReportRun>& runs, const ScaleOptions& opti
       s.origin = "read from " + own.string() + " (written by medusa sweep)";
     } else if (options.no_sweep) {
       continue;
-    } else if (!runs[i].run_info.periodic_axes.empty()) {
-      notes.push_back(runs[i].name + " is a periodic run: no radius sweep is computed for it at report time");
-      continue;
     } else {
+      // A periodic run is swept on the torus, at the radii whose complex there is defined (docs/MATH.md
+      // §8.3): the others are left out, with a note on the page.
+      const io::PeriodicDomain domain = recorded_domain(runs[i].run_info, runs[i].input.scale, store);
+      std::vector<std::string> radii, too_large;
+      for (const std::string& r : computed_radii) {
+        const kinetic::SquaredRadius rho2 = kinetic::squared_radius_from_decimal(r, runs[i].input.scale);
+        if (domain.any() && periodic::axis_too_short_for_radius(domain, rho2) >= 0)
+          too_large.push_back(r);
+        else
+          radii.push_back(r);
+      }
+      if (!too_large.empty()) {
+        notes.push_back(too_large_note(runs[i].name, domain, runs[i].input.scale, too_large, computed_radii,
+                                       radii.empty()));
+        if (!options.quiet)
+          std::cerr << "medusa: warning: " << notes.back() << "\n";
+      }
+      if (radii.empty())
+        continue;
       if (!options.quiet)
-        std::cerr << "medusa report: radius sweep of " << runs[i].name << " at " << computed_radii.size()
-                  << " radii on " << std::min<std::size_t>(workers, computed_radii.size()) << " thread(s)\n";
+        std::cerr << "medusa report: radius sweep of " << runs[i].name << " at " << radii.size()
+                  << " radii on " << std::min<std::size_t>(workers, radii.size()) << " thread(s)\n";
       const std::vector<RadiusResult> results =
-          sweep_radii(runs[i].input, runs[i].run_info, io::PeriodicDomain{}, computed_radii, workers, false,
+          sweep_radii(runs[i].input, runs[i].run_info, domain, radii, workers, false,
                       [&](const std::string& radius, std::size_t done, std::size_t total) {
                         if (!options.quiet)
                           std::cerr << "medusa report: " << runs[i].name << " radius " << radius << " done ("
@@ -368,6 +405,7 @@ ScaleSection report_scale(std::vector<ReportRun>& runs, const ScaleOptions& opti
   section.scale = of_runs.size() >= 2 ? comparison(of_runs, runs)
                                       : json{{"radii", json::array()}, {"statements", json::array()}};
   section.scale["how"] = computed_how;
+  section.scale["computed_radii"] = computed_radii;
   section.scale["notes"] = notes;
   section.scale["computed"] = std::any_of(sweeps.begin(), sweeps.end(),
                                           [](const Sweep& s) { return s.origin.rfind("computed", 0) == 0; });

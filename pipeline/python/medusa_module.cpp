@@ -87,9 +87,12 @@ py::object time_value(double t) { return py::float_(t); }
 
 py::list classes(StoreView& store, const py::object& type, std::optional<int> dim,
                  const std::string& filtration, bool zero_length, bool shorten) {
-  const auto records = store.classes(direction_of(filtration), type_of(type), dim, zero_length, shorten);
+  std::vector<std::string> wraps;
+  const auto records =
+      store.classes(direction_of(filtration), type_of(type), dim, zero_length, shorten, &wraps);
   py::list out;
-  for (const persistence::ClassRecord& r : records) {
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const persistence::ClassRecord& r = records[i];
     py::dict c;
     c["id"] = r.id;
     c["dimension"] = r.dim;
@@ -107,6 +110,8 @@ py::list classes(StoreView& store, const py::object& type, std::optional<int> di
     c["medusa_death_cell"] = r.essential ? py::object(py::none()) : py::object(py::int_(r.death_cell));
     c["medusa_cycle"] = r.cycle;
     c["simplices"] = r.simplices;
+    if (!wraps.empty()) // on a periodic run, as `medusa classes --format json` (docs/MATH.md §8.8)
+      c["wraps"] = wraps[i];
     out.append(std::move(c));
   }
   return out;
@@ -181,7 +186,7 @@ public:
 
 std::shared_ptr<StoreView> run(const std::string& input, const py::object& radius, const std::string& output,
                                const std::string& source, bool snap, unsigned threads, bool force,
-                               bool shorten_representatives) {
+                               bool shorten_representatives, bool periodic_as_open) {
   RunRequest request;
   request.input = input;
   request.radius =
@@ -192,6 +197,7 @@ std::shared_ptr<StoreView> run(const std::string& input, const py::object& radiu
   request.threads = threads;
   request.force = force;
   request.shorten_representatives = shorten_representatives;
+  request.periodic_as_open = periodic_as_open;
   std::string path;
   {
     const SignalHook hook;
@@ -229,6 +235,9 @@ PYBIND11_MODULE(medusa, m) {
       .def_property_readonly(
           "frame_times", [](const StoreView& s) { return s.medusa().input.frame_times; },
           "the frame times (MCS)")
+      .def_property_readonly(
+          "periodic_axes", [](const StoreView& s) { return s.medusa().run.periodic_axes; },
+          "the periodic axes of the run (\"x,y\", ...; \"\" for an open run, docs/MATH.md §8)")
       .def("diagrams", &diagrams, py::arg("type") = py::none(), py::arg("dim") = py::none(),
            py::arg("filtration") = "forward", py::arg("zero_length") = false, py::arg("layout") = "gudhi",
            "Persistence diagram of the whole medusa (type None or 'all') or of one cell type.\n"
@@ -256,9 +265,10 @@ PYBIND11_MODULE(medusa, m) {
   m.def("open", &open_store, py::arg("path"), "Open a store written by `medusa run` or medusa.run");
   m.def("run", &run, py::arg("input"), py::arg("radius") = "auto", py::arg("output") = "",
         py::arg("source") = "", py::arg("snap") = false, py::arg("threads") = 0, py::arg("force") = false,
-        py::arg("shorten_representatives") = false,
+        py::arg("shorten_representatives") = false, py::arg("periodic_as_open") = false,
         "Run the pipeline of `medusa run` in this process (the GIL is released) on a CC3D output folder "
         "or cells.csv[.gz], write the store (default <input name>.h5; an existing one only with force=True) "
-        "and return it opened. Ctrl-C stops it with KeyboardInterrupt and leaves no store. "
-        "shorten_representatives: as `medusa run --shorten-representatives` (docs/MATH.md §7.13).");
+        "and return it opened. Ctrl-C stops it with KeyboardInterrupt and leaves no store. A periodic run "
+        "is analysed on the torus (docs/MATH.md §8). shorten_representatives, periodic_as_open: as "
+        "`medusa run --shorten-representatives` (docs/MATH.md §7.13) and `--periodic-as-open`.");
 }

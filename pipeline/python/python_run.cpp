@@ -7,8 +7,10 @@
 
 #include "medusa/core/error.h"
 #include "medusa/io/run_reader.h"
+#include "medusa/kinetic/kinetic_alpha_complex.h"
 #include "medusa/medusa/store_reader.h"
 #include "medusa/medusa/store_writer.h"
+#include "medusa/periodic/periodic_cover.h"
 #include "medusa/persistence/diagram_store.h"
 #include "medusa/persistence/medusa_diagrams.h"
 
@@ -34,14 +36,22 @@ std::string run_pipeline(const RunRequest& request, const std::string& command_l
   io::RunOptions options;
   options.source = cli::choose_source(request.input, request.source);
   options.snap = request.snap;
+  options.allow_periodic_as_open = request.periodic_as_open;
+  options.read_periodic = !request.periodic_as_open;
   const io::RunData data = io::read_run(request.input, options);
   outputs.check_not_read(data.sources);
   cli::check_interrupted();
 
   const std::string radius = request.radius == "auto" ? cli::radius_from_volumes(data).first : request.radius;
+  // As `medusa run`: a periodic run on the torus, the cells and their copies near the seams through the
+  // canonical filter (docs/MATH.md §8); a radius too large for the period refused before any work.
+  const io::PeriodicDomain domain = request.periodic_as_open ? io::PeriodicDomain{} : data.domain;
+  if (domain.any())
+    periodic::check_periodic_radius(
+        domain, kinetic::squared_radius_from_decimal(radius, data.trajectories.scale), radius);
   {
     medusa::StoreWriter writer(outputs.final_name(0), medusa::StoreWriter::Publish::later);
-    cli::build_medusa(data.trajectories, cli::run_info(data, radius, command_line), writer);
+    cli::build_medusa(data.trajectories, cli::run_info(data, radius, command_line), writer, domain);
   }
   cli::check_interrupted();
 

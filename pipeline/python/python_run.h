@@ -16,12 +16,15 @@ struct RunRequest {
   unsigned threads = 0;                 // 0: one per hardware thread
   bool force = false;                   // replace an existing store (as `medusa run --force`)
   bool shorten_representatives = false; // as `medusa run --shorten-representatives`
+  bool periodic_as_open = false;        // as `medusa run --periodic-as-open`
 };
 
-// Runs the pipeline and returns the path of the complete store. An existing store is an InputError
-// unless `force`. Polls cli::check_interrupted() (throws cli::Interrupted). Throws medusa::Error; a
-// failed or interrupted run leaves no store (nor replaces an existing one): the store is published
-// only once complete with its diagrams.
+// Runs the pipeline and returns the path of the complete store. A periodic run is analysed on the torus
+// as by `medusa run` (docs/MATH.md §8; a radius with 4 x radius not below a period is a GeometryError
+// before anything is written), or as an open run with `periodic_as_open`. An existing store is an
+// InputError unless `force`. Polls cli::check_interrupted() (throws cli::Interrupted). Throws medusa::Error;
+// a failed or interrupted run leaves no store (nor replaces an existing one): the store is published only
+// once complete with its diagrams.
 std::string run_pipeline(const RunRequest& request, const std::string& command_line);
 
 } // namespace medusa::python

@@ -3,6 +3,7 @@
 #include "medusa/core/error.h"
 #include "medusa/medusa/complex_index.h"
 #include "medusa/medusa/store_reader.h"
+#include "medusa/persistence/class_winding.h"
 #include "medusa/persistence/diagram_store.h"
 #include "medusa/persistence/filtration.h"
 
@@ -75,16 +76,26 @@ const persistence::Diagram& StoreView::diagram(persistence::Direction direction,
 
 std::vector<persistence::ClassRecord> StoreView::classes(persistence::Direction direction, int cell_type,
                                                          std::optional<int> dim, bool zero_length,
-                                                         bool shorten) {
+                                                         bool shorten, std::vector<std::string>* wraps) {
   persistence::RepresentativeOptions options;
   options.max_dim = dim ? *dim : 2;
   options.zero_length = zero_length;
   options.shorten = shorten;
+  const persistence::DiagramWithClasses with_classes =
+      persistence::diagram_with_classes(path_, medusa_, direction, cell_type, options);
+  std::map<std::size_t, std::string> axes_by_row;
+  if (!medusa_.run.periodic_axes.empty()) {
+    const std::vector<std::string> axes = persistence::class_wrapping_axes(medusa_, with_classes);
+    for (std::size_t i = 0; i < with_classes.classes.size(); ++i)
+      axes_by_row[with_classes.classes.rows[i]] = axes[i];
+  }
   std::vector<persistence::ClassRecord> out;
-  for (persistence::ClassRecord& r : persistence::class_records(
-           medusa_, persistence::diagram_with_classes(path_, medusa_, direction, cell_type, options)))
-    if (!dim || r.dim == *dim)
+  for (persistence::ClassRecord& r : persistence::class_records(medusa_, with_classes))
+    if (!dim || r.dim == *dim) {
+      if (wraps != nullptr && !medusa_.run.periodic_axes.empty())
+        wraps->push_back(axes_by_row[r.id]);
       out.push_back(std::move(r));
+    }
   return out;
 }
 

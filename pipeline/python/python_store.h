@@ -28,9 +28,12 @@ public:
   const persistence::Diagram& diagram(persistence::Direction direction, int cell_type);
 
   // The classes of that diagram in degree `dim` (or 0-2), with their representatives, shortened on
-  // request (docs/MATH.md §7.13; a store written with shortened ones holds only those).
+  // request (docs/MATH.md §7.13; a store written with shortened ones holds only those). On a periodic
+  // run, `wraps` (when given) gets per class the axes its loop wraps around ("x", "x,y"; "" for none and
+  // for other degrees, docs/MATH.md §8.8), as `medusa classes`; it stays empty on an open run.
   std::vector<persistence::ClassRecord> classes(persistence::Direction direction, int cell_type,
-                                                std::optional<int> dim, bool zero_length, bool shorten);
+                                                std::optional<int> dim, bool zero_length, bool shorten,
+                                                std::vector<std::string>* wraps = nullptr);
 
   // K(t+) (K(t_end-) at the end, docs/MATH.md §6.6) as simplices of CC3D cell ids, sorted by dimension
   // then ids; the type-X subcomplex when `type` is given. Throws InputError outside [t_0, t_end].

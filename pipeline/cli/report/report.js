@@ -320,14 +320,15 @@
   function radiusAnswer() {
     const root = document.getElementById("radius-answer");
     const own = data.sweeps.filter((w) => w.run >= 0);
-    for (const n of data.scale.notes || []) html("p", { class: "note" }, root, n);
-    if (!own.length) return;
+    const notes = () => { for (const n of data.scale.notes || []) html("p", { class: "note sweep-note" }, root, n); };
+    if (!own.length) return notes();
     html("h3", {}, root, own.length > 1 ? "At which radius do the runs differ?" : "At which radius does it show?");
     const computed = own.filter((w) => w.origin.startsWith("computed"));
     const how = html("p", { class: "note sweep-origin" }, root);
     how.textContent = (computed.length ? "Radius sweep computed at report time from the trajectories in the store" + (data.runs.length > 1 ? "s" : "") + " (the same computation as " +
-      "medusa sweep), " + data.scale.how + ": radii " + computed[0].radii.join(", ") + ". " : "") +
+      "medusa sweep), " + data.scale.how + ": radii " + (data.scale.computed_radii || computed[0].radii).join(", ") + ". " : "") +
       own.filter((w) => !w.origin.startsWith("computed")).map((w) => w.name + ": radius sweep " + w.origin + ".").join(" ");
+    notes();
     if (data.scale.statements.length) {
       const ul = html("ul", { class: "radius-statements" }, root);
       for (const st of data.scale.statements) {

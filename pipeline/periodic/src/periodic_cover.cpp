@@ -113,19 +113,26 @@ void add_sentinels(PeriodicCover& cover, const io::PeriodicDomain& domain, std::
 
 } // namespace
 
-void check_periodic_radius(const io::PeriodicDomain& domain, const kinetic::SquaredRadius& rho2,
-                           const std::string& radius_text) {
+int axis_too_short_for_radius(const io::PeriodicDomain& domain, const kinetic::SquaredRadius& rho2) {
   for (std::size_t a = 0; a < 3; ++a) {
     if (!domain.periodic[a])
       continue;
     // 4 rho < L  <=>  16 rho_g^2 < L_g^2  <=>  16 num < L_g^2 den (exact).
     const mpz_class period(static_cast<long>(domain.period[a]));
     if (16 * rho2.num >= period * period * rho2.den)
-      throw GeometryError("radius " + radius_text +
-                          " is too large for the periodic lattice: 4 x radius must be below " +
-                          "the period " + std::to_string(domain.lattice[a]) + " along " + char('x' + a) +
-                          " for the complex on the torus to be defined (docs/MATH.md §8.3)");
+      return static_cast<int>(a);
   }
+  return -1;
+}
+
+void check_periodic_radius(const io::PeriodicDomain& domain, const kinetic::SquaredRadius& rho2,
+                           const std::string& radius_text) {
+  const int a = axis_too_short_for_radius(domain, rho2);
+  if (a >= 0)
+    throw GeometryError("radius " + radius_text +
+                        " is too large for the periodic lattice: 4 x radius must be below " + "the period " +
+                        std::to_string(domain.lattice[static_cast<std::size_t>(a)]) + " along " +
+                        char('x' + a) + " for the complex on the torus to be defined (docs/MATH.md §8.3)");
 }
 
 PeriodicCover cover_trajectories(const kinetic::Trajectories& originals, const io::PeriodicDomain& domain,

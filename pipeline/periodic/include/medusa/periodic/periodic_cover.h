@@ -35,6 +35,11 @@ struct PeriodicCover {
   std::size_t ghosts() const { return vertices.size() - originals - sentinels; }
 };
 
+// The first periodic axis (0 x, 1 y, 2 z) whose period is at most 4 rho, or -1 when 4 rho is below every
+// period: the condition under which the quotient of the covering complex is the alpha complex on the
+// torus (docs/MATH.md §8.3). Exact.
+int axis_too_short_for_radius(const io::PeriodicDomain& domain, const kinetic::SquaredRadius& rho2);
+
 // Throws GeometryError unless 4 rho is below every period, the condition under which the quotient of
 // the covering complex is the alpha complex on the torus (docs/MATH.md §8.3). `radius_text` is rho as
 // the user gave it, for the message.
