@@ -5,14 +5,15 @@ documented rule (r/2 to 3r/2 in steps of r/8, rounded half up to 0.01, r the sto
 here in exact decimals); --no-sweep computes none; a sweep file beside the store is read instead.
 
 Usage: check_report_sweep.py <medusa> <CC3D run folder> <workdir>"""
-import csv
-import json
 import os
 import re
 import shutil
 import subprocess
 import sys
 from decimal import ROUND_HALF_UP, Decimal
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from report_sweep_data import page_data, page_sweep, sweep_csv  # noqa: E402
 
 medusa, run, work = sys.argv[1:4]
 shutil.rmtree(work, ignore_errors=True)
@@ -26,29 +27,6 @@ def call(*args):
     if result.returncode != 0:
         sys.exit(f"medusa {' '.join(args)}: exit {result.returncode}\n{result.stderr}")
     return result
-
-
-def page_data(path):
-    text = open(path).read()
-    m = re.search(r'<script type="application/json" id="report-data">(.*?)</script>', text, re.S)
-    return json.loads(m.group(1).replace("<\\/", "</"))
-
-
-def sweep_csv(path):
-    """(radius as Decimal, time, type) -> [b0, b1, b2]"""
-    with open(path) as f:
-        return {(Decimal(r["radius"]), float(r["time"]), r["type"]): [int(r["b0"]), int(r["b1"]), int(r["b2"])]
-                for r in csv.DictReader(f)}
-
-
-def page_sweep(sweep):
-    """The same mapping from the page's JSON."""
-    out = {}
-    for t in sweep["types"]:
-        for ri, radius in enumerate(sweep["radii"]):
-            for k, time in enumerate(sweep["times"]):
-                out[(Decimal(radius), float(time), t["label"])] = t["betti"][ri][k]
-    return out
 
 
 RADIUS = "3"

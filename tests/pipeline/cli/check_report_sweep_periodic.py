@@ -12,15 +12,15 @@ naming them, and the rest of the report is written.
         too large: no sweep for the run, and the page says why.
 
 Usage: check_report_sweep_periodic.py <medusa> <periodic CC3D run folder> <workdir>"""
-import csv
 import gzip
-import json
 import os
-import re
 import shutil
 import subprocess
 import sys
 from decimal import Decimal
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from report_sweep_data import page_data, page_sweep, sweep_csv  # noqa: E402
 
 medusa, run, work = sys.argv[1:4]
 shutil.rmtree(work, ignore_errors=True)
@@ -34,28 +34,6 @@ def call(*args, code=0):
     if result.returncode != code:
         sys.exit(f"medusa {' '.join(args)}: exit {result.returncode}, expected {code}\n{result.stderr}")
     return result
-
-
-def page_data(path):
-    text = open(path).read()
-    m = re.search(r'<script type="application/json" id="report-data">(.*?)</script>', text, re.S)
-    return json.loads(m.group(1).replace("<\\/", "</"))
-
-
-def sweep_csv(path):
-    """(radius as Decimal, time, type) -> [b0, b1, b2]"""
-    with open(path) as f:
-        return {(Decimal(r["radius"]), float(r["time"]), r["type"]): [int(r["b0"]), int(r["b1"]), int(r["b2"])]
-                for r in csv.DictReader(f)}
-
-
-def page_sweep(sweep):
-    out = {}
-    for t in sweep["types"]:
-        for ri, radius in enumerate(sweep["radii"]):
-            for k, time in enumerate(sweep["times"]):
-                out[(Decimal(radius), float(time), t["label"])] = t["betti"][ri][k]
-    return out
 
 
 def check_equal(label, data, oracle, radii):
