@@ -89,6 +89,8 @@ void write_complex_vtk(std::ostream& out, const medusa::Medusa& medusa,
     scalars(out, "in_class", "int", membership(f.point_class));
     scalars(out, "class_id", "long", f.point_class);
   }
+  if (!f.point_beyond_seam.empty())
+    scalars(out, "beyond_seam", "int", f.point_beyond_seam);
 }
 
 void write_complex_csv(std::ostream& out, const medusa::Medusa& medusa,

@@ -41,6 +41,8 @@ void write_complex_vtu(std::ostream& out, const medusa::Medusa& medusa,
     data_array(out, "Int32", "in_class", membership(f.point_class));
     data_array(out, "Int64", "class_id", f.point_class);
   }
+  if (!f.point_beyond_seam.empty())
+    data_array(out, "Int32", "beyond_seam", f.point_beyond_seam);
   out << "   </PointData>\n   <CellData Scalars=\"cell_type\">\n";
   data_array(out, "Int32", "cell_type", f.cell_type);
   data_array(out, "Int32", "dimension", f.cell_dimension);

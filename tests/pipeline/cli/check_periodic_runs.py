@@ -90,6 +90,24 @@ def hand(medusa, work):
     classes = list(csv.DictReader(io.StringIO(p.stdout)))
     assert [r["wraps"] for r in classes] == ["x"], p.stdout
     print("ok: its loop wraps around the domain along x, in the summary and in medusa classes")
+    # `medusa at` draws the seam edge whole (docs/FORMAT.md): at MCS 100 cell 1 (x = 1) and cell 5
+    # (x = 9) are 2 apart across the seam; the edge is drawn from cell 1, in the lattice, to a copy of
+    # cell 5 beyond the seam at x = -1, an extra point marked beyond_seam. Every drawn edge is then
+    # shorter than 2 rho = 2.2, and the four lattice edges are drawn between the cells themselves.
+    vtk = os.path.join(work, "ring_at.vtk")
+    p = subprocess.run([medusa, "at", os.path.join(work, "ring.h5"), "--time", "100", "-o", vtk],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    points, cells, data = read_vtk(vtk)
+    ids, beyond = data["cell_id"], data["beyond_seam"]
+    assert sorted(zip(ids, beyond, (round(x[0], 9) for x in points))) == [
+        (1, 0, 1.0), (2, 0, 3.0), (3, 0, 5.0), (4, 0, 7.0), (5, 0, 9.0), (5, 1, -1.0)], (ids, beyond, points)
+    edges = sorted(tuple(sorted((ids[a], ids[b]))) + (round(points[a][0], 9), round(points[b][0], 9))
+                   for a, b in (c for c in cells if len(c) == 2))
+    assert [e[:2] for e in edges] == [(1, 2), (1, 5), (2, 3), (3, 4), (4, 5)], edges
+    for a, b in (c for c in cells if len(c) == 2):
+        assert sum((points[a][i] - points[b][i]) ** 2 for i in range(3)) < 2.2 ** 2, (ids[a], ids[b])
+    print("ok: medusa at draws the edge across the seam whole, to a copy of the cell beyond it")
     # medusa sweep runs on the torus too: at radius 1.1 the ring is closed at MCS 100 (b1 = 1, which
     # the run read as open never has); a radius with 4 x radius >= L is refused before any output.
     out = os.path.join(work, "ring_sweep")
@@ -166,6 +184,22 @@ def hand(medusa, work):
     xs = sorted(round(float(lines[start + 1 + i].split()[0]), 9) for i in range(count))
     assert xs == [0.6, 1.4, 4.0, 4.0], xs
     print("ok: medusa at writes positions wrapped into the periodic lattice")
+
+
+def read_vtk(path):
+    """A legacy VTK file of `medusa at`: points, cells (point index lists), point data by name."""
+    lines = open(path).read().split("\n")
+    start = next(i for i, line in enumerate(lines) if line.startswith("POINTS"))
+    count = int(lines[start].split()[1])
+    points = [[float(v) for v in lines[start + 1 + i].split()] for i in range(count)]
+    cstart = next(i for i, line in enumerate(lines) if line.startswith("CELLS"))
+    cells = [[int(v) for v in lines[cstart + 1 + i].split()[1:]] for i in range(int(lines[cstart].split()[1]))]
+    pstart = next(i for i, line in enumerate(lines) if line.startswith("POINT_DATA"))
+    data, i = {}, pstart + 1
+    while i < len(lines) and lines[i].startswith("SCALARS"):
+        data[lines[i].split()[1]] = [int(v) for v in lines[i + 2:i + 2 + count]]
+        i += 2 + count
+    return points, cells, data
 
 
 def cells_of(path):
