@@ -68,12 +68,17 @@ Case degenerate_case(const std::string& kind, std::uint64_t seed, int box_dim) {
           }};
 }
 
-// A bundled run read as `medusa run --source csv` reads it (a periodic run as an open one).
-medusa::io::RunData read_csv_run(const std::string& folder) {
+// A bundled run read as `medusa run --source csv|vtk` reads it (VTK centroids snapped to the grid; a
+// periodic run as an open one).
+medusa::io::RunData read_bundled(const std::string& folder, medusa::io::RunSource source) {
   medusa::io::RunOptions options;
-  options.source = medusa::io::RunSource::csv;
+  options.source = source;
   options.allow_periodic_as_open = true;
   return medusa::io::read_run(repo + "/" + folder, options);
+}
+
+medusa::io::RunData read_csv_run(const std::string& folder) {
+  return read_bundled(folder, medusa::io::RunSource::csv);
 }
 
 // `medusa run`'s default radius (--radius auto, pipeline/cli/run_input.cpp): the radius of the ball
@@ -142,6 +147,16 @@ std::vector<Case> cases() {
     const std::string radius = auto_radius(read_csv_run(f));
     out.push_back(decimal_radius_case(
         f.substr(f.rfind('/') + 1) + "_csv_auto", [f] { return read_csv_run(f).trajectories; }, radius));
+  }
+  // The VTK route (snapped voxel centroids) where it gives another stream than the CSV: the runs with
+  // three snapshots (on sorting_3d, mitosis_3d and sorting_2d its stream is the CSV's, digest for digest).
+  for (const char* folder :
+       {"tests/data/cc3d/sorting_3d_seed2", "tests/data/cc3d/nosorting_3d", "tests/data/cc3d/periodic_3d"}) {
+    const std::string f = folder;
+    const auto read = [f] { return read_bundled(f, medusa::io::RunSource::vtk); };
+    out.push_back(decimal_radius_case(
+        f.substr(f.rfind('/') + 1) + "_vtk_auto", [read] { return read().trajectories; },
+        auto_radius(read())));
   }
   // A fixed radius too on one run: a second membership pattern on the same Delaunay events.
   out.push_back(decimal_radius_case(
