@@ -80,26 +80,30 @@ def main():
     if check is None:
         print("\n".join(lines))
         return 0
-    sys.argv = [sys.argv[0], args[0], "--check", check]
-    with open(sys.argv[3]) as f:
-        recorded = [l.rstrip("\n") for l in f if l.strip() and not l.startswith("#")]
+    store = args[0]
+    try:
+        with open(check) as f:
+            recorded = [l.rstrip("\n") for l in f if l.strip() and not l.startswith("#")]
+    except OSError as e:
+        print(f"{check}: cannot read the recorded digests: {e.strerror}", file=sys.stderr)
+        return 1
     if not recorded:
-        print(f"{sys.argv[3]}: no recorded digests", file=sys.stderr)
+        print(f"{check}: no recorded digests", file=sys.stderr)
         return 1
     key = lambda l: " ".join(l.split()[:2])
     now = {key(l): l for l in lines}
     old = {key(l): l for l in recorded}
     for k in sorted(set(now) | set(old)):
         if k not in old:
-            print(f"{sys.argv[1]}: {k} is new (not in {sys.argv[3]})", file=sys.stderr)
+            print(f"{store}: {k} is new (not in {check})", file=sys.stderr)
             return 1
         if k not in now:
-            print(f"{sys.argv[1]}: {k} is missing (recorded in {sys.argv[3]})", file=sys.stderr)
+            print(f"{store}: {k} is missing (recorded in {check})", file=sys.stderr)
             return 1
         if now[k] != old[k]:
-            print(f"{sys.argv[1]}: {k} differs: recorded '{old[k]}', now '{now[k]}'", file=sys.stderr)
+            print(f"{store}: {k} differs: recorded '{old[k]}', now '{now[k]}'", file=sys.stderr)
             return 1
-    print(f"{sys.argv[1]}: {len(lines)} datasets and attributes equal the recorded ones")
+    print(f"{store}: {len(lines)} datasets and attributes equal the recorded ones")
     return 0
 
 
