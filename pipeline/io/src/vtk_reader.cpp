@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <unordered_map>
 
@@ -171,6 +172,9 @@ private:
       if (tuples != points_)
         fail("array " + name + " has " + std::to_string(tuples) + " tuples but POINT_DATA is " +
              std::to_string(points_));
+      // tuples x components values follow: refused before the product can overflow.
+      if (components < 1 || (tuples > 0 && components > std::numeric_limits<std::int64_t>::max() / tuples))
+        fail("array " + name + " has " + std::to_string(components) + " components per tuple");
       std::vector<std::int64_t>* target = name == "CellType" ? &types_ : name == "CellId" ? &ids_ : nullptr;
       const std::optional<IntType> itype = integer_type(type);
       if (target != nullptr && (!itype || components != 1))
