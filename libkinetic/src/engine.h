@@ -5,8 +5,8 @@
 #pragma once
 
 #include "certificate.h"
+#include "certificate_pool.h"
 #include "dimension_policy.h"
-#include "event_queue.h"
 #include "face.h"
 #include "flat_simplex_map.h"
 #include "root_cache.h"
@@ -70,10 +70,8 @@ struct Engine {
   FlatSimplexMap<Face> faces;             // finite simplices of dimension 1..dim in Del
   std::vector<int> dropped_certs_scratch; // certificates of facets that left Del (remove_tet)
 
-  // Certificates (recycled through free_certs) and their failure times.
-  std::vector<Certificate> certs;
-  std::vector<int> free_certs;
-  EventQueue queue;
+  // Certificates and their failure times (certificate_pool.h).
+  CertificatePool certificates;
 
   // Certificates found invalid at the current time, waiting in the current batch.
   std::set<std::pair<Simplex, int>> pending_delaunay;

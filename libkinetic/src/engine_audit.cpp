@@ -26,15 +26,7 @@ void Engine::audit_failure(const std::string& what) const {
 void Engine::audit() {
   ++stats.audits;
   // A rational time strictly between now and the next event (or the slab end).
-  SlabTime upper(Rational(1));
-  for (auto copy = queue; !copy.empty(); copy.pop()) {
-    const QueueEntry& e = copy.top();
-    const Certificate& c = certs[e.cert];
-    if (c.alive && c.version == e.version) {
-      upper = e.u;
-      break;
-    }
-  }
+  const SlabTime upper = certificates.earliest_time(SlabTime(Rational(1)));
   if (!(now < upper))
     return; // the slab has no room left (event at u = 1)
   // The audit compares open conditions (valid on (now, next event)) with closed ones at q, so q must
@@ -69,24 +61,15 @@ void Engine::audit() {
     q = rational_between(now, at);
   }
 
-  // Combinatorial validity: every facet has two top simplices; the Euler characteristic is that of
-  // the sphere S^dim.
-  std::size_t nv = 1, ne = 0, nf = 0, nt = tri.tets().size();
-  std::unordered_set<Simplex, SimplexHash> edges;
-  for (const auto& kv : tri.facets()) {
-    if (kv.second.count != 2)
-      audit_failure("a facet does not have two top simplices");
-    ++nf;
-  }
-  for (const Simplex& t : tri.tets())
-    for (std::size_t i = 0; i < t.size(); ++i)
-      for (std::size_t j = i + 1; j < t.size(); ++j)
-        edges.insert(Simplex{t[i], t[j]});
-  ne = edges.size();
-  for (char a : alive)
-    nv += a ? 1 : 0;
-  if (!euler_characteristic_holds(dim, nv, ne, nf, nt))
-    audit_failure("the Euler characteristic of the augmented triangulation is not that of a sphere");
+  // Each part's own invariants (certificate_pool.h, triangulation.h), then those between the parts.
+  if (std::string v = certificates.first_violation(); !v.empty())
+    audit_failure(v);
+  if (std::string v = tri.first_violation(dim); !v.empty())
+    audit_failure(v);
+  for (std::size_t i = 0; i < alive.size(); ++i)
+    if (tri.tets_of(static_cast<VertexId>(i)).empty() == bool(alive[i]))
+      audit_failure("cell " + std::to_string(i) +
+                    (alive[i] ? " is alive but not in" : " is dead but still in") + " the triangulation");
   // The finite faces recorded are exactly those of Del, each with its count of top simplices.
   std::unordered_set<Simplex, SimplexHash> del_faces;
   for (const Simplex& t : tri.tets())
@@ -122,15 +105,13 @@ void Engine::audit() {
       audit_failure(os.str());
     }
     const detail::Triangulation::Apices* ap = tri.apices(facet);
-    if (ap == nullptr || ap->cert < 0 || !certs[static_cast<std::size_t>(ap->cert)].alive ||
-        certs[static_cast<std::size_t>(ap->cert)].key != facet)
+    if (ap == nullptr || ap->cert < 0 || !certificates[ap->cert].alive || certificates[ap->cert].key != facet)
       audit_failure("a facet has no certificate");
   }
   // Exactly those: a certificate left alive without its simplex would still fire.
-  std::size_t alive_delaunay = 0, alive_radius = 0, certified_radius = 0;
-  for (const Certificate& c : certs)
-    if (c.alive)
-      ++(c.kind == CertKind::delaunay ? alive_delaunay : alive_radius);
+  const std::size_t alive_delaunay = certificates.alive_count(CertKind::delaunay);
+  const std::size_t alive_radius = certificates.alive_count(CertKind::radius);
+  std::size_t certified_radius = 0;
   if (alive_delaunay != delaunay_polys.size())
     audit_failure("a Delaunay certificate outlived its facet");
   // Radius flags and certificates.
@@ -143,7 +124,7 @@ void Engine::audit() {
       audit_failure(os.str());
     }
     // Certificates exactly on the frontier (docs/MATH.md §4.4).
-    bool certified = kv.second.cert >= 0 && certs[static_cast<std::size_t>(kv.second.cert)].alive;
+    bool certified = kv.second.cert >= 0 && certificates[kv.second.cert].alive;
     if (certified != in_frontier(kv.first)) {
       std::ostringstream os;
       os << "simplex " << kv.first

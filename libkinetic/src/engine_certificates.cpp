@@ -166,52 +166,22 @@ bool Engine::is_hull_orientation(const Certificate& c) const {
   return ap != nullptr && (ap->v[0] == infinite_vertex || ap->v[1] == infinite_vertex);
 }
 
-int Engine::new_cert(CertKind kind, const Simplex& key) {
-  int id;
-  if (!free_certs.empty()) {
-    id = free_certs.back();
-    free_certs.pop_back();
-  } else {
-    id = static_cast<int>(certs.size());
-    certs.emplace_back();
-  }
-  Certificate& c = certs[static_cast<std::size_t>(id)];
-  c.kind = kind;
-  c.key = key;
-  c.alive = true;
-  c.substitute = Substitute::none;
-  ++c.version;
-  return id;
-}
+int Engine::new_cert(CertKind kind, const Simplex& key) { return certificates.create(kind, key); }
 
 void Engine::kill_cert(int id) {
   if (id < 0)
     return;
-  Certificate& c = certs[static_cast<std::size_t>(id)];
-  if (c.kind == CertKind::delaunay)
+  if (const Certificate& c = certificates[id]; c.kind == CertKind::delaunay)
     pending_delaunay.erase({c.key, id});
-  c.alive = false;
-  ++c.version;
-  free_certs.push_back(id);
+  certificates.retire(id);
 }
 
-// Every certificate dies at once (a frame rebuilds them all, docs/MATH.md §2.3), and the ids are handed
-// out again from 0 up: the frame then installs certificate i + 1 beside certificate i, in the order it
-// visits the simplices, and retires them in that order at the next frame, where retiring them one by
-// one in the order of their last slab's flips was a cache miss each. The callers must drop their
-// ids (the records keep -1 until they get a new one); stale (id, version) pairs stay stale. Nothing
-// catches an exception between this and the end of the frame's reinstall (Engine::reinstall_all):
-// one aborts the run, so records not yet visited never hand their old ids to anyone.
+// Every certificate dies at once (a frame rebuilds them all, docs/MATH.md §2.3). The callers must drop
+// their ids (the records keep -1 until they get a new one). Nothing catches an exception between this
+// and the end of the frame's reinstall (Engine::reinstall_all): one aborts the run, so records not
+// yet visited never hand their old ids to anyone.
 void Engine::retire_all_certs() {
-  free_certs.clear();
-  for (std::size_t id = certs.size(); id-- > 0;) {
-    Certificate& c = certs[id];
-    if (c.alive) {
-      c.alive = false;
-      ++c.version;
-    }
-    free_certs.push_back(static_cast<int>(id));
-  }
+  certificates.retire_all();
   pending_delaunay.clear(); // it only ever holds live Delaunay certificates
 }
 
@@ -274,7 +244,7 @@ void Engine::install(int id, Interval* at_now) {
 // certificate, counted (by formula and by how it was settled) as the one it replaced: `counted` is
 // false for the second pass.
 void Engine::settle_certificate(int id, bool counted, Interval* at_now) {
-  Certificate& c = certs[static_cast<std::size_t>(id)];
+  const Certificate& c = certificates[id];
   const auto tally = [counted](std::size_t& counter) { counter += counted ? 1 : 0; };
   {
     CGAL::Protect_FPU_rounding<true> guard;
@@ -331,7 +301,7 @@ void Engine::settle_certificate(int id, bool counted, Interval* at_now) {
     // certificate vanishing for the whole slab needs nothing here: the frame repairs it first
     // (Engine::top_simplex_turns_at_frame, docs/MATH.md §5.11).
     if (c.kind == CertKind::delaunay && !is_finite(c.key) && c.substitute == Substitute::none) {
-      c.substitute = Substitute::hull_fold;
+      certificates.set_substitute(id, Substitute::hull_fold);
       settle_certificate(id, false);
       return;
     }
@@ -344,7 +314,7 @@ void Engine::settle_certificate(int id, bool counted, Interval* at_now) {
     if (c.kind == CertKind::delaunay && is_finite(c.key) && c.substitute == Substitute::none) {
       const detail::Triangulation::Apices* ap = tri.apices(c.key);
       if (ap->v[0] != infinite_vertex && ap->v[1] != infinite_vertex) {
-        c.substitute = Substitute::cell_orientations;
+        certificates.set_substitute(id, Substitute::cell_orientations);
         settle_certificate(id, false);
         return;
       }
@@ -376,7 +346,7 @@ void Engine::settle_certificate(int id, bool counted, Interval* at_now) {
       if (multiplicity % 2 == 0 && x < one && compare(now, SlabTime(x)) < 0) {
         if (roots.empty() || x < roots.front()) {
           ++stats.exact_scheduled;
-          queue.push({SlabTime(x), static_cast<std::uint32_t>(id), c.version, true});
+          certificates.schedule(id, SlabTime(x), true);
           return;
         }
         break;
@@ -384,14 +354,14 @@ void Engine::settle_certificate(int id, bool counted, Interval* at_now) {
   }
   if (!roots.empty()) {
     ++stats.exact_scheduled;
-    queue.push({SlabTime(roots.front()), static_cast<std::uint32_t>(id), c.version});
+    certificates.schedule(id, SlabTime(roots.front()));
   }
 }
 
 // The fast path of install (docs/MATH.md §3.8): the sign just after now and the next failure time,
 // isolated in double interval arithmetic. False when doubles cannot decide; nothing is changed then.
 bool Engine::install_in_doubles(int id, const IntervalPoly& f, bool wide) {
-  const Certificate& c = certs[static_cast<std::size_t>(id)];
+  const Certificate& c = certificates[id];
   const CacheKey key = cache_key(c);
   double lo, hi;
   now.enclosure(lo, hi);
@@ -422,7 +392,6 @@ bool Engine::install_in_doubles(int id, const IntervalPoly& f, bool wide) {
 // False when doubles cannot decide; nothing is changed then.
 bool Engine::schedule_first_change(int id, const IntervalPoly& f, int sign, double start, const CacheKey& key,
                                    int shift, bool wide) {
-  const Certificate& c = certs[static_cast<std::size_t>(id)];
   FirstSignChange next;
   if (start < 1.0) {
     next = first_sign_change(f, start, 12);
@@ -451,7 +420,7 @@ bool Engine::schedule_first_change(int id, const IntervalPoly& f, int sign, doub
     narrow_root(root->enclosure, root->lo, root->hi, sign, 0x1p-24);
     root->key = key.v;
     root->slab = slab;
-    queue.push({SlabTime(std::move(root)), static_cast<std::uint32_t>(id), c.version});
+    certificates.schedule(id, SlabTime(std::move(root)));
   }
   return true;
 }
@@ -469,7 +438,7 @@ bool Engine::install_vanishing_at_start(int id, const IntervalPoly& f) {
   const int sign = interval_sign(h, 0.0, 0.0);
   if (sign == 0)
     return false;
-  const CacheKey key = cache_key(certs[static_cast<std::size_t>(id)]);
+  const CacheKey key = cache_key(certificates[id]);
   ++stats.start_zero_tests;
   if (!key_polynomial(key).vanishes_at_start())
     return false;
@@ -498,8 +467,7 @@ bool Engine::install_from_exact_coefficients(int id, const Poly<mpz_class>& f) {
   if (!at_zero)
     return install_in_doubles(id, g);
   // f = u^m g and g(0) = f_m != 0: the sign just after 0 is the sign of f_m.
-  return schedule_first_change(id, g, sgn(f[m]) > 0 ? 1 : -1, 0.0,
-                               cache_key(certs[static_cast<std::size_t>(id)]), m);
+  return schedule_first_change(id, g, sgn(f[m]) > 0 ? 1 : -1, 0.0, cache_key(certificates[id]), m);
 }
 
 KeyPolynomial Engine::key_polynomial(const CacheKey& key) const {
@@ -559,7 +527,7 @@ CacheKey Engine::cache_key(const Certificate& c) const {
 }
 
 void Engine::mark_invalid(int id) {
-  const Certificate& c = certs[static_cast<std::size_t>(id)];
+  const Certificate& c = certificates[id];
   if (c.kind == CertKind::delaunay)
     pending_delaunay.insert({c.key, id});
   else

@@ -66,12 +66,12 @@ void Engine::at_own_time(int cert) {
 // A popped entry at now: its certificate fails, or its simplex touches rho.
 void Engine::fire(const QueueEntry& e) {
   fired_times.insert_or_assign(static_cast<int>(e.cert), e.u);
-  if (e.touch && certs[e.cert].kind == CertKind::radius)
+  if (e.touch && certificates[e.cert].kind == CertKind::radius)
     pending_touch.emplace_back(static_cast<int>(e.cert), e.version);
   else if (e.touch)
     pending_hull_touch.emplace_back(static_cast<int>(e.cert), e.version);
   else {
-    switch (certs[e.cert].substitute) {
+    switch (certificates[e.cert].substitute) {
     case Substitute::hull_fold: ++stats.hull_ridges_folding; break;
     case Substitute::cell_orientations: ++stats.cospherical_cells_flattening; break;
     case Substitute::none: break;
@@ -81,12 +81,10 @@ void Engine::fire(const QueueEntry& e) {
 }
 
 void Engine::run_slab(Observer& observer) {
-  while (!queue.empty()) {
-    QueueEntry top = queue.top();
-    queue.pop();
-    const Certificate& c = certs[top.cert];
-    if (!c.alive || c.version != top.version)
-      continue;
+  while (const QueueEntry* earliest = certificates.earliest()) {
+    QueueEntry top = *earliest;
+    certificates.pop();
+    const Certificate& c = certificates[top.cert];
     now = top.u;
     if (const IsolatedRoot* r = now.isolated(); r != nullptr && r->wide) {
       CGAL::Protect_FPU_rounding<true> guard;
@@ -94,12 +92,12 @@ void Engine::run_slab(Observer& observer) {
     }
     now.tighten();
     fire(top);
-    while (!queue.empty() && compare(queue.top().u, now) == 0) {
-      QueueEntry e = queue.top();
-      queue.pop();
-      const Certificate& ce = certs[e.cert];
-      if (ce.alive && ce.version == e.version)
-        fire(e);
+    while (const QueueEntry* next = certificates.earliest()) {
+      if (compare(next->u, now) != 0)
+        break;
+      QueueEntry e = *next;
+      certificates.pop();
+      fire(e);
     }
     const SlabTime batch_time = now; // narrowed: the reported time rounds it in doubles (§3.12)
     std::vector<Step> steps;

@@ -195,7 +195,7 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
     if (flips_in_batch < limit && !repair_pending)
       for (auto it = pending_delaunay.begin(); it != pending_delaunay.end();) {
         auto [facet, id] = *it;
-        if (!certs[static_cast<std::size_t>(id)].alive || certs[static_cast<std::size_t>(id)].key != facet) {
+        if (!certificates[id].alive || certificates[id].key != facet) {
           it = pending_delaunay.erase(it);
           continue;
         }
@@ -237,9 +237,9 @@ void Engine::resolve_touches(OldMembership& old_k) {
   std::vector<std::pair<int, std::uint32_t>> touches;
   touches.swap(pending_touch);
   for (auto [id, version] : touches) {
-    const Certificate& c = certs[static_cast<std::size_t>(id)];
-    if (!c.alive || c.version != version)
+    if (!certificates.current(id, version))
       continue;
+    const Certificate& c = certificates[id];
     const Simplex s = c.key; // install_radius replaces the certificate
     at_own_time(id);
     ++stats.radius_touches;
@@ -265,9 +265,9 @@ void Engine::resolve_hull_touches() {
   std::vector<std::pair<int, std::uint32_t>> touches;
   touches.swap(pending_hull_touch);
   for (auto [id, version] : touches) {
-    const Certificate& c = certs[static_cast<std::size_t>(id)];
-    if (!c.alive || c.version != version)
+    if (!certificates.current(id, version))
       continue;
+    const Certificate& c = certificates[id];
     const Simplex key = c.key;
     install(id);
     if (!repair_pending && degenerate_hull_facet_at(key)) {
@@ -323,9 +323,9 @@ void Engine::resolve_radius(Step& settle, OldMembership& old_k) {
   failed.clear();
   failed.swap(pending_radius);
   for (auto [id, version] : failed) {
-    const Certificate& c = certs[static_cast<std::size_t>(id)];
-    if (!c.alive || c.version != version)
+    if (!certificates.current(id, version))
       continue;
+    const Certificate& c = certificates[id];
     Simplex s = c.key;
     at_own_time(id);
     for_each_face(s, [&](const Simplex& f) { old_k.emplace(f, in_k(f)); });

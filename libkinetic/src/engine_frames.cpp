@@ -29,7 +29,7 @@ void Engine::set_slab_motion(std::size_t k) {
 }
 
 void Engine::reinstall_all() {
-  queue.clear();
+  certificates.clear_times();
   root_cache.clear();
   // In place, in table order: installing a certificate reads the tables but never adds or removes an
   // entry, so the records stay where they are, and a frame costs no second look-up per simplex.
@@ -46,7 +46,7 @@ void Engine::reinstall_all() {
     install_radius(s, f, &at_frame);
     // R = rho at the frame: a touch there, whatever the sign just after (Engine::resolve_touches).
     if (!(at_frame.inf() > 0 || at_frame.sup() < 0) && radius_vanishes_now(s))
-      pending_touch.emplace_back(f.cert, certs[static_cast<std::size_t>(f.cert)].version);
+      pending_touch.emplace_back(f.cert, certificates[f.cert].version);
   }
 }
 

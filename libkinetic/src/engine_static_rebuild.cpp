@@ -193,16 +193,7 @@ void Engine::reorient_kept(const std::vector<Simplex>& kept) {
 // certificate fails in (now, q], and those failures are found at now+ and flipped by the caller
 // (static repair at an algebraic time, docs/MATH.md §5.4).
 Rational Engine::rational_before_next_event() const {
-  SlabTime upper(Rational(1));
-  for (auto copy = queue; !copy.empty(); copy.pop()) {
-    const QueueEntry& e = copy.top();
-    const Certificate& c = certs[e.cert];
-    if (c.alive && c.version == e.version && now < e.u) {
-      upper = e.u;
-      break;
-    }
-  }
-  return rational_between(now, upper);
+  return rational_between(now, certificates.next_time_after(now, SlabTime(Rational(1))));
 }
 
 } // namespace medusa::kinetic::detail

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -63,6 +64,32 @@ public:
     heap_.clear();
     pool_.clear();
     free_.clear();
+  }
+
+  // The first invariant that fails, or an empty string: every pool slot is in the heap or free, once;
+  // no entry is later than its children; each heap key encloses its entry's time (refinement only
+  // narrows a time's enclosure).
+  std::string first_violation() const {
+    std::vector<char> seen(pool_.size(), 0);
+    for (const Key& k : heap_)
+      if (k.slot >= pool_.size() || seen[k.slot]++)
+        return "the event queue holds a slot twice or out of range";
+    for (std::uint32_t slot : free_)
+      if (slot >= pool_.size() || seen[slot]++)
+        return "the event queue's free slot is in use or out of range";
+    if (heap_.size() + free_.size() != pool_.size())
+      return "the event queue lost a slot";
+    const LaterFirst later{&pool_};
+    for (std::size_t i = 1; i < heap_.size(); ++i)
+      if (later(heap_[(i - 1) / 2], heap_[i]))
+        return "the event queue is out of time order";
+    for (const Key& k : heap_) {
+      double lo, hi;
+      pool_[k.slot].u.enclosure(lo, hi);
+      if (lo < k.lo || k.hi < hi)
+        return "a queued time left the enclosure it was queued with";
+    }
+    return {};
   }
 
 private:

@@ -1,9 +1,11 @@
 #include "triangulation.h"
 
+#include "dimension_policy.h"
 #include "medusa/core/error.h"
 
 #include <algorithm>
 #include <sstream>
+#include <unordered_set>
 #include <utility>
 
 namespace medusa::kinetic::detail {
@@ -122,6 +124,46 @@ std::vector<Simplex> Triangulation::tets_containing(const Simplex& s) const {
   std::vector<Simplex> result;
   for_each_tet_containing(s, [&](const Simplex& t) { result.push_back(t); });
   return result;
+}
+
+std::string Triangulation::first_violation(int dimension) const {
+  const auto named = [](const char* what, const Simplex& s) {
+    std::ostringstream os;
+    os << what << ' ' << s;
+    return os.str();
+  };
+  for (const auto& [facet, a] : facets_)
+    if (a.count != 2)
+      return named("top simplices: not two at facet", facet);
+  std::size_t listed = 0, incidences = 0, vertices = 0;
+  std::unordered_set<Simplex, SimplexHash> edges;
+  for (const Simplex& t : tets()) {
+    ++listed;
+    const int o = orientation(t);
+    if ((o == 0) != !is_finite(t))
+      return named("a finite top simplex has no orientation, or an infinite one has one:", t);
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const Apices* a = apices(t.facet(i));
+      if (a == nullptr || a->orientation_with(t[i]) != o || a->orientation_slot(t[i]) < 0)
+        return named("a facet does not hold its top simplex, or holds another orientation:", t);
+      const std::vector<Simplex>& list = tets_of(t[i]);
+      if (std::count(list.begin(), list.end(), t) != 1)
+        return named("a top simplex is not listed once at its vertex:", t);
+      for (std::size_t j = i + 1; j < t.size(); ++j)
+        edges.insert(Simplex{t[i], t[j]});
+    }
+  }
+  for (const std::vector<Simplex>& list : incident_) {
+    incidences += list.size();
+    vertices += list.empty() ? 0 : 1;
+  }
+  if (listed != tet_count_)
+    return "the count of top simplices is not the number listed";
+  if (incidences != listed * (static_cast<std::size_t>(dimension) + 1))
+    return "a vertex lists a top simplex that is not one";
+  if (!euler_characteristic_holds(dimension, vertices, edges.size(), facets_.size(), listed))
+    return "the Euler characteristic of the augmented triangulation is not that of a sphere";
+  return {};
 }
 
 } // namespace medusa::kinetic::detail

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace medusa::kinetic::detail {
@@ -144,6 +145,11 @@ public:
       if (contains_all(t, s))
         f(t);
   }
+  // The first of its invariants that fails, or an empty string: every facet has two top simplices,
+  // and each top simplex holds the same orientation (0 iff infinite) at every facet; each top
+  // simplex is listed once at each of its vertices and nowhere else; the Euler characteristic is that
+  // of the sphere S^dimension (the augmented triangulation of docs/MATH.md §2.1).
+  std::string first_violation(int dimension) const;
   // Is s a face of some top simplex?
   bool contains_face(const Simplex& s) const {
     for (const Simplex& t : shortest_incident_list(s))

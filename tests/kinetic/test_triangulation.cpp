@@ -138,3 +138,47 @@ TEST_CASE("a facet's certificate id is handed back when its last top simplex goe
     REQUIRE(handed_back > 20); // the walk did remove facets
   }
 }
+
+namespace {
+
+// The augmented triangulation of one top simplex: it and the infinite vertex joined to each facet.
+void add_augmented_simplex(Triangulation& tri, const Simplex& t) {
+  tri.add_tet(t, 1);
+  for (std::size_t i = 0; i < t.size(); ++i)
+    tri.add_tet(t.facet(i).with(infinite_vertex), 0);
+}
+
+} // namespace
+
+TEST_CASE("the triangulation's own check accepts an augmented sphere and names what a broken one lacks",
+          "[kinetic][triangulation]") {
+  for (const Simplex& top : {Simplex{0, 1, 2}, Simplex{0, 1, 2, 3}}) {
+    const int dimension = static_cast<int>(top.size()) - 1;
+    CAPTURE(dimension);
+    Triangulation tri;
+    add_augmented_simplex(tri, top);
+    REQUIRE(tri.first_violation(dimension).empty());
+
+    // One infinite top simplex less: its facets have one top simplex each.
+    std::vector<int> dropped;
+    tri.remove_tet(top.facet(0).with(infinite_vertex), dropped);
+    REQUIRE(tri.first_violation(dimension).find("not two") != std::string::npos);
+
+    // A finite top simplex recorded without an orientation.
+    Triangulation flat;
+    flat.add_tet(top, 0);
+    for (std::size_t i = 0; i < top.size(); ++i)
+      flat.add_tet(top.facet(i).with(infinite_vertex), 0);
+    REQUIRE(flat.first_violation(dimension).find("orientation") != std::string::npos);
+
+    // Two spheres sharing only the infinite vertex: every facet has two top simplices, but
+    // V - E + F - T (V - E + T in the plane) is one off a sphere's.
+    Triangulation two;
+    add_augmented_simplex(two, top);
+    std::vector<VertexId> shifted(top.begin(), top.end());
+    for (VertexId& v : shifted)
+      v += 10;
+    add_augmented_simplex(two, Simplex::from_range(shifted.begin(), shifted.end()));
+    REQUIRE(two.first_violation(dimension).find("Euler") != std::string::npos);
+  }
+}
