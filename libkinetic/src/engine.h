@@ -8,6 +8,7 @@
 #include "certificate_pool.h"
 #include "dimension_policy.h"
 #include "face.h"
+#include "face_states.h"
 #include "flat_simplex_map.h"
 #include "root_cache.h"
 #include "static_delaunay.h"
@@ -67,7 +68,7 @@ struct Engine {
 
   // Del(now+) and the alpha-complex state of its finite simplices.
   detail::Triangulation tri;
-  FlatSimplexMap<Face> faces;             // finite simplices of dimension 1..dim in Del
+  FaceStates faces;                       // finite simplices of dimension 1..dim in Del (face_states.h)
   std::vector<int> dropped_certs_scratch; // certificates of facets that left Del (remove_tet)
 
   // Certificates and their failure times (certificate_pool.h).
@@ -383,44 +384,24 @@ struct Engine {
   void settle_touched(Step& step);
   void finish_tet_change();
   bool is_short(const Simplex& s) const;
-  // Has s (a triangle or tetrahedron; false for an edge) a facet flagged long? state_of(x): x's state.
-  template <class StateOf> static bool has_long_facet(const Simplex& s, StateOf&& state_of) {
-    if (s.size() < 3)
-      return false;
-    for (std::size_t i = 0; i < s.size(); ++i)
-      if (!state_of(s.facet(i))->is_short)
-        return true;
-    return false;
-  }
-  std::vector<Simplex> cofaces(const Simplex& s) const;
   // The state of a face of Del, or nullptr: from the table, or from the faces touched by the change
   // being applied.
-  Face* state_in_table(const Simplex& s) {
-    auto it = faces.find(s);
-    return it == faces.end() ? nullptr : &it->second;
-  }
+  Face* state_in_table(const Simplex& s) { return faces.find(s); }
   Face* state_in_touched(const Simplex& s) {
     TouchedFace* t = touched_scratch.find(s);
     return t == nullptr ? nullptr : t->state;
   }
   bool in_frontier(const Simplex& s) const { return in_frontier(s, faces.at(s)); }
   bool in_frontier(const Simplex& s, const Face& f) const {
-    return in_frontier(s, f, [&](const Simplex& x) { return is_short(x); });
+    return FaceStates::in_frontier(s, f, [&](const Simplex& x) { return is_short(x); });
   }
-  // facet_short(x): is facet x of s short.
-  template <class FacetShort>
-  static bool in_frontier(const Simplex& s, const Face& f, FacetShort&& facet_short);
   void update_frontier(const Simplex& s) { update_frontier(s, faces.at(s)); }
   void update_frontier(const Simplex& s, Face& f) { set_frontier(s, f, in_frontier(s, f)); } // f: s's state
   void set_frontier(const Simplex& s, Face& f, bool want);
   bool gabriel_now(const Simplex& s);
   void count_in_facets(const Simplex& c, int short_delta, int k_delta) {
-    count_in_facets(c, short_delta, k_delta, [&](const Simplex& x) { return state_in_table(x); });
+    FaceStates::count_in_facets(c, short_delta, k_delta, [&](const Simplex& x) { return state_in_table(x); });
   }
-  // state_of(x): the state of facet x of c, or nullptr (nothing to count). A facet leaving Del in
-  // the same change may still be counted: its entry is erased at the end of the change.
-  template <class StateOf>
-  static void count_in_facets(const Simplex& c, int short_delta, int k_delta, StateOf&& state_of);
   void settle_membership(const OldMembership& old_k, Step& step);
   // The membership of s just after now, given its state; updates the coface counts of its facets.
   template <class StateOf> bool settle(const Simplex& s, Face& f, StateOf&& state_of);
@@ -515,32 +496,6 @@ struct Engine {
   void audit_embedded(const Rational& q, const std::vector<Simplex>& cgal_tops);
   void audit_supporting(const Rational& q, const Simplex& hull_facet);
 };
-
-// Adds the changes of c's shortness and membership (+1 gained, -1 lost, 0 unchanged) to the coface
-// counts of c's facets. Vertices keep no counts.
-template <class StateOf>
-void Engine::count_in_facets(const Simplex& c, int short_delta, int k_delta, StateOf&& state_of) {
-  if (c.size() <= 2 || (short_delta == 0 && k_delta == 0))
-    return;
-  for (std::size_t i = 0; i < c.size(); ++i)
-    if (Face* f = state_of(c.facet(i))) {
-      f->short_cofaces += short_delta;
-      f->k_cofaces += k_delta;
-    }
-}
-
-// The frontier (docs/MATH.md §4.4): maximal short simplices and minimal long ones.
-template <class FacetShort>
-bool Engine::in_frontier(const Simplex& s, const Face& f, FacetShort&& facet_short) {
-  if (f.is_short)
-    return f.short_cofaces == 0;
-  if (s.size() == 2)
-    return true;
-  for (std::size_t i = 0; i < s.size(); ++i)
-    if (!facet_short(s.facet(i)))
-      return false;
-  return true;
-}
 
 template <class NT> Poly<NT> Engine::cert_poly(const Certificate& c) const {
   if (c.kind == CertKind::delaunay) {

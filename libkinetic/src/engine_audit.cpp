@@ -37,8 +37,9 @@ void Engine::audit() {
   mpz_class p = P, qq = Q;
   for (const auto& kv : tri.facets())
     delaunay_polys.emplace_back(kv.first, to_exact_poly(delaunay_poly<mpz_class>(kv.first)));
-  for (const auto& kv : faces)
-    radius_polys.emplace_back(kv.first, to_exact_poly(radius_poly<mpz_class>(kv.first, p, qq)));
+  faces.for_each([&](const Simplex& s, const Face&) {
+    radius_polys.emplace_back(s, to_exact_poly(radius_poly<mpz_class>(s, p, qq)));
+  });
   std::vector<int> delaunay_sign, radius_sign;
   Rational q = rational_between(now, upper);
   for (int attempt = 0;; ++attempt) {
@@ -61,41 +62,18 @@ void Engine::audit() {
     q = rational_between(now, at);
   }
 
-  // Each part's own invariants (certificate_pool.h, triangulation.h), then those between the parts.
+  // Each part's own invariants (certificate_pool.h, triangulation.h, face_states.h), then those
+  // between the parts.
   if (std::string v = certificates.first_violation(); !v.empty())
     audit_failure(v);
   if (std::string v = tri.first_violation(dim); !v.empty())
+    audit_failure(v);
+  if (std::string v = faces.first_violation(tri, alive); !v.empty())
     audit_failure(v);
   for (std::size_t i = 0; i < alive.size(); ++i)
     if (tri.tets_of(static_cast<VertexId>(i)).empty() == bool(alive[i]))
       audit_failure("cell " + std::to_string(i) +
                     (alive[i] ? " is alive but not in" : " is dead but still in") + " the triangulation");
-  // The finite faces recorded are exactly those of Del, each with its count of top simplices.
-  std::unordered_set<Simplex, SimplexHash> del_faces;
-  for (const Simplex& t : tri.tets())
-    for_each_face(t, [&](const Simplex& f) {
-      if (f.size() == 1 || !del_faces.insert(f).second)
-        return;
-      auto it = faces.find(f);
-      if (it == faces.end() || it->second.tets != static_cast<int>(tri.tets_containing(f).size())) {
-        std::ostringstream os;
-        os << "simplex " << f << " of Del has a wrong count of top simplices";
-        audit_failure(os.str());
-      }
-      // The coface counts behind the frontier and membership rules, recounted by search.
-      int short_cofaces = 0, k_cofaces = 0;
-      for (const Simplex& c : cofaces(f)) {
-        short_cofaces += is_short(c);
-        k_cofaces += in_k(c);
-      }
-      if (it->second.short_cofaces != short_cofaces || it->second.k_cofaces != k_cofaces) {
-        std::ostringstream os;
-        os << "simplex " << f << " has wrong counts of short cofaces or cofaces in K";
-        audit_failure(os.str());
-      }
-    });
-  if (del_faces.size() != faces.size())
-    audit_failure("a simplex not in Del is still recorded");
   // Local Delaunay, exactly, at q (identically-zero certificates are valid, docs/MATH.md §3.9).
   for (std::size_t i = 0; i < delaunay_polys.size(); ++i) {
     const Simplex& facet = delaunay_polys[i].first;
@@ -114,25 +92,24 @@ void Engine::audit() {
   std::size_t certified_radius = 0;
   if (alive_delaunay != delaunay_polys.size())
     audit_failure("a Delaunay certificate outlived its facet");
-  // Radius flags and certificates.
+  // Radius flags, exactly at q, and the certificates the frontier holds (docs/MATH.md §4.4).
   for (std::size_t i = 0; i < radius_polys.size(); ++i) {
-    const auto& kv = *faces.find(radius_polys[i].first);
-    bool is_short = radius_sign[i] <= 0;
-    if (is_short != kv.second.is_short) {
+    const Simplex& s = radius_polys[i].first;
+    const Face& f = faces.at(s);
+    if ((radius_sign[i] <= 0) != f.is_short) {
       std::ostringstream os;
-      os << "simplex " << kv.first << " has a wrong shortness flag";
+      os << "simplex " << s << " has a wrong shortness flag";
       audit_failure(os.str());
     }
-    // Certificates exactly on the frontier (docs/MATH.md §4.4).
-    bool certified = kv.second.cert >= 0 && certificates[kv.second.cert].alive;
-    if (certified != in_frontier(kv.first)) {
+    if (f.cert < 0)
+      continue;
+    const Certificate& c = certificates[f.cert];
+    if (!c.alive || c.kind != CertKind::radius || c.key != s) {
       std::ostringstream os;
-      os << "simplex " << kv.first
-         << (certified ? " has a radius certificate outside the frontier"
-                       : " is on the frontier without a radius certificate");
+      os << "simplex " << s << " names a radius certificate that is not its own";
       audit_failure(os.str());
     }
-    certified_radius += certified ? 1 : 0;
+    ++certified_radius;
   }
   if (alive_radius != certified_radius)
     audit_failure("a radius certificate outlived its simplex");

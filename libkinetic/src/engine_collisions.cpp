@@ -53,9 +53,10 @@ void Engine::check_collisions_in_slab() const {
     });
     return;
   }
-  for (const auto& kv : faces)
-    if (kv.first.size() == 2)
-      check_collision(kv.first);
+  faces.for_each([this](const Simplex& s, const Face&) {
+    if (s.size() == 2)
+      check_collision(s);
+  });
 }
 
 } // namespace medusa::kinetic::detail

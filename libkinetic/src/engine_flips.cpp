@@ -339,7 +339,7 @@ void Engine::resolve_radius(Step& settle, OldMembership& old_k) {
     if (s.size() > 2)
       for (std::size_t i = 0; i < s.size(); ++i)
         update_frontier(s.facet(i));
-    for (const Simplex& c : cofaces(s))
+    for (const Simplex& c : tri.finite_cofaces(s))
       update_frontier(c);
   }
   (void)settle;

@@ -38,16 +38,16 @@ void Engine::reinstall_all() {
     ap.cert = -1;
     install_facet(facet, ap);
   });
-  for (auto& [s, f] : faces) {
+  faces.for_each([this](const Simplex& s, Face& f) {
     if (f.cert < 0)
-      continue;
+      return;
     f.cert = -1;
     Interval at_frame(0); // undecided unless the install's enclosure says otherwise
     install_radius(s, f, &at_frame);
     // R = rho at the frame: a touch there, whatever the sign just after (Engine::resolve_touches).
     if (!(at_frame.inf() > 0 || at_frame.sup() < 0) && radius_vanishes_now(s))
       pending_touch.emplace_back(f.cert, certificates[f.cert].version);
-  }
+  });
 }
 
 void Engine::frame(Observer& observer, std::size_t k) {

@@ -16,8 +16,8 @@ namespace medusa::kinetic::detail {
 bool Engine::in_k(const Simplex& s) const {
   if (s.size() == 1)
     return alive[static_cast<std::size_t>(s[0])] != 0;
-  auto it = faces.find(s);
-  return it != faces.end() && it->second.in_k;
+  const Face* f = faces.find(s);
+  return f != nullptr && f->in_k;
 }
 
 void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
@@ -65,7 +65,7 @@ void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::ve
   // Each face counts the top simplices (infinite ones included) that hold it, so its presence in
   // Del after the change needs no search of the triangulation. With room reserved, no entry moves
   // while the new faces are added: the pointers held in `touched` stay valid until an erase.
-  faces.reserve(faces.size() + touched.faces.size());
+  faces.reserve_more(touched.faces.size());
   auto state_of = [&](const Simplex& x) { return state_in_touched(x); };
   std::vector<Simplex>& created = created_scratch;
   created.clear();
@@ -77,17 +77,17 @@ void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::ve
       t.old_in_k = in_k(f);
       continue;
     }
-    auto [it, fresh] = faces.try_emplace(f);
+    auto [added_state, fresh] = faces.add(f);
     if (fresh && t.delta < 0)
       throw InternalError("a removed top simplex held a face that is not in the triangulation");
-    Face& state = it->second;
+    Face& state = *added_state;
     t.state = &state;
     t.old_in_k = state.in_k;
     state.tets += t.delta;
     t.leaves = state.tets == 0;
     if (t.leaves) {
       // Leaving Del: its facets are touched, and those staying lose it as a coface.
-      count_in_facets(f, -int(state.is_short), -int(state.in_k), state_of);
+      FaceStates::count_in_facets(f, -int(state.is_short), -int(state.in_k), state_of);
       kill_cert(state.cert);
       state.cert = -1;
       state.is_short = state.in_k = false;
@@ -101,16 +101,17 @@ void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::ve
     // Created in canonical order, f comes after its facets. A long facet makes f long (R is monotone,
     // docs/MATH.md §4.1) with no radius polynomial: f's longness is implied, as for any face with a long
     // face (4.4, "skipped (implied)"), and f is not in the frontier.
-    state.is_short = !has_long_facet(f, state_of) && compute_short(f);
-    count_in_facets(f, int(state.is_short), 0, state_of); // a new face is not in K yet
+    state.is_short = !FaceStates::has_long_facet(f, state_of) && compute_short(f);
+    FaceStates::count_in_facets(f, int(state.is_short), 0, state_of); // a new face is not in K yet
   }
   // Frontier membership of every surviving touched simplex: their cofaces changed (docs/MATH.md §4.4,
   // "after any change of Del"). Cofaces of new simplices are new, hence touched as well.
   for (TouchedFace& t : touched.faces)
     if (t.state != nullptr && !t.leaves) {
       Face& state = *t.state;
-      set_frontier(t.face, state,
-                   in_frontier(t.face, state, [&](const Simplex& x) { return state_of(x)->is_short; }));
+      set_frontier(t.face, state, FaceStates::in_frontier(t.face, state, [&](const Simplex& x) {
+                     return state_of(x)->is_short;
+                   }));
     }
   for (const Simplex& f : touched.facets)
     install_facet(f);
@@ -134,30 +135,8 @@ void Engine::finish_tet_change() {
 bool Engine::is_short(const Simplex& s) const {
   if (s.size() == 1)
     return true;
-  auto it = faces.find(s);
-  return it != faces.end() && it->second.is_short;
-}
-
-// The (k+1)-cofaces of a finite simplex in Del (finite ones only), sorted.
-std::vector<Simplex> Engine::cofaces(const Simplex& s) const {
-  // A coface is s plus one vertex of a finite top simplex holding s (it may come from several).
-  std::vector<Simplex> result;
-  tri.for_each_tet_containing(s, [&](const Simplex& t) {
-    if (!is_finite(t))
-      return;
-    for (VertexId v : t)
-      if (!s.contains(v)) {
-        std::array<VertexId, 4> w{};
-        std::size_t k = 0;
-        for (VertexId x : s)
-          w[k++] = x;
-        w[k++] = v;
-        result.push_back(Simplex::from_range(w.begin(), w.begin() + k));
-      }
-  });
-  std::sort(result.begin(), result.end());
-  result.erase(std::unique(result.begin(), result.end()), result.end());
-  return result;
+  const Face* f = faces.find(s);
+  return f != nullptr && f->is_short;
 }
 
 // Creates or drops the radius certificate of s so that exactly the frontier carries one.
@@ -226,7 +205,7 @@ bool Engine::gabriel_now(const Simplex& s) {
 template <class StateOf> bool Engine::settle(const Simplex& s, Face& f, StateOf&& state_of) {
   const bool after = s.size() == top_size() ? f.is_short : f.is_short && (f.k_cofaces > 0 || gabriel_now(s));
   if (after != f.in_k) {
-    count_in_facets(s, 0, after ? +1 : -1, state_of);
+    FaceStates::count_in_facets(s, 0, after ? +1 : -1, state_of);
     f.in_k = after;
   }
   return after;
@@ -284,9 +263,10 @@ std::vector<Simplex> Engine::current_complex() const {
   for (std::size_t i = 0; i < alive.size(); ++i)
     if (alive[i])
       k.push_back(Simplex{static_cast<VertexId>(i)});
-  for (const auto& kv : faces)
-    if (kv.second.in_k)
-      k.push_back(kv.first);
+  faces.for_each([&](const Simplex& s, const Face& f) {
+    if (f.in_k)
+      k.push_back(s);
+  });
   std::sort(k.begin(), k.end());
   return k;
 }

@@ -44,8 +44,7 @@ void Engine::initialise(Observer& observer) {
   pending_radius.clear();
   // Membership of every simplex, in decreasing dimension (docs/MATH.md §4.6).
   OldMembership all;
-  for (const auto& kv : faces)
-    all.emplace(kv.first, false);
+  faces.for_each([&](const Simplex& s, const Face&) { all.emplace(s, false); });
   Step step;
   settle_membership(all, step);
   check_collisions_in_slab();

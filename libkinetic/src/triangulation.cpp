@@ -126,6 +126,21 @@ std::vector<Simplex> Triangulation::tets_containing(const Simplex& s) const {
   return result;
 }
 
+std::vector<Simplex> Triangulation::finite_cofaces(const Simplex& s) const {
+  // A coface is s plus one vertex of a finite top simplex holding s (it may come from several).
+  std::vector<Simplex> result;
+  for_each_tet_containing(s, [&](const Simplex& t) {
+    if (!is_finite(t))
+      return;
+    for (VertexId v : t)
+      if (!s.contains(v))
+        result.push_back(s.with(v));
+  });
+  std::sort(result.begin(), result.end());
+  result.erase(std::unique(result.begin(), result.end()), result.end());
+  return result;
+}
+
 std::string Triangulation::first_violation(int dimension) const {
   const auto named = [](const char* what, const Simplex& s) {
     std::ostringstream os;

@@ -134,6 +134,8 @@ public:
   }
   // Tetrahedra containing every vertex of s.
   std::vector<Simplex> tets_containing(const Simplex& s) const;
+  // The finite (k+1)-cofaces of a finite k-simplex s, sorted, each once.
+  std::vector<Simplex> finite_cofaces(const Simplex& s) const;
   const std::vector<Simplex>& tets_of(VertexId v) const;
 
   // Calls f(t) for every top simplex t containing s, without allocating: the queries of the

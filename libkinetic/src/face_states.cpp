@@ -1,0 +1,72 @@
+#include "face_states.h"
+
+#include <sstream>
+#include <unordered_set>
+
+namespace medusa::kinetic::detail {
+
+namespace {
+
+std::string named(const char* what, const Simplex& s) {
+  std::ostringstream os;
+  os << "simplex " << s << ' ' << what;
+  return os.str();
+}
+
+} // namespace
+
+std::string FaceStates::first_violation(const Triangulation& tri, const std::vector<char>& alive) const {
+  const auto in_k = [&](const Simplex& x) {
+    if (x.size() == 1)
+      return alive[static_cast<std::size_t>(x[0])] != 0;
+    const Face* f = find(x);
+    return f != nullptr && f->in_k;
+  };
+  const auto is_short = [&](const Simplex& x) {
+    const Face* f = x.size() == 1 ? nullptr : find(x);
+    return x.size() == 1 || (f != nullptr && f->is_short);
+  };
+  std::unordered_set<Simplex, SimplexHash> del_faces;
+  std::string violation;
+  for (const Simplex& t : tri.tets())
+    for_each_face(t, [&](const Simplex& s) {
+      if (!violation.empty() || s.size() == 1 || !del_faces.insert(s).second)
+        return;
+      const Face* f = find(s);
+      if (f == nullptr) {
+        violation = named("of Del is not recorded", s);
+        return;
+      }
+      if (f->tets != static_cast<int>(tri.tets_containing(s).size())) {
+        violation = named("of Del has a wrong count of top simplices", s);
+        return;
+      }
+      int short_cofaces = 0, k_cofaces = 0;
+      for (const Simplex& c : tri.finite_cofaces(s)) {
+        short_cofaces += is_short(c);
+        k_cofaces += in_k(c);
+      }
+      if (f->short_cofaces != short_cofaces || f->k_cofaces != k_cofaces) {
+        violation = named("has wrong counts of short cofaces or cofaces in K", s);
+        return;
+      }
+      if (f->in_k && !f->is_short) {
+        violation = named("is in K but long", s);
+        return;
+      }
+      for (std::size_t i = 0; f->in_k && i < s.size(); ++i)
+        if (!in_k(s.facet(i))) {
+          violation = named("is in K without its facets (K is not a complex)", s);
+          return;
+        }
+      if ((f->cert >= 0) != in_frontier(s, *f, is_short))
+        violation = named(f->cert >= 0 ? "has a radius certificate outside the frontier"
+                                       : "is on the frontier without a radius certificate",
+                          s);
+    });
+  if (violation.empty() && del_faces.size() != size())
+    violation = "a simplex not in Del is still recorded";
+  return violation;
+}
+
+} // namespace medusa::kinetic::detail

@@ -1,0 +1,99 @@
+// FaceStates (the alpha-complex state of the simplices of Del) checks its own invariants against the
+// triangulation: on the augmented triangulation of one tetrahedron (one triangle in the plane) whose
+// every simplex is short and in K, the counts worked out by hand pass, and each way of breaking them
+// is named.
+#include "face_states.h"
+#include "triangulation.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+using namespace medusa::kinetic;
+using namespace medusa::kinetic::detail;
+
+namespace {
+
+struct Fixture {
+  Triangulation tri;
+  FaceStates faces;
+  std::vector<char> alive;
+
+  // The top simplex `top` and the infinite vertex over each of its facets; every finite simplex
+  // short and in K, so that only the top simplex is on the frontier (it holds certificate 0).
+  explicit Fixture(const Simplex& top) : alive(top.size(), 1) {
+    tri.add_tet(top, 1);
+    for (std::size_t i = 0; i < top.size(); ++i)
+      tri.add_tet(top.facet(i).with(infinite_vertex), 0);
+    const std::size_t n = top.size();
+    for_each_face(top, [&](const Simplex& s) {
+      if (s.size() == 1)
+        return;
+      Face& f = *faces.add(s).first;
+      f.is_short = f.in_k = true;
+      // By hand: a k-simplex of one top simplex of n vertices has n - k - 1 finite cofaces (the other
+      // vertices), all short and in K. It lies in the top simplex, and in the infinite simplex over
+      // each facet of the top simplex that contains it: those leaving out a vertex outside s.
+      f.short_cofaces = f.k_cofaces = static_cast<int>(n - s.size());
+      f.tets = 1 + static_cast<int>(n - s.size());
+      f.cert = s.size() == n ? 0 : -1;
+    });
+  }
+  std::string violation() const { return faces.first_violation(tri, alive); }
+};
+
+bool names(const std::string& violation, const char* what) {
+  return violation.find(what) != std::string::npos;
+}
+
+} // namespace
+
+TEST_CASE("the face states' own check accepts counts worked out by hand and names each way of breaking them",
+          "[kinetic][faces]") {
+  for (const Simplex& top : {Simplex{0, 1, 2}, Simplex{0, 1, 2, 3}}) {
+    CAPTURE(top.size());
+    REQUIRE(Fixture(top).violation().empty());
+    {
+      Fixture x(top);
+      x.faces.at(Simplex{0, 1}).short_cofaces -= 1;
+      REQUIRE(names(x.violation(), "wrong counts of short cofaces"));
+    }
+    {
+      Fixture x(top);
+      x.faces.at(Simplex{0, 1}).tets += 1;
+      REQUIRE(names(x.violation(), "wrong count of top simplices"));
+    }
+    {
+      Fixture x(top);
+      // The edge leaves K while the simplices over it stay: its cofaces' counts are untouched.
+      x.faces.at(Simplex{0, 1}).in_k = false;
+      REQUIRE(names(x.violation(), "not a complex"));
+    }
+    {
+      Fixture x(top);
+      x.alive[2] = 0;
+      REQUIRE(names(x.violation(), "not a complex"));
+    }
+    {
+      Fixture x(top);
+      x.faces.at(top).cert = -1;
+      REQUIRE(names(x.violation(), "on the frontier without a radius certificate"));
+    }
+    {
+      Fixture x(top);
+      x.faces.at(Simplex{0, 1}).cert = 7;
+      REQUIRE(names(x.violation(), "outside the frontier"));
+    }
+    {
+      Fixture x(top);
+      x.faces.add(Simplex{5, 6});
+      REQUIRE(names(x.violation(), "not in Del is still recorded"));
+    }
+    {
+      Fixture x(top);
+      x.faces.erase(Simplex{0, 2});
+      REQUIRE(names(x.violation(), "not recorded"));
+    }
+  }
+}
