@@ -8,7 +8,7 @@
 // of them 2-3 flips of random facets and half 3-2 flips undoing earlier ones (draw_flips), and
 // recorded as vertex ids. Both structures then replay the same sequence from the same initial
 // triangulation, in one process:
-//   * ours: Triangulation::remove_tet / add_tet, as Engine::flip applies a flip (its look-ups by
+//   * ours: Triangulation::remove_top / add_top, as Engine::flip applies a flip (its look-ups by
 //     vertex ids are part of the structure);
 //   * CGAL: tds().flip_flippable on the cell (and facet or edge index) that carries the flip, found
 //     from the vertex ids by is_facet / is_edge (what a caller that keys its flips by vertex ids
@@ -162,21 +162,21 @@ double seconds_since(Clock::time_point start) {
 double replay_ours(const std::vector<Simplex>& initial, const std::vector<Flip>& flips, std::size_t& check) {
   Triangulation tri;
   for (const Simplex& t : initial)
-    tri.add_tet(t, t[0] == -1 ? 0 : 1);
+    tri.add_top(t, t[0] == -1 ? 0 : 1);
   std::vector<Simplex> removed, added;
   std::vector<int> dropped;
   const auto start = Clock::now();
   for (const Flip& f : flips) {
     flip_change(f, removed, added);
     for (const Simplex& t : removed)
-      tri.prefetch_tet(t);
+      tri.prefetch_top(t);
     for (const Simplex& t : removed)
-      tri.remove_tet(t, dropped);
+      tri.remove_top(t, dropped);
     for (const Simplex& t : added)
-      tri.add_tet(t, 1);
+      tri.add_top(t, 1);
   }
   const double s = seconds_since(start);
-  check = tri.tets().size();
+  check = tri.tops().size();
   return s;
 }
 
@@ -275,7 +275,7 @@ void run_case(std::size_t n, std::size_t flips_per_point, std::uint64_t seed) {
   const double per = 1e9 / double(flips.size());
   const double flip_only = cgal - lookup;
   std::printf("per flip, best of 3 alternating rounds:\n");
-  std::printf("  ours (Triangulation::remove_tet/add_tet, look-ups included)   %8.1f ns\n", ours * per);
+  std::printf("  ours (Triangulation::remove_top/add_top, look-ups included)   %8.1f ns\n", ours * per);
   std::printf("  CGAL TDS, is_facet/is_edge look-up + flip_flippable          %8.1f ns   ours/CGAL %.2f\n",
               cgal * per, ours / cgal);
   std::printf("  CGAL TDS, flip_flippable alone (look-up timed apart: %.1f ns) %8.1f ns   ours/CGAL %.2f\n",

@@ -37,7 +37,7 @@ inline FlipChange flip_change(int dim, const Simplex& facet, VertexId p, VertexI
   for (std::size_t i = 0; i < 3; ++i) {
     Simplex e = facet.facet(i);
     Simplex t{e[0], e[1], p, q};
-    if (tri.has_tet(t)) {
+    if (tri.has_top(t)) {
       c.three_two = true;
       c.edge = e;
       c.z = facet[i];

@@ -54,7 +54,7 @@ struct Engine {
   std::shared_ptr<const SquaredRadius> rho2_shared;
 
   // The dimension of the run (docs/MATH.md §5.7): 3, or 2 for a planar run whose z is constant. Top
-  // simplices ("tets" below) have dim + 1 vertices, facets dim; the dimension-specific rules are
+  // simplices have dim + 1 vertices, facets dim; the dimension-specific rules are
   // delaunay_poly, orientation_poly, the flip rule (dimension_policy.h) and the static structures
   // (static_delaunay.h). Everything else is shared.
   int dim = 3;
@@ -69,7 +69,7 @@ struct Engine {
   // Del(now+) and the alpha-complex state of its finite simplices.
   detail::Triangulation tri;
   FaceStates faces;                       // finite simplices of dimension 1..dim in Del (face_states.h)
-  std::vector<int> dropped_certs_scratch; // certificates of facets that left Del (remove_tet)
+  std::vector<int> dropped_certs_scratch; // certificates of facets that left Del (remove_top)
 
   // Certificates and their failure times (certificate_pool.h).
   CertificatePool certificates;
@@ -101,7 +101,7 @@ struct Engine {
   // a 4-point set, the radius of a face (docs/MATH.md §3.8, caching; cleared at every frame).
   RootCache root_cache;
 
-  // Scratch space of process_batch and change_tets, kept to avoid allocations per event.
+  // Scratch space of process_batch and change_tops, kept to avoid allocations per event.
   OldMembership batch_scratch;
   std::vector<std::pair<int, std::uint32_t>> radius_scratch; // resolve_radius's failed certificates
   TouchedFaces touched_scratch;
@@ -372,17 +372,17 @@ struct Engine {
 
   bool in_k(const Simplex& s) const;
   // Replaces top simplices and records the old membership of every touched simplex in old_k.
-  void change_tets(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+  void change_tops(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                    OldMembership& old_k, const int* added_orientations = nullptr);
-  // change_tets in three phases, for a flip: every touched face is looked up in `faces` once, and
+  // change_tops in three phases, for a flip: every touched face is looked up in `faces` once, and
   // its entry is held in touched_scratch throughout (the flags, counts and frontier rules read only
-  // touched faces and their facets, which are touched too). apply_tet_change keeps the faces that
-  // leave Del, with no top simplex, until finish_tet_change erases them (erasing moves entries);
+  // touched faces and their facets, which are touched too). apply_top_change keeps the faces that
+  // leave Del, with no top simplex, until finish_top_change erases them (erasing moves entries);
   // settle_touched re-evaluates membership in between.
-  void apply_tet_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+  void apply_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                         const int* added_orientations);
   void settle_touched(Step& step);
-  void finish_tet_change();
+  void finish_top_change();
   bool is_short(const Simplex& s) const;
   // The state of a face of Del, or nullptr: from the table, or from the faces touched by the change
   // being applied.
@@ -457,7 +457,7 @@ struct Engine {
   void reinstall_all();
   void frame(Observer& observer, std::size_t k);
   void insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps);
-  void record_tet_changes(Step& step, OldMembership& old_k);
+  void record_top_changes(Step& step, OldMembership& old_k);
 
   // ------------------------------------ local insertions and deletions (engine_local_updates.cpp)
 

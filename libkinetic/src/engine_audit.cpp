@@ -71,7 +71,7 @@ void Engine::audit() {
   if (std::string v = faces.first_violation(tri, alive); !v.empty())
     audit_failure(v);
   for (std::size_t i = 0; i < alive.size(); ++i)
-    if (tri.tets_of(static_cast<VertexId>(i)).empty() == bool(alive[i]))
+    if (tri.tops_of(static_cast<VertexId>(i)).empty() == bool(alive[i]))
       audit_failure("cell " + std::to_string(i) +
                     (alive[i] ? " is alive but not in" : " is dead but still in") + " the triangulation");
   // Local Delaunay, exactly, at q (identically-zero certificates are valid, docs/MATH.md §3.9).
@@ -114,18 +114,18 @@ void Engine::audit() {
   if (alive_radius != certified_radius)
     audit_failure("a radius certificate outlived its simplex");
   // The alpha complex against CGAL's static Fixed_alpha_shape_3 (Alpha_shape_2 in 2D) at q.
-  std::vector<Simplex> cgal_tets;
+  std::vector<Simplex> cgal_tops;
   Rational rho2(CGAL::Gmpz(P.get_mpz_t()), CGAL::Gmpz(Q.get_mpz_t()));
   std::vector<Simplex> expected =
-      detail::static_alpha_complex(dim, static_input(alive_ids()), q, rho2, cgal_tets);
-  std::unordered_set<Simplex, SimplexHash> cgal_set(cgal_tets.begin(), cgal_tets.end());
-  bool same_triangulation = cgal_set.size() == tri.tets().size();
-  for (const Simplex& t : tri.tets())
+      detail::static_alpha_complex(dim, static_input(alive_ids()), q, rho2, cgal_tops);
+  std::unordered_set<Simplex, SimplexHash> cgal_set(cgal_tops.begin(), cgal_tops.end());
+  bool same_triangulation = cgal_set.size() == tri.tops().size();
+  for (const Simplex& t : tri.tops())
     same_triangulation = same_triangulation && cgal_set.count(t);
   if (!same_triangulation) {
     // A degenerate (identically cospherical) group triangulated differently (docs/MATH.md §5.3): the
     // complexes are not compared, but ours must still triangulate the points at q.
-    audit_embedded(q, cgal_tets);
+    audit_embedded(q, cgal_tops);
     return;
   }
   ++stats.audits_compared_with_cgal;
@@ -160,7 +160,7 @@ void Engine::audit_embedded(const Rational& q, const std::vector<Simplex>& cgal_
   const auto volume = [&](const Simplex& t) { return value_at(orientation_poly<mpz_class>(t), q); };
   Rational ours(0), theirs(0);
   std::set<Simplex> our_hull, their_hull;
-  for (const Simplex& t : tri.tets()) {
+  for (const Simplex& t : tri.tops()) {
     if (!is_finite(t)) {
       our_hull.insert(t.facet(0));
       continue;

@@ -219,7 +219,7 @@ bool Engine::hull_ridge_folded_at_now(const Simplex& facet) {
   if (sign_at_now([&](auto tag) { return fold_poly<decltype(tag)>(facet); }) <= 0)
     return false;
   bool knife = true;
-  tri.for_each_tet_containing(ridge, [&](const Simplex& t) {
+  tri.for_each_top_containing(ridge, [&](const Simplex& t) {
     if (!knife || !is_finite(t))
       return;
     std::array<VertexId, 2> off{};
@@ -534,7 +534,7 @@ void Engine::mark_invalid(int id) {
     pending_radius.emplace_back(id, c.version);
 }
 
-// A facet that left Del has no record any more: its certificate went with it (remove_tet).
+// A facet that left Del has no record any more: its certificate went with it (remove_top).
 void Engine::install_facet(const Simplex& facet) {
   if (detail::Triangulation::Apices* ap = tri.apices(facet))
     install_facet(facet, *ap);
@@ -543,7 +543,7 @@ void Engine::install_facet(const Simplex& facet) {
 void Engine::install_facet(const Simplex& facet, detail::Triangulation::Apices& ap) {
   if (ap.count != 2) {
     std::ostringstream os;
-    os << "facet " << facet << " has " << int(ap.count) << " tetrahedra";
+    os << "facet " << facet << " has " << int(ap.count) << " top simplices";
     throw InternalError(os.str());
   }
   kill_cert(ap.cert);

@@ -119,19 +119,19 @@ std::vector<DegenerateGroup> Engine::degenerate_groups(const std::vector<Simplex
   // d + 2 points are cospherical (cocircular) at t*.
   UnionFind uf;
   std::unordered_map<Simplex, std::size_t, SimplexHash> index;
-  std::vector<Simplex> tets;
+  std::vector<Simplex> tops;
   std::vector<Simplex> todo;
   auto visit = [&](const Simplex& t) {
-    auto [it, fresh] = index.emplace(t, tets.size());
+    auto [it, fresh] = index.emplace(t, tops.size());
     if (fresh) {
       uf.add();
-      tets.push_back(t);
+      tops.push_back(t);
       todo.push_back(t);
     }
     return it->second;
   };
   for (const Simplex& t : added)
-    if (is_finite(t) && tri.has_tet(t))
+    if (is_finite(t) && tri.has_top(t))
       visit(t);
   std::unordered_map<Simplex, int, SimplexHash> cospherical; // facet -> in-sphere at t* == 0
   while (!todo.empty()) {
@@ -151,8 +151,8 @@ std::vector<DegenerateGroup> Engine::degenerate_groups(const std::vector<Simplex
     }
   }
   std::map<std::size_t, std::vector<Simplex>> cells;
-  for (std::size_t i = 0; i < tets.size(); ++i)
-    cells[uf.find(i)].push_back(tets[i]);
+  for (std::size_t i = 0; i < tops.size(); ++i)
+    cells[uf.find(i)].push_back(tops[i]);
 
   std::vector<std::vector<VertexId>> found; // every degenerate face, within rho or not
   for (const auto& [root, cell] : cells) {
@@ -221,7 +221,7 @@ std::vector<DegenerateGroup> Engine::degenerate_groups(const std::vector<Simplex
       std::vector<VertexId> apices;
       std::vector<Simplex> cofaces;
       for (const Simplex& f : part)
-        for (const Simplex& t : tri.tets_containing(f)) {
+        for (const Simplex& t : tri.tops_containing(f)) {
           cofaces.push_back(t);
           for (VertexId v : t)
             if (v != infinite_vertex && !fv.count(v))

@@ -59,9 +59,9 @@ void Engine::flip(const Simplex& facet, const FlipChange& change, std::vector<St
   for (const Simplex& t : added)
     if (is_finite(t))
       step.delaunay_created.push_back(t);
-  apply_tet_change(removed, added, orientations.data());
+  apply_top_change(removed, added, orientations.data());
   settle_touched(step);
-  finish_tet_change();
+  finish_top_change();
   (hull ? stats.hull_flips : dim == 2 ? stats.flips22 : (three_two ? stats.flips32 : stats.flips23))++;
   step.rank = steps.size() + 1;
   steps.push_back(std::move(step));
@@ -74,7 +74,7 @@ void Engine::repair(std::vector<Step>& steps) {
   Step step;
   step.kind = StepKind::repair;
   OldMembership old_k;
-  record_tet_changes(step, old_k);
+  record_top_changes(step, old_k);
   // The non-simplicial Delaunay faces at now give instant cells (docs/MATH.md §6.3), in either dimension
   // (engine_degenerate_groups.cpp).
   step.groups = degenerate_groups(step.delaunay_removed, step.delaunay_created);
@@ -243,7 +243,7 @@ void Engine::resolve_touches(OldMembership& old_k) {
     const Simplex s = c.key; // install_radius replaces the certificate
     at_own_time(id);
     ++stats.radius_touches;
-    tri.for_each_tet_containing(
+    tri.for_each_top_containing(
         s, [&](const Simplex& t) { for_each_face(t, [&](const Simplex& f) { old_k.emplace(f, in_k(f)); }); });
     install_radius(s);
   }
@@ -286,7 +286,7 @@ bool Engine::degenerate_hull_facet_at(const Simplex& s) {
     if (v == infinite_vertex)
       continue;
     bool degenerate = false;
-    tri.for_each_tet_containing(Simplex{infinite_vertex, v}, [&](const Simplex& t) {
+    tri.for_each_top_containing(Simplex{infinite_vertex, v}, [&](const Simplex& t) {
       degenerate = degenerate || collinear_at_now(t.facet(0));
     });
     if (degenerate)

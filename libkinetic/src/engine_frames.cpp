@@ -104,7 +104,7 @@ bool Engine::top_simplex_turns_at_frame() {
   // One switch to round-to-nearest for every top simplex, not two per test (start_determinants.h);
   // the rare flat one's follow-up tests set the mode they need themselves.
   CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-  for (const Simplex& t : tri.tets()) {
+  for (const Simplex& t : tri.tops()) {
     if (!is_finite(t))
       continue;
     for (std::size_t i = 0; i < t.size(); ++i)
@@ -126,7 +126,7 @@ void Engine::insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps)
   old_k.emplace(Simplex{v}, !insert);
   alive[static_cast<std::size_t>(v)] = insert ? 1 : 0;
   if (!record_local_change(step, old_k, v, insert))
-    record_tet_changes(step, old_k);
+    record_top_changes(step, old_k);
   settle_membership(old_k, step);
   step.rank = steps.size() + 1;
   steps.push_back(std::move(step));
@@ -134,15 +134,15 @@ void Engine::insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps)
   resolve_delaunay(steps);
 }
 
-void Engine::record_tet_changes(Step& step, OldMembership& old_k) {
+void Engine::record_top_changes(Step& step, OldMembership& old_k) {
   std::unordered_set<Simplex, SimplexHash> before;
-  for (const Simplex& t : tri.tets())
+  for (const Simplex& t : tri.tops())
     before.insert(t);
   rebuild_static(old_k);
   for (const Simplex& t : before)
-    if (is_finite(t) && !tri.has_tet(t))
+    if (is_finite(t) && !tri.has_top(t))
       step.delaunay_removed.push_back(t);
-  for (const Simplex& t : tri.tets())
+  for (const Simplex& t : tri.tops())
     if (is_finite(t) && !before.count(t))
       step.delaunay_created.push_back(t);
   // Hash tables iterate in no meaningful order: the stream lists them sorted.

@@ -92,12 +92,12 @@ bool Engine::find_conflict(VertexId v, Simplex& seed) {
   // A tie (0) is passed over here: if it touches the conflict region, the flood of insert_locally
   // meets it again and gives up; elsewhere it does not matter.
   if (nearest != infinite_vertex)
-    for (const Simplex& t : tri.tets_of(nearest))
+    for (const Simplex& t : tri.tops_of(nearest))
       if (in_conflict_just_after(t, v) > 0) {
         seed = t;
         return true;
       }
-  for (const Simplex& t : tri.tets())
+  for (const Simplex& t : tri.tops())
     if (in_conflict_just_after(t, v) > 0) {
       seed = t;
       return true;
@@ -157,7 +157,7 @@ bool Engine::delete_locally(VertexId v, std::vector<Simplex>& removed, std::vect
                             std::vector<int>& orientations) {
   if (!now.is_rational())
     return false;
-  removed = tri.tets_of(v);
+  removed = tri.tops_of(v);
   std::unordered_map<Simplex, int, SimplexHash> walls; // link facet -> times the flood met it
   std::vector<VertexId> link;
   for (const Simplex& t : removed) {
@@ -262,7 +262,7 @@ bool Engine::delete_locally(VertexId v, std::vector<Simplex>& removed, std::vect
 }
 
 // Inserts or deletes v as a local change if it can (see above), recording it in step as
-// record_tet_changes records a static rebuild.
+// record_top_changes records a static rebuild.
 bool Engine::record_local_change(Step& step, OldMembership& old_k, VertexId v, bool insert) {
   std::vector<Simplex> removed, added;
   std::vector<int> orientations;
@@ -276,7 +276,7 @@ bool Engine::record_local_change(Step& step, OldMembership& old_k, VertexId v, b
     for (std::size_t i = 0; i < sorted.size(); ++i)
       std::tie(added[i], orientations[i]) = sorted[i];
     std::sort(removed.begin(), removed.end());
-    change_tets(removed, added, old_k, orientations.data());
+    change_tops(removed, added, old_k, orientations.data());
     reinstall_hull_ridges_over(added, removed);
     ++(insert ? stats.local_insertions : stats.local_deletions);
     for (const Simplex& t : removed)

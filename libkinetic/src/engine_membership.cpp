@@ -1,4 +1,4 @@
-// Triangulation changes and the alpha complex on them: replacing tetrahedra, cofaces, the frontier
+// Triangulation changes and the alpha complex on them: replacing top simplices, cofaces, the frontier
 // of radius certificates (docs/MATH.md §4.4), the Gabriel test and membership re-evaluation (4.5).
 #include "engine.h"
 
@@ -20,12 +20,12 @@ bool Engine::in_k(const Simplex& s) const {
   return f != nullptr && f->in_k;
 }
 
-void Engine::change_tets(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+void Engine::change_tops(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                          OldMembership& old_k, const int* added_orientations) {
-  apply_tet_change(removed, added, added_orientations);
+  apply_top_change(removed, added, added_orientations);
   for (const TouchedFace& t : touched_scratch.faces)
     old_k.emplace(t.face, t.old_in_k);
-  finish_tet_change();
+  finish_top_change();
 }
 
 // A flip touches at most 2^(dim + 2) - 1 = 31 faces; a larger change overflows the cache anyway.
@@ -34,14 +34,14 @@ constexpr std::size_t max_prefetched_faces = 32;
 // The caller may pass the orientations sign^+ of the added top simplices (0 for infinite ones) it
 // has computed.
 
-void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+void Engine::apply_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                               const int* added_orientations) {
   TouchedFaces& touched = touched_scratch;
   collect_touched_faces(removed, added, touched);
   if (touched.faces.size() <= max_prefetched_faces) {
     // A flip: its records are requested together, so their cache misses overlap (FlatSimplexMap::prefetch).
     for (const Simplex& t : removed)
-      tri.prefetch_tet(t);
+      tri.prefetch_top(t);
     for (const TouchedFace& t : touched.faces)
       if (t.face.size() > 1)
         faces.prefetch(t.face);
@@ -49,7 +49,7 @@ void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::ve
   std::vector<int>& dropped = dropped_certs_scratch;
   dropped.clear();
   for (const Simplex& t : removed)
-    tri.remove_tet(t, dropped);
+    tri.remove_top(t, dropped);
   for (int id : dropped)
     kill_cert(id);
   for (std::size_t i = 0; i < added.size(); ++i) {
@@ -60,7 +60,7 @@ void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::ve
       if (s == 0)
         throw flat_top_simplex_error(t);
     }
-    tri.add_tet(t, s);
+    tri.add_top(t, s);
   }
   // Each face counts the top simplices (infinite ones included) that hold it, so its presence in
   // Del after the change needs no search of the triangulation. With room reserved, no entry moves
@@ -83,8 +83,8 @@ void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::ve
     Face& state = *added_state;
     t.state = &state;
     t.old_in_k = state.in_k;
-    state.tets += t.delta;
-    t.leaves = state.tets == 0;
+    state.tops += t.delta;
+    t.leaves = state.tops == 0;
     if (t.leaves) {
       // Leaving Del: its facets are touched, and those staying lose it as a coface.
       FaceStates::count_in_facets(f, -int(state.is_short), -int(state.in_k), state_of);
@@ -117,7 +117,7 @@ void Engine::apply_tet_change(const std::vector<Simplex>& removed, const std::ve
     install_facet(f);
 }
 
-void Engine::finish_tet_change() {
+void Engine::finish_top_change() {
   // Erasing moves entries: no state pointer is read from here on.
   for (TouchedFace& t : touched_scratch.faces) {
     if (t.leaves)
@@ -163,7 +163,7 @@ bool Engine::gabriel_now(const Simplex& s) {
       if (x != infinite_vertex)
         link.push_back(x);
   } else {
-    tri.for_each_tet_containing(s, [&](const Simplex& t) {
+    tri.for_each_top_containing(s, [&](const Simplex& t) {
       for (VertexId x : t)
         if (x != infinite_vertex && !s.contains(x) && std::find(link.begin(), link.end(), x) == link.end())
           link.push_back(x);
@@ -244,7 +244,7 @@ void Engine::settle_membership(const OldMembership& old_k, Step& step) {
     }
 }
 
-// settle_membership on the faces of the change being applied (apply_tet_change), which are in
+// settle_membership on the faces of the change being applied (apply_top_change), which are in
 // canonical order: backwards is decreasing dimension.
 void Engine::settle_touched(Step& step) {
   auto state_of = [&](const Simplex& x) { return state_in_touched(x); };

@@ -35,7 +35,7 @@ void Engine::rebuild_static(OldMembership& old_k) {
   ++stats.static_rebuilds;
   std::vector<VertexId> ids = alive_ids();
   int dimension = 0;
-  std::vector<Simplex> tets =
+  std::vector<Simplex> tops =
       now.is_rational() ? detail::delaunay_just_after(dim, static_input(ids), now.rational(), dimension)
                         : delaunay_after_algebraic_now(ids, dimension);
   if (dimension < dim) {
@@ -53,15 +53,15 @@ void Engine::rebuild_static(OldMembership& old_k) {
   // CGAL lists the simplices in an order that follows its insertion order, which its spatial sort
   // draws from CGAL's default random generator (process-wide state). Sorted, the order of the
   // changes below, and of the certificates they build, does not depend on it.
-  std::sort(tets.begin(), tets.end());
-  std::unordered_set<Simplex, SimplexHash> target(tets.begin(), tets.end());
+  std::sort(tops.begin(), tops.end());
+  std::unordered_set<Simplex, SimplexHash> target(tops.begin(), tops.end());
   std::vector<Simplex> removed, added, kept;
-  for (const Simplex& t : tri.tets())
+  for (const Simplex& t : tri.tops())
     if (!target.count(t))
       removed.push_back(t);
-  for (const Simplex& t : tets)
-    (tri.has_tet(t) ? kept : added).push_back(t);
-  change_tets(removed, added, old_k);
+  for (const Simplex& t : tops)
+    (tri.has_top(t) ? kept : added).push_back(t);
+  change_tops(removed, added, old_k);
   reinstall_hull_ridges_over(added, removed);
   reorient_kept(kept);
 }
@@ -69,7 +69,7 @@ void Engine::rebuild_static(OldMembership& old_k) {
 // A hull ridge's certificate (docs/MATH.md §3.2 case B) is oriented by the recorded orientation of the top
 // simplex below one of its hull facets, which is not a face of the ridge's own top simplices. A
 // static change can replace that simplex and leave the ridge's top simplices as they were, so
-// apply_tet_change does not rebuild the certificate. After a flip that is harmless: the old and the
+// apply_top_change does not rebuild the certificate. After a flip that is harmless: the old and the
 // new simplex below lie on the inner side of the hull facet just after now, so the orientation is
 // the same. A static change may replace one whose recorded orientation had turned stale (flat at
 // now, inside out just after, which is why the frame or the batch repairs), and the certificate
@@ -128,12 +128,12 @@ std::vector<Simplex> Engine::delaunay_after_algebraic_now(const std::vector<Vert
     return static_cast<int>(CGAL::sign(value_at(build(mpz_class()), q))) == sign_plus_now(build);
   };
   for (int attempt = 0; attempt < 1024; ++attempt) {
-    std::vector<Simplex> tets = detail::delaunay_at(dim, static_input(ids), q, dimension);
+    std::vector<Simplex> tops = detail::delaunay_at(dim, static_input(ids), q, dimension);
     if (dimension < dim)
-      return tets; // flat input, reported by the caller
+      return tops; // flat input, reported by the caller
     std::unordered_map<Simplex, std::vector<VertexId>, SimplexHash> apices;
     bool holds = true;
-    for (const Simplex& t : tets) {
+    for (const Simplex& t : tops) {
       for (std::size_t i = 0; i < t.size(); ++i)
         apices[t.facet(i)].push_back(t[i]);
       if (holds && is_finite(t))
@@ -154,7 +154,7 @@ std::vector<Simplex> Engine::delaunay_after_algebraic_now(const std::vector<Vert
       });
     }
     if (holds)
-      return tets;
+      return tops;
     q = rational_closer_after(now, q);
     q_hi = CGAL::to_interval(q).second;
   }

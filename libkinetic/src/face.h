@@ -14,7 +14,7 @@ struct Face {
   bool is_short = false;
   bool in_k = false;
   int cert = -1;
-  int tets = 0; // top simplices of Del (infinite ones included) that contain this simplex
+  int tops = 0; // top simplices of Del (infinite ones included) that contain this simplex
   // Its finite (k+1)-cofaces in Del that are short, and those in K: the frontier rule asks whether a
   // short simplex has a short coface (docs/MATH.md §4.4), the membership rule whether any coface is in K
   // (4.5). Kept up to date by Engine::count_in_facets wherever a flag changes or a face comes or

@@ -28,7 +28,7 @@ std::string FaceStates::first_violation(const Triangulation& tri, const std::vec
   };
   std::unordered_set<Simplex, SimplexHash> del_faces;
   std::string violation;
-  for (const Simplex& t : tri.tets())
+  for (const Simplex& t : tri.tops())
     for_each_face(t, [&](const Simplex& s) {
       if (!violation.empty() || s.size() == 1 || !del_faces.insert(s).second)
         return;
@@ -37,7 +37,7 @@ std::string FaceStates::first_violation(const Triangulation& tri, const std::vec
         violation = named("of Del is not recorded", s);
         return;
       }
-      if (f->tets != static_cast<int>(tri.tets_containing(s).size())) {
+      if (f->tops != static_cast<int>(tri.tops_containing(s).size())) {
         violation = named("of Del has a wrong count of top simplices", s);
         return;
       }

@@ -57,7 +57,7 @@ public:
 
   std::size_t size() const { return size_; }
   // Room for n entries: inserting up to n - size() new keys then moves no entry, so references to
-  // entries stay valid until the next erase (Engine::apply_tet_change holds one per touched face).
+  // entries stay valid until the next erase (Engine::apply_top_change holds one per touched face).
   void reserve(std::size_t n) {
     while (4 * n > 3 * slots_.size())
       grow();

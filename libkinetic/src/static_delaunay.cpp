@@ -51,9 +51,9 @@ std::vector<Simplex> delaunay_at(int dim, const StaticInput& input, const CGAL::
 }
 
 std::vector<Simplex> static_alpha_complex(int dim, const StaticInput& input, const CGAL::Gmpq& u,
-                                          const CGAL::Gmpq& rho2, std::vector<Simplex>& tets) {
-  return dim == 2 ? alpha_complex_of_exact<2>(input, u, rho2, tets)
-                  : alpha_complex_of_exact<3>(input, u, rho2, tets);
+                                          const CGAL::Gmpq& rho2, std::vector<Simplex>& tops) {
+  return dim == 2 ? alpha_complex_of_exact<2>(input, u, rho2, tops)
+                  : alpha_complex_of_exact<3>(input, u, rho2, tops);
 }
 
 } // namespace medusa::kinetic::detail

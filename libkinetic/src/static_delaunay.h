@@ -43,10 +43,10 @@ std::vector<Simplex> delaunay_at(int dim, const StaticInput& input, const CGAL::
 
 // The finite simplices (all dimensions) of the fixed-radius alpha complex of the points a + u b,
 // u rational, radius^2 = rho2 (grid units), computed with CGAL's Delaunay_triangulation_3 and
-// Fixed_alpha_shape_3 (2D: Delaunay_triangulation_2 and Alpha_shape_2) over an exact kernel. `tets`
+// Fixed_alpha_shape_3 (2D: Delaunay_triangulation_2 and Alpha_shape_2) over an exact kernel. `tops`
 // receives the Delaunay top simplices (infinite = -1).
 std::vector<Simplex> static_alpha_complex(int dim, const StaticInput& input, const CGAL::Gmpq& u,
-                                          const CGAL::Gmpq& rho2, std::vector<Simplex>& tets);
+                                          const CGAL::Gmpq& rho2, std::vector<Simplex>& tops);
 
 // The same per dimension D = dim, specialised in static_delaunay_2.cpp and static_delaunay_3.cpp (the
 // functions above choose the points and dispatch): Delaunay top simplices of the points 2^k a + b

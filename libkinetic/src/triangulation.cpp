@@ -12,12 +12,12 @@ namespace medusa::kinetic::detail {
 
 void Triangulation::clear() {
   memo_ = nullptr;
-  tet_count_ = 0;
+  top_count_ = 0;
   facets_.clear();
   incident_.clear();
 }
 
-void Triangulation::add_tet(const Simplex& t, int orientation) {
+void Triangulation::add_top(const Simplex& t, int orientation) {
   memo_ = nullptr;
   for (std::size_t i = 0; i < t.size(); ++i) {
     Apices& a = facets_[t.facet(i)];
@@ -39,7 +39,7 @@ void Triangulation::add_tet(const Simplex& t, int orientation) {
       incident_.resize(slot + 1);
     incident_[slot].push_back(t);
   }
-  ++tet_count_;
+  ++top_count_;
 }
 
 void Triangulation::set_orientation(const Simplex& t, int orientation) {
@@ -49,7 +49,7 @@ void Triangulation::set_orientation(const Simplex& t, int orientation) {
   }
 }
 
-void Triangulation::remove_tet(const Simplex& t, std::vector<int>& dropped_certs) {
+void Triangulation::remove_top(const Simplex& t, std::vector<int>& dropped_certs) {
   memo_ = nullptr;
   for (std::size_t i = 0; i < t.size(); ++i) {
     auto it = facets_.find(t.facet(i));
@@ -75,10 +75,10 @@ void Triangulation::remove_tet(const Simplex& t, std::vector<int>& dropped_certs
     *std::find(list.begin(), list.end(), t) = list.back();
     list.pop_back();
   }
-  --tet_count_;
+  --top_count_;
 }
 
-void Triangulation::prefetch_tet(const Simplex& t) const {
+void Triangulation::prefetch_top(const Simplex& t) const {
   for (std::size_t i = 0; i < t.size(); ++i)
     facets_.prefetch(t.facet(i));
   for (VertexId v : t) {
@@ -114,22 +114,22 @@ const Triangulation::Apices& Triangulation::two_sided(const Simplex& facet) cons
   return *a;
 }
 
-const std::vector<Simplex>& Triangulation::tets_of(VertexId v) const {
+const std::vector<Simplex>& Triangulation::tops_of(VertexId v) const {
   static const std::vector<Simplex> none;
   const std::size_t slot = static_cast<std::size_t>(v + 1);
   return slot < incident_.size() ? incident_[slot] : none;
 }
 
-std::vector<Simplex> Triangulation::tets_containing(const Simplex& s) const {
+std::vector<Simplex> Triangulation::tops_containing(const Simplex& s) const {
   std::vector<Simplex> result;
-  for_each_tet_containing(s, [&](const Simplex& t) { result.push_back(t); });
+  for_each_top_containing(s, [&](const Simplex& t) { result.push_back(t); });
   return result;
 }
 
 std::vector<Simplex> Triangulation::finite_cofaces(const Simplex& s) const {
   // A coface is s plus one vertex of a finite top simplex holding s (it may come from several).
   std::vector<Simplex> result;
-  for_each_tet_containing(s, [&](const Simplex& t) {
+  for_each_top_containing(s, [&](const Simplex& t) {
     if (!is_finite(t))
       return;
     for (VertexId v : t)
@@ -152,7 +152,7 @@ std::string Triangulation::first_violation(int dimension) const {
       return named("top simplices: not two at facet", facet);
   std::size_t listed = 0, incidences = 0, vertices = 0;
   std::unordered_set<Simplex, SimplexHash> edges;
-  for (const Simplex& t : tets()) {
+  for (const Simplex& t : tops()) {
     ++listed;
     const int o = orientation(t);
     if ((o == 0) != !is_finite(t))
@@ -161,7 +161,7 @@ std::string Triangulation::first_violation(int dimension) const {
       const Apices* a = apices(t.facet(i));
       if (a == nullptr || a->orientation_with(t[i]) != o || a->orientation_slot(t[i]) < 0)
         return named("a facet does not hold its top simplex, or holds another orientation:", t);
-      const std::vector<Simplex>& list = tets_of(t[i]);
+      const std::vector<Simplex>& list = tops_of(t[i]);
       if (std::count(list.begin(), list.end(), t) != 1)
         return named("a top simplex is not listed once at its vertex:", t);
       for (std::size_t j = i + 1; j < t.size(); ++j)
@@ -172,7 +172,7 @@ std::string Triangulation::first_violation(int dimension) const {
     incidences += list.size();
     vertices += list.empty() ? 0 : 1;
   }
-  if (listed != tet_count_)
+  if (listed != top_count_)
     return "the count of top simplices is not the number listed";
   if (incidences != listed * (static_cast<std::size_t>(dimension) + 1))
     return "a vertex lists a top simplex that is not one";

@@ -1,5 +1,5 @@
 // The combinatorial Delaunay triangulation augmented with the infinite vertex: top simplices
-// ("tets": tetrahedra, or triangles in a planar run) as sorted vertex tuples (the infinite vertex is
+// (tetrahedra, or triangles in a planar run) as sorted vertex tuples (the infinite vertex is
 // -1 and sorts first), facets (triangles, or edges in 2D) with their two apices, and the top
 // simplices incident to each vertex. The dimension is the size of the simplices added. Geometry lives
 // elsewhere: certificates decide validity, this structure only records the combinatorics (flips are set
@@ -25,25 +25,25 @@ public:
   void clear();
   // A top simplex is known by its facets: t is present iff its facet without t[0] has apex t[0]. No
   // table of top simplices is kept, which saves a hash-table operation per added or removed one.
-  bool has_tet(const Simplex& t) const {
+  bool has_top(const Simplex& t) const {
     const Apices* a = apices(t.facet(0));
     return a != nullptr && a->orientation_slot(t[0]) >= 0;
   }
   // Adds t with the sign (+1 or -1) of the orientation of its sorted vertices, 0 for an infinite t;
   // the sign is kept with t's facets (Apices).
-  void add_tet(const Simplex& t, int orientation);
+  void add_top(const Simplex& t, int orientation);
   // Removes t; a facet left with no top simplex goes, and its certificate id (Apices::cert), if it
   // had one, is appended to dropped_certs for the caller to retire.
-  void remove_tet(const Simplex& t, std::vector<int>& dropped_certs);
+  void remove_top(const Simplex& t, std::vector<int>& dropped_certs);
   // The recorded orientation of the top simplex t (0 for an infinite one), and its replacement: a top
   // simplex that flattens and turns inside out while staying in Del keeps its vertices but not its
   // sign (Engine::reorient_kept). Both require t to be present.
   int orientation(const Simplex& t) const { return apices(t.facet(0))->orientation_with(t[0]); }
   void set_orientation(const Simplex& t, int orientation);
   // Starts loading the records that removing t will touch (FlatSimplexMap::prefetch).
-  void prefetch_tet(const Simplex& t) const;
+  void prefetch_top(const Simplex& t) const;
 
-  // The apices of facet f (the vertices completing it to its two tetrahedra); count is 2 in a
+  // The apices of facet f (the vertices completing it to its two top simplices); count is 2 in a
   // valid triangulation. With each apex v[k], the orientation given to the top simplex f + v[k]
   // when it was added: every certificate of the facet needs it (docs/MATH.md §3.2), and the facet's record
   // is at hand where the top simplex would take a look-up of its own.
@@ -76,9 +76,9 @@ public:
     return a.v[0] == apex ? a.v[1] : a.v[0];
   }
 
-  // The top simplices, iterable as simplices (`for (const Simplex& t : tri.tets())`), in no
+  // The top simplices, iterable as simplices (`for (const Simplex& t : tri.tops())`), in no
   // meaningful order: each is listed from its one facet whose apex is its smallest vertex.
-  class TetRange {
+  class TopRange {
   public:
     class iterator {
     public:
@@ -111,7 +111,7 @@ public:
       int k_ = 0;
       Simplex current_;
     };
-    TetRange(const FlatSimplexMap<Apices>& m, std::size_t n) : m_(m), n_(n) {}
+    TopRange(const FlatSimplexMap<Apices>& m, std::size_t n) : m_(m), n_(n) {}
     iterator begin() const { return iterator(m_.begin(), m_.end()); }
     iterator end() const { return iterator(m_.end(), m_.end()); }
     std::size_t size() const { return n_; }
@@ -120,7 +120,7 @@ public:
     const FlatSimplexMap<Apices>& m_;
     std::size_t n_;
   };
-  TetRange tets() const { return TetRange(facets_, tet_count_); }
+  TopRange tops() const { return TopRange(facets_, top_count_); }
   const FlatSimplexMap<Apices>& facets() const { return facets_; }
   // Calls f(facet, record) for every facet, in table order; f may change the records but not add or
   // remove a top simplex.
@@ -132,16 +132,16 @@ public:
     for (const auto& [facet, record] : facets_)
       f(facet, record);
   }
-  // Tetrahedra containing every vertex of s.
-  std::vector<Simplex> tets_containing(const Simplex& s) const;
+  // The top simplices containing every vertex of s.
+  std::vector<Simplex> tops_containing(const Simplex& s) const;
   // The finite (k+1)-cofaces of a finite k-simplex s, sorted, each once.
   std::vector<Simplex> finite_cofaces(const Simplex& s) const;
-  const std::vector<Simplex>& tets_of(VertexId v) const;
+  const std::vector<Simplex>& tops_of(VertexId v) const;
 
   // Calls f(t) for every top simplex t containing s, without allocating: the queries of the
   // frontier and membership rules (docs/MATH.md §4.4, §4.5) run for every touched face of every event, so
   // they scan the shortest incident list of s's vertices.
-  template <class F> void for_each_tet_containing(const Simplex& s, F&& f) const {
+  template <class F> void for_each_top_containing(const Simplex& s, F&& f) const {
     const std::vector<Simplex>& list = shortest_incident_list(s);
     for (const Simplex& t : list)
       if (contains_all(t, s))
@@ -168,20 +168,20 @@ private:
     return true;
   }
   const std::vector<Simplex>& shortest_incident_list(const Simplex& s) const {
-    const std::vector<Simplex>* best = &tets_of(s[0]);
+    const std::vector<Simplex>* best = &tops_of(s[0]);
     for (std::size_t i = 1; i < s.size(); ++i) {
-      const std::vector<Simplex>& l = tets_of(s[i]);
+      const std::vector<Simplex>& l = tops_of(s[i]);
       if (l.size() < best->size())
         best = &l;
     }
     return *best;
   }
 
-  std::size_t tet_count_ = 0;
+  std::size_t top_count_ = 0;
   FlatSimplexMap<Apices> facets_;
   // The last facet looked up and its record: installing a facet's certificate reads the record
   // three times (the certificate, its polynomial, its cache key). Any change of the table may move
-  // records, so add_tet, remove_tet and clear forget it.
+  // records, so add_top, remove_top and clear forget it.
   mutable Simplex memo_key_;
   mutable const Apices* memo_ = nullptr;
   // Top simplices incident to each vertex, indexed by vertex id + 1 (the infinite vertex is -1).

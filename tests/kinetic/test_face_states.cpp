@@ -23,9 +23,9 @@ struct Fixture {
   // The top simplex `top` and the infinite vertex over each of its facets; every finite simplex
   // short and in K, so that only the top simplex is on the frontier (it holds certificate 0).
   explicit Fixture(const Simplex& top) : alive(top.size(), 1) {
-    tri.add_tet(top, 1);
+    tri.add_top(top, 1);
     for (std::size_t i = 0; i < top.size(); ++i)
-      tri.add_tet(top.facet(i).with(infinite_vertex), 0);
+      tri.add_top(top.facet(i).with(infinite_vertex), 0);
     const std::size_t n = top.size();
     for_each_face(top, [&](const Simplex& s) {
       if (s.size() == 1)
@@ -36,7 +36,7 @@ struct Fixture {
       // vertices), all short and in K. It lies in the top simplex, and in the infinite simplex over
       // each facet of the top simplex that contains it: those leaving out a vertex outside s.
       f.short_cofaces = f.k_cofaces = static_cast<int>(n - s.size());
-      f.tets = 1 + static_cast<int>(n - s.size());
+      f.tops = 1 + static_cast<int>(n - s.size());
       f.cert = s.size() == n ? 0 : -1;
     });
   }
@@ -61,7 +61,7 @@ TEST_CASE("the face states' own check accepts counts worked out by hand and name
     }
     {
       Fixture x(top);
-      x.faces.at(Simplex{0, 1}).tets += 1;
+      x.faces.at(Simplex{0, 1}).tops += 1;
       REQUIRE(names(x.violation(), "wrong count of top simplices"));
     }
     {

@@ -41,13 +41,13 @@ Simplex random_simplex(std::mt19937& rng, std::size_t size, bool allow_infinite)
 
 void require_matches(const Triangulation& tri, const std::set<Simplex>& oracle) {
   std::vector<Simplex> listed;
-  for (const Simplex& t : tri.tets())
+  for (const Simplex& t : tri.tops())
     listed.push_back(t);
   std::sort(listed.begin(), listed.end());
   REQUIRE(listed == std::vector<Simplex>(oracle.begin(), oracle.end())); // each once, nothing else
-  REQUIRE(tri.tets().size() == oracle.size());
+  REQUIRE(tri.tops().size() == oracle.size());
   for (const Simplex& t : oracle)
-    REQUIRE(tri.has_tet(t));
+    REQUIRE(tri.has_top(t));
 }
 
 } // namespace
@@ -63,18 +63,18 @@ TEST_CASE("top simplices are found and listed from their facets alone, each once
     for (int step = 0; step < 3000; ++step) {
       const Simplex t = random_simplex(rng, size, true);
       const bool present = oracle.count(t) != 0;
-      REQUIRE(tri.has_tet(t) == present);
+      REQUIRE(tri.has_top(t) == present);
       if (present && rng() % 2 == 0) {
-        REQUIRE_THROWS_AS(tri.add_tet(t, is_finite(t) ? 1 : 0), medusa::InternalError);
+        REQUIRE_THROWS_AS(tri.add_top(t, is_finite(t) ? 1 : 0), medusa::InternalError);
         std::vector<int> dropped;
-        tri.remove_tet(t, dropped);
+        tri.remove_top(t, dropped);
         REQUIRE(dropped.empty()); // no facet here carries a certificate
         oracle.erase(t);
       } else if (!present && rng() % 3 == 0) {
         std::vector<int> dropped;
-        REQUIRE_THROWS_AS(tri.remove_tet(t, dropped), medusa::InternalError);
+        REQUIRE_THROWS_AS(tri.remove_top(t, dropped), medusa::InternalError);
       } else if (!present && fits(t, tri)) {
-        tri.add_tet(t, is_finite(t) ? 1 : 0);
+        tri.add_top(t, is_finite(t) ? 1 : 0);
         oracle.insert(t);
       }
       if (step % 250 == 0)
@@ -92,17 +92,17 @@ TEST_CASE("a facet's certificate id is handed back when its last top simplex goe
   for (const std::size_t size : {std::size_t{3}, std::size_t{4}}) {
     CAPTURE(seed, size);
     Triangulation tri;
-    std::set<Simplex> tets;
+    std::set<Simplex> tops;
     std::map<Simplex, int> cert_of; // the oracle: the id given to each facet present
     int next_id = 0, handed_back = 0;
     for (int step = 0; step < 3000; ++step) {
       const Simplex t = random_simplex(rng, size, true);
-      if (tets.count(t) != 0) {
+      if (tops.count(t) != 0) {
         // The facets of t that no other top simplex holds go, with their ids.
         std::vector<int> expected;
         for (std::size_t i = 0; i < t.size(); ++i) {
           const Simplex f = t.facet(i);
-          const bool shared = std::any_of(tets.begin(), tets.end(), [&](const Simplex& u) {
+          const bool shared = std::any_of(tops.begin(), tops.end(), [&](const Simplex& u) {
             return u != t && std::includes(u.begin(), u.end(), f.begin(), f.end());
           });
           if (!shared) {
@@ -111,15 +111,15 @@ TEST_CASE("a facet's certificate id is handed back when its last top simplex goe
           }
         }
         std::vector<int> dropped;
-        tri.remove_tet(t, dropped);
-        tets.erase(t);
+        tri.remove_top(t, dropped);
+        tops.erase(t);
         std::sort(expected.begin(), expected.end());
         std::sort(dropped.begin(), dropped.end());
         REQUIRE(dropped == expected);
         handed_back += static_cast<int>(dropped.size());
       } else if (fits(t, tri)) {
-        tri.add_tet(t, is_finite(t) ? 1 : 0);
-        tets.insert(t);
+        tri.add_top(t, is_finite(t) ? 1 : 0);
+        tops.insert(t);
         for (std::size_t i = 0; i < t.size(); ++i) {
           Triangulation::Apices* a = tri.apices(t.facet(i));
           REQUIRE(a != nullptr);
@@ -143,9 +143,9 @@ namespace {
 
 // The augmented triangulation of one top simplex: it and the infinite vertex joined to each facet.
 void add_augmented_simplex(Triangulation& tri, const Simplex& t) {
-  tri.add_tet(t, 1);
+  tri.add_top(t, 1);
   for (std::size_t i = 0; i < t.size(); ++i)
-    tri.add_tet(t.facet(i).with(infinite_vertex), 0);
+    tri.add_top(t.facet(i).with(infinite_vertex), 0);
 }
 
 } // namespace
@@ -161,14 +161,14 @@ TEST_CASE("the triangulation's own check accepts an augmented sphere and names w
 
     // One infinite top simplex less: its facets have one top simplex each.
     std::vector<int> dropped;
-    tri.remove_tet(top.facet(0).with(infinite_vertex), dropped);
+    tri.remove_top(top.facet(0).with(infinite_vertex), dropped);
     REQUIRE(tri.first_violation(dimension).find("not two") != std::string::npos);
 
     // A finite top simplex recorded without an orientation.
     Triangulation flat;
-    flat.add_tet(top, 0);
+    flat.add_top(top, 0);
     for (std::size_t i = 0; i < top.size(); ++i)
-      flat.add_tet(top.facet(i).with(infinite_vertex), 0);
+      flat.add_top(top.facet(i).with(infinite_vertex), 0);
     REQUIRE(flat.first_violation(dimension).find("orientation") != std::string::npos);
 
     // Two spheres sharing only the infinite vertex: every facet has two top simplices, but
