@@ -19,6 +19,7 @@
 #include "certificate_enclosure.h"
 #include "certificate_polynomials.h"
 #include "interval_filter.h"
+#include "kinetic_traits.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
 #include "medusa/kinetic/observer.h"
 #include "medusa/kinetic/simplex.h"
@@ -42,7 +43,7 @@ namespace medusa::kinetic::detail {
 // The membership in K, before the current step, of every simplex the step touched.
 using OldMembership = FlatSimplexMap<bool>;
 
-struct Engine {
+template <class K> struct Engine {
   // The input and the outputs of the run.
   const Trajectories& traj;
   KineticOptions options;
@@ -57,8 +58,8 @@ struct Engine {
   // simplices have dim + 1 vertices, facets dim; the dimension-specific rules are
   // delaunay_poly, orientation_poly, the flip rule (dimension_policy.h) and the static structures
   // (static_delaunay.h). Everything else is shared.
-  int dim = 3;
-  std::size_t top_size() const { return static_cast<std::size_t>(dim) + 1; }
+  static constexpr int dim = K::dimension;
+  static constexpr std::size_t top_size() { return K::top_size; }
 
   // The current slab, time u inside it, the cells' motion in it and who is alive.
   std::size_t slab = 0;
@@ -109,7 +110,7 @@ struct Engine {
   std::vector<VertexId> link_scratch;                                  // gabriel_now's link vertices
   std::array<std::vector<std::pair<Simplex, bool>>, 4> settle_scratch; // settle_membership's buckets by size
 
-  Engine(const Trajectories& t, KineticOptions o); // engine_run.cpp
+  Engine(const Trajectories& t, KineticOptions o); // engine/run.h
 
   // ------------------------------------ geometry of certificates (templates over the number type)
 
@@ -165,7 +166,7 @@ struct Engine {
     const VertexId p = ap->v[0], q = ap->v[1];
     if (!is_finite(facet) || p == infinite_vertex || q == infinite_vertex)
       return false;
-    if (dim == 2) {
+    if constexpr (dim == 2) {
       const std::array<VertexId, 3> seq{facet[0], facet[1], p};
       f = in_circle_enclosure(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(q));
       if (orientation_of(seq.data(), 3, *ap, p) > 0)
@@ -210,7 +211,7 @@ struct Engine {
 
   // At a hull ridge whose certificate vanishes at now: whether its facets are folded onto each other
   // at now around a top simplex that is not flat then, so that the triangulation is not embedded
-  // just after now (engine_certificates.cpp).
+  // just after now (engine/certificates.h).
   bool hull_ridge_folded_at_now(const Simplex& facet);
 
   // Facets a b p and a b q at the ridge a b (edges a p and a q at the ridge vertex a in 2D):
@@ -221,7 +222,7 @@ struct Engine {
   template <class NT, class At>
   Poly<NT> fold_poly(const Simplex& ridge, VertexId p, VertexId q, const At& at) const {
     const VertexId a = ridge[0];
-    if (dim == 2)
+    if constexpr (dim == 2)
       return certificate::dot<NT>(certificate::difference<NT>(at(a), at(p)),
                                   certificate::difference<NT>(at(a), at(q)));
     const auto ab = certificate::difference<NT>(at(a), at(ridge[1]));
@@ -327,18 +328,18 @@ struct Engine {
     return sign_at(to_exact_poly(build(mpz_class())), now);
   }
 
-  // ------------------------------------ certificates and their scheduling (engine_certificates.cpp)
+  // ------------------------------------ certificates and their scheduling (engine/certificates.h)
 
   int orientation_of(const VertexId* seq, std::size_t n, const Triangulation::Apices& ap,
                      VertexId apex) const;
   int orientation_sign_plus(const Simplex& t);
-  bool flat_without_turning_at_now(const Simplex& t);  // engine_certificates.cpp
+  bool flat_without_turning_at_now(const Simplex& t);  // engine/certificates.h
   int orientation_sign_before_frame(const Simplex& t); // 0: none at the previous frame
   int sign_after_own_orientation_root(const Simplex& t) const;
-  bool top_simplex_turns_at_frame();  // engine_frames.cpp
+  bool top_simplex_turns_at_frame();  // engine/frames.h
   bool flat_at_now(const Simplex& t); // a finite top simplex whose orientation vanishes at now
-  bool is_hull_orientation(const Certificate& c) const;         // engine_certificates.cpp
-  bool degenerate_hull_facet_at(const Simplex& s);              // engine_flips.cpp
+  bool is_hull_orientation(const Certificate& c) const;         // engine/certificates.h
+  bool degenerate_hull_facet_at(const Simplex& s);              // engine/flips.h
   bool collinear_at_now(const Simplex& f);                      // three cells, on one line at now
   int orientation_enclosure_sign(const Simplex& t);             // 0: the enclosure at now does not decide
   GeometryError flat_top_simplex_error(const Simplex& t) const; // t stays flat just after now
@@ -368,7 +369,7 @@ struct Engine {
   void install_radius(const Simplex& s, Face& f, Interval* at_now = nullptr); // f: s's state
   bool compute_short(const Simplex& s);
 
-  // ------------------------------------ Del changes, frontier, membership (engine_membership.cpp)
+  // ------------------------------------ Del changes, frontier, membership (engine/membership.h)
 
   bool in_k(const Simplex& s) const;
   // Replaces top simplices and records the old membership of every touched simplex in old_k.
@@ -407,7 +408,7 @@ struct Engine {
   template <class StateOf> bool settle(const Simplex& s, Face& f, StateOf&& state_of);
   std::vector<Simplex> current_complex() const;
 
-  // ------------------------------------ flips (docs/MATH.md §4.5) and radius events (engine_flips.cpp)
+  // ------------------------------------ flips (docs/MATH.md §4.5) and radius events (engine/flips.h)
 
   void flip(const Simplex& facet, const FlipChange& change, std::vector<Step>& steps);
   void repair(std::vector<Step>& steps);
@@ -418,7 +419,7 @@ struct Engine {
   void resolve_hull_touches();
   bool radius_vanishes_now(const Simplex& s);
 
-  // ------------------------------------ the event loop and batches (engine_event_loop.cpp)
+  // ------------------------------------ the event loop and batches (engine/event_loop.h)
 
   EventTime event_time(bool at_frame) const;
   void emit_batch(Observer& observer, std::vector<Step>& steps, bool at_frame);
@@ -427,7 +428,7 @@ struct Engine {
   void at_own_time(int cert); // now = the time cert fired at, if it fired in this batch
   void run_slab(Observer& observer);
 
-  // ------------------------------------ static rebuilds with CGAL (engine_static_rebuild.cpp)
+  // ------------------------------------ static rebuilds with CGAL (engine/static_rebuild.h)
 
   detail::StaticInput static_input(const std::vector<VertexId>& ids) const;
   std::vector<VertexId> alive_ids() const;
@@ -445,13 +446,13 @@ struct Engine {
   Rational rational_before_next_event() const;
   std::vector<Simplex> delaunay_after_algebraic_now(const std::vector<VertexId>& ids, int& dimension);
 
-  // ------------------------------------ collisions (engine_collisions.cpp)
+  // ------------------------------------ collisions (engine/collisions.h)
 
   void check_collisions_at_frame(std::size_t k) const;
   void check_collision(const Simplex& e) const;
   void check_collisions_in_slab() const;
 
-  // ------------------------------------ frames, insertions, deletions (engine_frames.cpp)
+  // ------------------------------------ frames, insertions, deletions (engine/frames.h)
 
   void set_slab_motion(std::size_t k);
   void reinstall_all();
@@ -459,7 +460,7 @@ struct Engine {
   void insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps);
   void record_top_changes(Step& step, OldMembership& old_k);
 
-  // ------------------------------------ local insertions and deletions (engine_local_updates.cpp)
+  // ------------------------------------ local insertions and deletions (engine/local_updates.h)
 
   // The top simplices to remove and add (with the orientations sign^+ of the added ones, 0 for
   // infinite ones) for inserting or deleting v at now; false, with nothing changed, where a predicate
@@ -473,13 +474,13 @@ struct Engine {
   int facet_side_just_after(const Simplex& f, VertexId x);
   bool find_conflict(VertexId v, Simplex& seed);
 
-  // ------------------------------------ the run (engine_run.cpp)
+  // ------------------------------------ the run (engine/run.h)
 
   void check_planar() const;
   void initialise(Observer& observer);
   void run(Observer& observer);
 
-  // ------------------------------------ degenerate groups of static repairs (engine_degenerate_groups.cpp)
+  // ------------------------------------ degenerate groups of static repairs (engine/degenerate_groups.h)
 
   int orientation_at_now(const Simplex& t);
   bool cospherical_at_now(const Simplex& t, VertexId y);
@@ -489,7 +490,7 @@ struct Engine {
   std::vector<DegenerateGroup> degenerate_groups(const std::vector<Simplex>& removed,
                                                  const std::vector<Simplex>& added);
 
-  // ------------------------------------ audit (engine_audit.cpp)
+  // ------------------------------------ audit (engine/audit.h)
 
   [[noreturn]] void audit_failure(const std::string& what) const;
   void audit();
@@ -497,7 +498,7 @@ struct Engine {
   void audit_supporting(const Rational& q, const Simplex& hull_facet);
 };
 
-template <class NT> Poly<NT> Engine::cert_poly(const Certificate& c) const {
+template <class K> template <class NT> Poly<NT> Engine<K>::cert_poly(const Certificate& c) const {
   if (c.kind == CertKind::delaunay) {
     switch (c.substitute) {
     case Substitute::hull_fold: return -fold_poly<NT>(c.key);
@@ -510,5 +511,9 @@ template <class NT> Poly<NT> Engine::cert_poly(const Certificate& c) const {
   // Positive while valid: -f while short, +f while long (docs/MATH.md §3.1).
   return faces.at(c.key).is_short ? -f : f;
 }
+
+// Instantiated once per dimension, in engine_2.cpp and engine_3.cpp.
+extern template struct Engine<KineticTraits2>;
+extern template struct Engine<KineticTraits3>;
 
 } // namespace medusa::kinetic::detail

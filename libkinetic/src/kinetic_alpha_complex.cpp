@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <variant>
 
 namespace medusa::kinetic {
 
@@ -37,8 +38,15 @@ SquaredRadius squared_radius_from_decimal(const std::string& rho, std::int64_t s
   return {n * n, den * den};
 }
 
-struct KineticAlphaComplex::Impl : detail::Engine {
-  using Engine::Engine;
+// The engine of the run's dimension (kinetic_traits.h); any dimension but 2 takes the 3D engine,
+// whose run rejects it (Trajectories::validate).
+struct KineticAlphaComplex::Impl {
+  Impl(const Trajectories& t, KineticOptions o)
+      : engine(t.dimension == 2 ? Engines(std::in_place_index<0>, t, std::move(o))
+                                : Engines(std::in_place_index<1>, t, std::move(o))) {}
+  using Engines =
+      std::variant<detail::Engine<detail::KineticTraits2>, detail::Engine<detail::KineticTraits3>>;
+  Engines engine;
 };
 
 KineticAlphaComplex::KineticAlphaComplex(const Trajectories& trajectories, KineticOptions options)
@@ -46,10 +54,16 @@ KineticAlphaComplex::KineticAlphaComplex(const Trajectories& trajectories, Kinet
 
 KineticAlphaComplex::~KineticAlphaComplex() = default;
 
-void KineticAlphaComplex::run(Observer& observer) { impl_->run(observer); }
+void KineticAlphaComplex::run(Observer& observer) {
+  std::visit([&](auto& e) { e.run(observer); }, impl_->engine);
+}
 
-const KineticStatistics& KineticAlphaComplex::statistics() const { return impl_->stats; }
+const KineticStatistics& KineticAlphaComplex::statistics() const {
+  return std::visit([](const auto& e) -> const KineticStatistics& { return e.stats; }, impl_->engine);
+}
 
-std::vector<Simplex> KineticAlphaComplex::current_complex() const { return impl_->current_complex(); }
+std::vector<Simplex> KineticAlphaComplex::current_complex() const {
+  return std::visit([](const auto& e) { return e.current_complex(); }, impl_->engine);
+}
 
 } // namespace medusa::kinetic

@@ -626,7 +626,7 @@ TEST_CASE("a hull cell with three neighbours leaves by closing its star with one
   // -20), radius^2 1200; d is 2700 away), so it is joined to a, b and c only (its star: abcd and the
   // three infinite tetrahedra over its hull facets). When it leaves at frame 1, abc becomes
   // a hull facet again: the one infinite tetrahedron [-1 a b c] fills the hole
-  // (engine_local_updates.cpp).
+  // (engine/local_updates.h).
   Trajectories t = spatial({0, 100, 200});
   still(t, 1, {0, 0, 0});
   still(t, 2, {40, 0, 0});
@@ -749,7 +749,7 @@ TEST_CASE("five cospherical cells reaching one circle turn two tetrahedra at onc
   // orientations (Substitute::cell_orientations) only touches zero. What sees it is the five's
   // convex hull: the certificate of each of its facets, against an apex x outside their sphere, is
   // the inner tetrahedron's orientation times the power of x with respect to the limit sphere, and
-  // changes sign there (engine_certificates.cpp). Four far static cells enclose the five, outside
+  // changes sign there (engine/certificates.h). Four far static cells enclose the five, outside
   // their sphere for the whole slab.
   Trajectories t;
   t.scale = 1;

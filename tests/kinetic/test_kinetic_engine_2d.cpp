@@ -691,7 +691,7 @@ TEST_CASE("planar: certificates built at the start are counted by formula as CGA
 TEST_CASE("planar: a cell whose only neighbours are three cells around it leaves by a local change",
           "[kinetic][engine][2d]") {
   // d inside triangle abc is joined to a, b and c only: its link is the triangle abc itself, which
-  // fills its star once it has left (engine_local_updates.cpp). e is born at frame 1 outside the
+  // fills its star once it has left (engine/local_updates.h). e is born at frame 1 outside the
   // hull, beyond the edge ab and far from the circles of d's triangles (the one on ab has centre
   // (20, -10.95) and radius 22.8), so its only conflict is the hull edge ab: the insertion adds the
   // triangle abe and leaves d's link alone.
@@ -725,7 +725,7 @@ TEST_CASE("planar: a hull cell with two neighbours leaves by closing its star wi
           "[kinetic][engine][2d]") {
   // d lies beyond the edge bc of triangle abc and outside its circle (centre (20, 20), radius^2 800;
   // d is 3200 away), so it is joined to b and c only. When it leaves at frame 1, bc is a hull edge
-  // again: the one infinite triangle [-1 b c] fills the hole (engine_local_updates.cpp).
+  // again: the one infinite triangle [-1 b c] fills the hole (engine/local_updates.h).
   Trajectories t = planar({0, 100, 200});
   still(t, 1, 0, 0);
   still(t, 2, 40, 0);

@@ -78,7 +78,7 @@ TEST_CASE("a real run where cells divide and die inserts and deletes them with t
           s.audits_compared_with_cgal);
   REQUIRE(s.insertions > 0);
   REQUIRE(s.deletions > 0);
-  // Each as a local change (engine_local_updates.cpp): the real run's cells are in general position
+  // Each as a local change (engine/local_updates.h): the real run's cells are in general position
   // at these frames.
   REQUIRE(s.local_insertions == s.insertions);
   REQUIRE(s.local_deletions == s.deletions);

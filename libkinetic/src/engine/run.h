@@ -1,4 +1,6 @@
 // The whole run: construction, the initial complex at t_0 and the loop over slabs.
+#pragma once
+
 #include "engine.h"
 
 #include "medusa/core/error.h"
@@ -10,7 +12,8 @@
 
 namespace medusa::kinetic::detail {
 
-Engine::Engine(const Trajectories& t, KineticOptions o) : traj(t), options(std::move(o)) {
+template <class K>
+Engine<K>::Engine(const Trajectories& t, KineticOptions o) : traj(t), options(std::move(o)) {
   P = options.rho2.num;
   Q = options.rho2.den;
   Pi = Interval(CGAL::to_interval(CGAL::Gmpz(P.get_mpz_t())));
@@ -22,7 +25,7 @@ Engine::Engine(const Trajectories& t, KineticOptions o) : traj(t), options(std::
 
 // A planar run keeps every cell in one plane z = const: the 2D certificates ignore z, so a differing
 // z would be silently wrong.
-void Engine::check_planar() const {
+template <class K> void Engine<K>::check_planar() const {
   for (const Trajectory& c : traj.cells)
     for (std::size_t f = 0; f < c.positions.size(); ++f)
       if (c.positions[f][2] != traj.cells.front().positions.front()[2])
@@ -31,7 +34,7 @@ void Engine::check_planar() const {
                          ": z differs from the other cells' in a two-dimensional run");
 }
 
-void Engine::initialise(Observer& observer) {
+template <class K> void Engine<K>::initialise(Observer& observer) {
   check_collisions_at_frame(0);
   set_slab_motion(0);
   now = SlabTime();
@@ -53,10 +56,9 @@ void Engine::initialise(Observer& observer) {
     audit();
 }
 
-void Engine::run(Observer& observer) {
+template <class K> void Engine<K>::run(Observer& observer) {
   traj.validate();
-  dim = traj.dimension;
-  if (dim == 2)
+  if constexpr (dim == 2)
     check_planar();
   auto clock = std::chrono::steady_clock::now();
   const TimeComparisonCounts comparisons_before = time_comparison_counts();

@@ -1,4 +1,6 @@
 // Frames: switching slabs, rebuilding every certificate, insertions and deletions (docs/MATH.md §2.3, §5.6).
+#pragma once
+
 #include "engine.h"
 #include "medusa/core/error.h"
 #include "start_determinants.h"
@@ -10,7 +12,7 @@
 
 namespace medusa::kinetic::detail {
 
-void Engine::set_slab_motion(std::size_t k) {
+template <class K> void Engine<K>::set_slab_motion(std::size_t k) {
   slab = k;
   for (std::size_t i = 0; i < traj.cells.size(); ++i) {
     const Trajectory& c = traj.cells[i];
@@ -28,7 +30,7 @@ void Engine::set_slab_motion(std::size_t k) {
   }
 }
 
-void Engine::reinstall_all() {
+template <class K> void Engine<K>::reinstall_all() {
   certificates.clear_times();
   root_cache.clear();
   // In place, in table order: installing a certificate reads the tables but never adds or removes an
@@ -50,7 +52,7 @@ void Engine::reinstall_all() {
   });
 }
 
-void Engine::frame(Observer& observer, std::size_t k) {
+template <class K> void Engine<K>::frame(Observer& observer, std::size_t k) {
   // Slab k-1 ended at t_k; switch to slab k and rebuild every certificate (docs/MATH.md §2.3, §5.6).
   // At t_0 the structure was just built (initialise); only cells present at t_0 alone are deleted.
   std::vector<Step> steps;
@@ -97,7 +99,7 @@ void Engine::frame(Observer& observer, std::size_t k) {
 // flips chosen on them can leave it inverted. Now is the slab start, where every cell sits at its
 // grid position: CGAL's exact static predicate on those positions (start_determinants.h) finds the
 // flat ones at a fraction of the cost of an interval evaluation.
-bool Engine::top_simplex_turns_at_frame() {
+template <class K> bool Engine<K>::top_simplex_turns_at_frame() {
   if (!now.is_rational() || now.rational() != 0)
     throw InternalError("the frame test of flat top simplices runs at a slab start only");
   std::array<const MovingPoint*, 4> p{};
@@ -118,7 +120,7 @@ bool Engine::top_simplex_turns_at_frame() {
 
 // One insertion or deletion of vertex v at the current frame, as its own rank (docs/MATH.md §5.6), with
 // the Delaunay changes made by a static rebuild and the membership re-evaluated around them.
-void Engine::insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps) {
+template <class K> void Engine<K>::insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps) {
   Step step;
   step.kind = insert ? StepKind::insertion : StepKind::deletion;
   step.vertex = v;
@@ -134,7 +136,7 @@ void Engine::insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps)
   resolve_delaunay(steps);
 }
 
-void Engine::record_top_changes(Step& step, OldMembership& old_k) {
+template <class K> void Engine<K>::record_top_changes(Step& step, OldMembership& old_k) {
   std::unordered_set<Simplex, SimplexHash> before;
   for (const Simplex& t : tri.tops())
     before.insert(t);

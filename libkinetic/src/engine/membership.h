@@ -1,5 +1,7 @@
 // Triangulation changes and the alpha complex on them: replacing top simplices, cofaces, the frontier
 // of radius certificates (docs/MATH.md §4.4), the Gabriel test and membership re-evaluation (4.5).
+#pragma once
+
 #include "engine.h"
 
 #include "certificate_polynomials.h"
@@ -13,15 +15,16 @@
 
 namespace medusa::kinetic::detail {
 
-bool Engine::in_k(const Simplex& s) const {
+template <class K> bool Engine<K>::in_k(const Simplex& s) const {
   if (s.size() == 1)
     return alive[static_cast<std::size_t>(s[0])] != 0;
   const Face* f = faces.find(s);
   return f != nullptr && f->in_k;
 }
 
-void Engine::change_tops(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                         OldMembership& old_k, const int* added_orientations) {
+template <class K>
+void Engine<K>::change_tops(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+                            OldMembership& old_k, const int* added_orientations) {
   apply_top_change(removed, added, added_orientations);
   for (const TouchedFace& t : touched_scratch.faces)
     old_k.emplace(t.face, t.old_in_k);
@@ -34,8 +37,9 @@ constexpr std::size_t max_prefetched_faces = 32;
 // The caller may pass the orientations sign^+ of the added top simplices (0 for infinite ones) it
 // has computed.
 
-void Engine::apply_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                              const int* added_orientations) {
+template <class K>
+void Engine<K>::apply_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+                                 const int* added_orientations) {
   TouchedFaces& touched = touched_scratch;
   collect_touched_faces(removed, added, touched);
   if (touched.faces.size() <= max_prefetched_faces) {
@@ -117,7 +121,7 @@ void Engine::apply_top_change(const std::vector<Simplex>& removed, const std::ve
     install_facet(f);
 }
 
-void Engine::finish_top_change() {
+template <class K> void Engine<K>::finish_top_change() {
   // Erasing moves entries: no state pointer is read from here on.
   for (TouchedFace& t : touched_scratch.faces) {
     if (t.leaves)
@@ -132,7 +136,7 @@ void Engine::finish_top_change() {
   }
 }
 
-bool Engine::is_short(const Simplex& s) const {
+template <class K> bool Engine<K>::is_short(const Simplex& s) const {
   if (s.size() == 1)
     return true;
   const Face* f = faces.find(s);
@@ -140,7 +144,7 @@ bool Engine::is_short(const Simplex& s) const {
 }
 
 // Creates or drops the radius certificate of s so that exactly the frontier carries one.
-void Engine::set_frontier(const Simplex& s, Face& f, bool want) {
+template <class K> void Engine<K>::set_frontier(const Simplex& s, Face& f, bool want) {
   if (want && f.cert < 0)
     install_radius(s, f);
   else if (!want && f.cert >= 0) {
@@ -149,7 +153,7 @@ void Engine::set_frontier(const Simplex& s, Face& f, bool want) {
   }
 }
 
-bool Engine::gabriel_now(const Simplex& s) {
+template <class K> bool Engine<K>::gabriel_now(const Simplex& s) {
   // Not strictly inside the smallest circumball: sign^+ of G1/G2 >= 0 (docs/MATH.md §3.4, §4.1 Lemma 4.2),
   // for every link vertex (each tested once). The certificates are first evaluated at now's
   // enclosure only (certificate::PointAtTime); the few that this leaves undecided get sign^+ from
@@ -202,7 +206,9 @@ bool Engine::gabriel_now(const Simplex& s) {
 // radius <= rho, docs/MATH.md §4.1), so a long one is out without looking at its cofaces; top simplices
 // are always Gabriel (4.1). Cofaces are settled before faces (decreasing dimension), so the counts
 // read here are current.
-template <class StateOf> bool Engine::settle(const Simplex& s, Face& f, StateOf&& state_of) {
+template <class K>
+template <class StateOf>
+bool Engine<K>::settle(const Simplex& s, Face& f, StateOf&& state_of) {
   const bool after = s.size() == top_size() ? f.is_short : f.is_short && (f.k_cofaces > 0 || gabriel_now(s));
   if (after != f.in_k) {
     FaceStates::count_in_facets(s, 0, after ? +1 : -1, state_of);
@@ -224,7 +230,7 @@ void record(const Simplex& s, bool before, bool after, Step& step) {
 
 // Re-evaluates membership (docs/MATH.md §4.5 "re-eval") on the touched simplices, in decreasing
 // dimension, and fills the step's entered/left lists (in no particular order: emit_batch sorts them).
-void Engine::settle_membership(const OldMembership& old_k, Step& step) {
+template <class K> void Engine<K>::settle_membership(const OldMembership& old_k, Step& step) {
   // Only the order of dimensions matters (a simplex reads its cofaces' counts, never those of its
   // peers): bucket by size instead of sorting.
   auto& by_size = settle_scratch;
@@ -246,7 +252,7 @@ void Engine::settle_membership(const OldMembership& old_k, Step& step) {
 
 // settle_membership on the faces of the change being applied (apply_top_change), which are in
 // canonical order: backwards is decreasing dimension.
-void Engine::settle_touched(Step& step) {
+template <class K> void Engine<K>::settle_touched(Step& step) {
   auto state_of = [&](const Simplex& x) { return state_in_touched(x); };
   for (auto it = touched_scratch.faces.rbegin(); it != touched_scratch.faces.rend(); ++it) {
     bool after = false;
@@ -258,7 +264,7 @@ void Engine::settle_touched(Step& step) {
   }
 }
 
-std::vector<Simplex> Engine::current_complex() const {
+template <class K> std::vector<Simplex> Engine<K>::current_complex() const {
   std::vector<Simplex> k;
   for (std::size_t i = 0; i < alive.size(); ++i)
     if (alive[i])

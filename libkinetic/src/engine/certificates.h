@@ -1,5 +1,7 @@
 // Certificates: their polynomials' orientation, creation and retirement, and installation (the
 // interval filter, root isolation in doubles, the exact path with the per-slab root cache), docs/MATH.md §3.
+#pragma once
+
 #include "engine.h"
 
 #include "certificate_polynomials.h"
@@ -34,8 +36,9 @@ int permutation_sign(const VertexId* seq, std::size_t n) {
 
 // The oriented sign of the sequence seq of n = dim + 1 vertices: a finite top simplex of Del, the
 // facet whose record is ap plus its apex `apex`.
-int Engine::orientation_of(const VertexId* seq, std::size_t n, const Triangulation::Apices& ap,
-                           VertexId apex) const {
+template <class K>
+int Engine<K>::orientation_of(const VertexId* seq, std::size_t n, const Triangulation::Apices& ap,
+                              VertexId apex) const {
   const int sign = ap.orientation_with(apex);
   if (sign == 0) {
     std::ostringstream os;
@@ -47,7 +50,7 @@ int Engine::orientation_of(const VertexId* seq, std::size_t n, const Triangulati
 
 // The orientation of a finite top simplex on the points at now's enclosure: a sign when it excludes
 // zero, which it does unless t is (nearly) flat at now.
-int Engine::orientation_enclosure_sign(const Simplex& t) {
+template <class K> int Engine<K>::orientation_enclosure_sign(const Simplex& t) {
   CGAL::Protect_FPU_rounding<true> guard;
   const auto at = points_at_now();
   const Interval o = dim == 2 ? certificate::orientation_2<Interval>(at(t[0]), at(t[1]), at(t[2]))[0]
@@ -60,14 +63,14 @@ int Engine::orientation_enclosure_sign(const Simplex& t) {
 }
 
 // The enclosure first: the top simplices of a flip are far from flat at now but in degenerate batches.
-bool Engine::flat_at_now(const Simplex& t) {
+template <class K> bool Engine<K>::flat_at_now(const Simplex& t) {
   if (orientation_enclosure_sign(t) != 0)
     return false;
   ++stats.sign_evaluations_exact;
   return orientation_at_now(t) == 0;
 }
 
-GeometryError Engine::flat_top_simplex_error(const Simplex& t) const {
+template <class K> GeometryError Engine<K>::flat_top_simplex_error(const Simplex& t) const {
   std::ostringstream os;
   os << "cells " << t
      << (dim == 2 ? " stay collinear but form a Delaunay triangle"
@@ -75,7 +78,7 @@ GeometryError Engine::flat_top_simplex_error(const Simplex& t) const {
   return GeometryError(os.str());
 }
 
-int Engine::orientation_sign_plus(const Simplex& t) {
+template <class K> int Engine<K>::orientation_sign_plus(const Simplex& t) {
   if (t.size() == top_size() && is_finite(t)) {
     // The value at now first: a new top simplex of a flip is far from flat at now, and a sign there
     // is the sign just after now.
@@ -93,7 +96,7 @@ int Engine::orientation_sign_plus(const Simplex& t) {
 // A hull flip at a root of this very orientation (the failed certificate of four finite points,
 // three in 2D, docs/MATH.md §3.2 case B) creates the top simplex that is flat at now; the root is then an
 // event, a sign change, and the sign just after it is known without exact arithmetic. 0 otherwise.
-int Engine::sign_after_own_orientation_root(const Simplex& t) const {
+template <class K> int Engine<K>::sign_after_own_orientation_root(const Simplex& t) const {
   if (now.isolated() == nullptr)
     return 0;
   CacheKey key;
@@ -110,7 +113,7 @@ int Engine::sign_after_own_orientation_root(const Simplex& t) const {
 // batch repairs (docs/MATH.md §5.10). At a frame the sign before now is read along the previous slab
 // (Engine::orientation_sign_before_frame); a simplex with no sign before (flat through the previous
 // slab, or with a cell born at the frame) is not refused.
-bool Engine::flat_without_turning_at_now(const Simplex& t) {
+template <class K> bool Engine<K>::flat_without_turning_at_now(const Simplex& t) {
   const bool at_frame = now.is_rational() && now.rational() == 0;
   if (at_frame && slab == 0)
     return false; // the structure was built just after t_0: no earlier flip to undo
@@ -129,7 +132,7 @@ bool Engine::flat_without_turning_at_now(const Simplex& t) {
 // of slab k-1; 0 when it vanishes identically there or a cell of t was not present at t_{k-1}. Read
 // backwards from the frame, p(s) = x_k + s (x_{k-1} - x_k): the same points, so the same orientation,
 // and its sign just before t_k is its sign just after s = 0 (sign_plus at u = 0, exact integers).
-int Engine::orientation_sign_before_frame(const Simplex& t) {
+template <class K> int Engine<K>::orientation_sign_before_frame(const Simplex& t) {
   for (const VertexId v : t) {
     const Trajectory& c = traj.cells[static_cast<std::size_t>(v)];
     if (slab == 0 || !c.present(slab - 1) || !c.present(slab))
@@ -146,7 +149,7 @@ int Engine::orientation_sign_before_frame(const Simplex& t) {
 
 // For f whose polynomial (key) is, up to a factor c, the one whose isolated simple root is now: the
 // sign of f just after now, -c * sign_lo; 0 when f is not that polynomial or c is undecided.
-int Engine::sign_after_own_root(const IntervalPoly& f, const CacheKey& key) const {
+template <class K> int Engine<K>::sign_after_own_root(const IntervalPoly& f, const CacheKey& key) const {
   const IsolatedRoot* current = now.isolated();
   double lo, hi;
   now.enclosure(lo, hi);
@@ -157,7 +160,7 @@ int Engine::sign_after_own_root(const IntervalPoly& f, const CacheKey& key) cons
 
 // A hull certificate (docs/MATH.md §3.2): a ridge's (case B, the key holds the infinite vertex) or a hull
 // facet's (case A, the infinite vertex is an apex), each the orientation of four (three) cells.
-bool Engine::is_hull_orientation(const Certificate& c) const {
+template <class K> bool Engine<K>::is_hull_orientation(const Certificate& c) const {
   if (c.kind != CertKind::delaunay || c.substitute != Substitute::none)
     return false;
   if (!is_finite(c.key))
@@ -166,9 +169,11 @@ bool Engine::is_hull_orientation(const Certificate& c) const {
   return ap != nullptr && (ap->v[0] == infinite_vertex || ap->v[1] == infinite_vertex);
 }
 
-int Engine::new_cert(CertKind kind, const Simplex& key) { return certificates.create(kind, key); }
+template <class K> int Engine<K>::new_cert(CertKind kind, const Simplex& key) {
+  return certificates.create(kind, key);
+}
 
-void Engine::kill_cert(int id) {
+template <class K> void Engine<K>::kill_cert(int id) {
   if (id < 0)
     return;
   if (const Certificate& c = certificates[id]; c.kind == CertKind::delaunay)
@@ -180,14 +185,14 @@ void Engine::kill_cert(int id) {
 // their ids (the records keep -1 until they get a new one). Nothing catches an exception between this
 // and the end of the frame's reinstall (Engine::reinstall_all): one aborts the run, so records not
 // yet visited never hand their old ids to anyone.
-void Engine::retire_all_certs() {
+template <class K> void Engine<K>::retire_all_certs() {
   certificates.retire_all();
   pending_delaunay.clear(); // it only ever holds live Delaunay certificates
 }
 
 // Counts a certificate built by its formula; `enclosed` says cert_enclosure took it, which it does for
 // every certificate but the hull orientations.
-void Engine::count_built(const Certificate& c, bool enclosed) {
+template <class K> void Engine<K>::count_built(const Certificate& c, bool enclosed) {
   if (c.kind == CertKind::delaunay)
     ++(enclosed ? stats.built_in_sphere : stats.built_hull);
   else
@@ -199,7 +204,7 @@ void Engine::count_built(const Certificate& c, bool enclosed) {
 // has only if every top simplex round the ridge is flat at now and folded too; otherwise they wrap
 // round the ridge though every certificate may hold, and the ridge fails (docs/MATH.md §5.9). Where a
 // vertex lies on the ridge's line at now the angle is undefined, and nothing is concluded.
-bool Engine::hull_ridge_folded_at_now(const Simplex& facet) {
+template <class K> bool Engine<K>::hull_ridge_folded_at_now(const Simplex& facet) {
   const Simplex ridge = facet.facet(0);
   {
     // At now's enclosure first: most hull ridges are far from flat at now, and the new ridges of a
@@ -235,7 +240,7 @@ bool Engine::hull_ridge_folded_at_now(const Simplex& facet) {
 
 // Evaluates a fresh certificate at `now`: schedules its next failure in (now, 1), or queues it in
 // the current batch when it is already invalid just after now (docs/MATH.md §3.7, §3.9).
-void Engine::install(int id, Interval* at_now) {
+template <class K> void Engine<K>::install(int id, Interval* at_now) {
   ++stats.certificates_built;
   settle_certificate(id, true, at_now);
 }
@@ -243,7 +248,7 @@ void Engine::install(int id, Interval* at_now) {
 // install's work. A certificate replaced by its substitute is settled again, and is still one
 // certificate, counted (by formula and by how it was settled) as the one it replaced: `counted` is
 // false for the second pass.
-void Engine::settle_certificate(int id, bool counted, Interval* at_now) {
+template <class K> void Engine<K>::settle_certificate(int id, bool counted, Interval* at_now) {
   const Certificate& c = certificates[id];
   const auto tally = [counted](std::size_t& counter) { counter += counted ? 1 : 0; };
   {
@@ -360,7 +365,7 @@ void Engine::settle_certificate(int id, bool counted, Interval* at_now) {
 
 // The fast path of install (docs/MATH.md §3.8): the sign just after now and the next failure time,
 // isolated in double interval arithmetic. False when doubles cannot decide; nothing is changed then.
-bool Engine::install_in_doubles(int id, const IntervalPoly& f, bool wide) {
+template <class K> bool Engine<K>::install_in_doubles(int id, const IntervalPoly& f, bool wide) {
   const Certificate& c = certificates[id];
   const CacheKey key = cache_key(c);
   double lo, hi;
@@ -390,8 +395,9 @@ bool Engine::install_in_doubles(int id, const IntervalPoly& f, bool wide) {
 // first sign change of f after start, then marks the certificate invalid or schedules its failure.
 // f is the certificate's polynomial divided by u^shift.
 // False when doubles cannot decide; nothing is changed then.
-bool Engine::schedule_first_change(int id, const IntervalPoly& f, int sign, double start, const CacheKey& key,
-                                   int shift, bool wide) {
+template <class K>
+bool Engine<K>::schedule_first_change(int id, const IntervalPoly& f, int sign, double start,
+                                      const CacheKey& key, int shift, bool wide) {
   FirstSignChange next;
   if (start < 1.0) {
     next = first_sign_change(f, start, 12);
@@ -430,7 +436,7 @@ bool Engine::schedule_first_change(int id, const IntervalPoly& f, int sign, doub
 // sets (docs/MATH.md §5.5). One exact static determinant proves f(0) = 0; then f = u h, h is enclosed by
 // f's enclosure shifted down, and the sign just after 0 is h(0)'s. False when this does not decide;
 // nothing is changed then.
-bool Engine::install_vanishing_at_start(int id, const IntervalPoly& f) {
+template <class K> bool Engine<K>::install_vanishing_at_start(int id, const IntervalPoly& f) {
   const int n = f.degree_bound();
   if (n < 1 || !now.is_rational() || now.rational() != 0)
     return false;
@@ -449,7 +455,7 @@ bool Engine::install_vanishing_at_start(int id, const IntervalPoly& f) {
 // rational slab start (u = 0: t_0 and frames) the root at 0 of multiplicity m is divided out first,
 // which settles the lattice-degenerate certificates of CC3D's initial layout (docs/MATH.md §5.5) without
 // CGAL. False when doubles cannot decide; nothing is changed then.
-bool Engine::install_from_exact_coefficients(int id, const Poly<mpz_class>& f) {
+template <class K> bool Engine<K>::install_from_exact_coefficients(int id, const Poly<mpz_class>& f) {
   const bool at_zero = now.is_rational() && now.rational() == 0;
   const int n = f.degree_bound();
   int m = 0;
@@ -470,7 +476,7 @@ bool Engine::install_from_exact_coefficients(int id, const Poly<mpz_class>& f) {
   return schedule_first_change(id, g, sgn(f[m]) > 0 ? 1 : -1, 0.0, cache_key(certificates[id]), m);
 }
 
-KeyPolynomial Engine::key_polynomial(const CacheKey& key) const {
+template <class K> KeyPolynomial Engine<K>::key_polynomial(const CacheKey& key) const {
   KeyPolynomial k;
   k.kind = key.v[0];
   k.rho2 = rho2_shared;
@@ -479,7 +485,7 @@ KeyPolynomial Engine::key_polynomial(const CacheKey& key) const {
   return k;
 }
 
-CacheKey Engine::cache_key(const Certificate& c) const {
+template <class K> CacheKey Engine<K>::cache_key(const Certificate& c) const {
   CacheKey k;
   k.v.fill(-2);
   // At most d + 2 = 5 points, kept on the stack: this runs for every certificate isolated in doubles.
@@ -526,7 +532,7 @@ CacheKey Engine::cache_key(const Certificate& c) const {
   return k;
 }
 
-void Engine::mark_invalid(int id) {
+template <class K> void Engine<K>::mark_invalid(int id) {
   const Certificate& c = certificates[id];
   if (c.kind == CertKind::delaunay)
     pending_delaunay.insert({c.key, id});
@@ -535,12 +541,12 @@ void Engine::mark_invalid(int id) {
 }
 
 // A facet that left Del has no record any more: its certificate went with it (remove_top).
-void Engine::install_facet(const Simplex& facet) {
+template <class K> void Engine<K>::install_facet(const Simplex& facet) {
   if (detail::Triangulation::Apices* ap = tri.apices(facet))
     install_facet(facet, *ap);
 }
 
-void Engine::install_facet(const Simplex& facet, detail::Triangulation::Apices& ap) {
+template <class K> void Engine<K>::install_facet(const Simplex& facet, detail::Triangulation::Apices& ap) {
   if (ap.count != 2) {
     std::ostringstream os;
     os << "facet " << facet << " has " << int(ap.count) << " top simplices";
@@ -557,13 +563,13 @@ void Engine::install_facet(const Simplex& facet, detail::Triangulation::Apices& 
   }
 }
 
-void Engine::install_radius(const Simplex& s, Face& f, Interval* at_now) {
+template <class K> void Engine<K>::install_radius(const Simplex& s, Face& f, Interval* at_now) {
   kill_cert(f.cert);
   f.cert = new_cert(CertKind::radius, s);
   install(f.cert, at_now);
 }
 
-bool Engine::compute_short(const Simplex& s) {
+template <class K> bool Engine<K>::compute_short(const Simplex& s) {
   {
     // Every face a flip creates asks this: the enclosure from doubles decides it away from R = rho.
     CGAL::Protect_FPU_rounding<true> guard;

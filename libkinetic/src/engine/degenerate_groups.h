@@ -6,6 +6,8 @@
 // 2-dimensional groups, and classes of top simplices flat at t* span no sphere and are skipped.
 // Why this finds exactly the groups, and g(P) for each: docs/MATH.md §6.7
 // (tests/kinetic/test_kinetic_degenerate_groups_2d.cpp has a planar example derived on paper).
+#pragma once
+
 #include "engine.h"
 
 #include "certificate_polynomials.h"
@@ -45,13 +47,13 @@ std::vector<DegenerateGroup> to_groups(const std::set<std::vector<VertexId>>& ve
 
 } // namespace
 
-int Engine::orientation_at_now(const Simplex& t) {
+template <class K> int Engine<K>::orientation_at_now(const Simplex& t) {
   return sign_at_now([&](auto tag) { return orientation_poly<decltype(tag)>(t); });
 }
 
 // Are the d + 2 points of the finite top simplex t and the point y on one sphere (circle) at now? The
 // sign convention of the determinant does not matter for the zero test.
-bool Engine::cospherical_at_now(const Simplex& t, VertexId y) {
+template <class K> bool Engine<K>::cospherical_at_now(const Simplex& t, VertexId y) {
   return sign_at_now([&](auto tag) {
            using NT = decltype(tag);
            return t.size() == 3 ? certificate::in_circle<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(y))
@@ -62,8 +64,9 @@ bool Engine::cospherical_at_now(const Simplex& t, VertexId y) {
 // Is the face with these coplanar vertices (>= 3, not collinear) within rho, g(P) <= rho^2? `apices`
 // are the points that may lie inside its circle's ball (docs/MATH.md §6.3, Lemma 4.2), `cofaces` the finite
 // tetrahedra around it, whose circumspheres are those of its Delaunay cofaces.
-bool Engine::face_group_within_rho(const std::vector<VertexId>& p, const std::vector<VertexId>& apices,
-                                   const std::vector<Simplex>& cofaces) {
+template <class K>
+bool Engine<K>::face_group_within_rho(const std::vector<VertexId>& p, const std::vector<VertexId>& apices,
+                                      const std::vector<Simplex>& cofaces) {
   // Three points of P on its circle: the first two and any third one not collinear with them (all
   // points of P lie on one circle, so no three are collinear and p[2] will do).
   const VertexId a = p[0], b = p[1], c = p[2];
@@ -98,7 +101,7 @@ bool Engine::face_group_within_rho(const std::vector<VertexId>& p, const std::ve
 // fourth has power 0 with respect to the smallest circumsphere of the other three (docs/MATH.md §3.4), which
 // needs those three not collinear (|n|^2 != 0; three collinear points are never concyclic with a
 // fourth, and then some other triple is not collinear unless all four are, which is not concyclic).
-bool Engine::concyclic_at_now(const Simplex& t) {
+template <class K> bool Engine<K>::concyclic_at_now(const Simplex& t) {
   for (std::size_t i = 0; i < 4; ++i) {
     Simplex tri3 = t.facet(i);
     if (collinear_at_now(tri3))
@@ -111,8 +114,9 @@ bool Engine::concyclic_at_now(const Simplex& t) {
   return false;
 }
 
-std::vector<DegenerateGroup> Engine::degenerate_groups(const std::vector<Simplex>& removed,
-                                                       const std::vector<Simplex>& added) {
+template <class K>
+std::vector<DegenerateGroup> Engine<K>::degenerate_groups(const std::vector<Simplex>& removed,
+                                                          const std::vector<Simplex>& added) {
   std::set<std::vector<VertexId>> result;
 
   // d-dimensional cells of D(t*): search Del(t*+) from the created top simplices across facets whose
@@ -181,7 +185,7 @@ std::vector<DegenerateGroup> Engine::degenerate_groups(const std::vector<Simplex
           return radius_poly<decltype(tag)>(*solid, pick(P, Pi, tag), pick(Q, Qi, tag));
         }) <= 0)
       result.insert(cell_vertices);
-    if (dim == 2)
+    if constexpr (dim == 2)
       continue; // every lower-dimensional face of D(t*) is simplicial in the plane (header comment)
     // 2-faces of the cell with >= 4 points: boundary triangles joined across coplanar edges.
     std::set<Simplex> in_cell(cell.begin(), cell.end());
@@ -235,7 +239,7 @@ std::vector<DegenerateGroup> Engine::degenerate_groups(const std::vector<Simplex
   // Tetrahedra flat at t* on either side that no cell above contains: four concyclic points form a
   // hull face with only infinite cofaces; Gabriel is then tested against every present point. In 2D a
   // triangle flat at t* is three collinear points, never concyclic: nothing to add.
-  if (dim == 2)
+  if constexpr (dim == 2)
     return to_groups(result);
   auto inside_found = [&](const Simplex& t) {
     for (const auto& g : found)

@@ -1,5 +1,7 @@
 // The event loop inside a slab: popping simultaneous failures from the queue, processing a batch
 // and emitting its ranked steps to the observer (docs/MATH.md §5.2).
+#pragma once
+
 #include "engine.h"
 
 #include <algorithm>
@@ -7,7 +9,7 @@
 
 namespace medusa::kinetic::detail {
 
-EventTime Engine::event_time(bool at_frame) const {
+template <class K> EventTime Engine<K>::event_time(bool at_frame) const {
   EventTime e;
   e.batch = batch_index;
   e.slab = slab;
@@ -19,7 +21,7 @@ EventTime Engine::event_time(bool at_frame) const {
   return e;
 }
 
-void Engine::emit_batch(Observer& observer, std::vector<Step>& steps, bool at_frame) {
+template <class K> void Engine<K>::emit_batch(Observer& observer, std::vector<Step>& steps, bool at_frame) {
   std::vector<Step> kept;
   for (Step& s : steps)
     if (s.kind != StepKind::settle || !s.entered.empty() || !s.left.empty())
@@ -41,7 +43,7 @@ void Engine::emit_batch(Observer& observer, std::vector<Step>& steps, bool at_fr
 
 // Processes the batch at `now`: Delaunay failures first (canonical order), then radius events,
 // then the final re-evaluation (docs/MATH.md §5.2).
-void Engine::process_batch(std::vector<Step>& steps) {
+template <class K> void Engine<K>::process_batch(std::vector<Step>& steps) {
   resolve_hull_touches();
   resolve_delaunay(steps);
   OldMembership& old_k = batch_scratch;
@@ -58,13 +60,13 @@ void Engine::process_batch(std::vector<Step>& steps) {
   steps.push_back(std::move(settle));
 }
 
-void Engine::at_own_time(int cert) {
+template <class K> void Engine<K>::at_own_time(int cert) {
   if (auto it = fired_times.find(cert); it != fired_times.end())
     now = it->second;
 }
 
 // A popped entry at now: its certificate fails, or its simplex touches rho.
-void Engine::fire(const QueueEntry& e) {
+template <class K> void Engine<K>::fire(const QueueEntry& e) {
   fired_times.insert_or_assign(static_cast<int>(e.cert), e.u);
   if (e.touch && certificates[e.cert].kind == CertKind::radius)
     pending_touch.emplace_back(static_cast<int>(e.cert), e.version);
@@ -80,7 +82,7 @@ void Engine::fire(const QueueEntry& e) {
   }
 }
 
-void Engine::run_slab(Observer& observer) {
+template <class K> void Engine<K>::run_slab(Observer& observer) {
   while (const QueueEntry* earliest = certificates.earliest()) {
     QueueEntry top = *earliest;
     certificates.pop();

@@ -1,4 +1,6 @@
 // The audit: the structure checked exactly against static CGAL computations at a rational time.
+#pragma once
+
 #include "engine.h"
 
 #include "certificate_polynomials.h"
@@ -18,12 +20,12 @@
 
 namespace medusa::kinetic::detail {
 
-void Engine::audit_failure(const std::string& what) const {
+template <class K> void Engine<K>::audit_failure(const std::string& what) const {
   throw InternalError("audit failed in slab " + std::to_string(slab) + " after u ~ " +
                       std::to_string(now.approx()) + ": " + what);
 }
 
-void Engine::audit() {
+template <class K> void Engine<K>::audit() {
   ++stats.audits;
   // A rational time strictly between now and the next event (or the slab end).
   const SlabTime upper = certificates.earliest_time(SlabTime(Rational(1)));
@@ -156,7 +158,7 @@ void Engine::audit() {
 // must support the points at q (none strictly outside its plane, or line). The boundary then lies
 // on the boundary of the convex hull, so the number of layers is the same over every interior
 // point, and equal volumes make it one.
-void Engine::audit_embedded(const Rational& q, const std::vector<Simplex>& cgal_tops) {
+template <class K> void Engine<K>::audit_embedded(const Rational& q, const std::vector<Simplex>& cgal_tops) {
   const auto volume = [&](const Simplex& t) { return value_at(orientation_poly<mpz_class>(t), q); };
   Rational ours(0), theirs(0);
   std::set<Simplex> our_hull, their_hull;
@@ -191,7 +193,7 @@ void Engine::audit_embedded(const Rational& q, const std::vector<Simplex>& cgal_
 
 // No cell lies strictly on the far side of the hull facet f's plane (line) at q from the apex of the
 // finite top simplex under f. Interval arithmetic at q first; exactly only where it cannot tell.
-void Engine::audit_supporting(const Rational& q, const Simplex& f) {
+template <class K> void Engine<K>::audit_supporting(const Rational& q, const Simplex& f) {
   const detail::Triangulation::Apices& ap = tri.two_sided(f);
   const VertexId z = ap.v[0] == infinite_vertex ? ap.v[1] : ap.v[0];
   const auto side = [&](VertexId p) {

@@ -1,4 +1,6 @@
 // Collision checks: two cells at one position at a frame, or meeting inside a slab (docs/MATH.md §2.5).
+#pragma once
+
 #include "engine.h"
 
 #include "collision.h"
@@ -10,7 +12,7 @@
 
 namespace medusa::kinetic::detail {
 
-void Engine::check_collisions_at_frame(std::size_t k) const {
+template <class K> void Engine<K>::check_collisions_at_frame(std::size_t k) const {
   std::vector<std::pair<GridPoint, std::size_t>> pos;
   for (std::size_t i = 0; i < traj.cells.size(); ++i)
     if (traj.cells[i].present(k))
@@ -28,7 +30,7 @@ void Engine::check_collisions_at_frame(std::size_t k) const {
 // Delaunay edges at the slab start and on every edge when it is created: colliding cells are
 // joined by a Delaunay edge just before they meet. Decided in integers (meeting_in_slab); only a
 // real collision builds the rational root.
-void Engine::check_collision(const Simplex& e) const {
+template <class K> void Engine<K>::check_collision(const Simplex& e) const {
   const std::optional<MeetingTime> meeting = meeting_in_slab(pt(e[0]), pt(e[1]));
   if (!meeting)
     return;
@@ -43,10 +45,10 @@ void Engine::check_collision(const Simplex& e) const {
                       " collide at time " + std::to_string(t));
 }
 
-void Engine::check_collisions_in_slab() const {
+template <class K> void Engine<K>::check_collisions_in_slab() const {
   // In the plane the Delaunay edges are the triangulation's facets, whose table is smaller than the
   // faces' (which holds the triangles too): this pass runs at every frame.
-  if (dim == 2) {
+  if constexpr (dim == 2) {
     tri.for_each_facet([this](const Simplex& e, const detail::Triangulation::Apices&) {
       if (is_finite(e))
         check_collision(e);

@@ -1,5 +1,7 @@
 // Resolving failed certificates at the current time: flips (docs/MATH.md §4.5), Delaunay failures in
 // canonical order and radius events (5.2).
+#pragma once
+
 #include "engine.h"
 
 #include "certificate_polynomials.h"
@@ -14,7 +16,8 @@
 
 namespace medusa::kinetic::detail {
 
-void Engine::flip(const Simplex& facet, const FlipChange& change, std::vector<Step>& steps) {
+template <class K>
+void Engine<K>::flip(const Simplex& facet, const FlipChange& change, std::vector<Step>& steps) {
   const detail::Triangulation::Apices* ap = tri.apices(facet);
   VertexId p = ap->v[0], q = ap->v[1];
   Step step;
@@ -68,7 +71,7 @@ void Engine::flip(const Simplex& facet, const FlipChange& change, std::vector<St
 }
 
 // Static repair of the whole triangulation at now+ as one step (docs/MATH.md §5.2 step 3, 5.4).
-void Engine::repair(std::vector<Step>& steps) {
+template <class K> void Engine<K>::repair(std::vector<Step>& steps) {
   if (!now.is_rational())
     ++stats.repairs_at_algebraic_times;
   Step step;
@@ -76,7 +79,7 @@ void Engine::repair(std::vector<Step>& steps) {
   OldMembership old_k;
   record_top_changes(step, old_k);
   // The non-simplicial Delaunay faces at now give instant cells (docs/MATH.md §6.3), in either dimension
-  // (engine_degenerate_groups.cpp).
+  // (engine/degenerate_groups.h).
   step.groups = degenerate_groups(step.delaunay_removed, step.delaunay_created);
   settle_membership(old_k, step);
   step.rank = steps.size() + 1;
@@ -87,7 +90,7 @@ void Engine::repair(std::vector<Step>& steps) {
 // "if its configuration is flippable"). A failed certificate in generic motion always passes;
 // simultaneous degenerate failures (six or more cospherical points, an edge of degree four, a cycle
 // of flips) may not, and step 3 then asks for a static repair. `change` receives the flip.
-bool Engine::flippable(const Simplex& facet, FlipChange& change) {
+template <class K> bool Engine<K>::flippable(const Simplex& facet, FlipChange& change) {
   const detail::Triangulation::Apices* ap = tri.apices(facet);
   const VertexId p = ap->v[0], q = ap->v[1];
   change = flip_change(dim, facet, p, q, tri);
@@ -102,7 +105,7 @@ bool Engine::flippable(const Simplex& facet, FlipChange& change) {
     for (const Simplex& t : change.removed)
       if (flat_at_now(t))
         return false;
-  if (dim == 2) {
+  if constexpr (dim == 2) {
     // 2-2: the new edge pq must not exist yet (a vertex of degree 3 cannot lose an edge by a flip),
     // and a finite quadrilateral xpyq must be strictly convex (x and y strictly on either side of pq).
     if (tri.apices(Simplex{p, q}) != nullptr)
@@ -182,7 +185,7 @@ bool Engine::flippable(const Simplex& facet, FlipChange& change) {
   return true;
 }
 
-void Engine::resolve_delaunay(std::vector<Step>& steps) {
+template <class K> void Engine<K>::resolve_delaunay(std::vector<Step>& steps) {
   // A batch of simultaneous degenerate failures can cycle through flips (docs/MATH.md §5.2 step 3, "a cycle
   // of flips"): past this many elementary flips in one batch, a static repair settles it.
   const std::size_t limit = 20 * traj.cells.size() + 1000;
@@ -233,7 +236,7 @@ void Engine::resolve_delaunay(std::vector<Step>& steps) {
 // faces of every top simplex containing the touching simplex are settled again at now+ (the final
 // re-evaluation of docs/MATH.md §5.2 step 4), and its certificate is installed again for its next
 // root (tests/kinetic/test_kinetic_dense_lattice.cpp).
-void Engine::resolve_touches(OldMembership& old_k) {
+template <class K> void Engine<K>::resolve_touches(OldMembership& old_k) {
   std::vector<std::pair<int, std::uint32_t>> touches;
   touches.swap(pending_touch);
   for (auto [id, version] : touches) {
@@ -261,7 +264,7 @@ void Engine::resolve_touches(OldMembership& old_k) {
 // facet at one of the certificate's cells the batch repairs (Engine::repair_pending), which builds
 // Del(now+) whatever happened. Any other touch (a cell touching the plane of a sound hull facet and
 // going back) is no event. The certificate is installed again for its next root either way.
-void Engine::resolve_hull_touches() {
+template <class K> void Engine<K>::resolve_hull_touches() {
   std::vector<std::pair<int, std::uint32_t>> touches;
   touches.swap(pending_hull_touch);
   for (auto [id, version] : touches) {
@@ -279,8 +282,8 @@ void Engine::resolve_hull_touches() {
 
 // Whether a hull facet at one of the cells of s (the infinite vertex aside) has its three cells
 // collinear at now. Never in the plane, where a hull facet is an edge.
-bool Engine::degenerate_hull_facet_at(const Simplex& s) {
-  if (dim != 3)
+template <class K> bool Engine<K>::degenerate_hull_facet_at(const Simplex& s) {
+  if constexpr (dim != 3)
     return false;
   for (VertexId v : s) {
     if (v == infinite_vertex)
@@ -295,7 +298,7 @@ bool Engine::degenerate_hull_facet_at(const Simplex& s) {
   return false;
 }
 
-bool Engine::collinear_at_now(const Simplex& f) {
+template <class K> bool Engine<K>::collinear_at_now(const Simplex& f) {
   return sign_at_now([&](auto tag) {
            using NT = decltype(tag);
            const certificate::Vec<NT> n = certificate::cross(certificate::difference<NT>(pt(f[0]), pt(f[1])),
@@ -305,7 +308,7 @@ bool Engine::collinear_at_now(const Simplex& f) {
 }
 
 // Whether R(s) = rho exactly at now = 0 (a frame): the constant coefficient of its radius polynomial.
-bool Engine::radius_vanishes_now(const Simplex& s) {
+template <class K> bool Engine<K>::radius_vanishes_now(const Simplex& s) {
   {
     CGAL::Protect_FPU_rounding<true> guard;
     IntervalPoly f;
@@ -316,7 +319,7 @@ bool Engine::radius_vanishes_now(const Simplex& s) {
 }
 
 // Radius events: toggle shortness of the failed certificates, then one settle step.
-void Engine::resolve_radius(Step& settle, OldMembership& old_k) {
+template <class K> void Engine<K>::resolve_radius(Step& settle, OldMembership& old_k) {
   // Swapped with a kept buffer: certificates failing meanwhile go to pending_radius, and neither
   // vector is reallocated per event.
   std::vector<std::pair<int, std::uint32_t>>& failed = radius_scratch;

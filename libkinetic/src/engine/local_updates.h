@@ -6,6 +6,8 @@
 // §5.5). Where one of them vanishes for the whole slab, or a check of the result fails, they return
 // false and change nothing, and the caller rebuilds statically. Ties the predicates do not meet are
 // kept as they are (docs/MATH.md §5.3): the triangulation is Delaunay either way.
+#pragma once
+
 #include "engine.h"
 
 #include <algorithm>
@@ -34,10 +36,10 @@ double squared_distance(const MovingPoint& p, const MovingPoint& q) {
 // Whether v lies strictly inside the circumsphere (circumcircle) of the top simplex t just after now,
 // or, for an infinite t, strictly beyond its hull facet: +1 yes, -1 no, 0 when the predicate vanishes
 // for the whole slab (undecided; the caller rebuilds statically).
-int Engine::in_conflict_just_after(const Simplex& t, VertexId v) {
+template <class K> int Engine<K>::in_conflict_just_after(const Simplex& t, VertexId v) {
   if (is_finite(t)) {
     const int o = tri.orientation(t);
-    if (dim == 2) {
+    if constexpr (dim == 2) {
       // The certificate of a facet is -InC * orientation while the apex is outside (delaunay_poly_2).
       const int s = sign_plus_now([&](auto tag) {
         using NT = decltype(tag);
@@ -66,7 +68,7 @@ int Engine::in_conflict_just_after(const Simplex& t, VertexId v) {
 
 // The sign just after now of the orientation of the finite facet f followed by x: which side of f's
 // plane (line) x is on; 0 when x stays in it for the whole slab.
-int Engine::facet_side_just_after(const Simplex& f, VertexId x) {
+template <class K> int Engine<K>::facet_side_just_after(const Simplex& f, VertexId x) {
   return sign_plus_now([&](auto tag) {
     using NT = decltype(tag);
     return dim == 2 ? certificate::orientation_2<NT>(pt(f[0]), pt(f[1]), pt(x))
@@ -78,7 +80,7 @@ int Engine::facet_side_just_after(const Simplex& f, VertexId x) {
 // v's neighbour in Del(now+) (a Gabriel edge, even among equal distances); otherwise, after rounding
 // in doubles picked another, one found by a scan. Returns false when none is found with decided
 // predicates. Insertions happen at frames, where now is u = 0 and each cell sits at its `a`.
-bool Engine::find_conflict(VertexId v, Simplex& seed) {
+template <class K> bool Engine<K>::find_conflict(VertexId v, Simplex& seed) {
   VertexId nearest = infinite_vertex;
   double best = 0;
   for (std::size_t i = 0; i < alive.size(); ++i)
@@ -107,8 +109,9 @@ bool Engine::find_conflict(VertexId v, Simplex& seed) {
 
 // Bowyer-Watson just after now: the top simplices in conflict with v form a region star-shaped from
 // v, connected through their facets; it is replaced by the cone from v over its boundary facets.
-bool Engine::insert_locally(VertexId v, std::vector<Simplex>& removed, std::vector<Simplex>& added,
-                            std::vector<int>& orientations) {
+template <class K>
+bool Engine<K>::insert_locally(VertexId v, std::vector<Simplex>& removed, std::vector<Simplex>& added,
+                               std::vector<int>& orientations) {
   Simplex seed;
   if (!find_conflict(v, seed))
     return false;
@@ -153,8 +156,9 @@ bool Engine::insert_locally(VertexId v, std::vector<Simplex>& removed, std::vect
 // face of Del(V - v) (its outer top simplex keeps its empty circumsphere), hence of Del(link), unless
 // a tie just after now let CGAL's perturbation choose otherwise; then the flood would not close, and
 // the result is checked: the filled simplices must meet exactly the link facets, each once.
-bool Engine::delete_locally(VertexId v, std::vector<Simplex>& removed, std::vector<Simplex>& added,
-                            std::vector<int>& orientations) {
+template <class K>
+bool Engine<K>::delete_locally(VertexId v, std::vector<Simplex>& removed, std::vector<Simplex>& added,
+                               std::vector<int>& orientations) {
   if (!now.is_rational())
     return false;
   removed = tri.tops_of(v);
@@ -263,7 +267,8 @@ bool Engine::delete_locally(VertexId v, std::vector<Simplex>& removed, std::vect
 
 // Inserts or deletes v as a local change if it can (see above), recording it in step as
 // record_top_changes records a static rebuild.
-bool Engine::record_local_change(Step& step, OldMembership& old_k, VertexId v, bool insert) {
+template <class K>
+bool Engine<K>::record_local_change(Step& step, OldMembership& old_k, VertexId v, bool insert) {
   std::vector<Simplex> removed, added;
   std::vector<int> orientations;
   if (insert ? insert_locally(v, removed, added, orientations)

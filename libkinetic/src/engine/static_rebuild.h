@@ -1,4 +1,6 @@
 // Static rebuilds of Del with CGAL at now+ (insertions, deletions, repairs; docs/MATH.md §5.4, §5.5).
+#pragma once
+
 #include "engine.h"
 
 #include "certificate_polynomials.h"
@@ -13,7 +15,7 @@
 
 namespace medusa::kinetic::detail {
 
-detail::StaticInput Engine::static_input(const std::vector<VertexId>& ids) const {
+template <class K> detail::StaticInput Engine<K>::static_input(const std::vector<VertexId>& ids) const {
   detail::StaticInput in;
   for (VertexId v : ids) {
     in.ids.push_back(v);
@@ -22,7 +24,7 @@ detail::StaticInput Engine::static_input(const std::vector<VertexId>& ids) const
   return in;
 }
 
-std::vector<VertexId> Engine::alive_ids() const {
+template <class K> std::vector<VertexId> Engine<K>::alive_ids() const {
   std::vector<VertexId> ids;
   for (std::size_t i = 0; i < alive.size(); ++i)
     if (alive[i])
@@ -31,7 +33,7 @@ std::vector<VertexId> Engine::alive_ids() const {
 }
 
 // Rebuilds Del of the current vertex set at now+ with CGAL and replaces the differing top simplices.
-void Engine::rebuild_static(OldMembership& old_k) {
+template <class K> void Engine<K>::rebuild_static(OldMembership& old_k) {
   ++stats.static_rebuilds;
   std::vector<VertexId> ids = alive_ids();
   int dimension = 0;
@@ -44,7 +46,7 @@ void Engine::rebuild_static(OldMembership& old_k) {
       throw GeometryError("fewer than " + std::to_string(top_size()) + " cells are present at frame " +
                           std::to_string(slab) + ": the " + std::to_string(dim) +
                           "D alpha complex needs at least " + std::to_string(top_size()));
-    if (dim == 2)
+    if constexpr (dim == 2)
       throw GeometryError("all cells lie on one line at frame " + std::to_string(slab) +
                           ": the 2D method needs cells spanning the plane");
     throw GeometryError("all cells lie in one plane at frame " + std::to_string(slab) +
@@ -76,8 +78,9 @@ void Engine::rebuild_static(OldMembership& old_k) {
 // built on it keeps the wrong sign and fails after every repair (docs/MATH.md §5.10). So the certificates of
 // the hull ridges over every hull facet of an added top simplex are built again, unless the change built them
 // already (infinite facets of changed top simplices).
-void Engine::reinstall_hull_ridges_over(const std::vector<Simplex>& added,
-                                        const std::vector<Simplex>& removed) {
+template <class K>
+void Engine<K>::reinstall_hull_ridges_over(const std::vector<Simplex>& added,
+                                           const std::vector<Simplex>& removed) {
   std::unordered_set<Simplex, SimplexHash> built;
   for (const auto* list : {&added, &removed})
     for (const Simplex& t : *list)
@@ -109,7 +112,9 @@ void Engine::reinstall_hull_ridges_over(const std::vector<Simplex>& added,
 // Each retry at least quarters q - now (rational_closer_after), so the loop ends once q - now is
 // below the distance from now to the first root after it of the result's certificates; the cap,
 // 2^-2048 of the first gap, only guards that, as in delaunay_just_after.
-std::vector<Simplex> Engine::delaunay_after_algebraic_now(const std::vector<VertexId>& ids, int& dimension) {
+template <class K>
+std::vector<Simplex> Engine<K>::delaunay_after_algebraic_now(const std::vector<VertexId>& ids,
+                                                             int& dimension) {
   Rational q = rational_before_next_event();
   // A certificate whose enclosure keeps one sign on [now, q] has that sign at q and just after now:
   // most of them, and the exact polynomial is built only for those that vanish near now (docs/MATH.md
@@ -169,7 +174,7 @@ std::vector<Simplex> Engine::delaunay_after_algebraic_now(const std::vector<Vert
 // (tests/kinetic/test_kinetic_engine.cpp, docs/MATH.md §5.10). The orientation is set anew and
 // those certificates are built again: the facets of the top simplex and, for each of its facets on
 // the hull, the infinite facets over that facet's own facets (docs/MATH.md §3.2 case B).
-void Engine::reorient_kept(const std::vector<Simplex>& kept) {
+template <class K> void Engine<K>::reorient_kept(const std::vector<Simplex>& kept) {
   for (const Simplex& t : kept) {
     if (!is_finite(t))
       continue;
@@ -192,7 +197,7 @@ void Engine::reorient_kept(const std::vector<Simplex>& kept) {
 // A rational q in (now, next event) (or (now, 1) without one): Del at q is Del(now+) except where a
 // certificate fails in (now, q], and those failures are found at now+ and flipped by the caller
 // (static repair at an algebraic time, docs/MATH.md §5.4).
-Rational Engine::rational_before_next_event() const {
+template <class K> Rational Engine<K>::rational_before_next_event() const {
   return rational_between(now, certificates.next_time_after(now, SlabTime(Rational(1))));
 }
 
