@@ -6,7 +6,6 @@
 
 #include "certificate.h"
 #include "certificate_pool.h"
-#include "dimension_policy.h"
 #include "face.h"
 #include "face_states.h"
 #include "flat_simplex_map.h"
@@ -55,9 +54,8 @@ template <class K> struct Engine {
   std::shared_ptr<const SquaredRadius> rho2_shared;
 
   // The dimension of the run (docs/MATH.md §5.7): 3, or 2 for a planar run whose z is constant. Top
-  // simplices have dim + 1 vertices, facets dim; the dimension-specific rules are
-  // delaunay_poly, orientation_poly, the flip rule (dimension_policy.h) and the static structures
-  // (static_delaunay.h). Everything else is shared.
+  // simplices have dim + 1 vertices, facets dim; the dimension-specific rules are K's
+  // (kinetic_traits.h) and the static structures' (static_delaunay.h). Everything else is shared.
   static constexpr int dim = K::dimension;
   static constexpr std::size_t top_size() { return K::top_size; }
 
@@ -129,34 +127,39 @@ template <class K> struct Engine {
   static const Interval& pick(const mpz_class&, const Interval& approx, const Interval&) { return approx; }
   static const mpz_class& pick(const mpz_class& exact, const Interval&, const mpz_class&) { return exact; }
 
-  // Delaunay certificate of a facet, positive while valid (docs/MATH.md §3.1, §3.2), in the run's dimension.
-  template <class NT> Poly<NT> delaunay_poly(const Simplex& facet) const {
-    return dim == 2 ? delaunay_poly_2<NT>(facet) : delaunay_poly_3<NT>(facet);
+  // The moving points of this slab, as an accessor for the certificate formulas (kinetic_traits.h).
+  auto moving() const {
+    return [this](VertexId v) -> const MovingPoint& { return pt(v); };
   }
 
-  template <class NT> Poly<NT> delaunay_poly_3(const Simplex& facet) const {
+  // Delaunay certificate of a facet, positive while valid (docs/MATH.md §3.1, §3.2; in the plane a facet
+  // is an edge between two triangles).
+  template <class NT> Poly<NT> delaunay_poly(const Simplex& facet) const {
     const detail::Triangulation::Apices* ap = tri.apices(facet);
-    VertexId p = ap->v[0], q = ap->v[1];
+    const VertexId p = ap->v[0], q = ap->v[1];
     if (is_finite(facet)) {
       if (p == infinite_vertex || q == infinite_vertex) {
-        // Case A: the orientation of the finite cell below the hull facet.
-        VertexId z = p == infinite_vertex ? q : p;
-        std::array<VertexId, 4> seq{facet[0], facet[1], facet[2], z};
-        Poly<NT> o = certificate::orientation<NT>(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(seq[3]));
-        return orientation_of(seq.data(), 4, *ap, z) > 0 ? o : -o;
+        // Case A: the orientation of the finite top simplex on the hull facet; it fails when the
+        // apex reaches the hull facet's plane (line).
+        const VertexId z = p == infinite_vertex ? q : p;
+        const auto seq = K::join(facet, z);
+        const Poly<NT> o = K::template orientation<NT>(seq, moving());
+        return orientation_of(seq.data(), K::top_size, *ap, z) > 0 ? o : -o;
       }
-      std::array<VertexId, 4> seq{facet[0], facet[1], facet[2], p};
-      Poly<NT> s = certificate::in_sphere<NT>(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(seq[3]), pt(q));
-      return orientation_of(seq.data(), 4, *ap, p) > 0 ? s : -s;
+      // In-sphere (in-circle), positive while q is strictly outside the circumsphere of facet + p.
+      const auto seq = K::join(facet, p);
+      const Poly<NT> s = K::template in_sphere<NT>(seq, q, moving());
+      return orientation_of(seq.data(), K::top_size, *ap, p) * K::outside_sign > 0 ? s : -s;
     }
-    // Case B: facet (inf, a, b) between (inf, a, b, c) and (inf, a, b, d): hull facet abc, apex z of
-    // the finite cell below it; the certificate O(a, b, c, d) oriented so that O(a, b, c, z) > 0.
-    VertexId a = facet[1], b = facet[2], c = p, d = q;
-    const detail::Triangulation::Apices& hull = tri.two_sided(Simplex{a, b, c});
-    VertexId z = hull.v[0] == infinite_vertex ? hull.v[1] : hull.v[0];
-    std::array<VertexId, 4> seq{a, b, c, z};
-    Poly<NT> o = certificate::orientation<NT>(pt(a), pt(b), pt(c), pt(d));
-    return orientation_of(seq.data(), 4, hull, z) > 0 ? o : -o;
+    // Case B: the infinite facet [-1 r] over the hull ridge r, between [-1 r p] and [-1 r q]: hull
+    // facet r + p, apex z of the finite top simplex below it; the certificate O(r, p, q) oriented so
+    // that O(r, p, z) > 0 (the hull is convex at r while q is on z's side of r + p).
+    const Simplex ridge = facet.facet(0);
+    const detail::Triangulation::Apices& hull = tri.two_sided(ridge.with(p));
+    const VertexId z = hull.v[0] == infinite_vertex ? hull.v[1] : hull.v[0];
+    const auto seq = K::join(ridge, p, z);
+    const Poly<NT> o = K::template orientation<NT>(K::join(ridge, p, q), moving());
+    return orientation_of(seq.data(), K::top_size, hull, z) > 0 ? o : -o;
   }
 
   // The in-sphere (in-circle) certificate of a facet with two finite apices, enclosed from one pass
@@ -166,47 +169,11 @@ template <class K> struct Engine {
     const VertexId p = ap->v[0], q = ap->v[1];
     if (!is_finite(facet) || p == infinite_vertex || q == infinite_vertex)
       return false;
-    if constexpr (dim == 2) {
-      const std::array<VertexId, 3> seq{facet[0], facet[1], p};
-      f = in_circle_enclosure(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(q));
-      if (orientation_of(seq.data(), 3, *ap, p) > 0)
-        f = -f;
-      return true;
-    }
-    const std::array<VertexId, 4> seq{facet[0], facet[1], facet[2], p};
-    f = in_sphere_enclosure(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(seq[3]), pt(q));
-    if (orientation_of(seq.data(), 4, *ap, p) < 0)
+    const auto seq = K::join(facet, p);
+    f = K::in_sphere_enclosure(seq, q, moving());
+    if (orientation_of(seq.data(), K::top_size, *ap, p) * K::outside_sign < 0)
       f = -f;
     return true;
-  }
-
-  // The planar analogue (docs/MATH.md §3.2 one dimension down): a facet is an edge with two triangles.
-  template <class NT> Poly<NT> delaunay_poly_2(const Simplex& facet) const {
-    const detail::Triangulation::Apices* ap = tri.apices(facet);
-    VertexId p = ap->v[0], q = ap->v[1];
-    if (is_finite(facet)) {
-      if (p == infinite_vertex || q == infinite_vertex) {
-        // Case A: the orientation of the finite triangle on the hull edge; it fails when the apex
-        // reaches the hull line.
-        VertexId z = p == infinite_vertex ? q : p;
-        std::array<VertexId, 3> seq{facet[0], facet[1], z};
-        Poly<NT> o = certificate::orientation_2<NT>(pt(seq[0]), pt(seq[1]), pt(seq[2]));
-        return orientation_of(seq.data(), 3, *ap, z) > 0 ? o : -o;
-      }
-      // In-circle, positive while q is strictly outside the circle of (x, y, p): InC has the
-      // opposite sign convention to InS (certificate_polynomials.h).
-      std::array<VertexId, 3> seq{facet[0], facet[1], p};
-      Poly<NT> s = certificate::in_circle<NT>(pt(seq[0]), pt(seq[1]), pt(seq[2]), pt(q));
-      return orientation_of(seq.data(), 3, *ap, p) > 0 ? -s : s;
-    }
-    // Case B: facet (inf, a) between (inf, a, b) and (inf, a, c): hull edge ab, apex z of the finite
-    // triangle on it; the hull is convex at a while c is on z's side of the line ab.
-    VertexId a = facet[1], b = p, c = q;
-    const detail::Triangulation::Apices& hull = tri.two_sided(Simplex{a, b});
-    VertexId z = hull.v[0] == infinite_vertex ? hull.v[1] : hull.v[0];
-    std::array<VertexId, 3> seq{a, b, z};
-    Poly<NT> o = certificate::orientation_2<NT>(pt(a), pt(b), pt(c));
-    return orientation_of(seq.data(), 3, hull, z) > 0 ? o : -o;
   }
 
   // At a hull ridge whose certificate vanishes at now: whether its facets are folded onto each other
@@ -214,23 +181,15 @@ template <class K> struct Engine {
   // just after now (engine/certificates.h).
   bool hull_ridge_folded_at_now(const Simplex& facet);
 
-  // Facets a b p and a b q at the ridge a b (edges a p and a q at the ridge vertex a in 2D):
-  // dot((b - a) x (p - a), (b - a) x (q - a)) (dot(p - a, q - a)). When the four points (three) are
-  // coplanar (collinear), it is positive iff the facets are folded onto each other, negative iff they
-  // lie side by side. `at` gives the points: moving (pt) for the polynomial, at now's enclosure
-  // (points_at_now) for its value at now.
+  // Whether the hull facets ridge + p and ridge + q are folded onto each other (KineticTraits::fold).
+  // `at` gives the points: moving (pt) for the polynomial, at now's enclosure (points_at_now) for its
+  // value at now.
   template <class NT, class At>
   Poly<NT> fold_poly(const Simplex& ridge, VertexId p, VertexId q, const At& at) const {
-    const VertexId a = ridge[0];
-    if constexpr (dim == 2)
-      return certificate::dot<NT>(certificate::difference<NT>(at(a), at(p)),
-                                  certificate::difference<NT>(at(a), at(q)));
-    const auto ab = certificate::difference<NT>(at(a), at(ridge[1]));
-    return certificate::dot<NT>(certificate::cross<NT>(ab, certificate::difference<NT>(at(a), at(p))),
-                                certificate::cross<NT>(ab, certificate::difference<NT>(at(a), at(q))));
+    return K::template fold<NT>(ridge, p, q, at);
   }
   template <class NT> Poly<NT> fold_poly(const Simplex& ridge, VertexId p, VertexId q) const {
-    return fold_poly<NT>(ridge, p, q, [this](VertexId v) -> const MovingPoint& { return pt(v); });
+    return fold_poly<NT>(ridge, p, q, moving());
   }
   // The hull facets at the ridge of the infinite facet [-1 a b] ([-1 a]).
   template <class NT> Poly<NT> fold_poly(const Simplex& facet) const {
@@ -241,11 +200,10 @@ template <class K> struct Engine {
   // The orientation polynomial of a finite top simplex (a tetrahedron, a triangle in 2D); `at` gives
   // the moving points (pt: this slab's motion).
   template <class NT, class At> Poly<NT> orientation_poly(const Simplex& t, const At& at) const {
-    return t.size() == 3 ? certificate::orientation_2<NT>(at(t[0]), at(t[1]), at(t[2]))
-                         : certificate::orientation<NT>(at(t[0]), at(t[1]), at(t[2]), at(t[3]));
+    return K::template orientation<NT>(K::join(t), at);
   }
   template <class NT> Poly<NT> orientation_poly(const Simplex& t) const {
-    return orientation_poly<NT>(t, [this](VertexId v) -> const MovingPoint& { return pt(v); });
+    return orientation_poly<NT>(t, moving());
   }
 
   // For a finite facet with two finite apices: the product of its two top simplices' orientations,

@@ -1,6 +1,6 @@
 #include "triangulation.h"
 
-#include "dimension_policy.h"
+#include "kinetic_traits.h"
 #include "medusa/core/error.h"
 
 #include <algorithm>
@@ -176,7 +176,11 @@ std::string Triangulation::first_violation(int dimension) const {
     return "the count of top simplices is not the number listed";
   if (incidences != listed * (static_cast<std::size_t>(dimension) + 1))
     return "a vertex lists a top simplex that is not one";
-  if (!euler_characteristic_holds(dimension, vertices, edges.size(), facets_.size(), listed))
+  const bool euler =
+      dimension == 2
+          ? KineticTraits2::euler_characteristic_holds(vertices, edges.size(), facets_.size(), listed)
+          : KineticTraits3::euler_characteristic_holds(vertices, edges.size(), facets_.size(), listed);
+  if (!euler)
     return "the Euler characteristic of the augmented triangulation is not that of a sphere";
   return {};
 }

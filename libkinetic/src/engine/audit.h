@@ -4,7 +4,6 @@
 #include "engine.h"
 
 #include "certificate_polynomials.h"
-#include "dimension_policy.h"
 #include "medusa/core/error.h"
 #include "static_delaunay.h"
 
@@ -201,15 +200,11 @@ template <class K> void Engine<K>::audit_supporting(const Rational& q, const Sim
       CGAL::Protect_FPU_rounding<true> guard;
       const Interval u = CGAL::to_interval(q);
       const auto at = [&](VertexId v) { return certificate::PointAtTime{&pt(v), u}; };
-      const Interval o = dim == 2
-                             ? certificate::orientation_2<Interval>(at(f[0]), at(f[1]), at(p))[0]
-                             : certificate::orientation<Interval>(at(f[0]), at(f[1]), at(f[2]), at(p))[0];
+      const Interval o = K::template orientation<Interval>(K::join(f, p), at)[0];
       if (o.inf() > 0 || o.sup() < 0)
         return o.inf() > 0 ? 1 : -1;
     }
-    const Poly<mpz_class> o = dim == 2
-                                  ? certificate::orientation_2<mpz_class>(pt(f[0]), pt(f[1]), pt(p))
-                                  : certificate::orientation<mpz_class>(pt(f[0]), pt(f[1]), pt(f[2]), pt(p));
+    const Poly<mpz_class> o = K::template orientation<mpz_class>(K::join(f, p), moving());
     return static_cast<int>(CGAL::sign(value_at(o, q)));
   };
   const int inside = side(z);

@@ -53,8 +53,7 @@ int Engine<K>::orientation_of(const VertexId* seq, std::size_t n, const Triangul
 template <class K> int Engine<K>::orientation_enclosure_sign(const Simplex& t) {
   CGAL::Protect_FPU_rounding<true> guard;
   const auto at = points_at_now();
-  const Interval o = dim == 2 ? certificate::orientation_2<Interval>(at(t[0]), at(t[1]), at(t[2]))[0]
-                              : certificate::orientation<Interval>(at(t[0]), at(t[1]), at(t[2]), at(t[3]))[0];
+  const Interval o = K::template orientation<Interval>(K::join(t), at)[0];
   if (o.inf() > 0 || o.sup() < 0) {
     ++stats.sign_evaluations;
     return o.inf() > 0 ? 1 : -1;
@@ -213,9 +212,8 @@ template <class K> bool Engine<K>::hull_ridge_folded_at_now(const Simplex& facet
     CGAL::Protect_FPU_rounding<true> guard;
     const auto at = points_at_now();
     const detail::Triangulation::Apices* ap = tri.apices(facet);
-    const VertexId a = ridge[0], p = ap->v[0], q = ap->v[1];
-    const Interval o = dim == 2 ? certificate::orientation_2<Interval>(at(a), at(p), at(q))[0]
-                                : certificate::orientation<Interval>(at(a), at(ridge[1]), at(p), at(q))[0];
+    const VertexId p = ap->v[0], q = ap->v[1];
+    const Interval o = K::template orientation<Interval>(K::join(ridge, p, q), at)[0];
     if (o.inf() > 0 || o.sup() < 0 || fold_poly<Interval>(ridge, p, q, at)[0].sup() < 0)
       return false;
   }

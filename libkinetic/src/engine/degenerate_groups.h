@@ -56,8 +56,7 @@ template <class K> int Engine<K>::orientation_at_now(const Simplex& t) {
 template <class K> bool Engine<K>::cospherical_at_now(const Simplex& t, VertexId y) {
   return sign_at_now([&](auto tag) {
            using NT = decltype(tag);
-           return t.size() == 3 ? certificate::in_circle<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(y))
-                                : certificate::in_sphere<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(t[3]), pt(y));
+           return K::template in_sphere<NT>(K::join(t), y, moving());
          }) == 0;
 }
 

@@ -5,7 +5,6 @@
 #include "engine.h"
 
 #include "certificate_polynomials.h"
-#include "dimension_policy.h"
 #include "face.h"
 #include "medusa/core/error.h"
 
@@ -93,7 +92,7 @@ template <class K> void Engine<K>::repair(std::vector<Step>& steps) {
 template <class K> bool Engine<K>::flippable(const Simplex& facet, FlipChange& change) {
   const detail::Triangulation::Apices* ap = tri.apices(facet);
   const VertexId p = ap->v[0], q = ap->v[1];
-  change = flip_change(dim, facet, p, q, tri);
+  change = K::flip(facet, p, q, tri);
   // A finite flip replaces top simplices that cover a region at now+ by others covering it. A top
   // simplex flat at now may be inside out just after it: the triangulation around it is then not
   // embedded at now+, the local tests below can pass a flip that leaves it so, and later certificates,

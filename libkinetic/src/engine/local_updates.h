@@ -39,19 +39,10 @@ double squared_distance(const MovingPoint& p, const MovingPoint& q) {
 template <class K> int Engine<K>::in_conflict_just_after(const Simplex& t, VertexId v) {
   if (is_finite(t)) {
     const int o = tri.orientation(t);
-    if constexpr (dim == 2) {
-      // The certificate of a facet is -InC * orientation while the apex is outside (delaunay_poly_2).
-      const int s = sign_plus_now([&](auto tag) {
-        using NT = decltype(tag);
-        return certificate::in_circle<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(v));
-      });
-      return s == 0 ? 0 : (s * o > 0 ? 1 : -1);
-    }
-    const int s = sign_plus_now([&](auto tag) {
-      using NT = decltype(tag);
-      return certificate::in_sphere<NT>(pt(t[0]), pt(t[1]), pt(t[2]), pt(t[3]), pt(v));
-    });
-    return s == 0 ? 0 : (s * o < 0 ? 1 : -1);
+    // The in-sphere (in-circle) test has the sign outside_sign * o while v is outside (delaunay_poly).
+    const int s = sign_plus_now(
+        [&](auto tag) { return K::template in_sphere<decltype(tag)>(K::join(t), v, moving()); });
+    return s == 0 ? 0 : (s * o * K::outside_sign < 0 ? 1 : -1);
   }
   // t = [-1 hull facet]: v is beyond the facet iff it lies on the other side of it than the facet's
   // finite top simplex.
@@ -69,11 +60,8 @@ template <class K> int Engine<K>::in_conflict_just_after(const Simplex& t, Verte
 // The sign just after now of the orientation of the finite facet f followed by x: which side of f's
 // plane (line) x is on; 0 when x stays in it for the whole slab.
 template <class K> int Engine<K>::facet_side_just_after(const Simplex& f, VertexId x) {
-  return sign_plus_now([&](auto tag) {
-    using NT = decltype(tag);
-    return dim == 2 ? certificate::orientation_2<NT>(pt(f[0]), pt(f[1]), pt(x))
-                    : certificate::orientation<NT>(pt(f[0]), pt(f[1]), pt(f[2]), pt(x));
-  });
+  return sign_plus_now(
+      [&](auto tag) { return K::template orientation<decltype(tag)>(K::join(f, x), moving()); });
 }
 
 // A top simplex whose circumsphere holds v just after now: one of those at v's nearest cell, which is

@@ -152,10 +152,8 @@ std::vector<Simplex> Engine<K>::delaunay_after_algebraic_now(const std::vector<V
       holds = same_sign([&](auto tag) {
         using NT = decltype(tag);
         if (!is_finite(f)) // case B: the hull is convex at the ridge
-          return dim == 2 ? certificate::orientation_2<NT>(pt(f[1]), pt(p), pt(y))
-                          : certificate::orientation<NT>(pt(f[1]), pt(f[2]), pt(p), pt(y));
-        return dim == 2 ? certificate::in_circle<NT>(pt(f[0]), pt(f[1]), pt(p), pt(y))
-                        : certificate::in_sphere<NT>(pt(f[0]), pt(f[1]), pt(f[2]), pt(p), pt(y));
+          return K::template orientation<NT>(K::join(f.facet(0), p, y), moving());
+        return K::template in_sphere<NT>(K::join(f, p), y, moving());
       });
     }
     if (holds)
