@@ -417,6 +417,16 @@ template <class K> struct Engine {
   void frame(Observer& observer, std::size_t k);
   void insert_or_delete(VertexId v, bool insert, std::vector<Step>& steps);
   void record_top_changes(Step& step, OldMembership& old_k);
+  // The finite top simplices of a change, as the step reports them.
+  static void record_delaunay_change(Step& step, const std::vector<Simplex>& removed,
+                                     const std::vector<Simplex>& added) {
+    for (const Simplex& t : removed)
+      if (is_finite(t))
+        step.delaunay_removed.push_back(t);
+    for (const Simplex& t : added)
+      if (is_finite(t))
+        step.delaunay_created.push_back(t);
+  }
 
   // ------------------------------------ local insertions and deletions (engine/local_updates.h)
 

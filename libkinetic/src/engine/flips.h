@@ -55,12 +55,7 @@ void Engine<K>::flip(const Simplex& facet, const FlipChange& change, std::vector
     step.flip = g;
   }
   // A hull flip removes (case A) or creates (case B) the finite top simplex that is flat at now.
-  for (const Simplex& t : removed)
-    if (is_finite(t))
-      step.delaunay_removed.push_back(t);
-  for (const Simplex& t : added)
-    if (is_finite(t))
-      step.delaunay_created.push_back(t);
+  record_delaunay_change(step, removed, added);
   apply_top_change(removed, added, orientations.data());
   settle_touched(step);
   finish_top_change();

@@ -272,12 +272,7 @@ bool Engine<K>::record_local_change(Step& step, OldMembership& old_k, VertexId v
     change_tops(removed, added, old_k, orientations.data());
     reinstall_hull_ridges_over(added, removed);
     ++(insert ? stats.local_insertions : stats.local_deletions);
-    for (const Simplex& t : removed)
-      if (is_finite(t))
-        step.delaunay_removed.push_back(t);
-    for (const Simplex& t : added)
-      if (is_finite(t))
-        step.delaunay_created.push_back(t);
+    record_delaunay_change(step, removed, added);
     return true;
   }
   return false;
