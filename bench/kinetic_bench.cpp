@@ -21,6 +21,7 @@
 #include "medusa/io/run_reader.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
 #include "root_isolation.h"
+#include "support/spaced_random_walk.h"
 
 #include <CGAL/Alpha_shape_2.h>
 #include <CGAL/Alpha_shape_face_base_2.h>
@@ -42,7 +43,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -291,77 +291,6 @@ struct FrameTimer : Observer {
   }
 };
 
-Trajectories random_walk(std::uint64_t seed, int n, int frames, double step_sd) {
-  // Cell-like spacing on the 10^-6 grid: CC3D cells of volume 125 are ~5 lattice units apart and
-  // move ~1 unit per 100 MCS (step_sd = 0.7 lattice units per coordinate and frame by default).
-  const std::int64_t unit = 1000000;
-  std::mt19937_64 rng(seed);
-  const double side = 5.0 * std::cbrt(double(n));
-  std::uniform_real_distribution<double> start(0, side * unit);
-  std::normal_distribution<double> step(0, step_sd * unit);
-  Trajectories t;
-  for (int k = 0; k < frames; ++k)
-    t.frame_times.push_back(100 * k);
-  for (int i = 0; i < n; ++i) {
-    Trajectory c;
-    c.cell_id = i + 1;
-    c.type = 1 + i % 2;
-    GridPoint p{std::int64_t(start(rng)), std::int64_t(start(rng)), std::int64_t(start(rng))};
-    for (int k = 0; k < frames; ++k) {
-      c.positions.push_back(p);
-      for (auto& x : p)
-        x += std::int64_t(step(rng));
-    }
-    t.cells.push_back(c);
-  }
-  return t;
-}
-
-// Cell turnover, as in a growing CompuCell3D tissue: each cell is, with probability `fraction`, born
-// at a random later frame (its earlier positions dropped), and with the same probability dies after
-// a random earlier frame, so that about fraction * n / (frames - 1) cells appear and as many vanish
-// per frame: insertions and deletions at every frame (docs/MATH.md §5.6).
-void add_turnover(Trajectories& t, double fraction, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> coin(0, 1);
-  const std::size_t frames = t.frame_times.size();
-  for (Trajectory& c : t.cells) {
-    const double r = coin(rng);
-    if (r < fraction) {
-      c.first_frame = 1 + rng() % (frames - 1);
-      c.positions.erase(c.positions.begin(), c.positions.begin() + std::ptrdiff_t(c.first_frame));
-    } else if (r < 2 * fraction) {
-      c.positions.resize(1 + rng() % (frames - 1));
-    }
-  }
-}
-
-// The planar analogue: the same spacing and steps in the plane z = 0.
-Trajectories random_walk_2d(std::uint64_t seed, int n, int frames, double step_sd) {
-  const std::int64_t unit = 1000000;
-  std::mt19937_64 rng(seed);
-  const double side = 5.0 * std::sqrt(double(n));
-  std::uniform_real_distribution<double> start(0, side * unit);
-  std::normal_distribution<double> step(0, step_sd * unit);
-  Trajectories t;
-  t.dimension = 2;
-  for (int k = 0; k < frames; ++k)
-    t.frame_times.push_back(100 * k);
-  for (int i = 0; i < n; ++i) {
-    Trajectory c;
-    c.cell_id = i + 1;
-    c.type = 1 + i % 2;
-    GridPoint p{std::int64_t(start(rng)), std::int64_t(start(rng)), 0};
-    for (int k = 0; k < frames; ++k) {
-      c.positions.push_back(p);
-      p[0] += std::int64_t(step(rng));
-      p[1] += std::int64_t(step(rng));
-    }
-    t.cells.push_back(c);
-  }
-  return t;
-}
-
 // A skeleton run's time over its slabs, and the static rebuilds' over the same frames: slab k of the
 // skeleton starts with frame k's certificate rebuild (frame 0's included, which the kinetic run counts
 // in its initialisation); the static side rebuilds at frames 1 .. F - 1.
@@ -606,9 +535,9 @@ int main(int argc, char** argv) {
     }
     if (!csv_only && only_dim != 2)
       for (int n : randoms) {
-        Trajectories t = random_walk(42, n, frames, step);
+        Trajectories t = medusa::test::spaced_random_walk(42, 3, n, frames, step);
         if (turnover > 0)
-          add_turnover(t, turnover, 43);
+          medusa::test::add_turnover(t, turnover, 43);
         run_case(turnover > 0 ? "random walk with turnover" : "random walk", t, "3");
       }
     if (default_cases && only_dim != 3) {
@@ -617,9 +546,9 @@ int main(int argc, char** argv) {
     }
     if (!csv_only && only_dim != 3)
       for (int n : randoms) {
-        Trajectories t = random_walk_2d(42, n, frames, step);
+        Trajectories t = medusa::test::spaced_random_walk(42, 2, n, frames, step);
         if (turnover > 0)
-          add_turnover(t, turnover, 43);
+          medusa::test::add_turnover(t, turnover, 43);
         run_case(turnover > 0 ? "planar random walk with turnover" : "planar random walk", t, "3");
       }
   } catch (const std::exception& e) {

@@ -56,7 +56,8 @@ struct RunArguments {
   std::string radius = "auto";
   std::string source;
   std::string timings;
-  unsigned threads = 0; // 0: one per hardware thread
+  unsigned threads = 0;         // 0: one per hardware thread
+  std::size_t audit_stride = 0; // 0: not given (audit, if at all, after every batch)
   bool audit = false, snap = false, exact_vtk = false, periodic_as_open = false, quiet = false,
        progress = false, force = false;
   bool skip_unreadable_frames = false;
@@ -74,6 +75,16 @@ std::string radius_problem(const std::string& value) {
   if (!digits_only || value.size() > 40)
     return "'" + value.substr(0, 40) +
            "' is not 'auto' or a decimal number of lattice units such as 3 or 2.5";
+  if (value.find_first_of("123456789") == std::string::npos)
+    return "'" + value + "' is not positive";
+  return "";
+}
+
+// --audit-stride: a positive whole number; "" when valid, else CLI11's message.
+std::string stride_problem(const std::string& value) {
+  const bool digits_only = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
+  if (!digits_only || value.size() > 18)
+    return "'" + value.substr(0, 40) + "' is not a positive whole number of batches such as 1 or 50";
   if (value.find_first_of("123456789") == std::string::npos)
     return "'" + value + "' is not positive";
   return "";
@@ -259,6 +270,16 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   return result;
 }
 
+// One line for the user after --audit: how many audits of the kinetic structure passed, and when.
+std::string describe_audits(const kinetic::KineticStatistics& stats, std::size_t stride) {
+  return "audit: " + std::to_string(stats.audits) + " audit" + (stats.audits == 1 ? "" : "s") +
+         " of the kinetic structure passed (" + std::to_string(stats.audits_compared_with_cgal) +
+         " equal to static CGAL's alpha complex simplex for simplex), at the start, at every frame and "
+         "after " +
+         (stride == 1 ? std::string("every batch of events")
+                      : "every " + std::to_string(stride) + " batches of events");
+}
+
 // The machine-readable record of --timings (read by bench/e2e_bench.py).
 void write_timings(const RunOutputs& outputs, const std::string& run_id, const RunArguments& args,
                    const io::RunData& data, const std::string& radius, const StageTimings& timings,
@@ -301,6 +322,7 @@ void write_timings(const RunOutputs& outputs, const std::string& run_id, const R
                        {"local_insertions", stats.local_insertions},
                        {"local_deletions", stats.local_deletions},
                        {"batches", stats.batches},
+                       {"frame_batches", stats.frame_batches},
                        {"certificates_built", stats.certificates_built},
                        {"static_rebuilds", stats.static_rebuilds},
                        {"repairs_at_algebraic_times", stats.repairs_at_algebraic_times},
@@ -311,6 +333,12 @@ void write_timings(const RunOutputs& outputs, const std::string& run_id, const R
                        {"times_compared_algebraically", stats.times_compared_algebraically},
                        {"times_compared_as_one_polynomial", stats.times_compared_as_one_polynomial}};
   j["kinetic_seconds_per_frame"] = stats.seconds_per_frame;
+  // --audit: the engine's audits (one at the start, one at every frame, one after every stride-th
+  // batch of events), and those that compared the complex with static CGAL's (docs/ARCHITECTURE.md).
+  j["audit"] = {{"on", args.audit},
+                {"stride", args.audit ? std::max<std::size_t>(args.audit_stride, 1) : 0},
+                {"audits", stats.audits},
+                {"compared_with_cgal", stats.audits_compared_with_cgal}};
   std::error_code ec;
   const auto bytes = fs::file_size(outputs.store_temporary(), ec);
   j["store"] = {{"path", outputs.final_name(0)},
@@ -391,6 +419,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   kinetic::KineticOptions kinetic_options;
   kinetic_options.rho2 = kinetic::squared_radius_from_decimal(radius, data.trajectories.scale);
   kinetic_options.audit = args.audit;
+  kinetic_options.audit_stride = args.audit_stride > 0 ? args.audit_stride : 1;
   // A periodic run goes through the covering space: the cells and their copies near the seams, with
   // the canonical filter in front of the builder (docs/MATH.md §8). Refused before any output exists.
   std::optional<periodic::PeriodicCover> cover;
@@ -447,6 +476,8 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     timings.add("kinetic", clock.wall_seconds() - observer.builder_seconds(), clock.cpu_seconds());
     timings.add("medusa_store", observer.builder_seconds(), 0.0);
     stats = engine.statistics();
+    if (args.audit && !args.quiet)
+      std::cerr << "medusa: " << describe_audits(stats, kinetic_options.audit_stride) << "\n";
     if (torus_audit && !args.quiet)
       std::cerr << "medusa: " << periodic::describe(torus_audit->statistics()) << "\n";
     peak_rss_at_frame = observer.peak_rss_at_frame();
@@ -518,7 +549,13 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
                 "shortest cycle, docs/MATH.md §7.13); `medusa classes --shorten` does it for one diagram "
                 "on demand");
   run->add_flag("--audit", args->audit,
-                "check the kinetic structure against static CGAL computations (slow)");
+                "check the kinetic structure against static CGAL computations at the start, at every frame "
+                "and after every batch of events (slow; --audit-stride for long runs)");
+  run->add_option("--audit-stride", args->audit_stride,
+                  "audit after every N-th batch of events only (still at every frame), to audit a long "
+                  "run in bounded time; implies --audit")
+      ->type_name("N")
+      ->check(CLI::Validator([](std::string& value) { return stride_problem(value); }, ""));
   run->add_flag("--progress", args->progress,
                 "report progress on stderr (stage; frame k/K, events/s, elapsed and ETA during the kinetic "
                 "stage) even when stderr is not a terminal, then one line per update");
@@ -531,10 +568,12 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
   run->add_option(
       "--timings", args->timings,
       "write wall and CPU seconds per stage (reading, kinetic, medusa_store, filtrations, reduction, "
-      "exports), peak RSS, kinetic events and store size to this JSON file");
+      "exports), peak RSS, kinetic events, the audits of --audit and store size to this JSON file");
   run->callback([args, command_line] {
     if (args->snap && args->exact_vtk)
       throw CLI::ValidationError("--exact-vtk", "contradicts --snap: give one of them");
+    if (args->audit_stride > 0)
+      args->audit = true;
     run_command(*args, command_line);
   });
 }

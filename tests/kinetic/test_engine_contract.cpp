@@ -11,17 +11,16 @@
 #include "kinetic_test_support.h"
 #include "medusa/io/run_reader.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
+#include "support/spaced_random_walk.h"
 
 #include <catch2/catch.hpp>
 
-#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <map>
-#include <random>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -91,52 +90,6 @@ std::string auto_radius(const medusa::io::RunData& data) {
   return buffer;
 }
 
-// Random walks on the 10^-6 grid with CC3D-like spacing (cells ~5 lattice units apart, steps of
-// 0.7 units per coordinate and frame), as bench/kinetic_bench.cpp builds them; dimension 2 keeps z = 0.
-Trajectories random_walk(std::uint64_t seed, int dimension, int n, int frames) {
-  const std::int64_t unit = 1000000;
-  std::mt19937_64 rng(seed);
-  const double side = 5.0 * std::pow(double(n), 1.0 / dimension);
-  std::uniform_real_distribution<double> start(0, side * unit);
-  std::normal_distribution<double> step(0, 0.7 * unit);
-  Trajectories t;
-  t.dimension = dimension;
-  for (int k = 0; k < frames; ++k)
-    t.frame_times.push_back(100 * k);
-  for (int i = 0; i < n; ++i) {
-    Trajectory c;
-    c.cell_id = i + 1;
-    c.type = 1 + i % 2;
-    GridPoint p{0, 0, 0};
-    for (int j = 0; j < dimension; ++j)
-      p[j] = std::int64_t(start(rng));
-    for (int k = 0; k < frames; ++k) {
-      c.positions.push_back(p);
-      for (int j = 0; j < dimension; ++j)
-        p[j] += std::int64_t(step(rng));
-    }
-    t.cells.push_back(c);
-  }
-  return t;
-}
-
-// Turnover: each cell is born at a random later frame with probability `fraction`, and with the same
-// probability dies after a random earlier one (insertions and deletions at every frame).
-void add_turnover(Trajectories& t, double fraction, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> coin(0, 1);
-  const std::size_t frames = t.frame_times.size();
-  for (Trajectory& c : t.cells) {
-    const double r = coin(rng);
-    if (r < fraction) {
-      c.first_frame = 1 + rng() % (frames - 1);
-      c.positions.erase(c.positions.begin(), c.positions.begin() + std::ptrdiff_t(c.first_frame));
-    } else if (r < 2 * fraction) {
-      c.positions.resize(1 + rng() % (frames - 1));
-    }
-  }
-}
-
 std::vector<Case> cases() {
   std::vector<Case> out;
   for (const char* folder :
@@ -171,8 +124,8 @@ std::vector<Case> cases() {
     out.push_back(decimal_radius_case(
         name,
         [w] {
-          Trajectories t = random_walk(w.seed, w.dimension, w.n, w.frames);
-          add_turnover(t, 0.2, w.seed + 1);
+          Trajectories t = medusa::test::spaced_random_walk(w.seed, w.dimension, w.n, w.frames);
+          medusa::test::add_turnover(t, 0.2, w.seed + 1);
           return t;
         },
         "3"));

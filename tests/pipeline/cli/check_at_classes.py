@@ -14,18 +14,14 @@ Exit 1 names the first difference.
 import csv
 import json
 import os
-import subprocess
 import sys
 import xml.etree.ElementTree as ET
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cli_checks import cli  # noqa: E402
+
 if not __debug__:
     sys.exit("these checks are assert statements: run without -O and without PYTHONOPTIMIZE")
-
-
-def cli(binary, *args):
-    out = subprocess.run([binary, *args], capture_output=True, text=True)
-    assert out.returncode == 0, out.stderr
-    return out.stdout
 
 
 def csv_simplices(binary, store, t, work, *options):

@@ -12,7 +12,6 @@ naming them, and the rest of the report is written.
         too large: no sweep for the run, and the page says why.
 
 Usage: check_report_sweep_periodic.py <medusa> <periodic CC3D run folder> <workdir>"""
-import gzip
 import os
 import shutil
 import subprocess
@@ -20,6 +19,7 @@ import sys
 from decimal import Decimal
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cli_checks import cut_run  # noqa: E402
 from report_sweep_data import page_data, page_sweep, sweep_csv  # noqa: E402
 
 medusa, run, work = sys.argv[1:4]
@@ -69,15 +69,7 @@ def check_note(label, data, left_out, period):
 
 # 1. The real run, cut to its first 3 frames (CC3D's own centres) beside its CC3DML.
 folder = "periodic_3frames"
-os.makedirs(os.path.join(folder, "Simulation"))
-for name in os.listdir(os.path.join(run, "Simulation")):
-    if name.endswith(".xml"):
-        shutil.copy(os.path.join(run, "Simulation", name), os.path.join(folder, "Simulation", name))
-with gzip.open(os.path.join(run, "cells.csv.gz"), "rt") as f:
-    lines = f.read().splitlines()
-frames = sorted({int(line.split(",")[0]) for line in lines[1:]})[:3]
-with open(os.path.join(folder, "cells.csv"), "w") as f:
-    f.write("\n".join([lines[0]] + [line for line in lines[1:] if int(line.split(",")[0]) in frames]) + "\n")
+cut_run(run, folder, 3)
 call("run", folder, "--radius", "3", "-o", "real.h5", "--quiet")
 result = call("report", "real.h5", "-o", "real.html", "--sweep-radii", "3:3.5:0.5", "--sweep-radii", "13:13:1")
 call("sweep", folder, "--radii", "3:3.5:0.5", "-o", "real_oracle", "--quiet")

@@ -16,9 +16,7 @@ Exit 1 names the first difference.
 import csv
 import io
 import json
-import math
 import os
-import subprocess
 import sys
 
 import gudhi
@@ -26,14 +24,11 @@ import numpy as np
 
 import medusa
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cli"))
+from cli_checks import cli, normalised  # noqa: E402
+
 if not __debug__:
     sys.exit("these checks are assert statements: run without -O and without PYTHONOPTIMIZE")
-
-
-def cli(binary, *args):
-    out = subprocess.run([binary, *args], capture_output=True, text=True)
-    assert out.returncode == 0, out.stderr
-    return out.stdout
 
 
 def barcode_rows(binary, store):
@@ -42,10 +37,6 @@ def barcode_rows(binary, store):
         rows.setdefault((r["direction"], r["type"]), []).append(
             (float(r["birth"]), float(r["death"]), float(r["dimension"])))
     return rows
-
-
-def normalised(c):
-    return {k: (float(v) if k in ("birth", "death", "lifetime") else v) for k, v in c.items()}
 
 
 def check_diagrams(binary, store, s):

@@ -12,11 +12,9 @@ On the first 3 frames of the run (CC3D's centres, written here beside the run's 
 * a radius with 4 x radius not below the period is a medusa.Error naming §8.3, and leaves no store.
 Exit 1 names the first difference.
 """
-import gzip
 import json
 import os
 import shutil
-import subprocess
 import sys
 
 import h5py
@@ -24,18 +22,11 @@ import numpy as np
 
 import medusa
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cli"))
+from cli_checks import cli, cut_run, normalised  # noqa: E402
+
 if not __debug__:
     sys.exit("these checks are assert statements: run without -O and without PYTHONOPTIMIZE")
-
-
-def cli(binary, *args):
-    out = subprocess.run([binary, *args], capture_output=True, text=True)
-    assert out.returncode == 0, out.stderr
-    return out.stdout
-
-
-def normalised(c):
-    return {k: (float(v) if k in ("birth", "death", "lifetime") else v) for k, v in c.items()}
 
 
 def same_diagrams(a, b, types):
@@ -48,19 +39,6 @@ def same_diagrams(a, b, types):
     return ""
 
 
-def cut(run, folder, frames):
-    shutil.rmtree(folder, ignore_errors=True)
-    os.makedirs(os.path.join(folder, "Simulation"))
-    for name in os.listdir(os.path.join(run, "Simulation")):
-        if name.endswith(".xml"):
-            shutil.copy(os.path.join(run, "Simulation", name), os.path.join(folder, "Simulation", name))
-    with gzip.open(os.path.join(run, "cells.csv.gz"), "rt") as f:
-        lines = f.read().splitlines()
-    kept = sorted({int(line.split(",")[0]) for line in lines[1:]})[:frames]
-    with open(os.path.join(folder, "cells.csv"), "w") as f:
-        f.write("\n".join([lines[0]] + [line for line in lines[1:] if int(line.split(",")[0]) in kept]) + "\n")
-
-
 def attributes(path):
     with h5py.File(path, "r") as f:
         return f.attrs["periodic_axes"].decode(), [int(f.attrs["periodic_length_" + a]) for a in "xyz"]
@@ -71,7 +49,7 @@ def main():
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     folder = os.path.join(work, "periodic_3frames")
-    cut(run, folder, 3)
+    cut_run(run, folder, 3)
 
     cli_store = os.path.join(work, "cli.h5")
     cli(binary, "run", folder, "--radius", "3", "-o", cli_store, "--quiet")
