@@ -43,6 +43,19 @@ int first_nonzero_derivative_sign(ExactPoly f, const SlabTime& u, int& order) {
   return 0;
 }
 
+// The sign of f at the rational g = n / d (d > 0), from f(g) d^deg = sum f_i n^i d^(deg - i) in
+// integers: no rational arithmetic, hence no gcd per operation.
+int sign_at_rational(const ExactPoly& f, const Rational& g) {
+  const int degree = f.degree();
+  mpz_class sum(f[degree].mpz()), d_power(1);
+  for (int i = degree - 1; i >= 0; --i) {
+    mpz_mul(d_power.get_mpz_t(), d_power.get_mpz_t(), g.denominator().mpz());
+    mpz_mul(sum.get_mpz_t(), sum.get_mpz_t(), g.numerator().mpz());
+    mpz_addmul(sum.get_mpz_t(), f[i].mpz(), d_power.get_mpz_t());
+  }
+  return sgn(sum);
+}
+
 } // namespace
 
 Rational value_at(const Poly<mpz_class>& f, const Rational& q) {
@@ -151,6 +164,23 @@ int SlabTime::side_of(const Rational& g) const {
     return *q_ < g ? -1 : (g < *q_ ? 1 : 0);
   }
   ++comparison_counts.reported_exactly;
+  if (root_) {
+    // Exactly, without the algebraic real: the exact polynomial's only root in (lo, hi) is simple
+    // and is this time (SlabTime::algebraic), so the sign there at g, against its sign just left of
+    // the root (at lo, or opposite at hi, where it does not vanish; at u = 0 the division by u^m may
+    // change the sign), says on which side g lies.
+    const Rational lo(root_->lo), hi(root_->hi);
+    if (g <= lo)
+      return 1;
+    if (hi <= g)
+      return -1;
+    const ExactPoly& p = root_->exact_polynomial();
+    const int at_g = sign_at_rational(p, g);
+    if (at_g == 0)
+      return 0;
+    const int left = root_->lo > 0.0 ? sign_at_rational(p, lo) : -sign_at_rational(p, hi);
+    return at_g == left ? 1 : -1;
+  }
   const AlgebraicReal& a = algebraic();
   const AlgebraicReal b = kernel().construct_algebraic_real_1_object()(g);
   return a < b ? -1 : (b < a ? 1 : 0);

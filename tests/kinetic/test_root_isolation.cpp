@@ -177,6 +177,34 @@ TEST_CASE("roots whose wide enclosures leave bisection stuck are told apart on t
   REQUIRE(0.371002 < hi);
 }
 
+TEST_CASE("a time whose enclosure spans many points of the reporting grid is rounded to the nearest on the "
+          "exact polynomial, without algebraic reals",
+          "[kinetic][isolation]") {
+  // Roots c0 / 10^6 of 10^6 u - c0 in the slab from MCS 100 to 200, enclosed as if from plain doubles
+  // widened by 5000 on each coefficient: no interval test decides a grid point in (0.3, 0.7), which
+  // holds about 2^44 points of the 2^-32 MCS grid. The reported time must be t = 100 + 100 u rounded
+  // half up to that grid, computed here in rationals; 500000 puts the root on a grid point (MCS 150).
+  for (const long c0 : {371001L, 500000L, 633333L}) {
+    CAPTURE(c0);
+    auto root = make_isolated_root([c0] { return to_exact_poly(exact_poly({-c0, 1000000})); });
+    root->enclosure = IntervalPoly{Interval(static_cast<double>(-c0) - 5000, static_cast<double>(-c0) + 5000),
+                                   Interval(1000000 - 5000, 1000000 + 5000)};
+    root->lo = 0.3;
+    root->hi = 0.7;
+    root->sign_lo = -1;
+    const SlabTime u(root);
+    const TimeComparisonCounts before = time_comparison_counts();
+    const double reported = u.reported_time(100, 200);
+    const mpq_class t = mpq_class(100) + mpq_class(c0, 1000000) * 100;
+    const mpq_class scaled = t * mpq_class(mpz_class(1) << 32) + mpq_class(1, 2);
+    mpz_class grid;
+    mpz_fdiv_q(grid.get_mpz_t(), scaled.get_num_mpz_t(), scaled.get_den_mpz_t());
+    REQUIRE(reported == std::ldexp(grid.get_d(), -32));
+    REQUIRE(time_comparison_counts().reported_exactly > before.reported_exactly); // decided exactly
+    REQUIRE_FALSE(root->algebraic.has_value());
+  }
+}
+
 TEST_CASE("isolated times of random quadratics order as their exact roots do", "[kinetic][isolation]") {
   // Roots r = p/q of (q u - p)(u + 1) and the isolated times must order exactly as the rationals.
   const unsigned seed = std::random_device{}();
