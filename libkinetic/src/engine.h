@@ -329,7 +329,7 @@ template <class K> struct Engine {
 
   // ------------------------------------ Del changes, frontier, membership (engine/membership.h)
 
-  bool in_k(const Simplex& s) const;
+  bool in_k(const Simplex& s) const { return faces.in_k(s, alive); }
   // Replaces top simplices and records the old membership of every touched simplex in old_k.
   void change_tops(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                    OldMembership& old_k, const int* added_orientations = nullptr);
@@ -342,7 +342,7 @@ template <class K> struct Engine {
                         const int* added_orientations);
   void settle_touched(Step& step);
   void finish_top_change();
-  bool is_short(const Simplex& s) const;
+  bool is_short(const Simplex& s) const { return faces.is_short(s); }
   // The state of a face of Del, or nullptr: from the table, or from the faces touched by the change
   // being applied.
   Face* state_in_table(const Simplex& s) { return faces.find(s); }

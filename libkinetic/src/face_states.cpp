@@ -16,16 +16,7 @@ std::string named(const char* what, const Simplex& s) {
 } // namespace
 
 std::string FaceStates::first_violation(const Triangulation& tri, const std::vector<char>& alive) const {
-  const auto in_k = [&](const Simplex& x) {
-    if (x.size() == 1)
-      return alive[static_cast<std::size_t>(x[0])] != 0;
-    const Face* f = find(x);
-    return f != nullptr && f->in_k;
-  };
-  const auto is_short = [&](const Simplex& x) {
-    const Face* f = x.size() == 1 ? nullptr : find(x);
-    return x.size() == 1 || (f != nullptr && f->is_short);
-  };
+  const auto short_facet = [&](const Simplex& x) { return is_short(x); };
   std::unordered_set<Simplex, SimplexHash> del_faces;
   std::string violation;
   for (const Simplex& t : tri.tops())
@@ -44,7 +35,7 @@ std::string FaceStates::first_violation(const Triangulation& tri, const std::vec
       int short_cofaces = 0, k_cofaces = 0;
       for (const Simplex& c : tri.finite_cofaces(s)) {
         short_cofaces += is_short(c);
-        k_cofaces += in_k(c);
+        k_cofaces += in_k(c, alive);
       }
       if (f->short_cofaces != short_cofaces || f->k_cofaces != k_cofaces) {
         violation = named("has wrong counts of short cofaces or cofaces in K", s);
@@ -55,11 +46,11 @@ std::string FaceStates::first_violation(const Triangulation& tri, const std::vec
         return;
       }
       for (std::size_t i = 0; f->in_k && i < s.size(); ++i)
-        if (!in_k(s.facet(i))) {
+        if (!in_k(s.facet(i), alive)) {
           violation = named("is in K without its facets (K is not a complex)", s);
           return;
         }
-      if ((f->cert >= 0) != in_frontier(s, *f, is_short))
+      if ((f->cert >= 0) != in_frontier(s, *f, short_facet))
         violation = named(f->cert >= 0 ? "has a radius certificate outside the frontier"
                                        : "is on the frontier without a radius certificate",
                           s);

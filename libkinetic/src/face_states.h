@@ -58,6 +58,21 @@ public:
       f(s, state);
   }
 
+  // Is s in K (a vertex: while its cell is alive)? Is s short (a vertex always is)? A simplex not
+  // recorded is neither.
+  bool in_k(const Simplex& s, const std::vector<char>& alive) const {
+    if (s.size() == 1)
+      return alive[static_cast<std::size_t>(s[0])] != 0;
+    const Face* f = find(s);
+    return f != nullptr && f->in_k;
+  }
+  bool is_short(const Simplex& s) const {
+    if (s.size() == 1)
+      return true;
+    const Face* f = find(s);
+    return f != nullptr && f->is_short;
+  }
+
   // ---- the rules, on states given by state_of (this table's, or those of a change being applied)
 
   // Has s (a triangle or tetrahedron; false for an edge) a facet flagged long?

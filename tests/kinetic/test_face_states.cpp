@@ -97,3 +97,20 @@ TEST_CASE("the face states' own check accepts counts worked out by hand and name
     }
   }
 }
+
+TEST_CASE("a vertex is in K while its cell lives and is always short, and a simplex not recorded is neither",
+          "[kinetic][faces]") {
+  Fixture x(Simplex{0, 1, 2});
+  REQUIRE(x.faces.in_k(Simplex{1}, x.alive));
+  REQUIRE(x.faces.is_short(Simplex{1}));
+  x.alive[1] = 0;
+  REQUIRE_FALSE(x.faces.in_k(Simplex{1}, x.alive));
+  REQUIRE(x.faces.is_short(Simplex{1}));
+  REQUIRE(x.faces.in_k(Simplex{0, 1}, x.alive));
+  x.faces.at(Simplex{0, 1}).in_k = false;
+  x.faces.at(Simplex{0, 1}).is_short = false;
+  REQUIRE_FALSE(x.faces.in_k(Simplex{0, 1}, x.alive));
+  REQUIRE_FALSE(x.faces.is_short(Simplex{0, 1}));
+  REQUIRE_FALSE(x.faces.in_k(Simplex{0, 5}, x.alive));
+  REQUIRE_FALSE(x.faces.is_short(Simplex{0, 5}));
+}

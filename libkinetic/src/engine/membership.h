@@ -15,13 +15,6 @@
 
 namespace medusa::kinetic::detail {
 
-template <class K> bool Engine<K>::in_k(const Simplex& s) const {
-  if (s.size() == 1)
-    return alive[static_cast<std::size_t>(s[0])] != 0;
-  const Face* f = faces.find(s);
-  return f != nullptr && f->in_k;
-}
-
 template <class K>
 void Engine<K>::change_tops(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                             OldMembership& old_k, const int* added_orientations) {
@@ -134,13 +127,6 @@ template <class K> void Engine<K>::finish_top_change() {
     std::vector<TouchedFace>().swap(touched_scratch.faces);
     std::vector<Simplex>().swap(touched_scratch.facets);
   }
-}
-
-template <class K> bool Engine<K>::is_short(const Simplex& s) const {
-  if (s.size() == 1)
-    return true;
-  const Face* f = faces.find(s);
-  return f != nullptr && f->is_short;
 }
 
 // Creates or drops the radius certificate of s so that exactly the frontier carries one.
