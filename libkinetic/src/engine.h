@@ -42,6 +42,14 @@ namespace medusa::kinetic::detail {
 // The membership in K, before the current step, of every simplex the step touched.
 using OldMembership = FlatSimplexMap<bool>;
 
+// Scratch vectors are kept from one event to the next, which saves an allocation per event, but not
+// at the size of a whole static rebuild (the initial triangulation, insertions and deletions at a
+// frame): that would hold about a gigabyte for the rest of a million-cell run.
+template <class T> void release_if_large(std::vector<T>& scratch) {
+  if (scratch.capacity() > 4096)
+    std::vector<T>().swap(scratch);
+}
+
 template <class K> struct Engine {
   // The input and the outputs of the run.
   const Trajectories& traj;
@@ -62,7 +70,7 @@ template <class K> struct Engine {
   // The current slab, time u inside it, the cells' motion in it and who is alive.
   std::size_t slab = 0;
   SlabTime now;
-  std::vector<MovingPoint> motion;
+  std::shared_ptr<SlabMotion> motion; // shared with the roots isolated in this slab (root_cache.h)
   std::vector<char> alive;
 
   // Del(now+) and the alpha-complex state of its finite simplices.
@@ -112,7 +120,7 @@ template <class K> struct Engine {
 
   // ------------------------------------ geometry of certificates (templates over the number type)
 
-  const MovingPoint& pt(VertexId v) const { return motion[static_cast<std::size_t>(v)]; }
+  const MovingPoint& pt(VertexId v) const { return motion->points[static_cast<std::size_t>(v)]; }
 
   // The cells at now's enclosure, as a function of the vertex: a certificate given these points is
   // its value at now (certificate::PointAtTime), a few interval operations where the polynomial
@@ -330,9 +338,10 @@ template <class K> struct Engine {
   // ------------------------------------ Del changes, frontier, membership (engine/membership.h)
 
   bool in_k(const Simplex& s) const { return faces.in_k(s, alive); }
-  // Replaces top simplices and records the old membership of every touched simplex in old_k.
+  // Replaces top simplices and records the old membership of every touched simplex in old_k, when
+  // given.
   void change_tops(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                   OldMembership& old_k, const int* added_orientations = nullptr);
+                   OldMembership* old_k, const int* added_orientations = nullptr);
   // change_tops in three phases, for a flip: every touched face is looked up in `faces` once, and
   // its entry is held in touched_scratch throughout (the flags, counts and frontier rules read only
   // touched faces and their facets, which are touched too). apply_top_change keeps the faces that
@@ -390,7 +399,8 @@ template <class K> struct Engine {
 
   detail::StaticInput static_input(const std::vector<VertexId>& ids) const;
   std::vector<VertexId> alive_ids() const;
-  void rebuild_static(OldMembership& old_k);
+  // old_k, when given, receives the membership before the change of every simplex it touched.
+  void rebuild_static(OldMembership* old_k);
   void reorient_kept(const std::vector<Simplex>& kept); // top simplices the rebuild kept
   void reinstall_hull_ridges_over(const std::vector<Simplex>& added, const std::vector<Simplex>& removed);
   // Calls f on the infinite facets over the ridges of f_hull when it is a hull facet: the hull

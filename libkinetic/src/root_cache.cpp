@@ -32,15 +32,24 @@ Poly<mpz_class> KeyPolynomial::coefficients(const std::array<MovingPoint, 5>& p)
         certificate::cross<mpz_class>(ab, certificate::difference<mpz_class>(p[0], p[2])),
         certificate::cross<mpz_class>(ab, certificate::difference<mpz_class>(p[0], p[3])));
   } else if (count == 2)
-    f = certificate::edge_radius<mpz_class>(p[0], p[1], rho2->num, rho2->den);
+    f = certificate::edge_radius<mpz_class>(p[0], p[1], motion->rho2->num, motion->rho2->den);
   else if (count == 3)
-    f = certificate::triangle_radius<mpz_class>(p[0], p[1], p[2], rho2->num, rho2->den);
+    f = certificate::triangle_radius<mpz_class>(p[0], p[1], p[2], motion->rho2->num, motion->rho2->den);
   else
-    f = certificate::tetrahedron_radius<mpz_class>(p[0], p[1], p[2], p[3], rho2->num, rho2->den);
+    f = certificate::tetrahedron_radius<mpz_class>(p[0], p[1], p[2], p[3], motion->rho2->num,
+                                                   motion->rho2->den);
   return f;
 }
 
+std::array<MovingPoint, 5> KeyPolynomial::points() const {
+  std::array<MovingPoint, 5> p{};
+  for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i)
+    p[i] = pt(i);
+  return p;
+}
+
 bool KeyPolynomial::vanishes_at_start() const {
+  const std::array<MovingPoint, 5> pts = points();
   const MovingPoint* p[5] = {&pts[0], &pts[1], &pts[2], &pts[3], &pts[4]};
   const auto n = static_cast<std::size_t>(count);
   if (kind == 0)
@@ -61,25 +70,27 @@ bool KeyPolynomial::vanishes_at_start() const {
 }
 
 bool KeyPolynomial::translate_of(const KeyPolynomial& other) const {
-  if (kind != other.kind || count != other.count || count == 0 || (kind == 2 && rho2 != other.rho2))
+  if (kind != other.kind || count != other.count || count == 0 ||
+      (kind == 2 && motion->rho2 != other.motion->rho2))
     return false;
+  const std::array<MovingPoint, 5> pts = points(), other_pts = other.points();
   const auto n = static_cast<std::size_t>(count);
   const auto moved_to = [](const MovingPoint& p, const std::array<std::int64_t, 3>& t, const MovingPoint& q) {
     return p.b == q.b && p.a[0] + t[0] == q.a[0] && p.a[1] + t[1] == q.a[1] && p.a[2] + t[2] == q.a[2];
   };
   const bool any_order = kind == 0 || kind == 1 || kind == 2;
   for (std::size_t j = 0; j < (any_order ? n : 1); ++j) {
-    const std::array<std::int64_t, 3> t{other.pts[j].a[0] - pts[0].a[0], other.pts[j].a[1] - pts[0].a[1],
-                                        other.pts[j].a[2] - pts[0].a[2]};
+    const std::array<std::int64_t, 3> t{other_pts[j].a[0] - pts[0].a[0], other_pts[j].a[1] - pts[0].a[1],
+                                        other_pts[j].a[2] - pts[0].a[2]};
     bool all = true;
     for (std::size_t i = 0; i < n && all; ++i) {
       if (!any_order) {
-        all = moved_to(pts[i], t, other.pts[i]);
+        all = moved_to(pts[i], t, other_pts[i]);
         continue;
       }
       bool found = false;
       for (std::size_t k = 0; k < n && !found; ++k)
-        found = moved_to(pts[i], t, other.pts[k]);
+        found = moved_to(pts[i], t, other_pts[k]);
       all = found;
     }
     if (all)
@@ -89,7 +100,7 @@ bool KeyPolynomial::translate_of(const KeyPolynomial& other) const {
 }
 
 ExactPoly KeyPolynomial::operator()() const {
-  const Poly<mpz_class> f = coefficients(pts);
+  const Poly<mpz_class> f = coefficients(points());
   // Divide out u^m: the same roots in (0, 1], and no root at 0, where an isolating interval
   // starting at a frame may begin (CGAL's algebraic reals need a polynomial non-zero at the ends).
   int m = 0;

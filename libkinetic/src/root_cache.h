@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <memory>
 #include <unordered_map>
+#include <vector>
 
 namespace medusa::kinetic::detail {
 
@@ -37,11 +38,26 @@ using RootCache = std::unordered_map<CacheKey, RealRoots, CacheKeyHash>;
 // of five points (in-circle of four in 2D), the orientation of four (three in 2D), or the radius
 // polynomial of a simplex, or the fold test of a hull ridge (Engine::fold_poly). It copies the points'
 // motion, so it stays valid after the triangulation has moved on within the slab.
+// The cells' motion in one slab (indexed by vertex id) and rho^2: what key polynomials are computed
+// from. Immutable once its slab has started, and shared by the roots isolated in it, so that a
+// root's exact polynomial can be computed on demand, even after the engine has moved on
+// (Engine::set_slab_motion writes the next slab's motion into a copy while such roots remain).
+struct SlabMotion {
+  std::vector<MovingPoint> points;
+  std::shared_ptr<const SquaredRadius> rho2;
+};
+
+// A certificate polynomial named by its kind and points: every root isolated in doubles holds one
+// (about five per cell at a slab start), so it names its points by id in the slab's motion rather
+// than copying them.
 struct KeyPolynomial {
   int kind = 0; // 0 in-sphere, 1 orientation, 2 radius, 3 fold test, 4 orientations (as CacheKey::v[0])
   int count = 0;
-  std::array<MovingPoint, 5> pts{};
-  std::shared_ptr<const SquaredRadius> rho2;
+  std::array<VertexId, 5> ids{};
+  std::shared_ptr<const SlabMotion> motion;
+
+  const MovingPoint& pt(std::size_t i) const { return motion->points[static_cast<std::size_t>(ids[i])]; }
+  std::array<MovingPoint, 5> points() const; // pt(0), ..., pt(count - 1), then zeros
 
   ExactPoly operator()() const;
 

@@ -481,7 +481,10 @@ TEST_CASE("a certificate on translated points is known to be the same polynomial
     detail::KeyPolynomial k;
     k.kind = kind;
     k.count = count;
-    k.pts = pts;
+    auto motion = std::make_shared<detail::SlabMotion>();
+    motion->points.assign(pts.begin(), pts.end());
+    k.motion = motion;
+    k.ids = {0, 1, 2, 3, 4};
     return k;
   };
   const detail::KeyPolynomial a = key(0, 5, p), b = key(0, 5, q);

@@ -15,6 +15,7 @@
 #include <array>
 #include <cstdint>
 #include <iostream>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -80,7 +81,10 @@ TEST_CASE("the zero tests at a slab start agree with the exact polynomials' cons
     // The same through the root cache's keys: kind 0 in-sphere / in-circle, 1 orientation, 4 the
     // orientations of a facet with each of its two apices.
     detail::KeyPolynomial key;
-    key.pts = p;
+    auto motion = std::make_shared<detail::SlabMotion>();
+    motion->points.assign(p.begin(), p.end());
+    key.motion = motion;
+    key.ids = {0, 1, 2, 3, 4};
     for (const std::size_t count : {std::size_t(5), std::size_t(4)}) {
       const bool spatial = count == 5;
       key.count = static_cast<int>(count);

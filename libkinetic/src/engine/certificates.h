@@ -477,9 +477,9 @@ template <class K> bool Engine<K>::install_from_exact_coefficients(int id, const
 template <class K> KeyPolynomial Engine<K>::key_polynomial(const CacheKey& key) const {
   KeyPolynomial k;
   k.kind = key.v[0];
-  k.rho2 = rho2_shared;
+  k.motion = motion;
   for (std::size_t i = 1; i < key.v.size() && key.v[i] != -2; ++i)
-    k.pts[static_cast<std::size_t>(k.count++)] = pt(key.v[i]);
+    k.ids[static_cast<std::size_t>(k.count++)] = key.v[i];
   return k;
 }
 

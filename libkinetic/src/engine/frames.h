@@ -14,11 +14,13 @@ namespace medusa::kinetic::detail {
 
 template <class K> void Engine<K>::set_slab_motion(std::size_t k) {
   slab = k;
+  if (motion.use_count() > 1) // roots of the last slab remain: they keep its motion
+    motion = std::make_shared<SlabMotion>(*motion);
   for (std::size_t i = 0; i < traj.cells.size(); ++i) {
     const Trajectory& c = traj.cells[i];
     if (!c.present(k))
       continue;
-    MovingPoint& m = motion[i];
+    MovingPoint& m = motion->points[i];
     const GridPoint& x = c.at(k);
     m.a = {x[0], x[1], x[2]};
     if (k + 1 < traj.frames() && c.present(k + 1)) {
@@ -140,7 +142,7 @@ template <class K> void Engine<K>::record_top_changes(Step& step, OldMembership&
   std::unordered_set<Simplex, SimplexHash> before;
   for (const Simplex& t : tri.tops())
     before.insert(t);
-  rebuild_static(old_k);
+  rebuild_static(&old_k);
   for (const Simplex& t : before)
     if (is_finite(t) && !tri.has_top(t))
       step.delaunay_removed.push_back(t);

@@ -269,7 +269,7 @@ bool Engine<K>::record_local_change(Step& step, OldMembership& old_k, VertexId v
     for (std::size_t i = 0; i < sorted.size(); ++i)
       std::tie(added[i], orientations[i]) = sorted[i];
     std::sort(removed.begin(), removed.end());
-    change_tops(removed, added, old_k, orientations.data());
+    change_tops(removed, added, &old_k, orientations.data());
     reinstall_hull_ridges_over(added, removed);
     ++(insert ? stats.local_insertions : stats.local_deletions);
     record_delaunay_change(step, removed, added);

@@ -17,10 +17,11 @@ namespace medusa::kinetic::detail {
 
 template <class K>
 void Engine<K>::change_tops(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                            OldMembership& old_k, const int* added_orientations) {
+                            OldMembership* old_k, const int* added_orientations) {
   apply_top_change(removed, added, added_orientations);
-  for (const TouchedFace& t : touched_scratch.faces)
-    old_k.emplace(t.face, t.old_in_k);
+  if (old_k != nullptr)
+    for (const TouchedFace& t : touched_scratch.faces)
+      old_k->emplace(t.face, t.old_in_k);
   finish_top_change();
 }
 
@@ -49,6 +50,7 @@ void Engine<K>::apply_top_change(const std::vector<Simplex>& removed, const std:
     tri.remove_top(t, dropped);
   for (int id : dropped)
     kill_cert(id);
+  release_if_large(dropped);
   for (std::size_t i = 0; i < added.size(); ++i) {
     const Simplex& t = added[i];
     int s = 0;
@@ -121,12 +123,9 @@ template <class K> void Engine<K>::finish_top_change() {
       faces.erase(t.face);
     t.state = nullptr;
   }
-  // The scratch is kept for the next flip, but not at the size of a whole static rebuild (the
-  // initial triangulation, insertions and deletions): that would hold megabytes for the rest of the run.
-  if (touched_scratch.faces.capacity() > 4096) {
-    std::vector<TouchedFace>().swap(touched_scratch.faces);
-    std::vector<Simplex>().swap(touched_scratch.facets);
-  }
+  release_if_large(touched_scratch.faces);
+  release_if_large(touched_scratch.facets);
+  release_if_large(created_scratch);
 }
 
 // Creates or drops the radius certificate of s so that exactly the frontier carries one.
@@ -234,6 +233,8 @@ template <class K> void Engine<K>::settle_membership(const OldMembership& old_k,
         after = settle(s, *f, state_of);
       record(s, before, after, step);
     }
+  for (auto& bucket : by_size)
+    release_if_large(bucket);
 }
 
 // settle_membership on the faces of the change being applied (apply_top_change), which are in

@@ -19,7 +19,9 @@ Engine<K>::Engine(const Trajectories& t, KineticOptions o) : traj(t), options(st
   Pi = Interval(CGAL::to_interval(CGAL::Gmpz(P.get_mpz_t())));
   Qi = Interval(CGAL::to_interval(CGAL::Gmpz(Q.get_mpz_t())));
   rho2_shared = std::make_shared<const SquaredRadius>(options.rho2);
-  motion.resize(traj.cells.size());
+  motion = std::make_shared<SlabMotion>();
+  motion->points.resize(traj.cells.size());
+  motion->rho2 = rho2_shared;
   alive.assign(traj.cells.size(), 0);
 }
 
@@ -40,13 +42,13 @@ template <class K> void Engine<K>::initialise(Observer& observer) {
   now = SlabTime();
   for (std::size_t i = 0; i < traj.cells.size(); ++i)
     alive[i] = traj.cells[i].present(0) && traj.cells[i].first_frame == 0;
-  OldMembership old_k;
-  rebuild_static(old_k);
+  rebuild_static(nullptr); // every simplex is settled below: the old memberships are not needed
   std::vector<Step> ignored;
   resolve_delaunay(ignored); // Del(t0+) (docs/MATH.md §5.5): fix what the frozen delta left
   pending_radius.clear();
   // Membership of every simplex, in decreasing dimension (docs/MATH.md §4.6).
   OldMembership all;
+  all.reserve(faces.size());
   faces.for_each([&](const Simplex& s, const Face&) { all.emplace(s, false); });
   Step step;
   settle_membership(all, step);

@@ -33,7 +33,7 @@ template <class K> std::vector<VertexId> Engine<K>::alive_ids() const {
 }
 
 // Rebuilds Del of the current vertex set at now+ with CGAL and replaces the differing top simplices.
-template <class K> void Engine<K>::rebuild_static(OldMembership& old_k) {
+template <class K> void Engine<K>::rebuild_static(OldMembership* old_k) {
   ++stats.static_rebuilds;
   std::vector<VertexId> ids = alive_ids();
   int dimension = 0;
@@ -56,13 +56,17 @@ template <class K> void Engine<K>::rebuild_static(OldMembership& old_k) {
   // draws from CGAL's default random generator (process-wide state). Sorted, the order of the
   // changes below, and of the certificates they build, does not depend on it.
   std::sort(tops.begin(), tops.end());
-  std::unordered_set<Simplex, SimplexHash> target(tops.begin(), tops.end());
   std::vector<Simplex> removed, added, kept;
-  for (const Simplex& t : tri.tops())
-    if (!target.count(t))
-      removed.push_back(t);
-  for (const Simplex& t : tops)
-    (tri.has_top(t) ? kept : added).push_back(t);
+  if (tri.tops().size() == 0) {
+    added = std::move(tops); // the first triangulation: no table of the target is needed
+  } else {
+    std::unordered_set<Simplex, SimplexHash> target(tops.begin(), tops.end());
+    for (const Simplex& t : tri.tops())
+      if (!target.count(t))
+        removed.push_back(t);
+    for (const Simplex& t : tops)
+      (tri.has_top(t) ? kept : added).push_back(t);
+  }
   change_tops(removed, added, old_k);
   reinstall_hull_ridges_over(added, removed);
   reorient_kept(kept);
