@@ -58,10 +58,13 @@ public:
   std::size_t size() const { return size_; }
   // Room for n entries: inserting up to n - size() new keys then moves no entry, so references to
   // entries stay valid until the next erase (Engine::apply_top_change holds one per touched face).
+  // A large reservation (the first triangulation) is made at a load of 3/5, so that the run's
+  // fluctuations around that size do not grow the table at once.
   void reserve(std::size_t n) {
-    while (4 * n > 3 * slots_.size())
-      grow();
+    if (full_at(n))
+      grow_to(std::max(slots_.size() + slots_.size() / 2, n + n * 2 / 3));
   }
+  std::size_t capacity() const { return slots_.size(); }
   // Empties the table. A small one keeps its slots: the engine empties its per-batch tables at
   // every event, and an allocation there costs more than the reset.
   void clear() {
@@ -106,13 +109,13 @@ public:
 
   // The slot of s, value-initialised if new; true when it was inserted.
   std::pair<iterator, bool> try_emplace(const Simplex& s) {
-    if (4 * (size_ + 1) > 3 * slots_.size())
-      grow();
+    if (full_at(size_ + 1))
+      grow_to(slots_.size() + slots_.size() / 2);
     std::size_t i = home(s);
     while (slots_[i].used()) {
       if (slots_[i].first == s)
         return {at_slot(i), false};
-      i = (i + 1) & mask();
+      i = next(i);
     }
     slots_[i].first = s;
     slots_[i].second = V{};
@@ -125,7 +128,7 @@ public:
     std::size_t i = static_cast<std::size_t>(it.p_ - slots_.data());
     std::size_t j = i;
     for (;;) {
-      j = (j + 1) & mask();
+      j = next(j);
       if (!slots_[j].used())
         break;
       std::size_t k = home(slots_[j].first);
@@ -150,19 +153,25 @@ public:
 
 private:
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
-  std::size_t mask() const { return slots_.size() - 1; }
-  // Multiply-shift on the hash mixed with a seed of the table's capacity: copying entries from one
+  // At most three quarters of the slots are used. Capacities are not powers of two: a table grows by
+  // half, so it stays between 1/2 and 3/4 full where doubling leaves it between 3/8 and 3/4 (the
+  // face table of a million cells holds 27 million simplices at 40 bytes a slot).
+  bool full_at(std::size_t n) const { return 4 * n > 3 * slots_.size(); }
+  std::size_t next(std::size_t i) const { return i + 1 == slots_.size() ? 0 : i + 1; }
+  // The mixed hash scaled to [0, capacity) (multiply-high), on the hash mixed with a seed of the
+  // table's capacity: copying entries from one
   // table into a smaller one visits them in the first table's slot order, and with a shared home
   // function they would arrive clustered in the second (linear probing then degrades to quadratic
   // time). Tables of equal capacity share the seed, which is harmless (the copy lands as laid out in
   // the source), and nothing depends on the process's history: the engine iterates these tables, so
   // a seed drawn from a process-wide counter made a run's certificates depend on what ran before.
   std::size_t home(const Simplex& s) const {
-    const std::uint64_t h = static_cast<std::uint64_t>(SimplexHash()(s)) ^ seed_;
-    return static_cast<std::size_t>((h * 0x9E3779B97F4A7C15ULL) >> shift_);
+    const std::uint64_t h = (static_cast<std::uint64_t>(SimplexHash()(s)) ^ seed_) * 0x9E3779B97F4A7C15ULL;
+    __extension__ using wide = unsigned __int128;
+    return static_cast<std::size_t>((static_cast<wide>(h) * slots_.size()) >> 64);
   }
-  static std::uint64_t seed_for(int shift) {
-    std::uint64_t x = static_cast<std::uint64_t>(shift + 1) * 0xD6E8FEB86659FD93ULL;
+  static std::uint64_t seed_for(std::size_t capacity) {
+    std::uint64_t x = static_cast<std::uint64_t>(capacity + 1) * 0xD6E8FEB86659FD93ULL;
     x ^= x >> 32;
     x *= 0xD6E8FEB86659FD93ULL;
     return x ^ (x >> 32);
@@ -172,7 +181,7 @@ private:
   std::size_t locate(const Simplex& s) const {
     if (slots_.empty())
       return npos;
-    for (std::size_t i = home(s);; i = (i + 1) & mask()) {
+    for (std::size_t i = home(s);; i = next(i)) {
       if (!slots_[i].used())
         return npos;
       if (slots_[i].first == s)
@@ -180,14 +189,11 @@ private:
     }
   }
 
-  void grow() {
+  void grow_to(std::size_t capacity) {
     std::vector<Slot> old;
     old.swap(slots_);
-    slots_.assign(old.empty() ? 64 : 2 * old.size(), Slot{});
-    shift_ = 64;
-    for (std::size_t n = slots_.size(); n > 1; n >>= 1)
-      --shift_;
-    seed_ = seed_for(shift_);
+    slots_.assign(std::max<std::size_t>(capacity, 64), Slot{});
+    seed_ = seed_for(slots_.size());
     size_ = 0;
     for (Slot& e : old)
       if (e.used())
@@ -196,8 +202,7 @@ private:
 
   std::vector<Slot> slots_;
   std::size_t size_ = 0;
-  int shift_ = 64; // 64 - log2(number of slots)
-  std::uint64_t seed_ = seed_for(64);
+  std::uint64_t seed_ = seed_for(0);
 };
 
 } // namespace medusa::kinetic::detail

@@ -148,3 +148,30 @@ TEST_CASE("a cleared flat simplex map, small or large, holds nothing and takes n
     require_equal(table, oracle);
   }
 }
+
+TEST_CASE("a growing flat simplex map is between half and three quarters full, and a large reservation three "
+          "fifths") {
+  // Capacities grow by half, not by doubling (flat_simplex_map.h): right after each growth
+  // the table is half full, and it grows again only when an insertion would pass three quarters.
+  FlatSimplexMap<int> table;
+  std::size_t growths = 0, capacity = 0;
+  for (int v = 0; v < 100000; ++v) {
+    table[Simplex{v, v + 1}] = v;
+    if (table.capacity() != capacity) {
+      if (capacity != 0) {
+        ++growths;
+        REQUIRE(table.capacity() == capacity + capacity / 2);
+        REQUIRE(2 * table.size() <= table.capacity() + 2);
+      }
+      capacity = table.capacity();
+    }
+    REQUIRE(4 * table.size() <= 3 * table.capacity());
+  }
+  REQUIRE(growths > 10);
+  REQUIRE(table.size() == 100000);
+  for (int v = 0; v < 100000; v += 997)
+    REQUIRE(table.at(Simplex{v, v + 1}) == v);
+  FlatSimplexMap<int> reserved;
+  reserved.reserve(600000);
+  REQUIRE(reserved.capacity() == 1000000);
+}
