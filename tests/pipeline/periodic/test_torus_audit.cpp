@@ -284,3 +284,44 @@ TEST_CASE("A complex that is not the one on the torus fails the audit with one l
     CHECK(what.find('\n') == std::string::npos);
   }
 }
+
+TEST_CASE("The torus audit checks the start and then every stride-th batch of events", "[periodic][audit]") {
+  // Two cells still on a band of period 10 (as above), with the edge across the seam in the complex,
+  // and E = 10 batches that change nothing. The start is due; then batch i makes the complex held
+  // until the next batch (or the end) due iff i is a multiple of the stride: 1 + floor(E / stride).
+  kinetic::Trajectories t;
+  t.dimension = 2;
+  t.scale = 1;
+  t.frame_times = {0, 100};
+  kinetic::Trajectory a, b;
+  a.cell_id = 7;
+  a.positions = {{1, 5, 0}, {1, 5, 0}};
+  b.cell_id = 9;
+  b.positions = {{9, 6, 0}, {9, 6, 0}};
+  t.cells = {a, b};
+  const auto band = domain({true, false, false}, {10, 0, 0});
+  const PeriodicCover cover = cover_trajectories(t, band, squared(144, 100));
+  const std::size_t batches = 10;
+  for (const std::size_t stride : {1, 3, 4, 11}) {
+    CAPTURE(stride);
+    kinetic::Observer sink;
+    TorusAudit audit(cover, band, squared(144, 100), 2, stride, sink);
+    audit.initial(kinetic::EventTime{}, {Simplex{0}, Simplex{1}, Simplex{0, 1}});
+    for (std::size_t i = 1; i <= batches; ++i) {
+      kinetic::EventTime at;
+      at.slab = 0;
+      at.u = static_cast<double>(i) / static_cast<double>(batches + 1);
+      at.time = 100.0 * at.u;
+      audit.batch(at, {});
+    }
+    kinetic::EventTime end;
+    end.slab = 0;
+    end.u = 1.0;
+    end.time = 100;
+    audit.finish(end);
+    const TorusAuditStatistics& s = audit.statistics();
+    CHECK(s.skipped == 0);
+    CHECK(s.checks == 1 + batches / stride);
+    CHECK(s.compared == s.checks);
+  }
+}
