@@ -112,7 +112,6 @@ template <class K> struct Engine {
   OldMembership batch_scratch;
   std::vector<std::pair<int, std::uint32_t>> radius_scratch; // resolve_radius's failed certificates
   TouchedFaces touched_scratch;
-  std::vector<Simplex> created_scratch;
   std::vector<VertexId> link_scratch;                                  // gabriel_now's link vertices
   std::array<std::vector<std::pair<Simplex, bool>>, 4> settle_scratch; // settle_membership's buckets by size
 

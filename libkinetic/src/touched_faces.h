@@ -17,10 +17,11 @@ struct TouchedFace {
   Simplex face;
   int delta = 0; // (added top simplices holding it) - (removed ones holding it)
   // Filled by the engine while it applies the change: the face's entry in its table (none for a
-  // vertex), whether the face was in K before, and whether it leaves Del.
+  // vertex), whether the face was in K before, and whether it leaves or enters Del.
   Face* state = nullptr;
   bool old_in_k = false;
   bool leaves = false;
+  bool created = false;
 };
 
 struct TouchedFaces {

@@ -66,12 +66,10 @@ void Engine<K>::apply_top_change(const std::vector<Simplex>& removed, const std:
   // while the new faces are added: the pointers held in `touched` stay valid until an erase.
   faces.reserve_more(touched.faces.size());
   auto state_of = [&](const Simplex& x) { return state_in_touched(x); };
-  std::vector<Simplex>& created = created_scratch;
-  created.clear();
   for (TouchedFace& t : touched.faces) {
     const Simplex& f = t.face;
     t.state = nullptr;
-    t.leaves = false;
+    t.leaves = t.created = false;
     if (f.size() == 1) {
       t.old_in_k = in_k(f);
       continue;
@@ -90,13 +88,17 @@ void Engine<K>::apply_top_change(const std::vector<Simplex>& removed, const std:
       kill_cert(state.cert);
       state.cert = -1;
       state.is_short = state.in_k = false;
-    } else if (fresh)
-      created.push_back(f);
+    } else {
+      t.created = fresh;
+    }
   }
-  for (const Simplex& f : created) {
+  for (TouchedFace& t : touched.faces) {
+    if (!t.created)
+      continue;
+    const Simplex& f = t.face;
     if (f.size() == 2 && slab + 1 < traj.frames())
       check_collision(f);
-    Face& state = *state_of(f);
+    Face& state = *t.state;
     // Created in canonical order, f comes after its facets. A long facet makes f long (R is monotone,
     // docs/MATH.md §4.1) with no radius polynomial: f's longness is implied, as for any face with a long
     // face (4.4, "skipped (implied)"), and f is not in the frontier.
@@ -125,7 +127,6 @@ template <class K> void Engine<K>::finish_top_change() {
   }
   release_if_large(touched_scratch.faces);
   release_if_large(touched_scratch.facets);
-  release_if_large(created_scratch);
 }
 
 // Creates or drops the radius certificate of s so that exactly the frontier carries one.
