@@ -9,6 +9,8 @@ namespace medusa {
 
 ComplexIndex::ComplexIndex(const Medusa& medusa, std::optional<int> type) : medusa_(medusa), type_(type) {
   std::vector<IntervalTree::Interval> after, before;
+  after.reserve(medusa.cells.size()); // at most: doubling would hold up to twice as much
+  before.reserve(medusa.cells.size());
   for (const Cell& c : medusa.cells) {
     if (type && !medusa.has_type(c, *type))
       continue;
