@@ -65,6 +65,22 @@ std::vector<TorusPoint> random_points(std::mt19937_64& rng, int n, int dim, std:
   return points(xs);
 }
 
+// Cells 7 at (1,5) and 9 at (9,6), still over one slab: on a band of period 10 along x they are
+// sqrt 5 apart across the seam.
+kinetic::Trajectories two_still_cells_on_a_band() {
+  kinetic::Trajectories t;
+  t.dimension = 2;
+  t.scale = 1;
+  t.frame_times = {0, 100};
+  kinetic::Trajectory a, b;
+  a.cell_id = 7;
+  a.positions = {{1, 5, 0}, {1, 5, 0}};
+  b.cell_id = 9;
+  b.positions = {{9, 6, 0}, {9, 6, 0}};
+  t.cells = {a, b};
+  return t;
+}
+
 } // namespace
 
 TEST_CASE("A ring that closes across the seam is three edges and one loop on the torus",
@@ -254,16 +270,7 @@ TEST_CASE("A complex that is not the one on the torus fails the audit with one l
           "[periodic][audit]") {
   // Cells at (1,5) and (9,6) on a band of period 10 along x: across the seam they are sqrt 5 apart,
   // so with rho = 1.2 the static complex holds their edge; a stream that never adds it must fail.
-  kinetic::Trajectories t;
-  t.dimension = 2;
-  t.scale = 1;
-  t.frame_times = {0, 100};
-  kinetic::Trajectory a, b;
-  a.cell_id = 7;
-  a.positions = {{1, 5, 0}, {1, 5, 0}};
-  b.cell_id = 9;
-  b.positions = {{9, 6, 0}, {9, 6, 0}};
-  t.cells = {a, b};
+  const kinetic::Trajectories t = two_still_cells_on_a_band();
   const auto band = domain({true, false, false}, {10, 0, 0});
   const PeriodicCover cover = cover_trajectories(t, band, squared(144, 100));
   kinetic::Observer sink;
@@ -289,16 +296,7 @@ TEST_CASE("The torus audit checks the start and then every stride-th batch of ev
   // Two cells still on a band of period 10 (as above), with the edge across the seam in the complex,
   // and E = 10 batches that change nothing. The start is due; then batch i makes the complex held
   // until the next batch (or the end) due iff i is a multiple of the stride: 1 + floor(E / stride).
-  kinetic::Trajectories t;
-  t.dimension = 2;
-  t.scale = 1;
-  t.frame_times = {0, 100};
-  kinetic::Trajectory a, b;
-  a.cell_id = 7;
-  a.positions = {{1, 5, 0}, {1, 5, 0}};
-  b.cell_id = 9;
-  b.positions = {{9, 6, 0}, {9, 6, 0}};
-  t.cells = {a, b};
+  const kinetic::Trajectories t = two_still_cells_on_a_band();
   const auto band = domain({true, false, false}, {10, 0, 0});
   const PeriodicCover cover = cover_trajectories(t, band, squared(144, 100));
   const std::size_t batches = 10;
