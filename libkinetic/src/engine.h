@@ -56,10 +56,9 @@ template <class K> struct Engine {
   KineticOptions options;
   KineticStatistics stats;
 
-  // rho^2 = P/Q exactly and as intervals; shared with the root cache's key polynomials.
+  // rho^2 = P/Q exactly and as intervals (the root cache's key polynomials take it from SlabMotion).
   mpz_class P, Q;
   Interval Pi, Qi;
-  std::shared_ptr<const SquaredRadius> rho2_shared;
 
   // The dimension of the run (docs/MATH.md §5.7): 3, or 2 for a planar run whose z is constant. Top
   // simplices have dim + 1 vertices, facets dim; the dimension-specific rules are K's

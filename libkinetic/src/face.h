@@ -23,10 +23,13 @@ struct Face {
   int k_cofaces = 0;
 };
 
-template <class F> void for_each_face(const Simplex& t, F&& f) {
-  // Every non-empty subset of the vertices of t that avoids the infinite vertex.
+// Calls f on every non-empty subset of the vertices of t that avoids the infinite vertex, or, with
+// `size` given, on those of that many vertices only.
+template <class F> void for_each_face(const Simplex& t, F&& f, std::size_t size = 0) {
   const std::size_t n = t.size();
   for (unsigned mask = 1; mask < (1u << n); ++mask) {
+    if (size != 0 && static_cast<std::size_t>(__builtin_popcount(mask)) != size)
+      continue;
     std::array<VertexId, 4> v{};
     std::size_t k = 0;
     bool finite = true;

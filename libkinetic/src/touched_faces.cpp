@@ -144,17 +144,12 @@ void collect_sorted(const std::vector<Simplex>& removed, const std::vector<Simpl
     for (const auto* list : {&removed, &added}) {
       const int sign = list == &removed ? -1 : 1;
       for (const Simplex& t : *list)
-        for (unsigned m = 1; m < (1u << t.size()); ++m) {
-          // t is sorted, so its infinite vertex, if any, is t[0] (bit 0).
-          if (static_cast<std::size_t>(bits(m)) != k || ((m & 1u) && t[0] == infinite_vertex))
-            continue;
-          std::array<VertexId, 4> v{};
-          std::size_t n = 0;
-          for (std::size_t i = 0; i < t.size(); ++i)
-            if (m & (1u << i))
-              v[n++] = t[i];
-          all.push_back({Simplex::from_range(v.begin(), v.begin() + n), sign});
-        }
+        for_each_face(
+            t,
+            [&](const Simplex& f) {
+              all.push_back({f, sign});
+            },
+            k);
     }
     std::sort(all.begin(), all.end(),
               [](const Occurrence& a, const Occurrence& b) { return a.face < b.face; });

@@ -18,10 +18,9 @@ Engine<K>::Engine(const Trajectories& t, KineticOptions o) : traj(t), options(st
   Q = options.rho2.den;
   Pi = Interval(CGAL::to_interval(CGAL::Gmpz(P.get_mpz_t())));
   Qi = Interval(CGAL::to_interval(CGAL::Gmpz(Q.get_mpz_t())));
-  rho2_shared = std::make_shared<const SquaredRadius>(options.rho2);
   motion = std::make_shared<SlabMotion>();
   motion->points.resize(traj.cells.size());
-  motion->rho2 = rho2_shared;
+  motion->rho2 = std::make_shared<const SquaredRadius>(options.rho2);
   alive.assign(traj.cells.size(), 0);
 }
 
