@@ -67,6 +67,20 @@ std::vector<CellId> ComplexIndex::at_frame(std::size_t k) const {
   return k + 1 == medusa_.input.frames() ? before(b) : after(b);
 }
 
+std::vector<CellId> cells_at_frame(const Medusa& m, std::size_t k, std::optional<int> type) {
+  const std::uint64_t b = frame_batch(m, k);
+  const bool last = k + 1 == m.input.frames();
+  std::vector<CellId> out;
+  for (const Cell& c : m.cells) {
+    // docs/MATH.md §6.6: K(b+) holds birth <= b < death, K(b-) birth < b <= death (in batches).
+    const bool in = last ? c.birth.batch < b && b <= c.death.batch : c.birth.batch <= b && b < c.death.batch;
+    if (in && (!type || m.has_type(c, *type)))
+      out.push_back(c.id);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 std::vector<CellId> ComplexIndex::at_time(double t) const {
   if (medusa_.batches.empty() || t < medusa_.batches.front().time)
     throw InputError("medusa: time " + std::to_string(t) + " is before the start of the run");

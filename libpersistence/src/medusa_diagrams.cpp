@@ -3,41 +3,12 @@
 #include "medusa/persistence/degree_check.h"
 #include "medusa/persistence/euler.h"
 
-#include <algorithm>
-#include <atomic>
+#include "job_pool.h"
+
 #include <chrono>
-#include <exception>
-#include <thread>
 
 namespace medusa::persistence {
 namespace {
-
-// Runs task(i) for i in [0, count) on `threads` threads, each taking the next index; the tasks write
-// only to their own slots. Every exception is kept by index and the lowest one rethrown, so the
-// error does not depend on the scheduling.
-template <class Task> void for_each_index(std::size_t count, unsigned threads, const Task& task) {
-  std::vector<std::exception_ptr> errors(count);
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t i = next++; i < count; i = next++) {
-      try {
-        task(i);
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
-    }
-  };
-  const auto workers = static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(threads, count)));
-  std::vector<std::thread> pool;
-  for (unsigned w = 1; w < workers; ++w)
-    pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool)
-    t.join();
-  for (const std::exception_ptr& e : errors)
-    if (e)
-      std::rethrow_exception(e);
-}
 
 std::vector<std::pair<int, Direction>> medusa_jobs(const std::vector<int>& types) {
   std::vector<std::pair<int, Direction>> jobs;
@@ -85,7 +56,8 @@ std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& ce
   std::vector<DiagramPhaseSeconds> seconds(jobs.size());
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
-  for_each_index(jobs.size(), threads, [&](std::size_t i) {
+  const auto whole = [&](std::size_t i) { return jobs[i].first == all_types; };
+  detail::run_jobs(jobs.size(), threads, whole, [&](std::size_t i) {
     auto start = Clock::now();
     const Filtration filtration = make_job_filtration(cells, vertex_type, jobs[i]);
     seconds[i].filtrations = since(start);

@@ -22,13 +22,12 @@ ClassFates class_fates(const medusa::Medusa& medusa, const persistence::Diagram&
     throw InternalError("class_fates: the medusa has no frames or no batch records");
   const std::optional<int> type =
       forward.cell_type == persistence::all_types ? std::nullopt : std::optional<int>(forward.cell_type);
-  const medusa::ComplexIndex index(medusa, type);
   const std::size_t last = medusa.input.frames() - 1;
   // The first frame's batch: the initial complex, and at t_0 itself the removal of cells present at
   // that frame only (docs/MATH.md §2.4, §6.2), whose batch has the same time t_0.
-  const std::uint64_t first_batch = index.frame_batch(0);
-  const medusa::Signature first = medusa::signature_of(medusa, index.at_frame(0));
-  const medusa::Signature end = medusa::signature_of(medusa, index.at_frame(last));
+  const std::uint64_t first_batch = medusa::frame_batch(medusa, 0);
+  const medusa::Signature first = medusa::signature_of(medusa, medusa::cells_at_frame(medusa, 0, type));
+  const medusa::Signature end = medusa::signature_of(medusa, medusa::cells_at_frame(medusa, last, type));
 
   ClassFates fates;
   fates.clusters.at_first = first.betti[0];

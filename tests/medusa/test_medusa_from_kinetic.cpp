@@ -51,6 +51,10 @@ void check_store_against_engine(const KineticRun& run, const std::string& store_
     CAPTURE(stored.size(), engine.size(), symmetric_difference(stored, engine));
     CHECK(stored == engine);
     CHECK(!engine.empty());
+    // The same without an index, for the whole medusa and each cell type.
+    CHECK(tuples(m, cells_at_frame(m, k)) == engine);
+    for (int type : {1, 2})
+      CHECK(cells_at_frame(m, k, type) == medusa::ComplexIndex(m, type).at_frame(k));
     // Independent of both: the vertices of K are the cells alive then (docs/MATH.md §5.6): K(t_k+) holds the
     // cells present at t_k that do not end there, K(t_end-) those present through the last slab.
     SimplexSet alive;

@@ -43,4 +43,9 @@ private:
 // The batch after which frame k is reached (ComplexIndex::frame_batch without an index).
 std::uint64_t frame_batch(const Medusa& medusa, std::size_t k);
 
+// ComplexIndex::at_frame without an index: one pass over the cells. For a query or two it is cheaper
+// than the index, and it holds nothing but the answer (the index of a million-cell run is gigabytes).
+std::vector<CellId> cells_at_frame(const Medusa& medusa, std::size_t k,
+                                   std::optional<int> type = std::nullopt);
+
 } // namespace medusa

@@ -22,7 +22,9 @@ struct DiagramPhaseSeconds {
 // threads (1 = sequential in the calling thread): the filtrations are independent, and so are their
 // reductions (each thread owns its PHAT boundary matrix), so the result is the same for every thread
 // count. Each task builds one filtration, reduces it and frees it, so at most `threads` filtrations
-// and boundary matrices are in memory at once (this bounds the peak memory of `medusa run`). When several
+// and boundary matrices are in memory at once, and at most one of the whole medusa: the two
+// whole-medusa tasks never overlap, the per-type ones fill the other threads meanwhile (this bounds
+// the peak memory of `medusa run`). When several
 // filtrations fail, the error of the first one in the order above is thrown. `phases`, when given,
 // receives the time spent per phase. `forward_classes`, when given, receives for each diagram the
 // representatives of its classes (representatives.h) selected by `options`, computed for the forward
