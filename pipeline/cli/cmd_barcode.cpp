@@ -19,6 +19,7 @@ struct BarcodeArguments {
   std::string format = "pers";
   std::string output;
   unsigned max_bars = default_max_bars;
+  unsigned max_points = default_max_points;
   DiagramSelection selection;
 };
 
@@ -41,7 +42,7 @@ void barcode_command(const BarcodeArguments& args) {
     else if (args.format == "svg")
       write_barcode_svg(out, diagrams, t0, t_end, args.max_bars);
     else
-      write_diagram_svg(out, diagrams, t0, t_end);
+      write_diagram_svg(out, diagrams, t0, t_end, args.max_points);
   };
   if (args.output.empty() || args.output == "-")
     write(std::cout);
@@ -67,6 +68,11 @@ void add_barcode_command(CLI::App& app) {
   barcode
       ->add_option("--max-bars", args->max_bars,
                    "svg: draw only the N longest finite bars of each panel (0: all)")
+      ->capture_default_str();
+  barcode
+      ->add_option("--max-points", args->max_points,
+                   "diagram-svg: a panel of more than N finite classes is drawn as a density, squares of 3 "
+                   "pixels shaded by their number of classes (0: every class a point)")
       ->capture_default_str();
   add_selection_options(*barcode, args->selection);
   barcode->callback([args] { barcode_command(*args); });

@@ -212,8 +212,8 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   meter.stage("filtrations and reductions: " + std::to_string(count) + " (whole medusa and " +
               std::to_string(types.size()) + " cell types, forward and reverse, " +
               std::to_string(medusa.cells.size()) + " cells, PHAT)" + on);
-  // Each task builds one filtration, reduces it and frees it (at most `threads` in memory: the peak
-  // stays below the kinetic stage's). The two stages overlap on the threads, so their wall and CPU
+  // Each task builds one filtration, reduces it and frees it (at most `threads` in memory, at most one
+  // of them of the whole medusa). The two stages overlap on the threads, so their wall and CPU
   // seconds are the measured totals split in proportion to the tasks' time in each phase.
   clock = StageClock{};
   persistence::DiagramPhaseSeconds phases;
@@ -262,8 +262,9 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   write_temporary(outputs.temporary(2), svg, [&](std::ostream& out) {
     write_barcode_svg(out, diagrams, t0, t_end, default_max_bars, run_id);
   });
-  write_temporary(outputs.temporary(3), diagram_svg,
-                  [&](std::ostream& out) { write_diagram_svg(out, diagrams, t0, t_end, run_id); });
+  write_temporary(outputs.temporary(3), diagram_svg, [&](std::ostream& out) {
+    write_diagram_svg(out, diagrams, t0, t_end, default_max_points, run_id);
+  });
   check_interrupted();
   timings.add("exports", clock);
   result.facts = {medusa.cells.size(), diagrams.size()};

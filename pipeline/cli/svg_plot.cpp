@@ -180,12 +180,14 @@ std::string counts_text(const Panel& p, std::size_t max_bars, bool bars) {
 }
 
 void write_header(std::ostream& out, double height, const std::vector<int>& degrees, std::string what,
-                  std::size_t beyond, const std::string& run_id) {
-  // The classes of other degrees get a line of their own: the caption alone fills most of the
-  // page's width.
-  const std::string beyond_text = beyond == 0 ? std::string()
-                                              : "Other degrees (H3, 4D bubbles): no finite class; " +
-                                                    std::to_string(beyond) + " essential in all (not drawn).";
+                  std::size_t beyond, const std::string& run_id, const std::string& note = "") {
+  // The note and the classes of other degrees get a line of their own: the caption alone fills most
+  // of the page's width.
+  std::string beyond_text = beyond == 0 ? std::string()
+                                        : "Other degrees (H3, 4D bubbles): no finite class; " +
+                                              std::to_string(beyond) + " essential in all (not drawn).";
+  if (!note.empty())
+    beyond_text = note + (beyond_text.empty() ? "" : " ") + beyond_text;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(page_width) << "\" height=\""
       << number(height) << "\" font-family=\"sans-serif\" font-size=\"11\""
@@ -236,6 +238,49 @@ void write_title(std::ostream& out, const Panel& p, double x, double y, const st
       << "</text>\n"
       << "<text x=\"" << number(x) << "\" y=\"" << number(y + 41) << "\">" << counts.substr(cut + 1)
       << "</text>\n";
+}
+
+// A panel of more than max_points finite classes is drawn as a density: a scatter of millions of
+// points (a run of a million cells) would be a file of gigabytes that no viewer opens, and the points
+// hide one another anyway.
+bool binned(const Panel& p, std::size_t max_points) { return max_points > 0 && p.drawn.size() > max_points; }
+
+// The bin of time t among `bins` equal bins of [a, b]; b belongs to the last. Written as the checks
+// (tests/pipeline/cli/check_analysis_outputs.py) recompute it from the panel's data-t0 and data-t1.
+std::size_t bin_of(double t, double a, double b, std::size_t bins) {
+  const double u = (std::clamp(t, a, b) - a) / (b - a);
+  return std::min(bins - 1, static_cast<std::size_t>(u * static_cast<double>(bins)));
+}
+
+// The square [x0, x0 + side] x [top, top + side] cut into bins of about density_bin_px pixels; each bin
+// holding classes one square, its opacity growing with the logarithm of its count. Each square
+// carries its count and its bin (data-bx along birth, data-by along death, of data-bins per axis, so
+// that a class at (b, d) lies in bin floor((b - t0) / (t1 - t0) * bins), clamped to the last).
+void write_density(std::ostream& out, const Panel& p, double x0, double top, double side, double a,
+                   double width) {
+  constexpr double density_bin_px = 3;
+  const auto bins = static_cast<std::size_t>(std::max(1.0, std::round(side / density_bin_px)));
+  std::vector<std::size_t> count(bins * bins, 0);
+  for (std::size_t i : p.drawn) {
+    const persistence::PersistencePair& q = p.diagram->pairs[i];
+    ++count[bin_of(q.death, a, a + width, bins) * bins + bin_of(q.birth, a, a + width, bins)];
+  }
+  const double most = static_cast<double>(*std::max_element(count.begin(), count.end()));
+  const double cell = side / static_cast<double>(bins);
+  out << "<g class=\"density\" data-bins=\"" << bins << "\">\n";
+  for (std::size_t by = 0; by < bins; ++by)
+    for (std::size_t bx = 0; bx < bins; ++bx) {
+      const std::size_t n = count[by * bins + bx];
+      if (n == 0)
+        continue;
+      const double shade = most > 1 ? 0.2 + 0.8 * std::log(static_cast<double>(n)) / std::log(most) : 0.6;
+      out << "<rect class=\"bin\" data-count=\"" << n << "\" data-bx=\"" << bx << "\" data-by=\"" << by
+          << "\" x=\"" << number(x0 + cell * static_cast<double>(bx)) << "\" y=\""
+          << number(top + side - cell * static_cast<double>(by + 1)) << "\" width=\"" << number(cell)
+          << "\" height=\"" << number(cell) << "\" fill=\"" << colours[p.degree] << "\" fill-opacity=\""
+          << number(shade) << "\"/>\n";
+    }
+  out << "</g>\n";
 }
 
 } // namespace
@@ -305,7 +350,7 @@ void write_barcode_svg(std::ostream& out, const std::vector<persistence::Diagram
 }
 
 void write_diagram_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams, double t0,
-                       double t_end, const std::string& run_id) {
+                       double t_end, std::size_t max_points, const std::string& run_id) {
   const std::vector<int> degrees = degrees_of(diagrams);
   const auto columns = static_cast<double>(degrees.size());
   const double panel_width = (page_width - 2 * margin - (columns - 1) * column_gap) / columns;
@@ -313,15 +358,28 @@ void write_diagram_svg(std::ostream& out, const std::vector<persistence::Diagram
   const double span = t_end > t0 ? t_end - t0 : 1.0;
   const double row_height = title_height + side + axis_height + row_gap;
   const double height = margin + legend_height + row_height * static_cast<double>(diagrams.size());
+  std::vector<std::vector<Panel>> rows;
+  bool any_binned = false;
+  for (const persistence::Diagram& d : diagrams) {
+    rows.emplace_back();
+    for (const int k : degrees) {
+      rows.back().push_back(make_panel(d, k, 0));
+      any_binned = any_binned || binned(rows.back().back(), max_points);
+    }
+  }
   write_header(out, height + margin, degrees,
                "Persistence diagrams: each finite class a point (birth, death) in MCS; the farther above the "
                "diagonal, the longer it lived. Classes that never die are counted in the titles.",
-               essential_beyond(diagrams, degrees), run_id);
+               essential_beyond(diagrams, degrees), run_id,
+               any_binned ? "Panels of more than " + std::to_string(max_points) +
+                                " classes are shaded squares: the darker, the more classes."
+                          : std::string());
   double y = margin + legend_height;
-  for (const persistence::Diagram& d : diagrams) {
+  for (const std::vector<Panel>& row : rows) {
+    const persistence::Diagram& d = *row.front().diagram;
     for (std::size_t c = 0; c < degrees.size(); ++c) {
       const int k = degrees[c];
-      const Panel p = make_panel(d, k, 0);
+      const Panel& p = row[c];
       const double x0 = margin + static_cast<double>(c) * (panel_width + column_gap) + inset, x1 = x0 + side;
       const double top = y + title_height, bottom = top + side;
       const auto [a, b] = panel_range(p, t0, t_end);
@@ -333,17 +391,23 @@ void write_diagram_svg(std::ostream& out, const std::vector<persistence::Diagram
         return bottom - side * (std::clamp(t, a, a + width) - a) / width;
       };
       open_panel(out, p, a, a + width);
-      write_title(out, p, x0 - inset, y, counts_text(p, 0, false));
+      std::string counts = counts_text(p, 0, false);
+      if (binned(p, max_points))
+        counts.insert(counts.find('\n'), ", shaded by count");
+      write_title(out, p, x0 - inset, y, counts);
       out << "<rect x=\"" << number(x0) << "\" y=\"" << number(top) << "\" width=\"" << number(side)
           << "\" height=\"" << number(side) << "\" fill=\"none\" stroke=\"#ddd\"/>\n"
           << "<line class=\"diagonal\" x1=\"" << number(x0) << "\" y1=\"" << number(bottom) << "\" x2=\""
           << number(x1) << "\" y2=\"" << number(top) << "\" stroke=\"#888\" stroke-dasharray=\"4 3\"/>\n";
-      for (std::size_t i : p.drawn) {
-        const persistence::PersistencePair& q = d.pairs[i];
-        out << "<circle class=\"point\" data-birth=\"" << value(q.birth) << "\" data-death=\""
-            << value(q.death) << "\" cx=\"" << number(x_of(q.birth)) << "\" cy=\"" << number(y_of(q.death))
-            << "\" r=\"2.2\" fill=\"" << colours[k] << "\" fill-opacity=\"0.55\"/>\n";
-      }
+      if (binned(p, max_points))
+        write_density(out, p, x0, top, side, a, width);
+      else
+        for (std::size_t i : p.drawn) {
+          const persistence::PersistencePair& q = d.pairs[i];
+          out << "<circle class=\"point\" data-birth=\"" << value(q.birth) << "\" data-death=\""
+              << value(q.death) << "\" cx=\"" << number(x_of(q.birth)) << "\" cy=\"" << number(y_of(q.death))
+              << "\" r=\"2.2\" fill=\"" << colours[k] << "\" fill-opacity=\"0.55\"/>\n";
+        }
       write_time_axis(out, x0, x1, bottom, a, a + width, x_of);
       // The death axis, on the left.
       out << "<line x1=\"" << number(x0) << "\" y1=\"" << number(top) << "\" x2=\"" << number(x0)

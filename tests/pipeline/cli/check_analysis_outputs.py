@@ -296,14 +296,16 @@ def panels_of(root):
 def check_barcode(medusa, work, store, max_bars=5):
     """`barcode --format svg --max-bars N` draws one panel per diagram and degree H0-H2 with its own time
     axis: the N longest finite bars of the CSV export, sorted by birth, and counts the essential classes
-    in the title; `--format diagram-svg` draws every finite pair as a point, with the diagonal."""
+    in the title; `--format diagram-svg` draws every finite pair as a point, with the diagonal, or with
+    --max-points N, a panel of more than N classes as bins counting each class once."""
     pairs = {}
     for row in csv.DictReader(run([medusa, "barcode", store, "--format", "csv"], work).stdout.splitlines()):
         pairs.setdefault((row["type"], row["direction"], int(row["dimension"])), []).append(
             (float(row["birth"]), float(row["death"])))
     ns = "{http://www.w3.org/2000/svg}"
-    for style in ("svg", "diagram-svg"):
-        svg = run([medusa, "barcode", store, "--format", style, "--max-bars", str(max_bars)], work).stdout
+    for style, cap in (("svg", []), ("diagram-svg", ["--max-points", "0"]), ("density", ["--max-points", "5"])):
+        shape = "diagram-svg" if style == "density" else style
+        svg = run([medusa, "barcode", store, "--format", shape, "--max-bars", str(max_bars)] + cap, work).stdout
         root = ElementTree.fromstring(svg)
         legend = [t.text for t in root.iter(ns + "text")]
         for word in ("H0 clusters", "H1 loops", "H2 cavities"):
@@ -311,7 +313,7 @@ def check_barcode(medusa, work, store, max_bars=5):
         panels = panels_of(root)
         diagrams = {(t, d) for t, d, k in pairs}
         assert {(t, d) for t, d, k in panels} == diagrams, (sorted(panels), sorted(diagrams))
-        truncated = 0
+        truncated = binned = 0
         for (t, d, k), (attributes, marks, g) in panels.items():
             all_pairs = pairs.get((t, d, k), [])
             finite = [(b, e) for b, e in all_pairs if not math.isinf(e)]
@@ -329,12 +331,33 @@ def check_barcode(medusa, work, store, max_bars=5):
                 starts = [min(b, e) for b, e in marks]
                 assert starts == sorted(starts), f"{t} {d} H{k}: bars not sorted by birth"
                 truncated += len(finite) > max_bars
+            elif style == "density" and len(finite) > 5:
+                # Each class counted once, in the bin of its (birth, death): bin floor((x - t0) / (t1 - t0)
+                # * bins), the right end in the last (svg_plot.h).
+                assert not marks, (t, d, k, "points drawn in a density panel")
+                density = g.find(ns + "g")
+                assert density is not None and density.get("class") == "density", (t, d, k)
+                bins = int(density.get("data-bins"))
+                drawn = {(int(e.get("data-bx")), int(e.get("data-by"))): int(e.get("data-count")) for e in density}
+                assert len(drawn) == len(list(density)) and all(n > 0 for n in drawn.values()), (t, d, k)
+                def bin_of(x):
+                    return min(bins - 1, int((min(max(x, lo), hi) - lo) / (hi - lo) * bins))
+                expected = {}
+                for b, e in finite:
+                    key = (bin_of(b), bin_of(e))
+                    expected[key] = expected.get(key, 0) + 1
+                assert drawn == expected, (t, d, k)
+                assert "shaded by count" in title, (t, d, k, title)
+                binned += 1
+                marks = [None] * len(drawn)
             else:
                 assert sorted(marks) == sorted(finite), (t, d, k)
                 assert any(e.get("class") == "diagonal" for e in g), f"{t} {d} H{k}: no diagonal"
             print(style, t, d, f"H{k}:", len(marks), "drawn of", len(finite), "finite,", essential, "essential")
         if style == "svg":
             assert truncated > 0, "no panel was long enough to be cut: the check did not test the cap"
+        if style == "density":
+            assert binned > 0, "no panel was drawn as a density: the check did not test --max-points"
 
 
 def main():
