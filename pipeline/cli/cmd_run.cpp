@@ -40,6 +40,8 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
+#include <string>
 #include <thread>
 #include <unistd.h>
 #include <utility>
@@ -492,16 +494,22 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   persistence::RepresentativeOptions representatives;
   representatives.shorten = args.shorten_representatives;
   const RunResult result = compute_diagrams(outputs, run_id, threads, representatives, meter, timings);
+  // The summary is composed before the outputs are published (it names them by their final names)
+  // and counted in the exports, so that --timings records the whole run's peak memory.
+  StageClock clock_summary;
+  std::ostringstream summary;
+  const std::vector<std::string> warnings =
+      write_run_summary(summary, result.medusa, stats, result.diagrams, radius, radius_note, result.longest,
+                        outputs.final_name(0));
+  write_wrapping_loops(summary, result.medusa, outputs.store_temporary());
+  timings.add("exports", clock_summary);
   if (!args.timings.empty())
     write_timings(outputs, run_id, resolved, data, radius, timings, stats, peak_rss_at_frame, result.facts,
                   threads);
   // The last moment an interrupt undoes the run: after it, the outputs replace the previous ones.
   check_interrupted();
   outputs.publish();
-  const std::vector<std::string> warnings =
-      write_run_summary(std::cout, result.medusa, stats, result.diagrams, radius, radius_note, result.longest,
-                        outputs.final_name(0));
-  write_wrapping_loops(std::cout, result.medusa, outputs.final_name(0));
+  std::cout << summary.str();
   if (!args.quiet)
     for (const std::string& w : warnings)
       std::cerr << "medusa: warning: " << w << "\n";
