@@ -7,6 +7,10 @@
 
 #include <chrono>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 namespace medusa::persistence {
 namespace {
 
@@ -66,6 +70,10 @@ std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& ce
         forward_classes != nullptr && jobs[i].second == Direction::forward ? &(*forward_classes)[i] : nullptr;
     diagrams[i] = audited_diagram(cells, filtration, classes, options);
     seconds[i].reduction = since(start);
+#ifdef __GLIBC__
+    if (whole(i))
+      malloc_trim(0);
+#endif
   });
   if (phases != nullptr)
     for (const DiagramPhaseSeconds& s : seconds) {
