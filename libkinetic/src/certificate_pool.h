@@ -10,6 +10,7 @@
 
 #include "certificate.h"
 #include "event_queue.h"
+#include "large_page_allocator.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -70,7 +71,7 @@ private:
   static std::size_t index(int id) { return static_cast<std::size_t>(id); }
   SlabTime first_time(const SlabTime* after, SlabTime otherwise) const;
 
-  std::vector<Certificate> certs_;
+  LargeVector<Certificate> certs_;
   std::vector<int> free_;
   EventQueue events_;
 };

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "algebraic_time.h"
+#include "large_page_allocator.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -100,7 +101,7 @@ private:
     std::uint32_t slot = 0;
   };
   struct LaterFirst {
-    const std::vector<QueueEntry>* pool;
+    const LargeVector<QueueEntry>* pool;
     bool operator()(const Key& a, const Key& b) const {
       if (b.hi < a.lo)
         return true;
@@ -110,8 +111,8 @@ private:
     }
   };
 
-  std::vector<Key> heap_;
-  std::vector<QueueEntry> pool_;
+  LargeVector<Key> heap_;
+  LargeVector<QueueEntry> pool_;
   std::vector<std::uint32_t> free_;
 };
 

@@ -5,6 +5,7 @@
 // slot, so keys must be non-empty.
 #pragma once
 
+#include "large_page_allocator.h"
 #include "medusa/core/error.h"
 #include "medusa/kinetic/simplex.h"
 
@@ -23,6 +24,7 @@ public:
     V second{};
     bool used() const { return first.size() != 0; }
   };
+  using Slots = LargeVector<Slot>;
 
   template <class SlotT> class Iterator {
   public:
@@ -71,7 +73,7 @@ public:
     if (slots_.size() <= 256)
       std::fill(slots_.begin(), slots_.end(), Slot{});
     else
-      slots_ = std::vector<Slot>();
+      slots_ = Slots();
     size_ = 0;
   }
 
@@ -190,7 +192,7 @@ private:
   }
 
   void grow_to(std::size_t capacity) {
-    std::vector<Slot> old;
+    Slots old;
     old.swap(slots_);
     slots_.assign(std::max<std::size_t>(capacity, 64), Slot{});
     seed_ = seed_for(slots_.size());
@@ -200,7 +202,7 @@ private:
         try_emplace(e.first).first->second = std::move(e.second);
   }
 
-  std::vector<Slot> slots_;
+  Slots slots_;
   std::size_t size_ = 0;
   std::uint64_t seed_ = seed_for(0);
 };
