@@ -61,7 +61,7 @@ std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& ce
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   const auto whole = [&](std::size_t i) { return jobs[i].first == all_types; };
-  detail::run_jobs(jobs.size(), threads, whole, [&](std::size_t i) {
+  const auto job = [&](std::size_t i) {
     auto start = Clock::now();
     const Filtration filtration = make_job_filtration(cells, vertex_type, jobs[i]);
     seconds[i].filtrations = since(start);
@@ -70,7 +70,12 @@ std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& ce
         forward_classes != nullptr && jobs[i].second == Direction::forward ? &(*forward_classes)[i] : nullptr;
     diagrams[i] = audited_diagram(cells, filtration, classes, options);
     seconds[i].reduction = since(start);
+  };
+  detail::run_jobs(jobs.size(), threads, whole, [&](std::size_t i) {
+    job(i);
 #ifdef __GLIBC__
+    // The filtration and its matrix are freed: their pages go back to the system before the next
+    // whole-medusa job, which may run on another thread's heap.
     if (whole(i))
       malloc_trim(0);
 #endif
