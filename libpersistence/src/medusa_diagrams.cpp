@@ -1,15 +1,12 @@
 #include "medusa/persistence/medusa_diagrams.h"
 
+#include "medusa/core/free_memory.h"
 #include "medusa/persistence/degree_check.h"
 #include "medusa/persistence/euler.h"
 
 #include "job_pool.h"
 
 #include <chrono>
-
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
 
 namespace medusa::persistence {
 namespace {
@@ -73,12 +70,9 @@ std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& ce
   };
   detail::run_jobs(jobs.size(), threads, whole, [&](std::size_t i) {
     job(i);
-#ifdef __GLIBC__
-    // The filtration and its matrix are freed: their pages go back to the system before the next
-    // whole-medusa job, which may run on another thread's heap.
+    // The filtration and its matrix are freed: their pages go back before the next whole-medusa job.
     if (whole(i))
-      malloc_trim(0);
-#endif
+      release_free_memory();
   });
   if (phases != nullptr)
     for (const DiagramPhaseSeconds& s : seconds) {

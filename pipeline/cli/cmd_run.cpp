@@ -15,6 +15,7 @@
 #include "wrapping_summary.h"
 
 #include "medusa/core/error.h"
+#include "medusa/core/free_memory.h"
 #include "medusa/core/version.h"
 #include "medusa/io/run_reader.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
@@ -488,7 +489,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   // The engine is gone: the stages below (which hold the whole medusa) reuse its memory instead of
   // adding to it, and the freed pages go back to the system so that worker threads' heaps can have
   // them too. Peak memory is then the larger of the two parts, not their sum.
-  release_free_memory();
+  medusa::release_free_memory();
 
   check_interrupted();
   persistence::RepresentativeOptions representatives;

@@ -8,7 +8,6 @@
 #include <sstream>
 #include <sys/resource.h>
 #ifdef __GLIBC__
-#include <malloc.h>
 #endif
 
 namespace medusa::cli {
@@ -83,12 +82,6 @@ double StageTimings::total_cpu() const {
   for (const Entry& e : entries_)
     sum += e.cpu;
   return sum;
-}
-
-void release_free_memory() {
-#ifdef __GLIBC__
-  malloc_trim(0);
-#endif
 }
 
 namespace {

@@ -53,9 +53,6 @@ private:
   std::vector<Entry> entries_;
 };
 
-// Returns the heap's free pages to the system (glibc's malloc_trim; nothing elsewhere).
-void release_free_memory();
-
 // The peak resident set size of this process so far in bytes (VmHWM of /proc/self/status).
 std::int64_t peak_rss_bytes();
 
