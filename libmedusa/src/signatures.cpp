@@ -3,40 +3,51 @@
 #include "medusa/core/error.h"
 #include "medusa/medusa/homology.h"
 
+#include <array>
+#include <limits>
 #include <string>
 #include <unordered_map>
 
 namespace medusa {
 
-Signature signature_of(const Medusa& medusa, const std::vector<CellId>& cells) {
+Signature signature_of(const Medusa& medusa, const std::vector<CellId>& cells,
+                       const std::function<void()>& poll) {
   Signature s;
-  std::unordered_map<CellId, std::size_t> local;
-  local.reserve(cells.size());
-  for (std::size_t i = 0; i < cells.size(); ++i)
-    local.emplace(cells[i], i);
+  // Local index of each member by cell id: an array over the medusa, not a hash table, since a
+  // million-cell run's slices have millions of members and every facet is looked up.
+  constexpr std::uint32_t absent = std::numeric_limits<std::uint32_t>::max();
+  if (cells.size() >= absent)
+    throw InternalError("medusa signature: " + std::to_string(cells.size()) + " cells, more than 2^32 - 1");
+  std::vector<std::uint32_t> local(medusa.cells.size(), absent);
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (cells[i] >= local.size())
+      throw InternalError("medusa signature: no cell " + std::to_string(cells[i]) + " in the medusa");
+    local[cells[i]] = static_cast<std::uint32_t>(i);
+  }
   ChainComplex complex;
-  complex.dims.reserve(cells.size());
-  complex.facets.reserve(cells.size());
+  complex.reserve(cells.size(), 3 * cells.size());
+  std::array<std::uint32_t, 4> facets{};
   for (CellId id : cells) {
     const Cell& c = medusa.cell(id);
     if (c.dim() < 0 || c.dim() > 3)
       throw InternalError("medusa signature: cell " + std::to_string(id) + " of dimension " +
                           std::to_string(c.dim()) + " in K_t");
     ++s.f[static_cast<std::size_t>(c.dim())];
-    std::vector<std::size_t> facets;
-    for (CellId f : c.facets) {
-      auto it = local.find(f);
-      if (it == local.end())
+    if (c.facets.size() > facets.size())
+      throw InternalError("medusa signature: cell " + std::to_string(id) + " has " +
+                          std::to_string(c.facets.size()) + " facets");
+    for (std::size_t k = 0; k < c.facets.size(); ++k) {
+      const CellId f = c.facets[k];
+      facets[k] = f < local.size() ? local[f] : absent;
+      if (facets[k] == absent)
         throw InternalError("medusa signature: facet cell " + std::to_string(f) + " of cell " +
                             std::to_string(id) + " is not in K_t");
-      facets.push_back(it->second);
     }
-    complex.dims.push_back(c.dim());
-    complex.facets.push_back(std::move(facets));
+    complex.add(c.dim(), facets.begin(), facets.begin() + static_cast<std::ptrdiff_t>(c.facets.size()));
   }
   s.euler = static_cast<long long>(s.f[0]) - static_cast<long long>(s.f[1]) + static_cast<long long>(s.f[2]) -
             static_cast<long long>(s.f[3]);
-  const std::vector<std::size_t> betti = betti_numbers(complex);
+  const std::vector<std::size_t> betti = betti_numbers(complex, poll);
   for (std::size_t k = 0; k < betti.size(); ++k)
     s.betti[k] = betti[k];
   return s;

@@ -19,7 +19,7 @@ std::vector<TypeSlices> slices_at_frames(const Medusa& medusa) {
     TypeSlices slices{type ? std::to_string(*type) : "all", {}};
     for (std::size_t k = 0; k < medusa.input.frames(); ++k) {
       check_interrupted();
-      slices.at_frame.push_back(signature_of(medusa, index.at_frame(k)));
+      slices.at_frame.push_back(signature_of(medusa, index.at_frame(k), check_interrupted));
     }
     all.push_back(std::move(slices));
   }

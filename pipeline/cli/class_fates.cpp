@@ -1,6 +1,7 @@
 #include "class_fates.h"
 
 #include "diagram_selection.h"
+#include "interrupt.h"
 
 #include "medusa/core/error.h"
 #include "medusa/medusa/complex_index.h"
@@ -26,8 +27,10 @@ ClassFates class_fates(const medusa::Medusa& medusa, const persistence::Diagram&
   // The first frame's batch: the initial complex, and at t_0 itself the removal of cells present at
   // that frame only (docs/MATH.md §2.4, §6.2), whose batch has the same time t_0.
   const std::uint64_t first_batch = medusa::frame_batch(medusa, 0);
-  const medusa::Signature first = medusa::signature_of(medusa, medusa::cells_at_frame(medusa, 0, type));
-  const medusa::Signature end = medusa::signature_of(medusa, medusa::cells_at_frame(medusa, last, type));
+  const medusa::Signature first =
+      medusa::signature_of(medusa, medusa::cells_at_frame(medusa, 0, type), check_interrupted);
+  const medusa::Signature end =
+      medusa::signature_of(medusa, medusa::cells_at_frame(medusa, last, type), check_interrupted);
 
   ClassFates fates;
   fates.clusters.at_first = first.betti[0];

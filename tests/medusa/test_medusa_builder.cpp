@@ -202,8 +202,7 @@ TEST_CASE("an insertion and a deletion give the join cells of docs/MATH.md §6.3
   // type of three points (x-y-p, q, s).
   ChainComplex all;
   for (const Cell& c : m.cells) {
-    all.dims.push_back(c.dim());
-    all.facets.emplace_back(c.facets.begin(), c.facets.end());
+    all.add(c.dim(), c.facets);
   }
   CHECK(betti_numbers(all) == std::vector<std::size_t>{3, 0, 0});
 }

@@ -117,8 +117,7 @@ void check_boundary_of_boundary(const medusa::Medusa& m) {
 std::vector<std::size_t> betti(const medusa::Medusa& m) {
   medusa::ChainComplex cc;
   for (const medusa::Cell& c : m.cells) {
-    cc.dims.push_back(c.dim());
-    cc.facets.emplace_back(c.facets.begin(), c.facets.end());
+    cc.add(c.dim(), c.facets);
   }
   return medusa::betti_numbers(cc);
 }

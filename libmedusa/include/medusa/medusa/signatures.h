@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -20,7 +21,9 @@ struct Signature {
 
 // The signature of a set of cells that is a complex (every facet of a member is a member), as
 // returned by ComplexIndex. Throws InternalError if a facet is missing or a cell has dimension > 3.
-Signature signature_of(const Medusa& medusa, const std::vector<CellId>& cells);
+// `poll` is called every few thousand cells (betti_numbers), so a caller can stop by throwing.
+Signature signature_of(const Medusa& medusa, const std::vector<CellId>& cells,
+                       const std::function<void()>& poll = {});
 
 // One sample of the piecewise constant signature: K(batch+) after a batch, or K(t_end-) at the end.
 struct SignatureSample {
