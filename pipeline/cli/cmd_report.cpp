@@ -29,6 +29,7 @@ struct ReportArguments {
   std::vector<std::string> sweeps;      // more CROCKER CSVs of `medusa sweep`
   std::vector<std::string> sweep_radii; // A:B:STEP
   bool no_sweep = false, quiet = false;
+  std::size_t max_sweep_events = default_max_sweep_events;
   std::string output = "report.html";
   std::size_t max_bars = 1000;
   unsigned threads = 0;
@@ -89,6 +90,7 @@ void report_command(const ReportArguments& args) {
   scale.stores = args.stores;
   scale.given = args.sweeps;
   scale.no_sweep = args.no_sweep;
+  scale.max_sweep_events = args.max_sweep_events;
   for (const std::string& spec : args.sweep_radii)
     expand_range(spec, &scale.radii);
   scale.radii = sorted_radii(scale.radii);
@@ -130,6 +132,12 @@ void add_report_command(CLI::App& app) {
       ->check(CLI::Validator([](std::string& value) { return expand_range(value, nullptr); }, "A:B:STEP"));
   report->add_flag("--no-sweep", args->no_sweep,
                    "compute no radius sweep: show only the sweeps of `medusa sweep` found or given");
+  report
+      ->add_option("--max-sweep-events", args->max_sweep_events,
+                   "compute the default radius sweep only for runs of at most N event times (the sweep "
+                   "reruns the kinetic stage at nine radii); larger runs get a note on the page instead "
+                   "(0: every run)")
+      ->capture_default_str();
   report->add_flag("-q,--quiet", args->quiet, "no progress on stderr");
   report
       ->add_option("--max-bars", args->max_bars,

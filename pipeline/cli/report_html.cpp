@@ -71,7 +71,11 @@ void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
          "enters.</p>\n"
       << "<div id=\"headlines\" class=\"cards\"></div>\n<div id=\"radius-answer\"></div>\n"
       << "<div id=\"glance-charts\" class=\"charts\"></div>\n";
-  if (crocker.empty())
+  const bool explained = scale.contains("notes") && !scale["notes"].empty();
+  if (crocker.empty() && explained)
+    out << "<p class=\"note\">At which radius? No radius sweep is shown (the note above says why): these "
+           "counts are at one radius.</p>\n";
+  else if (crocker.empty())
     out << "<p class=\"note\">At which radius? No radius sweep was computed (<code>--no-sweep</code>, or on "
            "a periodic run no swept radius with 4 x radius below the shortest period, docs/MATH.md §8.3): "
            "these counts are at one radius. <code>medusa report</code> without <code>--no-sweep</code> (with "

@@ -134,6 +134,7 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
   ReportRun run;
   run.name = name;
   run.dimension = input.dimension;
+  run.event_times = medusa.batches.size();
   run.input = input;
   run.run_info = medusa.run;
   json& j = run.data;

@@ -21,6 +21,9 @@ struct ReportRun {
   // ("all", "1", ...), for the distances between runs.
   std::vector<std::pair<std::string, persistence::PointDiagram>> h0_points;
   int dimension = 3;
+  // The event times of its kinetic stage (the store's batch records): what a radius sweep costs, about
+  // that many per radius.
+  std::size_t event_times = 0;
   // The store's trajectories and run record: the radius sweep of the report reruns the kinetic stage
   // on them.
   kinetic::Trajectories input;

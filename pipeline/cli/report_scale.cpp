@@ -81,6 +81,20 @@ std::string too_large_note(const std::string& name, const io::PeriodicDomain& do
          period.str() + " along " + char('x' + shortest) + " (docs/MATH.md §8.3)";
 }
 
+// The note on a run whose default sweep is not computed: its kinetic stage times the radii is hours
+// at a million cells, and the page is wanted in minutes.
+std::string too_long_note(const std::string& name, const std::string& store, std::size_t event_times,
+                          std::size_t limit, std::size_t radii) {
+  const std::string prefix = (fs::path(store).parent_path() / stem_of(store, ".h5")).string();
+  return "no radius sweep is computed for " + name + ": its kinetic stage has " +
+         std::to_string(event_times) +
+         " event times (batches in `medusa info`), more than --max-sweep-events " + std::to_string(limit) +
+         ", and the default sweep reruns it at " + std::to_string(radii) +
+         " radii; compute it once with `medusa sweep <CC3D run> --radii A:B:STEP -o " + prefix +
+         "` (the report then reads " + prefix + ".crocker.csv), or here with --sweep-radii A:B:STEP or " +
+         "--max-sweep-events 0";
+}
+
 // One sweep: per type, per radius, the Betti numbers at each frame.
 struct Sweep {
   std::string name;   // the run's name or the file's stem
@@ -333,6 +347,13 @@ ScaleSection report_scale(std::vector<ReportRun>& runs, const ScaleOptions& opti
       s = sweep_of(read_crocker_csv(own.string()));
       s.origin = "read from " + own.string() + " (written by medusa sweep)";
     } else if (options.no_sweep) {
+      continue;
+    } else if (options.radii.empty() && options.max_sweep_events != 0 &&
+               runs[i].event_times > options.max_sweep_events) {
+      notes.push_back(too_long_note(runs[i].name, store, runs[i].event_times, options.max_sweep_events,
+                                    computed_radii.size()));
+      if (!options.quiet)
+        std::cerr << "medusa: warning: " << notes.back() << "\n";
       continue;
     } else {
       // A periodic run is swept on the torus, at the radii whose complex there is defined (docs/MATH.md

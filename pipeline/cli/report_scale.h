@@ -15,13 +15,20 @@
 
 namespace medusa::cli {
 
+// Above this many event times a run's default radius sweep (nine reruns of its kinetic stage) is not
+// computed at report time: about 9 million events, several minutes on one core.
+constexpr std::size_t default_max_sweep_events = 1'000'000;
+
 struct ScaleOptions {
   std::vector<std::string> stores; // the stores, in the order of the runs
   std::vector<std::string> given;  // more CROCKER CSVs of `medusa sweep`
   bool no_sweep = false;           // compute no sweep at report time
   std::vector<std::string> radii;  // radii to sweep at (empty: default_sweep_radii)
   unsigned threads = 0;            // 0: one per hardware thread
-  bool quiet = false;              // no progress on stderr
+  // The default sweep is computed only for runs of at most this many event times (0: any run); the
+  // radii given with --sweep-radii are always computed.
+  std::size_t max_sweep_events = default_max_sweep_events;
+  bool quiet = false; // no progress on stderr
 };
 
 // The default radii: r/2 to 3r/2 in steps of r/8 (nine radii), r the given radius, each rounded to

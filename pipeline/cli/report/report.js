@@ -320,7 +320,9 @@
   function radiusAnswer() {
     const root = document.getElementById("radius-answer");
     const own = data.sweeps.filter((w) => w.run >= 0);
-    const notes = () => { for (const n of data.scale.notes || []) html("p", { class: "note sweep-note" }, root, n); };
+    // The notes are also warnings on stderr, in lower case there; here each is a sentence.
+    const sentence = (n) => n.charAt(0).toUpperCase() + n.slice(1) + (n.endsWith(".") ? "" : ".");
+    const notes = () => { for (const n of data.scale.notes || []) html("p", { class: "note sweep-note" }, root, sentence(n)); };
     if (!own.length) return notes();
     html("h3", {}, root, own.length > 1 ? "At which radius do the runs differ?" : "At which radius does it show?");
     const computed = own.filter((w) => w.origin.startsWith("computed"));

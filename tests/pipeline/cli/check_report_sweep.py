@@ -2,7 +2,10 @@
 """The radius sweep `medusa report` computes from a store equals `medusa sweep` on the CC3D run at the
 same radii (every Betti number at every frame, radius and type); its default radii follow the
 documented rule (r/2 to 3r/2 in steps of r/8, rounded half up to 0.01, r the store's radius, derived
-here in exact decimals); --no-sweep computes none; a sweep file beside the store is read instead.
+here in exact decimals); --no-sweep computes none; a run of more event times than --max-sweep-events gets
+no default sweep but a note on the page and on stderr saying why and how to get one, while radii given
+with --sweep-radii are computed whatever its size, and --max-sweep-events 0 lifts the limit; a sweep
+file beside the store is read instead.
 
 Usage: check_report_sweep.py <medusa> <CC3D run folder> <workdir>"""
 import os
@@ -70,7 +73,40 @@ data = page_data("none.html")
 if data["sweeps"] or 'id="crocker"' in open("none.html").read():
     failures.append("--no-sweep: a sweep is shown")
 
-# 4. A sweep file beside the store is read, not recomputed.
+# 4. A run larger than --max-sweep-events: no default sweep, one note on the page and on stderr that
+# give the run's event times (its batch records, /events/batch_index) and the ways to a sweep.
+import h5py  # noqa: E402
+with h5py.File("run.h5", "r") as f:
+    event_times = len(f["events/batch_index"])
+if event_times < 2:
+    failures.append(f"run.h5 has {event_times} event times: the limit cannot be tested")
+limit = event_times - 1
+result = call("report", "run.h5", "-o", "large.html", "--max-sweep-events", str(limit))
+data = page_data("large.html")
+notes = [n for n in data["scale"]["notes"] if "no radius sweep is computed" in n]
+if data["sweeps"]:
+    failures.append("--max-sweep-events below the run's event times: a sweep was computed")
+if len(notes) != 1:
+    failures.append(f"--max-sweep-events: expected one note on the page, got {data['scale']['notes']}")
+else:
+    for word in [f"{event_times} event times", f"--max-sweep-events {limit}", "medusa sweep", "--sweep-radii",
+                 "run.crocker.csv", "--max-sweep-events 0"]:
+        if word not in notes[0]:
+            failures.append(f"--max-sweep-events: the note does not say '{word}': {notes[0]}")
+    if notes[0] not in result.stderr:
+        failures.append(f"--max-sweep-events: the note is not on stderr: {result.stderr}")
+    print(f"large run: {notes[0]}")
+for extra, what in [(["--max-sweep-events", str(event_times)], "a limit equal to the run's event times"),
+                    (["--max-sweep-events", "0"], "--max-sweep-events 0"),
+                    (["--max-sweep-events", "1", "--sweep-radii", "2:3:1"], "radii given")]:
+    call("report", "run.h5", "-o", "limit.html", "-q", *extra)
+    data = page_data("limit.html")
+    if not data["sweeps"] or not data["sweeps"][0]["origin"].startswith("computed at report time"):
+        failures.append(f"{what}: no sweep computed")
+    if any("no radius sweep is computed" in n for n in data["scale"]["notes"]):
+        failures.append(f"{what}: the page says no sweep is computed")
+
+# 5. A sweep file beside the store is read, not recomputed.
 call("sweep", run, "--radii", "2:3:1", "-o", "run", "--quiet")
 result = call("report", "run.h5", "-o", "filed.html")
 data = page_data("filed.html")
