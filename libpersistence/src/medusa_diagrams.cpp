@@ -28,14 +28,15 @@ Filtration make_job_filtration(const std::vector<medusa::Cell>& cells, const std
 }
 
 Diagram audited_diagram(const std::vector<medusa::Cell>& cells, const Filtration& f,
-                        ClassRepresentatives* classes, const RepresentativeOptions& options) {
+                        ClassRepresentatives* classes, const RepresentativeOptions& options,
+                        const std::function<void()>& poll) {
   Diagram d;
   if (classes != nullptr) {
-    DiagramWithClasses both = compute_diagram_with_classes(cells, f, options);
+    DiagramWithClasses both = compute_diagram_with_classes(cells, f, options, poll);
     d = std::move(both.diagram);
     *classes = std::move(both.classes);
   } else {
-    d = compute_diagram(cells, f);
+    d = compute_diagram(cells, f, poll);
   }
   check_euler(d, f);
   check_homology_degrees(d);
@@ -44,12 +45,11 @@ Diagram audited_diagram(const std::vector<medusa::Cell>& cells, const Filtration
 
 } // namespace
 
-std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& cells,
-                                             const std::vector<int>& vertex_type,
-                                             const std::vector<int>& types, unsigned threads,
-                                             DiagramPhaseSeconds* phases,
-                                             std::vector<ClassRepresentatives>* forward_classes,
-                                             const RepresentativeOptions& options) {
+std::vector<Diagram>
+compute_medusa_diagrams(const std::vector<medusa::Cell>& cells, const std::vector<int>& vertex_type,
+                        const std::vector<int>& types, unsigned threads, DiagramPhaseSeconds* phases,
+                        std::vector<ClassRepresentatives>* forward_classes,
+                        const RepresentativeOptions& options, const std::function<void()>& poll) {
   const auto jobs = medusa_jobs(types);
   std::vector<Diagram> diagrams(jobs.size());
   if (forward_classes != nullptr)
@@ -65,7 +65,7 @@ std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& ce
     start = Clock::now();
     ClassRepresentatives* classes =
         forward_classes != nullptr && jobs[i].second == Direction::forward ? &(*forward_classes)[i] : nullptr;
-    diagrams[i] = audited_diagram(cells, filtration, classes, options);
+    diagrams[i] = audited_diagram(cells, filtration, classes, options, poll);
     seconds[i].reduction = since(start);
   };
   detail::run_jobs(jobs.size(), threads, whole, [&](std::size_t i) {

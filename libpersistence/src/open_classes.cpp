@@ -11,7 +11,8 @@ namespace medusa::persistence {
 
 std::array<std::size_t, 3> end_classes_beyond_first(const std::vector<medusa::Cell>& cells,
                                                     const std::vector<char>& member,
-                                                    std::uint64_t first_batch, std::uint64_t end_batch) {
+                                                    std::uint64_t first_batch, std::uint64_t end_batch,
+                                                    const std::function<void()>& poll) {
   if (!member.empty() && member.size() != cells.size())
     throw InternalError("open classes: membership of " + std::to_string(member.size()) + " cells for " +
                         std::to_string(cells.size()));
@@ -83,7 +84,7 @@ std::array<std::size_t, 3> end_classes_beyond_first(const std::vector<medusa::Ce
   // An essential class of degree k born at an index inside L_end is a class of L_end whose image in
   // H_k(M ∪ w*L_first) = H_k(M, L_first) is not zero; their number is the rank of the map.
   std::vector<char> paired(f.size(), 0);
-  for (const IndexPair& p : reduce(f)) {
+  for (const IndexPair& p : reduce(f, poll)) {
     paired[static_cast<std::size_t>(p.first)] = 1;
     paired[static_cast<std::size_t>(p.second)] = 1;
   }
@@ -96,7 +97,7 @@ std::array<std::size_t, 3> end_classes_beyond_first(const std::vector<medusa::Ce
 
 std::array<HoleFates, 3> hole_fates(const std::vector<medusa::Cell>& cells, const std::vector<char>& member,
                                     const Diagram& forward, const Diagram& reverse, std::uint64_t first_batch,
-                                    std::uint64_t end_batch) {
+                                    std::uint64_t end_batch, const std::function<void()>& poll) {
   if (forward.direction != Direction::forward || reverse.direction != Direction::reverse ||
       forward.cell_type != reverse.cell_type)
     throw InternalError("hole fates: needs the forward and reverse diagrams of one sub-medusa");
@@ -117,7 +118,8 @@ std::array<HoleFates, 3> hole_fates(const std::vector<medusa::Cell>& cells, cons
   for (const PersistencePair& p : reverse.pairs)
     if (p.essential && p.dim >= 1 && p.dim <= 2 && p.birth_time.batch >= end_batch)
       ++carried[static_cast<std::size_t>(p.dim)];
-  const std::array<std::size_t, 3> beyond = end_classes_beyond_first(cells, member, first_batch, end_batch);
+  const std::array<std::size_t, 3> beyond =
+      end_classes_beyond_first(cells, member, first_batch, end_batch, poll);
   for (std::size_t k = 1; k <= 2; ++k) {
     HoleFates& h = fates[k];
     // dim(A ∩ B) = dim B - rank(H_k(L_end) -> H_k(M, L_first)); B / (A ∩ B) embeds in H_k(M) / A.

@@ -238,15 +238,11 @@ std::vector<medusa::CellId> cell_ids(const std::vector<medusa::Cell>& cells, con
 
 DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>& cells,
                                                 const Filtration& filtration,
-                                                const RepresentativeOptions& options) {
+                                                const RepresentativeOptions& options,
+                                                const std::function<void()>& poll) {
   Matrix matrix = make_boundary_matrix(filtration);
-  phat::persistence_pairs phat_pairs;
-  phat::compute_persistence_pairs<phat::twist_reduction>(phat_pairs, matrix);
-  phat_pairs.sort();
-  std::vector<IndexPair> pairs;
-  pairs.reserve(static_cast<std::size_t>(phat_pairs.get_num_pairs()));
-  for (phat::index i = 0; i < phat_pairs.get_num_pairs(); ++i)
-    pairs.emplace_back(phat_pairs.get_pair(i).first, phat_pairs.get_pair(i).second);
+  PolledTwistReduction{poll}(matrix);
+  const std::vector<IndexPair> pairs = reduced_pairs(matrix);
 
   DiagramWithClasses out;
   out.diagram = make_diagram(cells, filtration, pairs);

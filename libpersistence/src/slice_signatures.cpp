@@ -182,7 +182,7 @@ std::vector<Signature> slice_signatures(const std::vector<Cell>& cells, const st
   }
   call(poll);
 
-  const std::vector<IndexPair> pairs = reduce(coned.filtration);
+  const std::vector<IndexPair> pairs = reduce(coned.filtration, poll);
   call(poll);
   if (coned.filtration.size() != 2 * pairs.size() + 1)
     throw InternalError("slice signatures: the cone has " +

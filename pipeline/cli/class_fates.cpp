@@ -73,8 +73,8 @@ ClassFates class_fates(const medusa::Medusa& medusa, const persistence::Diagram&
     for (std::size_t i = 0; i < medusa.cells.size(); ++i)
       member[i] = medusa.has_type(medusa.cells[i], *type) ? 1 : 0;
   }
-  fates.holes =
-      persistence::hole_fates(medusa.cells, member, forward, reverse, first_batch, medusa.end.batch);
+  fates.holes = persistence::hole_fates(medusa.cells, member, forward, reverse, first_batch, medusa.end.batch,
+                                        check_interrupted);
   for (std::size_t k = 1; k <= 2; ++k)
     fates.open_at_end[k] = end.betti[k];
   return fates;

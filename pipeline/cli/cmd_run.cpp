@@ -223,7 +223,7 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   // The forward diagrams are the summary's: their classes get representatives (docs/MATH.md §7.11).
   std::vector<persistence::ClassRepresentatives> classes;
   result.diagrams = persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, threads, &phases,
-                                                         &classes, representatives);
+                                                         &classes, representatives, check_interrupted);
   std::vector<persistence::Diagram>& diagrams = result.diagrams;
   const double both = phases.filtrations + phases.reduction;
   const double share = both > 0 ? phases.filtrations / both : 0.5;

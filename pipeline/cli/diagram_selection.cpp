@@ -1,4 +1,5 @@
 #include "diagram_selection.h"
+#include "interrupt.h"
 
 #include "medusa/core/error.h"
 #include "medusa/persistence/medusa_diagrams.h"
@@ -75,7 +76,8 @@ std::vector<persistence::Diagram> selected_diagrams(const medusa::Medusa& medusa
     types = *wanted == persistence::all_types ? std::vector<int>{} : std::vector<int>{*wanted};
   }
   std::vector<persistence::Diagram> all = persistence::compute_medusa_diagrams(
-      medusa.cells, vertex_type, types, worker_threads(selection.threads));
+      medusa.cells, vertex_type, types, worker_threads(selection.threads), nullptr, nullptr, {},
+      check_interrupted);
   std::vector<persistence::Diagram> chosen;
   for (persistence::Diagram& d : all) {
     if (wanted && d.cell_type != *wanted)

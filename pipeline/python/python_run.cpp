@@ -70,7 +70,7 @@ std::string run_pipeline(const RunRequest& request, const std::string& command_l
   representatives.shorten = request.shorten_representatives;
   std::vector<persistence::ClassRepresentatives> classes;
   const std::vector<persistence::Diagram> diagrams = persistence::compute_medusa_diagrams(
-      medusa.cells, vertex_type, types, threads, nullptr, &classes, representatives);
+      medusa.cells, vertex_type, types, threads, nullptr, &classes, representatives, cli::check_interrupted);
   cli::check_interrupted();
   std::vector<const persistence::ClassRepresentatives*> stored;
   for (std::size_t i = 0; i < diagrams.size(); ++i)

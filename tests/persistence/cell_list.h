@@ -5,6 +5,7 @@
 #include "medusa/medusa/cell.h"
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 #include <vector>
 
@@ -53,6 +54,20 @@ inline std::vector<Cell> make_cells(const std::vector<CellSpec>& specs) {
       if (!found)
         throw std::logic_error("test cell list: a facet is missing");
     }
+  }
+  return cells;
+}
+
+// Cells with ids equal to their positions, as parts of the library require (make_cells numbers them
+// apart).
+inline std::vector<Cell> positional(std::vector<Cell> cells) {
+  std::map<medusa::CellId, medusa::CellId> to;
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    to[cells[i].id] = i;
+  for (Cell& c : cells) {
+    c.id = to.at(c.id);
+    for (medusa::CellId& f : c.facets)
+      f = to.at(f);
   }
   return cells;
 }

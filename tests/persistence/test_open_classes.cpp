@@ -51,19 +51,6 @@ void add_hollow_tetrahedron(std::vector<CellSpec>& s, const std::vector<medusa::
   }
 }
 
-// Cells with ids equal to their positions, as the library requires (cell_list.h numbers them apart).
-std::vector<medusa::Cell> positional(std::vector<medusa::Cell> cells) {
-  std::map<medusa::CellId, medusa::CellId> to;
-  for (std::size_t i = 0; i < cells.size(); ++i)
-    to[cells[i].id] = i;
-  for (medusa::Cell& c : cells) {
-    c.id = to.at(c.id);
-    for (medusa::CellId& f : c.facets)
-      f = to.at(f);
-  }
-  return cells;
-}
-
 // The fates of the whole list, or of the cells all of whose vertices have `type`, where the type of
 // vertex v is v / 100.
 std::array<HoleFates, 3> fates_of(const std::vector<CellSpec>& specs, int type = all_types) {

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace medusa::persistence {
@@ -53,6 +54,13 @@ Diagram make_diagram(const std::vector<medusa::Cell>& cells, const Filtration& f
 template <class Representation = phat::bit_tree_pivot_column, class Algorithm = phat::twist_reduction>
 Diagram compute_diagram(const std::vector<medusa::Cell>& cells, const Filtration& filtration) {
   return make_diagram(cells, filtration, reduce<Representation, Algorithm>(filtration));
+}
+
+// The same diagram by PolledTwistReduction: `poll` is called every few thousand columns, so a caller can
+// stop a long reduction by throwing.
+inline Diagram compute_diagram(const std::vector<medusa::Cell>& cells, const Filtration& filtration,
+                               const std::function<void()>& poll) {
+  return make_diagram(cells, filtration, reduce(filtration, poll));
 }
 
 // The vertices of the cells that formed and killed the class, from the cell vector the diagram was

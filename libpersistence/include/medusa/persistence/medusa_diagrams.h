@@ -6,6 +6,7 @@
 #include "medusa/persistence/diagram.h"
 #include "medusa/persistence/representatives.h"
 
+#include <functional>
 #include <vector>
 
 namespace medusa::persistence {
@@ -34,6 +35,7 @@ std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& ce
                                              const std::vector<int>& types, unsigned threads = 1,
                                              DiagramPhaseSeconds* phases = nullptr,
                                              std::vector<ClassRepresentatives>* forward_classes = nullptr,
-                                             const RepresentativeOptions& options = {});
+                                             const RepresentativeOptions& options = {},
+                                             const std::function<void()>& poll = {});
 
 } // namespace medusa::persistence

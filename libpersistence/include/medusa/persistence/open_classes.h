@@ -9,6 +9,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace medusa::persistence {
@@ -19,10 +20,12 @@ namespace medusa::persistence {
 // (a prefix of the reverse filtration). With A and B the images of H_k(L_first) and H_k(L_end) in
 // H_k(M), it is dim B - dim(A ∩ B). Cell ids must be their positions in `cells`. One PHAT reduction of
 // M with the cone on L_first (docs/MATH.md §7.12); throws InternalError for cells that are not closed
-// under facets.
+// under facets. `poll` is called every few thousand columns of the reduction, so a caller can stop it
+// by throwing.
 std::array<std::size_t, 3> end_classes_beyond_first(const std::vector<medusa::Cell>& cells,
                                                     const std::vector<char>& member,
-                                                    std::uint64_t first_batch, std::uint64_t end_batch);
+                                                    std::uint64_t first_batch, std::uint64_t end_batch,
+                                                    const std::function<void()>& poll = {});
 
 // Loops (k = 1) or cavities (k = 2) of one (sub-)medusa, each of its three fates split by whether the
 // class was present at the first frame or formed later (docs/MATH.md §7.12). Filled: the finite
@@ -49,6 +52,6 @@ struct HoleFates {
 // frame, `end_batch` the final one. Throws InternalError when the counts contradict each other.
 std::array<HoleFates, 3> hole_fates(const std::vector<medusa::Cell>& cells, const std::vector<char>& member,
                                     const Diagram& forward, const Diagram& reverse, std::uint64_t first_batch,
-                                    std::uint64_t end_batch);
+                                    std::uint64_t end_batch, const std::function<void()>& poll = {});
 
 } // namespace medusa::persistence

@@ -8,6 +8,7 @@
 #include "medusa/persistence/filtration.h"
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace medusa::persistence {
@@ -52,7 +53,8 @@ struct DiagramWithClasses {
 // InternalError when a derived representative fails its defining property (a bug).
 DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>& cells,
                                                 const Filtration& filtration,
-                                                const RepresentativeOptions& options = {});
+                                                const RepresentativeOptions& options = {},
+                                                const std::function<void()>& poll = {});
 
 // Shortens the representatives `classes` of `diagram` in place, as options.shorten does, and marks them
 // shortened; `diagram` and `classes` are those of `filtration` over `cells` (stored ones, for example).
