@@ -106,6 +106,14 @@ std::vector<PersistencePair> pairs_in_dimension(const Diagram& diagram, int k, b
   return result;
 }
 
+void drop_zero_length(Diagram& diagram) {
+  auto& pairs = diagram.pairs;
+  pairs.erase(
+      std::remove_if(pairs.begin(), pairs.end(), [](const PersistencePair& p) { return p.zero_length; }),
+      pairs.end());
+  pairs.shrink_to_fit();
+}
+
 Diagram without_zero_length(const Diagram& diagram) {
   Diagram result{diagram.direction, diagram.cell_type, {}};
   for (const auto& p : diagram.pairs)

@@ -1,5 +1,6 @@
 #include "medusa/persistence/medusa_diagrams.h"
 
+#include "medusa/core/error.h"
 #include "medusa/core/free_memory.h"
 #include "medusa/persistence/degree_check.h"
 #include "medusa/persistence/euler.h"
@@ -45,11 +46,13 @@ Diagram audited_diagram(const std::vector<medusa::Cell>& cells, const Filtration
 
 } // namespace
 
-std::vector<Diagram>
-compute_medusa_diagrams(const std::vector<medusa::Cell>& cells, const std::vector<int>& vertex_type,
-                        const std::vector<int>& types, unsigned threads, DiagramPhaseSeconds* phases,
-                        std::vector<ClassRepresentatives>* forward_classes,
-                        const RepresentativeOptions& options, const std::function<void()>& poll) {
+std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& cells,
+                                             const std::vector<int>& vertex_type,
+                                             const std::vector<int>& types,
+                                             const DiagramRunOptions& options) {
+  std::vector<ClassRepresentatives>* forward_classes = options.forward_classes;
+  if (forward_classes != nullptr && !options.zero_length)
+    throw InternalError("medusa diagrams: representatives need the zero-length pairs kept");
   const auto jobs = medusa_jobs(types);
   std::vector<Diagram> diagrams(jobs.size());
   if (forward_classes != nullptr)
@@ -65,19 +68,21 @@ compute_medusa_diagrams(const std::vector<medusa::Cell>& cells, const std::vecto
     start = Clock::now();
     ClassRepresentatives* classes =
         forward_classes != nullptr && jobs[i].second == Direction::forward ? &(*forward_classes)[i] : nullptr;
-    diagrams[i] = audited_diagram(cells, filtration, classes, options, poll);
+    diagrams[i] = audited_diagram(cells, filtration, classes, options.representatives, options.poll);
+    if (!options.zero_length)
+      drop_zero_length(diagrams[i]);
     seconds[i].reduction = since(start);
   };
-  detail::run_jobs(jobs.size(), threads, whole, [&](std::size_t i) {
+  detail::run_jobs(jobs.size(), options.threads, whole, [&](std::size_t i) {
     job(i);
     // The filtration and its matrix are freed: their pages go back before the next whole-medusa job.
     if (whole(i))
       release_free_memory();
   });
-  if (phases != nullptr)
+  if (options.phases != nullptr)
     for (const DiagramPhaseSeconds& s : seconds) {
-      phases->filtrations += s.filtrations;
-      phases->reduction += s.reduction;
+      options.phases->filtrations += s.filtrations;
+      options.phases->reduction += s.reduction;
     }
   return diagrams;
 }

@@ -222,8 +222,13 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   persistence::DiagramPhaseSeconds phases;
   // The forward diagrams are the summary's: their classes get representatives (docs/MATH.md §7.11).
   std::vector<persistence::ClassRepresentatives> classes;
-  result.diagrams = persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, threads, &phases,
-                                                         &classes, representatives, check_interrupted);
+  persistence::DiagramRunOptions options;
+  options.threads = threads;
+  options.phases = &phases;
+  options.forward_classes = &classes;
+  options.representatives = representatives;
+  options.poll = check_interrupted;
+  result.diagrams = persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, options);
   std::vector<persistence::Diagram>& diagrams = result.diagrams;
   const double both = phases.filtrations + phases.reduction;
   const double share = both > 0 ? phases.filtrations / both : 0.5;
@@ -250,13 +255,8 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   check_interrupted();
   // From here on only positive-length pairs are shown (the summary skips zero-length ones too), so
   // they are dropped in place rather than copied: the diagrams are the largest structure of this stage.
-  for (persistence::Diagram& d : diagrams) {
-    auto& pairs = d.pairs;
-    pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
-                               [](const persistence::PersistencePair& q) { return q.zero_length; }),
-                pairs.end());
-    pairs.shrink_to_fit();
-  }
+  for (persistence::Diagram& d : diagrams)
+    persistence::drop_zero_length(d);
   check_interrupted();
 
   const double t0 = static_cast<double>(medusa.input.frame_times.front());

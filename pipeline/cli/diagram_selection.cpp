@@ -75,9 +75,11 @@ std::vector<persistence::Diagram> selected_diagrams(const medusa::Medusa& medusa
       throw InputError("cell type " + *selection.type + " does not occur in the store");
     types = *wanted == persistence::all_types ? std::vector<int>{} : std::vector<int>{*wanted};
   }
-  std::vector<persistence::Diagram> all = persistence::compute_medusa_diagrams(
-      medusa.cells, vertex_type, types, worker_threads(selection.threads), nullptr, nullptr, {},
-      check_interrupted);
+  persistence::DiagramRunOptions options;
+  options.threads = worker_threads(selection.threads);
+  options.poll = check_interrupted;
+  std::vector<persistence::Diagram> all =
+      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, options);
   std::vector<persistence::Diagram> chosen;
   for (persistence::Diagram& d : all) {
     if (wanted && d.cell_type != *wanted)

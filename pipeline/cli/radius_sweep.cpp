@@ -39,8 +39,11 @@ RadiusResult sweep_one(const kinetic::Trajectories& trajectories, const medusa::
   const std::vector<int> vertex_type = vertex_types(medusa);
   const std::vector<int> types = distinct_types(vertex_type);
   check_interrupted();
-  for (const persistence::Diagram& d : persistence::compute_medusa_diagrams(
-           medusa.cells, vertex_type, types, 1, nullptr, nullptr, {}, check_interrupted))
+  persistence::DiagramRunOptions options;
+  options.zero_length = false;
+  options.poll = check_interrupted;
+  for (const persistence::Diagram& d :
+       persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, options))
     if (d.direction == persistence::Direction::forward)
       result.counts.emplace_back(type_label(d.cell_type), forward_counts(d));
   return result;

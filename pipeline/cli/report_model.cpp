@@ -124,8 +124,14 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
   check_interrupted();
   const std::vector<int> vertex_type = vertex_types(medusa);
   const std::vector<int> types = distinct_types(vertex_type);
-  const std::vector<persistence::Diagram> diagrams = persistence::compute_medusa_diagrams(
-      medusa.cells, vertex_type, types, threads, nullptr, nullptr, {}, check_interrupted);
+  // The page shows positive-length classes only, as the summary of `medusa run` does: the others are
+  // dropped as each diagram is made.
+  persistence::DiagramRunOptions options;
+  options.threads = threads;
+  options.zero_length = false;
+  options.poll = check_interrupted;
+  const std::vector<persistence::Diagram> diagrams =
+      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, options);
   check_interrupted();
   const std::vector<TypeSlices> slices = slices_at_frames(medusa);
   const double t0 = static_cast<double>(input.frame_times.front());

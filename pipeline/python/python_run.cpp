@@ -66,11 +66,14 @@ std::string run_pipeline(const RunRequest& request, const std::string& command_l
   types.erase(std::unique(types.begin(), types.end()), types.end());
   const unsigned threads =
       request.threads > 0 ? request.threads : std::max(1u, std::thread::hardware_concurrency());
-  persistence::RepresentativeOptions representatives;
-  representatives.shorten = request.shorten_representatives;
   std::vector<persistence::ClassRepresentatives> classes;
-  const std::vector<persistence::Diagram> diagrams = persistence::compute_medusa_diagrams(
-      medusa.cells, vertex_type, types, threads, nullptr, &classes, representatives, cli::check_interrupted);
+  persistence::DiagramRunOptions diagram_options;
+  diagram_options.threads = threads;
+  diagram_options.forward_classes = &classes;
+  diagram_options.representatives.shorten = request.shorten_representatives;
+  diagram_options.poll = cli::check_interrupted;
+  const std::vector<persistence::Diagram> diagrams =
+      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, diagram_options);
   cli::check_interrupted();
   std::vector<const persistence::ClassRepresentatives*> stored;
   for (std::size_t i = 0; i < diagrams.size(); ++i)

@@ -48,8 +48,10 @@ StoredRun make_store(const std::string& name, const RepresentativeOptions& repre
   std::vector<int> vertex_type;
   for (const kinetic::Trajectory& c : m.input.cells)
     vertex_type.push_back(c.type);
-  run.diagrams =
-      compute_medusa_diagrams(m.cells, vertex_type, {1, 2}, 1, nullptr, &run.classes, representatives);
+  DiagramRunOptions diagram_options;
+  diagram_options.forward_classes = &run.classes;
+  diagram_options.representatives = representatives;
+  run.diagrams = compute_medusa_diagrams(m.cells, vertex_type, {1, 2}, diagram_options);
   std::vector<const ClassRepresentatives*> stored;
   for (std::size_t i = 0; i < run.diagrams.size(); ++i)
     stored.push_back(run.diagrams[i].direction == Direction::forward ? &run.classes[i] : nullptr);

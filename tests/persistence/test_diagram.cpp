@@ -296,3 +296,33 @@ TEST_CASE("All diagrams of a run come whole and per type, forward and reverse, i
   CHECK(points_of(diagrams[5]) == std::vector<std::tuple<int, double, double>>{{0, 10, -inf}});
   CHECK(diagrams[4].pairs.size() == 1);
 }
+
+TEST_CASE("Diagrams made without their zero-length pairs equal the full ones with those pairs dropped") {
+  std::vector<CellSpec> s;
+  // A triangle whole at the start (zero-length pairs), and a fourth cell that joins it later (a pair of
+  // positive length).
+  add_closure(s, {0, 1, 2}, vt(0, 0, 0), vt(5, 0, 10));
+  s.push_back({{3}, vt(0, 0, 0), vt(5, 0, 10)});
+  s.push_back({{2, 3}, vt(2, 0, 4), vt(5, 0, 10)});
+  const auto cells = make_cells(s);
+  const std::vector<int> vertex_type{1, 1, 2, 2};
+  const auto full = compute_medusa_diagrams(cells, vertex_type, {1, 2});
+  DiagramRunOptions options;
+  options.zero_length = false;
+  const auto lean = compute_medusa_diagrams(cells, vertex_type, {1, 2}, options);
+  REQUIRE(lean.size() == full.size());
+  std::size_t dropped = 0;
+  for (std::size_t k = 0; k < full.size(); ++k) {
+    CAPTURE(k);
+    Diagram expected = full[k];
+    drop_zero_length(expected);
+    dropped += full[k].pairs.size() - expected.pairs.size();
+    CHECK(points_of(lean[k]) == points_of(expected));
+    for (const PersistencePair& p : lean[k].pairs)
+      CHECK_FALSE(p.zero_length);
+  }
+  CHECK(dropped > 0);
+  std::vector<ClassRepresentatives> classes;
+  options.forward_classes = &classes;
+  CHECK_THROWS_AS(compute_medusa_diagrams(cells, vertex_type, {1, 2}, options), medusa::InternalError);
+}

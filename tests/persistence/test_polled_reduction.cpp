@@ -132,15 +132,18 @@ TEST_CASE("A poll that throws stops a reduction, the diagrams of a run on any th
   for (unsigned threads : {1u, 2u, 4u}) {
     CAPTURE(threads);
     std::atomic<int> calls{0};
-    const std::vector<Diagram> polled =
-        compute_medusa_diagrams(cells, vertex_type, {1, 2}, threads, nullptr, nullptr, {}, [&] { ++calls; });
+    DiagramRunOptions counting;
+    counting.threads = threads;
+    counting.poll = [&] { ++calls; };
+    const std::vector<Diagram> polled = compute_medusa_diagrams(cells, vertex_type, {1, 2}, counting);
     REQUIRE(polled.size() == plain.size());
     for (std::size_t k = 0; k < plain.size(); ++k)
       CHECK(polled[k].pairs.size() == plain[k].pairs.size());
     CHECK(calls >= static_cast<int>(plain.size())); // each reduction polls at its first column
-    CHECK_THROWS_AS(compute_medusa_diagrams(cells, vertex_type, {1, 2}, threads, nullptr, nullptr, {},
-                                            [] { throw Stop{}; }),
-                    Stop);
+    DiagramRunOptions stopping;
+    stopping.threads = threads;
+    stopping.poll = [] { throw Stop{}; };
+    CHECK_THROWS_AS(compute_medusa_diagrams(cells, vertex_type, {1, 2}, stopping), Stop);
   }
   CHECK(end_classes_beyond_first(cells, {}, 0, 5, [] {}) == end_classes_beyond_first(cells, {}, 0, 5));
   CHECK_THROWS_AS(end_classes_beyond_first(cells, {}, 0, 5, [] { throw Stop{}; }), Stop);

@@ -58,7 +58,7 @@ TEST_CASE("Diagrams on one, two, three or eight threads are identical", "[cli][t
   const RunMedusa& run = sorting_3frames();
   const std::vector<int> types = {1, 2};
   const std::vector<persistence::Diagram> diagrams =
-      persistence::compute_medusa_diagrams(run.medusa.cells, run.vertex_type, types, 1);
+      persistence::compute_medusa_diagrams(run.medusa.cells, run.vertex_type, types);
   // Six diagrams (whole, type 1, type 2; forward and reverse), each with pairs: enough work for every
   // thread count below to split.
   REQUIRE(diagrams.size() == 6);
@@ -67,7 +67,8 @@ TEST_CASE("Diagrams on one, two, three or eight threads are identical", "[cli][t
   const std::string sequential = text(diagrams);
   for (unsigned threads : {2u, 3u, 8u}) {
     CAPTURE(threads);
-    CHECK(text(persistence::compute_medusa_diagrams(run.medusa.cells, run.vertex_type, types, threads)) ==
+    CHECK(text(persistence::compute_medusa_diagrams(run.medusa.cells, run.vertex_type, types,
+                                                    persistence::DiagramRunOptions::on_threads(threads))) ==
           sequential);
   }
 }
@@ -77,5 +78,7 @@ TEST_CASE("A filtration error on a worker thread reaches the caller", "[cli][thr
   // A vertex-type table too short for the cells: make_type_filtration throws InputError.
   const std::vector<int> short_table(run.vertex_type.begin(), run.vertex_type.begin() + 10);
   const std::vector<int> types = {1, 2};
-  CHECK_THROWS_AS(persistence::compute_medusa_diagrams(run.medusa.cells, short_table, types, 2), InputError);
+  CHECK_THROWS_AS(persistence::compute_medusa_diagrams(run.medusa.cells, short_table, types,
+                                                       persistence::DiagramRunOptions::on_threads(2)),
+                  InputError);
 }

@@ -76,5 +76,8 @@ std::vector<PersistencePair> pairs_in_dimension(const Diagram& diagram, int k, b
 
 // The diagram without its zero-length pairs.
 Diagram without_zero_length(const Diagram& diagram);
+// The same in place, its memory returned: most pairs of a large medusa are zero-length, and its
+// diagrams are among the largest structures after the kinetic stage.
+void drop_zero_length(Diagram& diagram);
 
 } // namespace medusa::persistence

@@ -18,24 +18,42 @@ struct DiagramPhaseSeconds {
   double reduction = 0.0;
 };
 
+// How compute_medusa_diagrams runs and what it hands back besides the diagrams.
+struct DiagramRunOptions {
+  // Worker threads (1 = sequential in the calling thread).
+  unsigned threads = 1;
+  // When given, receives the time spent per phase.
+  DiagramPhaseSeconds* phases = nullptr;
+  // When given, receives for each diagram the representatives of its classes (representatives.h)
+  // selected by `representatives`, for the forward diagrams only (the reverse ones get an empty entry).
+  std::vector<ClassRepresentatives>* forward_classes = nullptr;
+  RepresentativeOptions representatives;
+  // false: each diagram drops its zero-length pairs as soon as it is made, so they never all sit in
+  // memory at once (they are most pairs of a large medusa). Not with forward_classes, whose rows are
+  // positions among all pairs.
+  bool zero_length = true;
+  // Called every few thousand columns of each reduction, on the thread running it: a caller stops
+  // the computation by throwing from it.
+  std::function<void()> poll;
+
+  static DiagramRunOptions on_threads(unsigned n) {
+    DiagramRunOptions options;
+    options.threads = n;
+    return options;
+  }
+};
+
 // Order: whole forward, whole reverse, then forward and reverse for each type in `types`. Throws
-// InternalError when an audit fails (check_euler, check_homology_degrees). Runs on `threads` worker
-// threads (1 = sequential in the calling thread): the filtrations are independent, and so are their
-// reductions (each thread owns its PHAT boundary matrix), so the result is the same for every thread
-// count. Each task builds one filtration, reduces it and frees it, so at most `threads` filtrations
-// and boundary matrices are in memory at once, and at most one of the whole medusa: the two
-// whole-medusa tasks never overlap, the per-type ones fill the other threads meanwhile (this bounds
-// the peak memory of `medusa run`). When several
-// filtrations fail, the error of the first one in the order above is thrown. `phases`, when given,
-// receives the time spent per phase. `forward_classes`, when given, receives for each diagram the
-// representatives of its classes (representatives.h) selected by `options`, computed for the forward
-// diagrams only (the reverse ones get an empty entry).
+// InternalError when an audit fails (check_euler, check_homology_degrees). The filtrations are
+// independent, and so are their reductions (each thread owns its PHAT boundary matrix), so the result
+// is the same for every thread count. Each task builds one filtration, reduces it and frees it, so at
+// most `threads` filtrations and boundary matrices are in memory at once, and at most one of the whole
+// medusa: the two whole-medusa tasks never overlap, the per-type ones fill the other threads meanwhile
+// (this bounds the peak memory of `medusa run`). When several filtrations fail, the error of the first
+// one in the order above is thrown.
 std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& cells,
                                              const std::vector<int>& vertex_type,
-                                             const std::vector<int>& types, unsigned threads = 1,
-                                             DiagramPhaseSeconds* phases = nullptr,
-                                             std::vector<ClassRepresentatives>* forward_classes = nullptr,
-                                             const RepresentativeOptions& options = {},
-                                             const std::function<void()>& poll = {});
+                                             const std::vector<int>& types,
+                                             const DiagramRunOptions& options = {});
 
 } // namespace medusa::persistence
