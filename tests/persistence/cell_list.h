@@ -92,6 +92,17 @@ inline void add_closure(std::vector<CellSpec>& specs, std::vector<kinetic::Verte
     }
 }
 
+// A time-symmetric medusa on [0, 10]: a path 0-1-2 throughout, the edge 0-2 over [2, 8] and the
+// triangle over [4, 6]; forward H1 (2, 4), reverse H1 (8, 6).
+inline std::vector<Cell> symmetric_cells() {
+  std::vector<CellSpec> s;
+  add_closure(s, {0, 1}, vt(0, 0, 0), vt(5, 0, 10));
+  add_closure(s, {1, 2}, vt(0, 0, 0), vt(5, 0, 10));
+  s.push_back({{0, 2}, vt(1, 0, 2), vt(4, 0, 8)});
+  s.push_back({{0, 1, 2}, vt(2, 0, 4), vt(3, 0, 6)});
+  return make_cells(s);
+}
+
 // Vertices a=0, b=1, c=2 at t=0; edges ab at 1, bc at 2, ca at 3; triangle abc at 4; all die at 5.
 // Batches 0..5 are the times 0..5.
 inline std::vector<Cell> filled_triangle() {

@@ -274,12 +274,7 @@ TEST_CASE("The same cells in any input order give a byte-identical serialized di
 // The time-symmetric example with vertex 2 of type 2 and vertices 0, 1 of type 1: M_1 is the edge 01
 // (one essential H0 class each way), M_2 the vertex 2.
 TEST_CASE("All diagrams of a run come whole and per type, forward and reverse, in a fixed order") {
-  std::vector<CellSpec> s;
-  add_closure(s, {0, 1}, vt(0, 0, 0), vt(5, 0, 10));
-  add_closure(s, {1, 2}, vt(0, 0, 0), vt(5, 0, 10));
-  s.push_back({{0, 2}, vt(1, 0, 2), vt(4, 0, 8)});
-  s.push_back({{0, 1, 2}, vt(2, 0, 4), vt(3, 0, 6)});
-  const auto cells = make_cells(s);
+  const auto cells = symmetric_cells();
   const auto diagrams = compute_medusa_diagrams(cells, {1, 1, 2}, {1, 2});
   REQUIRE(diagrams.size() == 6);
   const std::vector<std::pair<Direction, int>> expected{

@@ -16,16 +16,6 @@ using namespace medusa::persistence::test;
 
 namespace {
 
-// The time-symmetric medusa of test_diagram.cpp: forward H1 (2, 4), reverse H1 (8, 6), on [0, 10].
-std::vector<Cell> symmetric_cells() {
-  std::vector<CellSpec> s;
-  add_closure(s, {0, 1}, vt(0, 0, 0), vt(5, 0, 10));
-  add_closure(s, {1, 2}, vt(0, 0, 0), vt(5, 0, 10));
-  s.push_back({{0, 2}, vt(1, 0, 2), vt(4, 0, 8)});
-  s.push_back({{0, 1, 2}, vt(2, 0, 4), vt(3, 0, 6)});
-  return make_cells(s);
-}
-
 Diagram diagram_of(const std::vector<Cell>& cells, Direction direction) {
   return compute_diagram(cells, make_filtration(cells, direction));
 }
