@@ -61,7 +61,7 @@ DiagramWithClasses diagram_with_classes(const std::string& store_path, const med
   if (std::optional<ClassRepresentatives> stored = read_classes(store_path, name);
       stored && stored->options.max_dim >= options.max_dim &&
       (stored->options.zero_length || !options.zero_length)) {
-    for (Diagram& d : read_diagrams(store_path))
+    for (Diagram& d : read_diagrams(store_path, name))
       if (diagram_group_name(d) == name) {
         DiagramWithClasses out{std::move(d), std::move(*stored)};
         // The stored set may be larger than asked for: keep the rows the options select.
@@ -96,41 +96,53 @@ DiagramWithClasses diagram_with_classes(const std::string& store_path, const med
                                       options);
 }
 
+ClassRecord class_record(const medusa::Medusa& medusa, const DiagramWithClasses& classes, std::size_t i) {
+  const std::size_t row = classes.classes.rows.at(i);
+  const PersistencePair& p = classes.diagram.pairs.at(row);
+  ClassRecord r;
+  r.id = row;
+  r.dim = p.dim;
+  r.birth = p.birth;
+  r.death = p.death;
+  r.essential = p.essential;
+  r.zero_length = p.zero_length;
+  r.birth_cell = p.birth_cell;
+  r.birth_kind = medusa.cell(p.birth_cell).kind;
+  r.birth_cells = cc3d_ids(medusa, medusa.cell(p.birth_cell));
+  if (!p.essential) {
+    r.death_cell = p.death_cell;
+    r.death_kind = medusa.cell(p.death_cell).kind;
+    r.death_cells = cc3d_ids(medusa, medusa.cell(p.death_cell));
+  }
+  r.cycle = classes.classes.cycles[i];
+  for (medusa::CellId id : r.cycle) {
+    r.simplices.push_back(cc3d_ids(medusa, medusa.cell(id)));
+    if (p.dim > 0)
+      r.cells.insert(r.cells.end(), r.simplices.back().begin(), r.simplices.back().end());
+  }
+  for (medusa::CellId id : classes.classes.clusters[i]) {
+    const auto ids = cc3d_ids(medusa, medusa.cell(id));
+    r.cells.insert(r.cells.end(), ids.begin(), ids.end());
+  }
+  std::sort(r.cells.begin(), r.cells.end());
+  r.cells.erase(std::unique(r.cells.begin(), r.cells.end()), r.cells.end());
+  return r;
+}
+
+double class_lifetime(const DiagramWithClasses& classes, std::size_t i) {
+  const PersistencePair& p = classes.diagram.pairs.at(classes.classes.rows.at(i));
+  ClassRecord r;
+  r.birth = p.birth;
+  r.death = p.death;
+  r.essential = p.essential;
+  return r.lifetime();
+}
+
 std::vector<ClassRecord> class_records(const medusa::Medusa& medusa, const DiagramWithClasses& classes) {
   std::vector<ClassRecord> records;
   records.reserve(classes.classes.size());
-  for (std::size_t i = 0; i < classes.classes.size(); ++i) {
-    const std::size_t row = classes.classes.rows[i];
-    const PersistencePair& p = classes.diagram.pairs.at(row);
-    ClassRecord r;
-    r.id = row;
-    r.dim = p.dim;
-    r.birth = p.birth;
-    r.death = p.death;
-    r.essential = p.essential;
-    r.zero_length = p.zero_length;
-    r.birth_cell = p.birth_cell;
-    r.birth_kind = medusa.cell(p.birth_cell).kind;
-    r.birth_cells = cc3d_ids(medusa, medusa.cell(p.birth_cell));
-    if (!p.essential) {
-      r.death_cell = p.death_cell;
-      r.death_kind = medusa.cell(p.death_cell).kind;
-      r.death_cells = cc3d_ids(medusa, medusa.cell(p.death_cell));
-    }
-    r.cycle = classes.classes.cycles[i];
-    for (medusa::CellId id : r.cycle) {
-      r.simplices.push_back(cc3d_ids(medusa, medusa.cell(id)));
-      if (p.dim > 0)
-        r.cells.insert(r.cells.end(), r.simplices.back().begin(), r.simplices.back().end());
-    }
-    for (medusa::CellId id : classes.classes.clusters[i]) {
-      const auto ids = cc3d_ids(medusa, medusa.cell(id));
-      r.cells.insert(r.cells.end(), ids.begin(), ids.end());
-    }
-    std::sort(r.cells.begin(), r.cells.end());
-    r.cells.erase(std::unique(r.cells.begin(), r.cells.end()), r.cells.end());
-    records.push_back(std::move(r));
-  }
+  for (std::size_t i = 0; i < classes.classes.size(); ++i)
+    records.push_back(class_record(medusa, classes, i));
   return records;
 }
 

@@ -161,7 +161,7 @@ void write_diagrams(const std::string& store_path, const std::vector<Diagram>& d
   }
 }
 
-std::vector<Diagram> read_diagrams(const std::string& store_path) {
+std::vector<Diagram> read_diagrams(const std::string& store_path, const std::string& only) {
   const h5::Quiet quiet;
   Id file = open_file(store_path, H5F_ACC_RDONLY);
   check(H5Lexists(file.get(), group_name, H5P_DEFAULT) > 0, store_path, "no group /persistence");
@@ -186,6 +186,8 @@ std::vector<Diagram> read_diagrams(const std::string& store_path) {
             std::to_string(count));
   std::vector<Diagram> out;
   for (const std::string& name : names) {
+    if (!only.empty() && name != only)
+      continue;
     const std::string where = "/persistence/" + name;
     check(H5Lexists(group.get(), name.c_str(), H5P_DEFAULT) > 0, store_path, "missing group " + where);
     Id g = h5::group_handle(H5Gopen2(group.get(), name.c_str(), H5P_DEFAULT));

@@ -116,22 +116,25 @@ json report_classes(const std::string& store, const medusa::Medusa& medusa, std:
     check_interrupted();
     const persistence::DiagramWithClasses found = persistence::diagram_with_classes(
         store, medusa, persistence::Direction::forward, type, persistence::RepresentativeOptions{});
-    const std::vector<persistence::ClassRecord> records = persistence::class_records(medusa, found);
+    // Records are built for the classes shown only: a record holds its representative's cells, and a
+    // large run has millions of classes.
+    std::vector<double> lifetime(found.classes.size());
+    for (std::size_t i = 0; i < lifetime.size(); ++i)
+      lifetime[i] = persistence::class_lifetime(found, i);
     for (int k = 0; k <= 2; ++k) {
-      // Positions in `records`, longest-lived first as `medusa classes --sort lifetime` lists them.
+      // Represented classes, longest-lived first as `medusa classes --sort lifetime` lists them.
       std::vector<std::size_t> order;
-      for (std::size_t i = 0; i < records.size(); ++i)
-        if (records[i].dim == k)
+      for (std::size_t i = 0; i < found.classes.size(); ++i)
+        if (found.diagram.pairs[found.classes.rows[i]].dim == k)
           order.push_back(i);
-      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return records[a].lifetime() > records[b].lifetime();
-      });
+      std::stable_sort(order.begin(), order.end(),
+                       [&](std::size_t a, std::size_t b) { return lifetime[a] > lifetime[b]; });
       const std::size_t total = order.size();
       if (top > 0 && order.size() > top)
         order.resize(top);
       json classes = json::array();
       for (std::size_t i : order)
-        classes.push_back(class_json(records[i], found, i, medusa));
+        classes.push_back(class_json(persistence::class_record(medusa, found, i), found, i, medusa));
       const auto index = static_cast<std::size_t>(type);
       sections.push_back({{"label", type_label(type)},
                           {"name", type == persistence::all_types || index >= input.type_names.size()

@@ -130,6 +130,17 @@ TEST_CASE("diagrams written into a store read back unchanged and leave the medus
   REQUIRE(essential > 0);
   CHECK(diagram_group_name(diagrams[0]) == "forward_all");
   CHECK(diagram_group_name(diagrams[3]) == "reverse_type1");
+  // One diagram by its group name: the same pairs; a name the store does not list: none.
+  for (std::size_t i = 0; i < diagrams.size(); ++i) {
+    CAPTURE(i);
+    const std::vector<Diagram> one = read_diagrams(store, diagram_group_name(diagrams[i]));
+    REQUIRE(one.size() == 1);
+    CHECK(diagram_group_name(one[0]) == diagram_group_name(diagrams[i]));
+    REQUIRE(one[0].pairs.size() == diagrams[i].pairs.size());
+    for (std::size_t j = 0; j < diagrams[i].pairs.size(); ++j)
+      CHECK(same_stored_pair(one[0].pairs[j], diagrams[i].pairs[j]));
+  }
+  CHECK(read_diagrams(store, "forward_type7").empty());
 
   // The medusa itself is untouched, and writing again replaces the group.
   const medusa::Medusa after = medusa::read_store(store);

@@ -42,6 +42,11 @@ DiagramWithClasses diagram_with_classes(const std::string& store_path, const med
 
 // One record per represented class, in diagram order.
 std::vector<ClassRecord> class_records(const medusa::Medusa& medusa, const DiagramWithClasses& classes);
+// The record of represented class i (0 <= i < classes.classes.size()): a record holds its cycle's
+// cells as CC3D id tuples, so a caller that shows a few classes of a large run builds only those.
+ClassRecord class_record(const medusa::Medusa& medusa, const DiagramWithClasses& classes, std::size_t i);
+// The lifetime ClassRecord::lifetime() gives class i, without building its record.
+double class_lifetime(const DiagramWithClasses& classes, std::size_t i);
 
 // "regular", "flip", "join" or "repair".
 std::string cell_kind_name(medusa::CellKind kind);

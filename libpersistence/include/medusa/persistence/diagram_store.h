@@ -31,7 +31,9 @@ void write_diagrams_in_place(const std::string& store_path, const std::vector<Di
 // Reads `/persistence` back, in the stored order. Each pair has dim, birth, death, birth_cell,
 // death_cell, essential and zero_length; the other fields of PersistencePair (virtual times,
 // filtration indices, vertices) are not stored and keep their defaults. Throws StoreError when the
-// store has no `/persistence` group or it is malformed.
-std::vector<Diagram> read_diagrams(const std::string& store_path);
+// store has no `/persistence` group or it is malformed. With `only` (a group name, diagram_group_name),
+// just that diagram, or none when the store lists no such group: a million-cell run's six diagrams
+// are gigabytes.
+std::vector<Diagram> read_diagrams(const std::string& store_path, const std::string& only = {});
 
 } // namespace medusa::persistence
