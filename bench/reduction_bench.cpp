@@ -150,9 +150,7 @@ void run_case(const Options& o, const std::string& name, const std::vector<medus
     ours = reduce(g);
   });
   together.seconds = filtration.seconds + reduction.seconds;
-  std::size_t entries = 0;
-  for (const auto& column : f.columns)
-    entries += column.size();
+  const std::size_t entries = f.columns.entries();
 
   const std::string matrix = o.tmp + "/reduction_bench." + std::to_string(getpid()) + ".matrix.bin";
   const std::string pairs_file = o.tmp + "/reduction_bench." + std::to_string(getpid()) + ".pairs.bin";

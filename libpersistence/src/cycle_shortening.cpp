@@ -38,7 +38,7 @@ void shorten_cycle(const Filtration& f, const Cofaces& cofaces, std::int64_t lim
       for (const std::int64_t* s = cofaces.begin(cell); s != cofaces.end(cell) && in.count(cell) != 0; ++s) {
         if (*s >= limit)
           break;
-        const std::vector<std::int64_t>& faces = f.columns[static_cast<std::size_t>(*s)];
+        const BoundaryColumns::Column faces = f.columns[static_cast<std::size_t>(*s)];
         // Facets all before the birth cell: the sum stays in K_b and keeps b (docs/MATH.md §7.13).
         if (faces.back() >= birth)
           continue;

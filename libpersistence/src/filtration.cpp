@@ -98,7 +98,11 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
   f.cell_type = cell_type;
   f.cells = std::move(selected);
   f.dims.resize(f.cells.size());
-  f.columns.resize(f.cells.size());
+  std::size_t entries = 0;
+  for (std::size_t position : f.cells)
+    entries += cells[position].facets.size();
+  f.columns.reserve(f.cells.size(), entries);
+  std::vector<std::int64_t> column;
   for (std::size_t j = 0; j < f.cells.size(); ++j) {
     const Cell& c = cells[f.cells[j]];
     f.dims[j] = c.dim();
@@ -106,8 +110,7 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
     if (c.facets.size() != expected)
       throw InternalError("filtration: " + cell_name(c) + " has " + std::to_string(c.facets.size()) +
                           " facets, expected " + std::to_string(expected));
-    auto& column = f.columns[j];
-    column.reserve(c.facets.size());
+    column.clear();
     for (medusa::CellId facet_id : c.facets) {
       const std::size_t at = locate(facet_id);
       if (at == unknown)
@@ -127,6 +130,7 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
     std::sort(column.begin(), column.end());
     if (std::adjacent_find(column.begin(), column.end()) != column.end())
       throw InternalError("filtration: " + cell_name(c) + " lists a facet twice");
+    f.columns.push_back(column);
   }
   return f;
 }

@@ -44,10 +44,12 @@ std::array<std::size_t, 3> end_classes_beyond_first(const std::vector<medusa::Ce
   constexpr std::int64_t absent = -1;
   std::vector<std::int64_t> index(cells.size(), absent), cone(cells.size(), absent);
   Filtration f;
+  std::vector<std::int64_t> col;
+  // Column `at` is appended when it is complete (`col`), in filtration order.
   const auto add = [&](std::size_t cell, int dim) {
     f.cells.push_back(cell);
     f.dims.push_back(dim);
-    f.columns.emplace_back();
+    col.clear();
     return static_cast<std::int64_t>(f.cells.size() - 1);
   };
   const auto check = [&](std::int64_t row, std::int64_t at, const medusa::Cell& c) {
@@ -62,23 +64,23 @@ std::array<std::size_t, 3> end_classes_beyond_first(const std::vector<medusa::Ce
       const std::int64_t at = add(i, c.dim());
       index[i] = at;
       for (medusa::CellId facet : c.facets)
-        f.columns[static_cast<std::size_t>(at)].push_back(
-            check(facet < cells.size() ? index[facet] : absent, at, c));
-      std::sort(f.columns[static_cast<std::size_t>(at)].begin(),
-                f.columns[static_cast<std::size_t>(at)].end());
+        col.push_back(check(facet < cells.size() ? index[facet] : absent, at, c));
+      std::sort(col.begin(), col.end());
+      f.columns.push_back(col);
     }
   const std::int64_t apex = add(cells.size(), 0); // no cell of the medusa
+  f.columns.push_back(col);
   for (std::size_t i : first_part) {
     const medusa::Cell& c = cells[i];
     const std::int64_t at = add(i, c.dim() + 1);
     cone[i] = at;
-    std::vector<std::int64_t>& col = f.columns[static_cast<std::size_t>(at)];
     col.push_back(check(index[i], at, c));
     if (c.facets.empty())
       col.push_back(apex);
     for (medusa::CellId facet : c.facets)
       col.push_back(check(facet < cells.size() ? cone[facet] : absent, at, c));
     std::sort(col.begin(), col.end());
+    f.columns.push_back(col);
   }
 
   // An essential class of degree k born at an index inside L_end is a class of L_end whose image in

@@ -36,7 +36,7 @@ Chain reduced_column(const Matrix& matrix, Index j) {
   return out;
 }
 
-Chain boundary_of(const Filtration& f, Index j) { return f.columns[static_cast<std::size_t>(j)]; }
+Chain boundary_of(const Filtration& f, Index j) { return f.columns[static_cast<std::size_t>(j)].to_vector(); }
 
 // Cycles of essential classes (docs/MATH.md §7.11). The twist reduction keeps R but not V (R = D V):
 // V is rebuilt only where an essential class needs it. A reduced column R[i] is the boundary of i

@@ -71,7 +71,7 @@ Coned coned_filtration(const std::vector<Cell>& cells, std::vector<std::size_t> 
   Filtration& f = out.filtration;
   f.cells.resize(2 * n + 1);
   f.dims.resize(2 * n + 1);
-  f.columns.resize(2 * n + 1);
+  std::vector<std::int64_t> col;
   out.births.resize(n);
   out.deaths.resize(n);
   out.cone_of.resize(n);
@@ -81,7 +81,7 @@ Coned coned_filtration(const std::vector<Cell>& cells, std::vector<std::size_t> 
     f.dims[j] = c.dim();
     out.births[j] = c.birth.batch;
     out.cone_of[j] = static_cast<std::size_t>(cone_index[kept[j]]);
-    std::vector<std::int64_t>& col = f.columns[j];
+    col.clear();
     for (CellId facet : c.facets) {
       const std::int64_t row = facet < cells.size() ? forward_index[facet] : absent;
       if (row == absent || row >= static_cast<std::int64_t>(j))
@@ -90,18 +90,20 @@ Coned coned_filtration(const std::vector<Cell>& cells, std::vector<std::size_t> 
       col.push_back(row);
     }
     std::sort(col.begin(), col.end());
+    f.columns.push_back(col);
     if (j % poll_every == 0)
       call(poll);
   }
   f.cells[n] = cells.size(); // the apex is no cell of the medusa
   f.dims[n] = 0;
+  f.columns.push_back({});
   for (std::size_t j = 0; j < n; ++j) {
     const Cell& c = cells[by_death[j]];
     const std::size_t at = n + 1 + j;
     f.cells[at] = by_death[j];
     f.dims[at] = c.dim() + 1;
     out.deaths[j] = c.death.batch;
-    std::vector<std::int64_t>& col = f.columns[at];
+    col.clear();
     col.push_back(forward_index[by_death[j]]);
     if (c.facets.empty())
       col.push_back(apex);
@@ -113,6 +115,7 @@ Coned coned_filtration(const std::vector<Cell>& cells, std::vector<std::size_t> 
       col.push_back(row);
     }
     std::sort(col.begin(), col.end());
+    f.columns.push_back(col);
     if (j % poll_every == 0)
       call(poll);
   }

@@ -38,9 +38,9 @@ TEST_CASE("The forward filtration orders cells by birth batch, birth rank, dimen
   // Vertices (0,0) by tuple 0,1,2; then 01 (1,0), 12 (1,1), 02 (2,0).
   CHECK(ids_in_order(cells, f) == std::vector<medusa::CellId>{1007, 1014, 1000, 1028, 1021, 1035});
   CHECK(f.dims == std::vector<int>{0, 0, 0, 1, 1, 1});
-  CHECK(f.columns[3] == std::vector<std::int64_t>{0, 1});
-  CHECK(f.columns[4] == std::vector<std::int64_t>{1, 2});
-  CHECK(f.columns[5] == std::vector<std::int64_t>{0, 2});
+  CHECK(f.columns[3].to_vector() == std::vector<std::int64_t>{0, 1});
+  CHECK(f.columns[4].to_vector() == std::vector<std::int64_t>{1, 2});
+  CHECK(f.columns[5].to_vector() == std::vector<std::int64_t>{0, 2});
   CHECK(f.cell_type == all_types);
 }
 
@@ -49,9 +49,9 @@ TEST_CASE("The reverse filtration orders cells by latest death first, then dimen
   const Filtration f = make_filtration(cells, Direction::reverse);
   // Deaths: 0,1,01 at (4,0); 2 at (3,0); 12, 02 at (2,5).
   CHECK(ids_in_order(cells, f) == std::vector<medusa::CellId>{1007, 1014, 1028, 1000, 1035, 1021});
-  CHECK(f.columns[2] == std::vector<std::int64_t>{0, 1});
-  CHECK(f.columns[4] == std::vector<std::int64_t>{0, 3});
-  CHECK(f.columns[5] == std::vector<std::int64_t>{1, 3});
+  CHECK(f.columns[2].to_vector() == std::vector<std::int64_t>{0, 1});
+  CHECK(f.columns[4].to_vector() == std::vector<std::int64_t>{0, 3});
+  CHECK(f.columns[5].to_vector() == std::vector<std::int64_t>{1, 3});
 }
 
 TEST_CASE("A sub-medusa keeps the cells whose vertices all have the type, re-indexed consecutively") {
@@ -59,7 +59,7 @@ TEST_CASE("A sub-medusa keeps the cells whose vertices all have the type, re-ind
   const std::vector<int> types{1, 2, 1}; // vertices 0 and 2 have type 1
   const Filtration f = make_type_filtration(cells, types, 1, Direction::forward);
   CHECK(ids_in_order(cells, f) == std::vector<medusa::CellId>{1007, 1000, 1035});
-  CHECK(f.columns[2] == std::vector<std::int64_t>{0, 1});
+  CHECK(f.columns[2].to_vector() == std::vector<std::int64_t>{0, 1});
   CHECK(f.cell_type == 1);
   const Filtration g = make_type_filtration(cells, types, 2, Direction::reverse);
   CHECK(ids_in_order(cells, g) == std::vector<medusa::CellId>{1014});
@@ -111,4 +111,37 @@ TEST_CASE("Cells whose ids are their positions give the same filtration as arbit
   }
   renumbered[4].facets[0] = 99;
   CHECK_THROWS_AS(make_filtration(renumbered, Direction::forward), InputError);
+}
+
+TEST_CASE("Boundary columns read back as they were appended, empty columns included") {
+  BoundaryColumns columns;
+  columns.reserve(4, 5);
+  const std::vector<std::vector<std::int64_t>> appended{{}, {0, 3}, {}, {1, 2, 4}};
+  for (const auto& column : appended)
+    columns.push_back(column);
+  REQUIRE(columns.size() == appended.size());
+  CHECK(columns.entries() == 5);
+  for (std::size_t j = 0; j < appended.size(); ++j) {
+    CHECK(columns[j].to_vector() == appended[j]);
+    CHECK(columns[j].size() == appended[j].size());
+    CHECK(columns[j].empty() == appended[j].empty());
+  }
+  CHECK(columns[3][1] == 2);
+  CHECK(columns[3].back() == 4);
+  BoundaryColumns other;
+  for (const auto& column : {appended[0], appended[1], appended[2]})
+    other.push_back(column);
+  CHECK_FALSE(other == columns);
+  other.push_back(appended[3]);
+  CHECK(other == columns);
+}
+
+TEST_CASE("A filtration has one boundary column per cell, each of its cell's facet count") {
+  const auto cells = small_complex();
+  for (Direction direction : {Direction::forward, Direction::reverse}) {
+    const Filtration f = make_filtration(cells, direction);
+    REQUIRE(f.columns.size() == f.size());
+    for (std::size_t j = 0; j < f.size(); ++j)
+      CHECK(f.columns[j].size() == cells[f.cells[j]].facets.size());
+  }
 }

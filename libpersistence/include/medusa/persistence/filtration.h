@@ -18,6 +18,53 @@ enum class Direction : std::uint8_t {
 // Cell type value meaning "the whole medusa", not a sub-medusa M_X.
 constexpr int all_types = -1;
 
+// The boundary columns of a filtration, one after another in one array: column j is
+// entries[offsets[j], offsets[j + 1]). A whole-medusa filtration has one column of at most five
+// entries per cell, and a vector per column would add 24 bytes of header and a heap block's slack to
+// each (about 30 bytes a cell; bench/README.md, "The report at scale"). Columns are appended in
+// filtration order.
+class BoundaryColumns {
+public:
+  // One column: its facet indices, ascending (docs/MATH.md §7.5).
+  class Column {
+  public:
+    Column(const std::int64_t* first, const std::int64_t* last) : first_(first), last_(last) {}
+    const std::int64_t* begin() const { return first_; }
+    const std::int64_t* end() const { return last_; }
+    std::size_t size() const { return static_cast<std::size_t>(last_ - first_); }
+    bool empty() const { return first_ == last_; }
+    std::int64_t operator[](std::size_t i) const { return first_[i]; }
+    std::int64_t back() const { return last_[-1]; }
+    std::vector<std::int64_t> to_vector() const { return {first_, last_}; }
+
+  private:
+    const std::int64_t* first_;
+    const std::int64_t* last_;
+  };
+
+  std::size_t size() const { return offsets_.size() - 1; }
+  std::size_t entries() const { return entries_.size(); }
+  Column operator[](std::size_t j) const {
+    return {entries_.data() + offsets_[j], entries_.data() + offsets_[j + 1]};
+  }
+  void reserve(std::size_t columns, std::size_t entries) {
+    offsets_.reserve(columns + 1);
+    entries_.reserve(entries);
+  }
+  // Appends the next column; `column` must be ascending.
+  void push_back(const std::vector<std::int64_t>& column) {
+    entries_.insert(entries_.end(), column.begin(), column.end());
+    offsets_.push_back(entries_.size());
+  }
+  friend bool operator==(const BoundaryColumns& a, const BoundaryColumns& b) {
+    return a.offsets_ == b.offsets_ && a.entries_ == b.entries_;
+  }
+
+private:
+  std::vector<std::size_t> offsets_{0};
+  std::vector<std::int64_t> entries_;
+};
+
 // A filtration over a cell vector: entry j is the j-th cell in filtration order. It refers to the
 // cell vector it was built from by position, so keep that vector alive and unchanged.
 struct Filtration {
@@ -25,7 +72,7 @@ struct Filtration {
   int cell_type = all_types;      // X for M_X (docs/MATH.md §7.4), all_types for M
   std::vector<std::size_t> cells; // position in the input cell vector, per filtration index
   std::vector<int> dims;          // medusa dimension (vertices - 1, docs/MATH.md §6.1) per filtration index
-  std::vector<std::vector<std::int64_t>> columns; // facet filtration indices, ascending (docs/MATH.md §7.5)
+  BoundaryColumns columns;        // facet filtration indices per filtration index (docs/MATH.md §7.5)
 
   std::size_t size() const { return cells.size(); }
 };
