@@ -1,7 +1,7 @@
 // Triangulation benchmark: the engine's own combinatorial triangulation (libkinetic/src/triangulation.h:
 // facet records with apices in a hash table, top simplices per vertex) against CGAL's
-// Triangulation_data_structure_3 and its flip operations, on one sequence of 2-3 and 3-2 flips.
-// It measures whether the engine's own structure is worth having over CGAL's.
+// Triangulation_data_structure_3 and its flip operations, and the same triangulation held as cells,
+// on one sequence of 2-3 and 3-2 flips. It measures what each structure costs per flip.
 //
 // The flips are drawn among the geometrically valid ones (CGAL's Triangulation_3::flip, exact
 // orientation tests) on the Delaunay triangulation of n random points at the cells' spacing, half
@@ -13,10 +13,13 @@
 //   * CGAL: tds().flip_flippable on the cell (and facet or edge index) that carries the flip, found
 //     from the vertex ids by is_facet / is_edge (what a caller that keys its flips by vertex ids
 //     pays), and the flip alone (what a kinetic structure that keeps its certificates in the cells
-//     would pay).
+//     would pay);
+//   * cells: CellTriangulation (the engine's triangulation held as cells), the cell found from the
+//     vertex ids by a star walk (timed apart) and flipped in place (flip, flip_edge).
 //
 // Usage: tds_bench [--points N]... [--flips M] [--seed S]
 // With no argument: 1,000 and 10,000 points, 20 flips per point.
+#include "cell_triangulation.h"
 #include "triangulation.h"
 
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -39,6 +42,8 @@ namespace {
 
 using medusa::kinetic::Simplex;
 using medusa::kinetic::VertexId;
+using medusa::kinetic::detail::CellIndex;
+using medusa::kinetic::detail::CellTriangulation;
 using medusa::kinetic::detail::Triangulation;
 using Clock = std::chrono::steady_clock;
 
@@ -180,6 +185,48 @@ double replay_ours(const std::vector<Simplex>& initial, const std::vector<Flip>&
   return s;
 }
 
+// The engine's triangulation held as cells (CellTriangulation), each flip made on the cell that
+// carries it (flip through a facet, flip_edge around an edge). The cell is found from the vertex ids
+// by a walk over a vertex's star, timed apart as CGAL's look-up is (`lookup_seconds`): a certificate
+// that names its (cell, facet) needs no look-up.
+double replay_cells(const std::vector<Simplex>& initial, const std::vector<Flip>& flips, double clock_cost,
+                    double& lookup_seconds, std::size_t& check) {
+  CellTriangulation<3> tri;
+  {
+    std::vector<CellTriangulation<3>::NewTop> tops;
+    for (const Simplex& t : initial)
+      tops.push_back({t, t[0] == -1 ? 0 : 1});
+    tri.assign(tops);
+  }
+  std::vector<int> dropped;
+  std::array<CellIndex, 3> three{};
+  std::array<CellIndex, 2> two{};
+  lookup_seconds = 0;
+  const auto start = Clock::now();
+  for (const Flip& f : flips) {
+    const auto& v = f.v;
+    // v0 v1 v2 v3 is a top simplex before either kind of flip (flip_change).
+    const auto t0 = Clock::now();
+    const CellIndex c = tri.find(Simplex{v[0], v[1], v[2], v[3]});
+    lookup_seconds += std::chrono::duration<double>(Clock::now() - t0).count() - clock_cost;
+    if (f.two_three)
+      tri.flip(c, tri.index_of(c, v[3]), {1, 1, 1}, dropped, three);
+    else
+      tri.flip_edge(c, tri.index_of(c, v[0]), tri.index_of(c, v[1]), {1, 1}, dropped, two);
+  }
+  const double s = seconds_since(start);
+  check = tri.size();
+  return s;
+}
+
+double clock_cost() {
+  const int reps = 100000;
+  const auto s0 = Clock::now();
+  for (int r = 0; r < reps; ++r)
+    (void)Clock::now();
+  return seconds_since(s0) / reps;
+}
+
 // CGAL's structure, replaying the flips on a copy of the initial triangulation. `lookup_seconds`
 // receives the time of the is_facet / is_edge look-ups alone (timed per flip; the clock's own cost,
 // measured, is taken out).
@@ -190,14 +237,7 @@ double replay_cgal(const Dt& initial, const std::vector<Flip>& flips, double& lo
   for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
     by_id[static_cast<std::size_t>(v->info())] = v;
   Tds& tds = dt.tds();
-  double clock_cost = 0;
-  {
-    const int reps = 100000;
-    const auto s0 = Clock::now();
-    for (int r = 0; r < reps; ++r)
-      (void)Clock::now();
-    clock_cost = seconds_since(s0) / reps;
-  }
+  const double clock = clock_cost();
   lookup_seconds = 0;
   const auto start = Clock::now();
   for (const Flip& f : flips) {
@@ -211,7 +251,7 @@ double replay_cgal(const Dt& initial, const std::vector<Flip>& flips, double& lo
                            j, k);
     else
       found = tds.is_edge(by_id[std::size_t(v[0])], by_id[std::size_t(v[1])], c, i, j);
-    lookup_seconds += std::chrono::duration<double>(Clock::now() - t0).count() - clock_cost;
+    lookup_seconds += std::chrono::duration<double>(Clock::now() - t0).count() - clock;
     if (!found) {
       std::fprintf(stderr, "tds_bench: a recorded flip is not in CGAL's replay\n");
       std::exit(1);
@@ -256,8 +296,9 @@ void run_case(std::size_t n, std::size_t flips_per_point, std::uint64_t seed) {
 
   // Alternate the two replays, three rounds, and keep each one's best (the machine's noise is
   // one-sided).
-  double ours = 1e300, cgal = 1e300, lookup = 1e300;
-  std::size_t ours_tets = 0, cgal_cells = 0;
+  double ours = 1e300, cgal = 1e300, lookup = 1e300, cells = 1e300, cells_lookup = 1e300;
+  std::size_t ours_tets = 0, cgal_cells = 0, cell_count = 0;
+  const double clock = clock_cost();
   for (int round = 0; round < 3; ++round) {
     ours = std::min(ours, replay_ours(tets, flips, ours_tets));
     double l = 0;
@@ -266,10 +307,16 @@ void run_case(std::size_t n, std::size_t flips_per_point, std::uint64_t seed) {
       cgal = c;
       lookup = l;
     }
+    const double h = replay_cells(tets, flips, clock, l, cell_count);
+    if (h < cells) {
+      cells = h;
+      cells_lookup = l;
+    }
   }
-  if (ours_tets != cgal_cells) {
-    std::fprintf(stderr, "tds_bench: the replays disagree: %zu top simplices against CGAL's %zu cells\n",
-                 ours_tets, cgal_cells);
+  if (ours_tets != cgal_cells || cell_count != cgal_cells) {
+    std::fprintf(stderr,
+                 "tds_bench: the replays disagree: %zu and %zu top simplices against CGAL's %zu cells\n",
+                 ours_tets, cell_count, cgal_cells);
     std::exit(1);
   }
   const double per = 1e9 / double(flips.size());
@@ -280,7 +327,11 @@ void run_case(std::size_t n, std::size_t flips_per_point, std::uint64_t seed) {
               cgal * per, ours / cgal);
   std::printf("  CGAL TDS, flip_flippable alone (look-up timed apart: %.1f ns) %8.1f ns   ours/CGAL %.2f\n",
               lookup * per, flip_only * per, ours / flip_only);
-  std::printf("both end with %zu top simplices (%.1f per vertex)\n", ours_tets,
+  std::printf("  cells (CellTriangulation::find + flip on the cell)            %8.1f ns   ours/cells %.2f\n",
+              cells * per, ours / cells);
+  std::printf("  cells, flip alone (find timed apart: %.1f ns)                 %8.1f ns   ours/cells %.2f\n",
+              cells_lookup * per, (cells - cells_lookup) * per, ours / (cells - cells_lookup));
+  std::printf("all end with %zu top simplices (%.1f per vertex)\n", ours_tets,
               4.0 * double(ours_tets) / double(n));
 }
 

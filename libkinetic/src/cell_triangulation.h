@@ -1,0 +1,212 @@
+// The combinatorial Delaunay triangulation held as cells: each top simplex (tetrahedron, or triangle
+// in a planar run; the infinite vertex is -1) is a record of its sorted vertices, the top simplices
+// across its facets, its facets' certificate ids and its orientation, reached by an index that stays
+// valid while the cell lives. Changes are replacements of held cells (a flip is two cells by three,
+// docs/MATH.md §4.5; a local insertion or deletion a star by another), glued to the cells around
+// them without a look-up by vertices. This is the shape of CGAL's Triangulation_data_structure_3 /
+// _2, kept in arrays (cells are reused through a free list) so that a certificate or a queue entry can
+// name (cell, facet) by two integers. Geometry lives elsewhere, as in triangulation.h.
+#pragma once
+
+#include "medusa/kinetic/simplex.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+using CellIndex = std::int32_t;
+constexpr CellIndex no_cell = -1;
+
+template <int D> class CellTriangulation {
+public:
+  static_assert(D == 2 || D == 3, "a run is planar or 3D");
+  static constexpr std::size_t top_size = D + 1;
+  static constexpr int dimension = D;
+
+  // A top simplex to add and the sign of the orientation of its sorted vertices (0 if infinite).
+  struct NewTop {
+    Simplex top;
+    int orientation = 0;
+  };
+
+  void clear();
+  // Replaces everything by `tops`, which must form a closed pseudo-manifold (every facet in exactly
+  // two of them); InternalError otherwise, leaving the triangulation as it was. Cells are numbered in
+  // the order given; every facet starts without a certificate.
+  void assign(const std::vector<NewTop>& tops);
+  // Replaces the cells `removed` (distinct, alive) by `added`. The added top simplices must close the
+  // hole exactly: each facet on the boundary of `removed` is a facet of exactly one added simplex, and
+  // every other facet of an added simplex is shared by exactly two of them; InternalError otherwise,
+  // leaving the triangulation as it was. Boundary facets keep their certificate ids; facets inside
+  // `removed` go, and their ids are appended to dropped_certs in the order Triangulation::remove_top
+  // would give them if the cells were removed in this order (a facet goes with the later of its two
+  // cells). The new cells' indices are written to `created`, one per added simplex, if given.
+  void replace(const std::vector<CellIndex>& removed, const std::vector<NewTop>& added,
+               std::vector<int>& dropped_certs, std::vector<CellIndex>* created = nullptr);
+
+  // The flip through c's i-th facet f (docs/MATH.md §4.5): c and its neighbour across f become the D
+  // top simplices (f - x) + p + q, one for each vertex x of f in order, where p is c's vertex off f
+  // and q the neighbour's; a 2-3 flip in 3D, a 2-2 flip in the plane. The edge pq must not be in the
+  // triangulation. `orientations` are those of the new cells, in the same order, and the new cells
+  // are written to `created`. f goes, and its certificate id is appended to dropped_certs; every other
+  // facet keeps its id. The same as replace() of {c, neighbour} by those simplices, without a look-up.
+  void flip(CellIndex c, int i, const std::array<int, D>& orientations, std::vector<int>& dropped_certs,
+            std::array<CellIndex, D>& created);
+  // The 3-2 flip of the edge ab of c through its i-th and j-th vertices (3D only): the three top
+  // simplices around ab, X_k without the k-th of the ring r0 < r1 < r2 of their other vertices,
+  // become r0 r1 r2 a and r0 r1 r2 b (`orientations` and `created` in that order). The triangle
+  // r0 r1 r2 must not be in the triangulation; InternalError if ab is not of degree 3. The triangles
+  // a b r go, their ids appended to dropped_certs as replace() of X_0, X_1, X_2 in that order would.
+  void flip_edge(CellIndex c, int i, int j, const std::array<int, 2>& orientations,
+                 std::vector<int>& dropped_certs, std::array<CellIndex, 2>& created);
+
+  std::size_t size() const { return live_count_; }
+  bool alive(CellIndex c) const {
+    return c >= 0 && static_cast<std::size_t>(c) < cells_.size() && cells_[index(c)].live;
+  }
+  VertexId vertex(CellIndex c, int i) const { return cells_[index(c)].v[slot(i)]; }
+  Simplex top(CellIndex c) const;
+  // The facet of c without its i-th vertex.
+  Simplex facet(CellIndex c, int i) const { return top(c).facet(slot(i)); }
+  CellIndex neighbor(CellIndex c, int i) const { return cells_[index(c)].n[slot(i)]; }
+  // The index of the facet shared with c in c's i-th neighbour.
+  int mirror_index(CellIndex c, int i) const;
+  // The vertex of c's i-th neighbour that is not on their shared facet.
+  VertexId apex_across(CellIndex c, int i) const { return vertex(neighbor(c, i), mirror_index(c, i)); }
+  // The position of v among c's sorted vertices, -1 if it is not one.
+  int index_of(CellIndex c, VertexId v) const;
+  int orientation(CellIndex c) const { return cells_[index(c)].orientation; }
+  void set_orientation(CellIndex c, int orientation);
+  // The certificate id of c's i-th facet (-1: none), held by both cells of the facet.
+  int cert(CellIndex c, int i) const { return cells_[index(c)].cert[slot(i)]; }
+  void set_cert(CellIndex c, int i, int id);
+
+  // A cell containing v, no_cell if v is in none.
+  CellIndex cell_of(VertexId v) const {
+    const std::size_t k = static_cast<std::size_t>(v + 1);
+    return k < vertex_cell_.size() ? vertex_cell_[k] : no_cell;
+  }
+  // The cell whose vertices are t's, no_cell if t is not a top simplex.
+  CellIndex find(const Simplex& t) const;
+  // Calls f(c) for every cell c containing every vertex of s (s non-empty), by a walk over the star
+  // of one vertex of s (a finite one when s has one: the infinite vertex's star is the whole hull).
+  // f must not start another walk.
+  template <class F> void for_each_cell_containing(const Simplex& s, F&& f) const {
+    walk_star(s, [&](CellIndex c) {
+      f(c);
+      return false;
+    });
+  }
+  // Calls f(c) for every living cell, in index order.
+  template <class F> void for_each_cell(F&& f) const {
+    for (std::size_t c = 0; c < cells_.size(); ++c)
+      if (cells_[c].live)
+        f(static_cast<CellIndex>(c));
+  }
+
+  // The first of its invariants that fails, or an empty string: each living cell has sorted distinct
+  // vertices, orientation 0 iff infinite, a living neighbour across each facet that shares the facet,
+  // names it back and holds the same certificate id; each vertex's cell contains it, and every vertex
+  // of a cell has one; the Euler characteristic is that of the sphere S^D (docs/MATH.md §2.1).
+  std::string first_violation() const;
+
+private:
+  struct Cell {
+    std::array<VertexId, top_size> v{};  // sorted ascending
+    std::array<CellIndex, top_size> n{}; // n[i]: across the facet without v[i]
+    std::array<int, top_size> cert{};    // the certificate id of facet i, -1 if none
+    signed char orientation = 0;
+    bool live = false;
+    mutable std::uint32_t mark = 0; // the last star walk that reached the cell
+  };
+  // A facet to glue while replacing: its vertices, the cell and facet index it belongs to, and the
+  // cell across it outside the replaced ones, or the added facet it pairs with (an index into
+  // facets_).
+  struct Gluing {
+    Simplex facet;
+    CellIndex cell = no_cell;
+    int index = 0;
+    CellIndex outside = no_cell;
+    int outside_index = 0;
+    int cert = -1;
+    int partner = -1;
+  };
+
+  // The cell across a facet of a flipped cell, the facet's index in it and the facet's certificate id.
+  struct Outside {
+    CellIndex cell = no_cell;
+    int mirror = 0;
+    int cert = -1;
+  };
+
+  static std::size_t index(CellIndex c) { return static_cast<std::size_t>(c); }
+  static std::size_t slot(int i) { return static_cast<std::size_t>(i); }
+  static constexpr std::size_t no_position = static_cast<std::size_t>(-1);
+  // The position of c in the `removed` of the replacement being planned, no_position if absent.
+  std::size_t removed_position(CellIndex c) const;
+  // Calls f(c) for the cells c of the star of s's largest vertex that contain s, until f returns
+  // true; returns whether it did. Cells seen are marked with the walk's epoch.
+  template <class F> bool walk_star(const Simplex& s, F&& f) const;
+  // The index of the facet of e across which c lies; InternalError if c is not e's neighbour.
+  int back_index(CellIndex e, CellIndex c) const;
+  CellIndex allocate();
+  void point_vertices_at(CellIndex c);
+  // Fills facets_/boundary_ for replace() and checks that the added simplices close the hole exactly;
+  // changes nothing.
+  void plan_gluing(const std::vector<CellIndex>& removed, const std::vector<NewTop>& added);
+
+  std::vector<Cell> cells_;
+  std::vector<CellIndex> free_;
+  std::size_t live_count_ = 0;
+  // A cell containing each vertex, indexed by vertex id + 1 (the infinite vertex is -1).
+  std::vector<CellIndex> vertex_cell_;
+  // Scratch of replace() and of the star walks, kept to avoid an allocation per flip.
+  std::vector<Gluing> facets_, boundary_;
+  std::vector<std::pair<CellIndex, std::size_t>> order_; // the removed cells and their positions
+  std::vector<VertexId> lost_;                           // the removed cells' vertices
+  std::vector<CellIndex> made_;                          // the added cells
+  mutable std::vector<CellIndex> walk_;
+  mutable std::uint32_t epoch_ = 0;
+};
+
+template <int D> template <class F> bool CellTriangulation<D>::walk_star(const Simplex& s, F&& f) const {
+  const VertexId centre = s[s.size() - 1]; // the largest: finite unless s is the infinite vertex
+  const CellIndex start = cell_of(centre);
+  if (start == no_cell)
+    return false;
+  if (++epoch_ == 0) { // wrapped: no mark may look current
+    for (const Cell& cell : cells_)
+      cell.mark = 0;
+    epoch_ = 1;
+  }
+  walk_.assign(1, start);
+  cells_[index(start)].mark = epoch_;
+  while (!walk_.empty()) {
+    const CellIndex c = walk_.back();
+    walk_.pop_back();
+    const Cell& cell = cells_[index(c)];
+    bool all = true;
+    for (VertexId x : s)
+      all = all && index_of(c, x) >= 0;
+    if (all && f(c))
+      return true;
+    for (std::size_t i = 0; i < top_size; ++i) {
+      const Cell& next = cells_[index(cell.n[i])];
+      if (cell.v[i] != centre && next.mark != epoch_) { // the facet holds the centre
+        next.mark = epoch_;
+        walk_.push_back(cell.n[i]);
+      }
+    }
+  }
+  return false;
+}
+
+extern template class CellTriangulation<2>;
+extern template class CellTriangulation<3>;
+
+} // namespace medusa::kinetic::detail
