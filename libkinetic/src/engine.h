@@ -4,6 +4,7 @@
 // templates over the number type, so they are defined here.
 #pragma once
 
+#include "cell_triangulation.h"
 #include "certificate.h"
 #include "certificate_pool.h"
 #include "face.h"
@@ -76,6 +77,10 @@ template <class K> struct Engine {
   detail::Triangulation tri;
   FaceStates faces;                       // finite simplices of dimension 1..dim in Del (face_states.h)
   std::vector<int> dropped_certs_scratch; // certificates of facets that left Del (remove_top)
+  // With the audit on, the same triangulation held as cells (cell_triangulation.h), changed beside
+  // `tri` at each change and compared with it at each audit (engine/cell_mirror.h): the structure the
+  // engine moves to, checked on every event stream the audit sees. Null without the audit.
+  std::unique_ptr<CellTriangulation<dim>> cell_mirror;
 
   // Certificates and their failure times (certificate_pool.h).
   CertificatePool certificates;
@@ -349,6 +354,16 @@ template <class K> struct Engine {
                         const int* added_orientations);
   void settle_touched(Step& step);
   void finish_top_change();
+  // The changes of `tri` made again on cell_mirror, if there is one (engine/cell_mirror.h): the top
+  // simplices replaced, with the added ones' orientations and the certificate ids `tri` dropped
+  // (the mirror must drop the same, in the same order); a facet's certificate id; an orientation.
+  void mirror_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+                         const std::vector<int>& orientations, const std::vector<int>& dropped);
+  void mirror_cert(const Simplex& facet, VertexId apex, int id);
+  void mirror_orientation(const Simplex& t, int orientation);
+  // The first difference between cell_mirror and `tri` (top simplices, orientations, apices and
+  // certificate ids of every facet), or the mirror's own first violation; empty if none.
+  std::string mirror_difference() const;
   bool is_short(const Simplex& s) const { return faces.is_short(s); }
   // The state of a face of Del, or nullptr: from the table, or from the faces touched by the change
   // being applied.

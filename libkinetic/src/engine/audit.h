@@ -69,6 +69,8 @@ template <class K> void Engine<K>::audit() {
     audit_failure(v);
   if (std::string v = tri.first_violation(dim); !v.empty())
     audit_failure(v);
+  if (std::string v = mirror_difference(); !v.empty())
+    audit_failure(v);
   if (std::string v = faces.first_violation(tri, alive); !v.empty())
     audit_failure(v);
   for (std::size_t i = 0; i < alive.size(); ++i)

@@ -50,7 +50,7 @@ void Engine<K>::apply_top_change(const std::vector<Simplex>& removed, const std:
     tri.remove_top(t, dropped);
   for (int id : dropped)
     kill_cert(id);
-  release_if_large(dropped);
+  std::vector<int> mirrored_orientations;
   for (std::size_t i = 0; i < added.size(); ++i) {
     const Simplex& t = added[i];
     int s = 0;
@@ -60,7 +60,11 @@ void Engine<K>::apply_top_change(const std::vector<Simplex>& removed, const std:
         throw flat_top_simplex_error(t);
     }
     tri.add_top(t, s);
+    if (cell_mirror)
+      mirrored_orientations.push_back(s);
   }
+  mirror_top_change(removed, added, mirrored_orientations, dropped);
+  release_if_large(dropped);
   // Each face counts the top simplices (infinite ones included) that hold it, so its presence in
   // Del after the change needs no search of the triangulation. With room reserved, no entry moves
   // while the new faces are added: the pointers held in `touched` stay valid until an erase.

@@ -188,6 +188,7 @@ template <class K> void Engine<K>::reorient_kept(const std::vector<Simplex>& kep
       throw flat_top_simplex_error(t);
     ++stats.reoriented;
     tri.set_orientation(t, s);
+    mirror_orientation(t, s);
     for (std::size_t i = 0; i < t.size(); ++i) {
       const Simplex f = t.facet(i);
       install_facet(f);

@@ -1,0 +1,94 @@
+// The triangulation held as cells beside the engine's own, under the audit: every change of `tri`
+// is made again on cell_mirror through its cells, and each audit compares the two. This checks the
+// cell structure on every event stream an audited run or test produces (flips, hull flips, local
+// insertions and deletions, static repairs, degenerate groups) before the engine is moved onto it.
+#pragma once
+
+#include "engine.h"
+
+#include "medusa/core/error.h"
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+template <class K>
+void Engine<K>::mirror_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
+                                  const std::vector<int>& orientations, const std::vector<int>& dropped) {
+  if (!cell_mirror)
+    return;
+  std::vector<CellIndex> held;
+  held.reserve(removed.size());
+  for (const Simplex& t : removed) {
+    held.push_back(cell_mirror->find(t));
+    if (held.back() == no_cell) {
+      std::ostringstream os;
+      os << "the cell triangulation lacks the removed top simplex " << t;
+      throw InternalError(os.str());
+    }
+  }
+  std::vector<typename CellTriangulation<dim>::NewTop> news;
+  news.reserve(added.size());
+  for (std::size_t i = 0; i < added.size(); ++i)
+    news.push_back({added[i], orientations[i]});
+  std::vector<int> mirrored;
+  cell_mirror->replace(held, news, mirrored);
+  if (mirrored != dropped)
+    throw InternalError("the cell triangulation dropped other certificates than the triangulation (" +
+                        std::to_string(mirrored.size()) + " against " + std::to_string(dropped.size()) + ")");
+}
+
+template <class K> void Engine<K>::mirror_cert(const Simplex& facet, VertexId apex, int id) {
+  if (!cell_mirror)
+    return;
+  const CellIndex c = cell_mirror->find(facet.with(apex));
+  if (c == no_cell) {
+    std::ostringstream os;
+    os << "the cell triangulation lacks the top simplex " << facet.with(apex);
+    throw InternalError(os.str());
+  }
+  cell_mirror->set_cert(c, cell_mirror->index_of(c, apex), id);
+}
+
+template <class K> void Engine<K>::mirror_orientation(const Simplex& t, int orientation) {
+  if (cell_mirror)
+    cell_mirror->set_orientation(cell_mirror->find(t), orientation);
+}
+
+template <class K> std::string Engine<K>::mirror_difference() const {
+  if (!cell_mirror)
+    return "";
+  if (std::string v = cell_mirror->first_violation(); !v.empty())
+    return "cell triangulation: " + v;
+  if (cell_mirror->size() != tri.tops().size())
+    return "the cell triangulation has " + std::to_string(cell_mirror->size()) +
+           " top simplices, the triangulation " + std::to_string(tri.tops().size());
+  std::string difference;
+  cell_mirror->for_each_cell([&](CellIndex c) {
+    if (!difference.empty())
+      return;
+    const Simplex t = cell_mirror->top(c);
+    std::ostringstream os;
+    if (!tri.has_top(t) || tri.orientation(t) != cell_mirror->orientation(c)) {
+      os << "top simplex " << t << " differs in the cell triangulation";
+      difference = os.str();
+      return;
+    }
+    for (int i = 0; i <= dim; ++i) {
+      const Simplex f = cell_mirror->facet(c, i);
+      const Triangulation::Apices& ap = tri.two_sided(f);
+      const VertexId own = cell_mirror->vertex(c, i);
+      if ((ap.v[0] == own ? ap.v[1] : ap.v[0]) != cell_mirror->apex_across(c, i) ||
+          ap.cert != cell_mirror->cert(c, i)) {
+        os << "facet " << f << " differs in the cell triangulation";
+        difference = os.str();
+        return;
+      }
+    }
+  });
+  return difference;
+}
+
+} // namespace medusa::kinetic::detail
