@@ -5,7 +5,8 @@
 // docs/MATH.md §4.5; a local insertion or deletion a star by another), glued to the cells around
 // them without a look-up by vertices. This is the shape of CGAL's Triangulation_data_structure_3 /
 // _2, kept in arrays (cells are reused through a free list) so that a certificate or a queue entry can
-// name (cell, facet) by two integers. Geometry lives elsewhere, as in triangulation.h.
+// name (cell, facet) by two integers. Geometry lives elsewhere, as in triangulation.h. "Cell" is
+// CGAL's word for a top simplex here, not a CompuCell3D cell (a vertex).
 #pragma once
 
 #include "medusa/kinetic/simplex.h"
@@ -170,6 +171,7 @@ private:
   std::vector<std::pair<CellIndex, std::size_t>> order_; // the removed cells and their positions
   std::vector<VertexId> lost_;                           // the removed cells' vertices
   std::vector<CellIndex> made_;                          // the added cells
+  // The star walks of const look-ups mark cells: one walk at a time (the engine is single-threaded).
   mutable std::vector<CellIndex> walk_;
   mutable std::uint32_t epoch_ = 0;
 };
