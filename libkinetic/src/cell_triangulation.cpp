@@ -1,5 +1,6 @@
 #include "cell_triangulation.h"
 
+#include "kinetic_traits.h"
 #include "medusa/core/error.h"
 
 #include <algorithm>
@@ -456,13 +457,9 @@ template <int D> std::string CellTriangulation<D>::first_violation() const {
   }
   if (live_count_ == 0)
     return "";
-  long euler = 0;
-  for (std::size_t k = 0; k < top_size; ++k)
-    euler += (k % 2 == 0 ? 1 : -1) * static_cast<long>(faces[k].size());
-  const long sphere = D % 2 == 0 ? 2 : 0;
-  if (euler != sphere)
-    return "the Euler characteristic is " + std::to_string(euler) + ", not " + std::to_string(sphere) +
-           " (that of the sphere S^" + std::to_string(D) + ")";
+  if (!KineticTraits<D>::euler_characteristic_holds(faces[0].size(), faces[1].size(), faces[2].size(),
+                                                    faces[D].size()))
+    return "the Euler characteristic is not that of the sphere S^" + std::to_string(D);
   return "";
 }
 
