@@ -77,12 +77,6 @@ template <int D> CellIndex CellTriangulation<D>::find(const Simplex& t) const {
 }
 
 template <int D> std::size_t CellTriangulation<D>::removed_position(CellIndex c) const {
-  if (order_.size() <= 4) {
-    for (const auto& [cell, position] : order_)
-      if (cell == c)
-        return position;
-    return no_position;
-  }
   const auto it = std::lower_bound(order_.begin(), order_.end(), std::make_pair(c, std::size_t{0}));
   return it != order_.end() && it->first == c ? it->second : no_position;
 }
@@ -145,8 +139,8 @@ void CellTriangulation<D>::plan_gluing(const std::vector<CellIndex>& removed,
       facets_.push_back(g);
     }
   // Each added facet pairs with another added one or with one boundary facet, never both, and each
-  // boundary facet with one added facet. A flip has at most 12 added facets: matched pairwise in
-  // cache; a larger replacement (a static repair) by sorting.
+  // boundary facet with one added facet: matched by sorting both lists. (Flips do not come here:
+  // flip() and flip_edge() glue by index.)
   const auto match = [&](Gluing& g, const Gluing* outside, std::size_t partner, std::size_t count) {
     if (count != 1)
       broken("facet " + text(g.facet) + " would have " + std::to_string(count + 1) + " top simplices");
@@ -161,31 +155,6 @@ void CellTriangulation<D>::plan_gluing(const std::vector<CellIndex>& removed,
   const auto uncovered = [&](const Gluing& b) {
     broken("boundary facet " + text(b.facet) + " is not covered by the added simplices");
   };
-  if (facets_.size() <= 16) {
-    for (Gluing& b : boundary_)
-      b.partner = 0; // the number of added facets matching it
-    for (std::size_t k = 0; k < facets_.size(); ++k) {
-      Gluing& g = facets_[k];
-      std::size_t count = 0, partner = 0;
-      Gluing* outside = nullptr;
-      for (Gluing& b : boundary_)
-        if (b.facet == g.facet) {
-          outside = &b;
-          ++b.partner;
-          ++count;
-        }
-      for (std::size_t m = 0; m < facets_.size(); ++m)
-        if (m != k && facets_[m].facet == g.facet) {
-          partner = m;
-          ++count;
-        }
-      match(g, outside, partner, count);
-    }
-    for (const Gluing& b : boundary_)
-      if (b.partner != 1)
-        uncovered(b);
-    return;
-  }
   const auto by_facet = [](const Gluing& a, const Gluing& b) { return a.facet < b.facet; };
   std::sort(boundary_.begin(), boundary_.end(), by_facet);
   std::sort(facets_.begin(), facets_.end(), by_facet);

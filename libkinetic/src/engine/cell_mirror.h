@@ -78,10 +78,8 @@ template <class K> std::string Engine<K>::mirror_difference() const {
     }
     for (int i = 0; i <= dim; ++i) {
       const Simplex f = cell_mirror->facet(c, i);
-      const Triangulation::Apices& ap = tri.two_sided(f);
-      const VertexId own = cell_mirror->vertex(c, i);
-      if ((ap.v[0] == own ? ap.v[1] : ap.v[0]) != cell_mirror->apex_across(c, i) ||
-          ap.cert != cell_mirror->cert(c, i)) {
+      if (tri.other_apex(f, cell_mirror->vertex(c, i)) != cell_mirror->apex_across(c, i) ||
+          tri.two_sided(f).cert != cell_mirror->cert(c, i)) {
         os << "facet " << f << " differs in the cell triangulation";
         difference = os.str();
         return;
