@@ -26,10 +26,18 @@ enum class Substitute : std::uint8_t {
 
 struct Certificate {
   CertKind kind = CertKind::delaunay;
-  Simplex key; // the facet (delaunay) or the finite face (radius)
-  std::uint32_t version = 0;
   bool alive = false;
   Substitute substitute = Substitute::none;
+  // A Delaunay certificate's facet as (cell, index) in the triangulation held as cells
+  // (cell_triangulation.h): one of the facet's two cells, and the facet's index there (the position
+  // of the cell's vertex off the facet). Kept where the cells are (engine/cell_mirror.h), so that the
+  // facet is reached from its certificate without a look-up by vertex ids; -1 elsewhere. Placed
+  // beside the flags, it leaves the record at 32 bytes.
+  std::int8_t facet_index = 0;
+  Simplex key; // the facet (delaunay) or the finite face (radius)
+  std::uint32_t version = 0;
+  std::int32_t cell = -1;
 };
+static_assert(sizeof(Certificate) <= 32, "a run holds about one certificate per face of Del");
 
 } // namespace medusa::kinetic::detail

@@ -20,6 +20,8 @@ int CertificatePool::create(CertKind kind, const Simplex& key) {
   c.key = key;
   c.alive = true;
   c.substitute = Substitute::none;
+  c.cell = -1;
+  c.facet_index = 0;
   ++c.version;
   return id;
 }

@@ -33,6 +33,12 @@ public:
   void retire_all();
   // What a certificate that vanishes for the whole slab is replaced by (Substitute).
   void set_substitute(int id, Substitute s) { certs_[index(id)].substitute = s; }
+  // The cell holding a Delaunay certificate's facet, and the facet's index in it (Certificate::cell).
+  void set_cell(int id, std::int32_t cell, int facet_index) {
+    Certificate& c = certs_[index(id)];
+    c.cell = cell;
+    c.facet_index = static_cast<std::int8_t>(facet_index);
+  }
 
   const Certificate& operator[](int id) const { return certs_[index(id)]; }
   const Certificate& operator[](std::uint32_t id) const { return certs_[id]; }
@@ -43,6 +49,8 @@ public:
   }
   bool current(const QueueEntry& e) const { return current(static_cast<int>(e.cert), e.version); }
   std::size_t alive_count(CertKind kind) const;
+  // The ids handed out so far, alive or free: every id is below it.
+  std::size_t size() const { return certs_.size(); }
 
   // ---- failure times
 

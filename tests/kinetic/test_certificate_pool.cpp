@@ -1,7 +1,7 @@
 // CertificatePool (the engine's certificates and their failure times): under random creations,
 // retirements, whole-frame retirements, schedules and pops, the earliest current time it gives is
 // the one a brute-force model of the same operations gives, stale entries are never given, and its
-// own invariant check holds throughout.
+// own invariant check holds throughout; a reissued id forgets the cell its facet was in.
 #include "certificate_pool.h"
 #include "medusa/core/error.h"
 
@@ -114,4 +114,20 @@ TEST_CASE("a retired certificate's queued time is never given, even when its id 
   pool.pop();
   REQUIRE(pool.earliest() == nullptr);
   REQUIRE(pool.first_violation().empty());
+}
+
+TEST_CASE("a reissued certificate id names no cell until its facet's cell is set again", "[kinetic][pool]") {
+  CertificatePool pool;
+  const int id = pool.create(CertKind::delaunay, Simplex{0, 1, 2});
+  CHECK(pool[id].cell == -1);
+  pool.set_cell(id, 41, 3);
+  CHECK(pool[id].cell == 41);
+  CHECK(pool[id].facet_index == 3);
+  CHECK(pool[id].key == (Simplex{0, 1, 2}));
+  pool.retire(id);
+  const int again = pool.create(CertKind::delaunay, Simplex{1, 2, 3});
+  REQUIRE(again == id);
+  CHECK(pool[again].cell == -1);
+  CHECK(pool[again].facet_index == 0);
+  CHECK(pool[again].key == (Simplex{1, 2, 3}));
 }

@@ -1,5 +1,6 @@
 // The triangulation held as cells beside the engine's own, under the audit: every change of `tri`
-// is made again on cell_mirror through its cells, and each audit compares the two. This checks the
+// is made again on cell_mirror through its cells, each Delaunay certificate names the cell that holds
+// its facet (Certificate::cell), and each audit compares the two. This checks the
 // cell structure on every event stream an audited run or test produces (flips, hull flips, local
 // insertions and deletions, static repairs, degenerate groups) before the engine is moved onto it.
 #pragma once
@@ -49,7 +50,9 @@ template <class K> void Engine<K>::mirror_cert(const Simplex& facet, VertexId ap
     os << "the cell triangulation lacks the top simplex " << facet.with(apex);
     throw InternalError(os.str());
   }
-  cell_mirror->set_cert(c, cell_mirror->index_of(c, apex), id);
+  const int i = cell_mirror->index_of(c, apex);
+  cell_mirror->set_cert(c, i, id);
+  certificates.set_cell(id, c, i);
 }
 
 template <class K> void Engine<K>::mirror_orientation(const Simplex& t, int orientation) {
@@ -65,6 +68,18 @@ template <class K> std::string Engine<K>::mirror_difference() const {
   if (cell_mirror->size() != tri.tops().size())
     return "the cell triangulation has " + std::to_string(cell_mirror->size()) +
            " top simplices, the triangulation " + std::to_string(tri.tops().size());
+  for (int id = 0; id < static_cast<int>(certificates.size()); ++id) {
+    const Certificate& cert = certificates[id];
+    if (!cert.alive || cert.kind != CertKind::delaunay)
+      continue;
+    const CellIndex c = cert.cell;
+    if (!cell_mirror->alive(c) || cert.facet_index < 0 || cert.facet_index > dim ||
+        cell_mirror->cert(c, cert.facet_index) != id || cell_mirror->facet(c, cert.facet_index) != cert.key) {
+      std::ostringstream os;
+      os << "certificate " << id << " of facet " << cert.key << " names a cell that does not hold it";
+      return os.str();
+    }
+  }
   std::string difference;
   cell_mirror->for_each_cell([&](CellIndex c) {
     if (!difference.empty())
