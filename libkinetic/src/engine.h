@@ -350,15 +350,26 @@ template <class K> struct Engine {
   // touched faces and their facets, which are touched too). apply_top_change keeps the faces that
   // leave Del, with no top simplex, until finish_top_change erases them (erasing moves entries);
   // settle_touched re-evaluates membership in between.
+  // A flip, when the change is one (Engine::flip): the cell holding the flipped facet, named by the
+  // facet's certificate (Certificate::cell), the facet's index there, and the change.
+  struct HeldFlip {
+    CellIndex cell = no_cell;
+    int index = 0;
+    const FlipChange* change = nullptr;
+  };
   void apply_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                        const int* added_orientations);
+                        const int* added_orientations, const HeldFlip* held_flip = nullptr);
   void settle_touched(Step& step);
   void finish_top_change();
   // The changes of `tri` made again on cell_mirror, if there is one (engine/cell_mirror.h): the top
   // simplices replaced, with the added ones' orientations and the certificate ids `tri` dropped
-  // (the mirror must drop the same, in the same order); a facet's certificate id; an orientation.
+  // (the mirror must drop the same: in the same order, or for a flip, made on the held cell, the
+  // same set); a facet's certificate id; an orientation.
   void mirror_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                         const std::vector<int>& orientations, const std::vector<int>& dropped);
+                         const std::vector<int>& orientations, const std::vector<int>& dropped,
+                         const HeldFlip* held_flip);
+  void mirror_flip(const HeldFlip& held_flip, const std::vector<Simplex>& added,
+                   const std::vector<int>& orientations, const std::vector<int>& dropped);
   void mirror_cert(const Simplex& facet, VertexId apex, int id);
   void mirror_orientation(const Simplex& t, int orientation);
   // The first difference between cell_mirror and `tri` (top simplices, orientations, apices and
@@ -390,7 +401,7 @@ template <class K> struct Engine {
 
   // ------------------------------------ flips (docs/MATH.md §4.5) and radius events (engine/flips.h)
 
-  void flip(const Simplex& facet, const FlipChange& change, std::vector<Step>& steps);
+  void flip(const Simplex& facet, int cert, const FlipChange& change, std::vector<Step>& steps);
   void repair(std::vector<Step>& steps);
   bool flippable(const Simplex& facet, FlipChange& change);
   void resolve_delaunay(std::vector<Step>& steps);

@@ -9,6 +9,8 @@
 
 #include "medusa/core/error.h"
 
+#include <algorithm>
+#include <array>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -17,9 +19,14 @@ namespace medusa::kinetic::detail {
 
 template <class K>
 void Engine<K>::mirror_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                                  const std::vector<int>& orientations, const std::vector<int>& dropped) {
+                                  const std::vector<int>& orientations, const std::vector<int>& dropped,
+                                  const HeldFlip* held_flip) {
   if (!cell_mirror)
     return;
+  if (held_flip != nullptr) {
+    mirror_flip(*held_flip, added, orientations, dropped);
+    return;
+  }
   std::vector<CellIndex> held;
   held.reserve(removed.size());
   for (const Simplex& t : removed) {
@@ -39,6 +46,55 @@ void Engine<K>::mirror_top_change(const std::vector<Simplex>& removed, const std
   if (mirrored != dropped)
     throw InternalError("the cell triangulation dropped other certificates than the triangulation (" +
                         std::to_string(mirrored.size()) + " against " + std::to_string(dropped.size()) + ")");
+}
+
+// A flip made on the cell its certificate names, without a look-up by vertex ids: 2-3 (2-2 in the
+// plane) through the facet, 3-2 around the change's edge. The new cells come in the cell
+// triangulation's order, so each takes the orientation of the added simplex with its vertices.
+template <class K>
+void Engine<K>::mirror_flip(const HeldFlip& held_flip, const std::vector<Simplex>& added,
+                            const std::vector<int>& orientations, const std::vector<int>& dropped) {
+  CellTriangulation<dim>& cells = *cell_mirror;
+  const CellIndex c = held_flip.cell;
+  const int i = held_flip.index;
+  const FlipChange& change = *held_flip.change;
+  if (!cells.alive(c) || i < 0 || i > dim)
+    throw InternalError("a flipped facet's certificate names no living cell");
+  const Simplex facet = cells.facet(c, i);
+  const VertexId p = cells.vertex(c, i), q = cells.apex_across(c, i);
+  const auto orientation_of = [&](const Simplex& t) {
+    for (std::size_t k = 0; k < added.size(); ++k)
+      if (added[k] == t)
+        return orientations[k];
+    std::ostringstream os;
+    os << "the flip of facet " << facet << " in the cell triangulation makes " << t
+       << ", which the triangulation's flip does not";
+    throw InternalError(os.str());
+  };
+  std::vector<int> mirrored;
+  if (!change.three_two) {
+    std::array<int, dim> o{};
+    for (int k = 0; k < dim; ++k)
+      o[static_cast<std::size_t>(k)] =
+          orientation_of(facet.facet(static_cast<std::size_t>(k)).with(p).with(q));
+    std::array<CellIndex, dim> created{};
+    cells.flip(c, i, o, mirrored, created);
+  } else if constexpr (dim == 3) {
+    // X_0 = the facet's cell: its ring vertices are z, p and q, and the new cells z p q a, z p q b.
+    const Simplex ring{change.z, p, q};
+    const std::array<int, 2> o{orientation_of(ring.with(change.edge[0])),
+                               orientation_of(ring.with(change.edge[1]))};
+    std::array<CellIndex, 2> created{};
+    cells.flip_edge(c, cells.index_of(c, change.edge[0]), cells.index_of(c, change.edge[1]), o, mirrored,
+                    created);
+  }
+  std::vector<int> expected = dropped;
+  std::sort(expected.begin(), expected.end());
+  std::sort(mirrored.begin(), mirrored.end());
+  if (mirrored != expected)
+    throw InternalError("a flip on held cells dropped other certificates than the triangulation (" +
+                        std::to_string(mirrored.size()) + " against " + std::to_string(expected.size()) +
+                        ")");
 }
 
 template <class K> void Engine<K>::mirror_cert(const Simplex& facet, VertexId apex, int id) {

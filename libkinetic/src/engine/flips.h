@@ -16,7 +16,7 @@
 namespace medusa::kinetic::detail {
 
 template <class K>
-void Engine<K>::flip(const Simplex& facet, const FlipChange& change, std::vector<Step>& steps) {
+void Engine<K>::flip(const Simplex& facet, int cert, const FlipChange& change, std::vector<Step>& steps) {
   const detail::Triangulation::Apices* ap = tri.apices(facet);
   VertexId p = ap->v[0], q = ap->v[1];
   Step step;
@@ -56,7 +56,8 @@ void Engine<K>::flip(const Simplex& facet, const FlipChange& change, std::vector
   }
   // A hull flip removes (case A) or creates (case B) the finite top simplex that is flat at now.
   record_delaunay_change(step, removed, added);
-  apply_top_change(removed, added, orientations.data());
+  const HeldFlip held{certificates[cert].cell, certificates[cert].facet_index, &change};
+  apply_top_change(removed, added, orientations.data(), &held);
   settle_touched(step);
   finish_top_change();
   (hull ? stats.hull_flips : dim == 2 ? stats.flips22 : (three_two ? stats.flips32 : stats.flips23))++;
@@ -199,7 +200,7 @@ template <class K> void Engine<K>::resolve_delaunay(std::vector<Step>& steps) {
         if (flippable(facet, change)) {
           pending_delaunay.erase(it);
           at_own_time(id);
-          flip(facet, change, steps);
+          flip(facet, id, change, steps);
           ++flips_in_batch;
           flipped = true;
           break;

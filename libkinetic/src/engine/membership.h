@@ -33,7 +33,7 @@ constexpr std::size_t max_prefetched_faces = 32;
 
 template <class K>
 void Engine<K>::apply_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                                 const int* added_orientations) {
+                                 const int* added_orientations, const HeldFlip* held_flip) {
   TouchedFaces& touched = touched_scratch;
   collect_touched_faces(removed, added, touched);
   if (touched.faces.size() <= max_prefetched_faces) {
@@ -63,7 +63,7 @@ void Engine<K>::apply_top_change(const std::vector<Simplex>& removed, const std:
     if (cell_mirror)
       mirrored_orientations.push_back(s);
   }
-  mirror_top_change(removed, added, mirrored_orientations, dropped);
+  mirror_top_change(removed, added, mirrored_orientations, dropped, held_flip);
   release_if_large(dropped);
   // Each face counts the top simplices (infinite ones included) that hold it, so its presence in
   // Del after the change needs no search of the triangulation. With room reserved, no entry moves
