@@ -81,6 +81,9 @@ template <class K> struct Engine {
   // `tri` at each change and compared with it at each audit (engine/cell_mirror.h): the structure the
   // engine moves to, checked on every event stream the audit sees. Null without the audit.
   std::unique_ptr<CellTriangulation<dim>> cell_mirror;
+  // The cells the mirror's last change made: the certificates installed after a change are those of
+  // their facets, found here rather than by a walk (Engine::mirror_cert).
+  std::vector<CellIndex> mirror_created;
 
   // Certificates and their failure times (certificate_pool.h).
   CertificatePool certificates;

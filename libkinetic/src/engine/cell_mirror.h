@@ -17,6 +17,9 @@
 
 namespace medusa::kinetic::detail {
 
+// The most cells mirror_cert scans before it walks: a local insertion or deletion makes a few dozen.
+constexpr std::size_t max_scanned_cells = 64;
+
 template <class K>
 void Engine<K>::mirror_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                                   const std::vector<int>& orientations, const std::vector<int>& dropped,
@@ -42,7 +45,9 @@ void Engine<K>::mirror_top_change(const std::vector<Simplex>& removed, const std
   for (std::size_t i = 0; i < added.size(); ++i)
     news.push_back({added[i], orientations[i]});
   std::vector<int> mirrored;
-  cell_mirror->replace(held, news, mirrored);
+  cell_mirror->replace(held, news, mirrored, &mirror_created);
+  if (mirror_created.size() > max_scanned_cells) // a static rebuild: a walk per facet is cheaper
+    mirror_created.clear();
   if (mirrored != dropped)
     throw InternalError("the cell triangulation dropped other certificates than the triangulation (" +
                         std::to_string(mirrored.size()) + " against " + std::to_string(dropped.size()) + ")");
@@ -79,14 +84,17 @@ void Engine<K>::mirror_flip(const HeldFlip& held_flip, const std::vector<Simplex
           orientation_of(facet.facet(static_cast<std::size_t>(k)).with(p).with(q));
     std::array<CellIndex, dim> created{};
     cells.flip(c, i, o, mirrored, created);
+    mirror_created.assign(created.begin(), created.end());
   } else if constexpr (dim == 3) {
-    // X_0 = the facet's cell: its ring vertices are z, p and q, and the new cells z p q a, z p q b.
+    // c holds the edge a b; the ring of cells around it has the other vertices z, p and q, and the
+    // new cells are z p q a and z p q b.
     const Simplex ring{change.z, p, q};
     const std::array<int, 2> o{orientation_of(ring.with(change.edge[0])),
                                orientation_of(ring.with(change.edge[1]))};
     std::array<CellIndex, 2> created{};
     cells.flip_edge(c, cells.index_of(c, change.edge[0]), cells.index_of(c, change.edge[1]), o, mirrored,
                     created);
+    mirror_created.assign(created.begin(), created.end());
   }
   std::vector<int> expected = dropped;
   std::sort(expected.begin(), expected.end());
@@ -100,10 +108,16 @@ void Engine<K>::mirror_flip(const HeldFlip& held_flip, const std::vector<Simplex
 template <class K> void Engine<K>::mirror_cert(const Simplex& facet, VertexId apex, int id) {
   if (!cell_mirror)
     return;
-  const CellIndex c = cell_mirror->find(facet.with(apex));
+  const Simplex top = facet.with(apex);
+  CellIndex c = no_cell;
+  for (CellIndex made : mirror_created)
+    if (cell_mirror->alive(made) && cell_mirror->top(made) == top)
+      c = made;
+  if (c == no_cell)
+    c = cell_mirror->find(top);
   if (c == no_cell) {
     std::ostringstream os;
-    os << "the cell triangulation lacks the top simplex " << facet.with(apex);
+    os << "the cell triangulation lacks the top simplex " << top;
     throw InternalError(os.str());
   }
   const int i = cell_mirror->index_of(c, apex);
