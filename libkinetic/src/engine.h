@@ -348,11 +348,6 @@ template <class K> struct Engine {
   // given.
   void change_tops(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                    OldMembership* old_k, const int* added_orientations = nullptr);
-  // change_tops in three phases, for a flip: every touched face is looked up in `faces` once, and
-  // its entry is held in touched_scratch throughout (the flags, counts and frontier rules read only
-  // touched faces and their facets, which are touched too). apply_top_change keeps the faces that
-  // leave Del, with no top simplex, until finish_top_change erases them (erasing moves entries);
-  // settle_touched re-evaluates membership in between.
   // A flip, when the change is one (Engine::flip): the cell holding the flipped facet, named by the
   // facet's certificate (Certificate::cell), the facet's index there, and the change.
   struct HeldFlip {
@@ -360,6 +355,12 @@ template <class K> struct Engine {
     int index = 0;
     const FlipChange* change = nullptr;
   };
+  // change_tops in three phases, for a flip: every touched face is looked up in `faces` once, and
+  // its entry is held in touched_scratch throughout (the flags, counts and frontier rules read only
+  // touched faces and their facets, which are touched too). apply_top_change keeps the faces that
+  // leave Del, with no top simplex, until finish_top_change erases them (erasing moves entries);
+  // settle_touched re-evaluates membership in between. held_flip, for a flip, lets the cells make it
+  // on the held cell.
   void apply_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                         const int* added_orientations, const HeldFlip* held_flip = nullptr);
   void settle_touched(Step& step);

@@ -1,8 +1,9 @@
 // The triangulation held as cells beside the engine's own, under the audit: every change of `tri`
-// is made again on cell_mirror through its cells, each Delaunay certificate names the cell that holds
-// its facet (Certificate::cell), and each audit compares the two. This checks the
-// cell structure on every event stream an audited run or test produces (flips, hull flips, local
-// insertions and deletions, static repairs, degenerate groups) before the engine is moved onto it.
+// is made again on cell_mirror through its cells (a flip on the cell its certificate names), each
+// Delaunay certificate names the cell that holds its facet (Certificate::cell), and each audit
+// compares the two. This checks the cell structure on every event stream an audited run or test
+// produces (flips, hull flips, local insertions and deletions, static repairs, degenerate groups)
+// before the engine is moved onto it.
 #pragma once
 
 #include "engine.h"
