@@ -405,7 +405,7 @@ template <class K> struct Engine {
 
   // ------------------------------------ flips (docs/MATH.md §4.5) and radius events (engine/flips.h)
 
-  void flip(const Simplex& facet, int cert, const FlipChange& change, std::vector<Step>& steps);
+  void flip(int cert, const FlipChange& change, std::vector<Step>& steps); // cert: the failed facet's
   void repair(std::vector<Step>& steps);
   bool flippable(const Simplex& facet, FlipChange& change);
   void resolve_delaunay(std::vector<Step>& steps);

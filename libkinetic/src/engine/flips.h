@@ -15,8 +15,8 @@
 
 namespace medusa::kinetic::detail {
 
-template <class K>
-void Engine<K>::flip(const Simplex& facet, int cert, const FlipChange& change, std::vector<Step>& steps) {
+template <class K> void Engine<K>::flip(int cert, const FlipChange& change, std::vector<Step>& steps) {
+  const Simplex facet = certificates[cert].key; // a copy: the flip retires the certificate
   const detail::Triangulation::Apices* ap = tri.apices(facet);
   VertexId p = ap->v[0], q = ap->v[1];
   Step step;
@@ -200,7 +200,7 @@ template <class K> void Engine<K>::resolve_delaunay(std::vector<Step>& steps) {
         if (flippable(facet, change)) {
           pending_delaunay.erase(it);
           at_own_time(id);
-          flip(facet, id, change, steps);
+          flip(id, change, steps);
           ++flips_in_batch;
           flipped = true;
           break;
