@@ -15,22 +15,26 @@
 #include <catch2/catch.hpp>
 #include <hdf5.h>
 
+#include <memory>
+
 using namespace medusa;
 using namespace medusa::persistence;
-using medusa::test::temp_path;
+using medusa::test::TempDir;
 
 namespace {
 
 // A complete store of a small random walk (two cell types), written by the real pipeline stages,
-// with its diagrams and the representatives of the forward ones.
+// with its diagrams and the representatives of the forward ones, in a folder removed with it.
 struct StoredRun {
+  std::shared_ptr<TempDir> dir;
   std::string path;
   std::vector<Diagram> diagrams;
   std::vector<ClassRepresentatives> classes;
 };
 
 StoredRun make_store(const std::string& name, const RepresentativeOptions& representatives = {}) {
-  StoredRun run{temp_path(name), {}, {}};
+  auto dir = std::make_shared<TempDir>("classes");
+  StoredRun run{dir, dir->file(name), {}, {}};
   const kinetic::Trajectories t = kinetic::testing::random_walk(91, 24, 4, 5800, 600);
   kinetic::KineticOptions options;
   options.rho2.num = 1200 * 1200;
