@@ -85,28 +85,6 @@ void write_diagram(hid_t parent, const Diagram& d, const ClassRepresentatives* c
   check(group.reset(), path, "cannot close group " + name);
 }
 
-// Every diagram into `/persistence` of the open file (replacing an older group).
-void write_group(hid_t file, const std::vector<Diagram>& diagrams,
-                 const std::vector<const ClassRepresentatives*>& classes, const std::string& path) {
-  check(H5Aexists(file, "complete") > 0, path, "not a complete medusa store (no attribute complete)");
-  check(H5Aexists(file, "format") > 0 && h5::read_string_attribute(file, "format", path) == "medusa-store",
-        path, "not a medusa store");
-  if (H5Lexists(file, group_name, H5P_DEFAULT) > 0)
-    check(H5Ldelete(file, group_name, H5P_DEFAULT) >= 0, path, "cannot replace group /persistence");
-  Id group = h5::create_group(file, group_name, path);
-  h5::write_attribute(group.get(), "format", std::string("medusa-persistence"), path);
-  h5::write_attribute(group.get(), "format_version", persistence_format_version, path);
-  h5::write_attribute(group.get(), "diagram_count", static_cast<std::int64_t>(diagrams.size()), path);
-  // Creation order is tracked nowhere else, so the order of the diagrams is an attribute too.
-  std::string order;
-  for (const Diagram& d : diagrams)
-    order += (order.empty() ? "" : ",") + diagram_group_name(d);
-  h5::write_attribute(group.get(), "diagram_order", order, path);
-  for (std::size_t i = 0; i < diagrams.size(); ++i)
-    write_diagram(group.get(), diagrams[i], i < classes.size() ? classes[i] : nullptr, path);
-  check(group.reset(), path, "cannot close group /persistence");
-}
-
 } // namespace
 
 std::string diagram_group_name(const Diagram& diagram) {
@@ -126,14 +104,97 @@ void check_names(const std::string& store_path, const std::vector<Diagram>& diag
 
 } // namespace
 
+struct DiagramStoreWriter::Open {
+  std::string path;
+  std::vector<std::string> names;
+  std::vector<char> written;
+  Id file;
+  Id group;
+};
+
+DiagramStoreWriter::DiagramStoreWriter(const std::string& store_path, const std::vector<std::string>& names)
+    : open_(std::make_unique<Open>()) {
+  Open& o = *open_;
+  o.path = store_path;
+  o.names = names;
+  o.written.assign(names.size(), 0);
+  check(std::set<std::string>(names.begin(), names.end()).size() == names.size(), store_path,
+        "two diagrams have the same name");
+  const h5::Quiet quiet;
+  o.file = open_file(store_path, H5F_ACC_RDWR);
+  const hid_t file = o.file.get();
+  check(H5Aexists(file, "complete") > 0, store_path, "not a complete medusa store (no attribute complete)");
+  check(H5Aexists(file, "format") > 0 &&
+            h5::read_string_attribute(file, "format", store_path) == "medusa-store",
+        store_path, "not a medusa store");
+  if (H5Lexists(file, group_name, H5P_DEFAULT) > 0)
+    check(H5Ldelete(file, group_name, H5P_DEFAULT) >= 0, store_path, "cannot replace group /persistence");
+  o.group = h5::create_group(file, group_name, store_path);
+  h5::write_attribute(o.group.get(), "format", std::string("medusa-persistence"), store_path);
+  h5::write_attribute(o.group.get(), "format_version", persistence_format_version, store_path);
+  h5::write_attribute(o.group.get(), "diagram_count", static_cast<std::int64_t>(names.size()), store_path);
+  // Creation order is tracked nowhere else, so the order of the diagrams is an attribute too.
+  std::string order;
+  for (const std::string& name : names)
+    order += (order.empty() ? "" : ",") + name;
+  h5::write_attribute(o.group.get(), "diagram_order", order, store_path);
+}
+
+DiagramStoreWriter::~DiagramStoreWriter() {
+  if (open_) {
+    const h5::Quiet quiet;
+    open_->group.reset();
+    open_->file.reset();
+  }
+}
+
+void DiagramStoreWriter::write(const Diagram& diagram, const ClassRepresentatives* classes) {
+  if (!open_)
+    throw InternalError("diagram store writer: write after close");
+  Open& o = *open_;
+  const std::string name = diagram_group_name(diagram);
+  const auto at = std::find(o.names.begin(), o.names.end(), name);
+  check(at != o.names.end(), o.path, "diagram " + name + " was not announced");
+  char& done = o.written[static_cast<std::size_t>(at - o.names.begin())];
+  check(!done, o.path, "diagram " + name + " written twice");
+  const h5::Quiet quiet;
+  write_diagram(o.group.get(), diagram, classes, o.path);
+  done = 1;
+}
+
+void DiagramStoreWriter::close() {
+  if (!open_)
+    return;
+  Open& o = *open_;
+  for (std::size_t i = 0; i < o.names.size(); ++i)
+    check(o.written[i], o.path, "diagram " + o.names[i] + " was not written");
+  const h5::Quiet quiet;
+  check(o.group.reset(), o.path, "cannot close group /persistence");
+  check(H5Fflush(o.file.get(), H5F_SCOPE_GLOBAL) >= 0 && o.file.reset(), o.path,
+        "cannot write the diagrams (disk full?)");
+  open_.reset();
+}
+
+namespace {
+
+// Every diagram into `/persistence` of the store at `path` (replacing an older group).
+void write_all(const std::string& path, const std::vector<Diagram>& diagrams,
+               const std::vector<const ClassRepresentatives*>& classes) {
+  std::vector<std::string> names;
+  for (const Diagram& d : diagrams)
+    names.push_back(diagram_group_name(d));
+  DiagramStoreWriter writer(path, names);
+  for (std::size_t i = 0; i < diagrams.size(); ++i)
+    writer.write(diagrams[i], i < classes.size() ? classes[i] : nullptr);
+  writer.close();
+}
+
+} // namespace
+
 void write_diagrams_in_place(const std::string& store_path, const std::vector<Diagram>& diagrams,
                              const std::vector<const ClassRepresentatives*>& classes) {
   check_names(store_path, diagrams);
-  const h5::Quiet quiet;
-  Id file = open_file(store_path, H5F_ACC_RDWR);
-  write_group(file.get(), diagrams, classes, store_path);
-  check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL) >= 0 && file.reset(), store_path,
-        "cannot write the diagrams (disk full?)");
+  write_all(store_path, diagrams, classes);
 }
 
 void write_diagrams(const std::string& store_path, const std::vector<Diagram>& diagrams,
@@ -144,11 +205,7 @@ void write_diagrams(const std::string& store_path, const std::vector<Diagram>& d
   if (!fs::copy_file(store_path, temporary, fs::copy_options::overwrite_existing, ec))
     fail(store_path, "cannot copy to " + temporary + (ec ? " (" + ec.message() + ")" : ""));
   try {
-    const h5::Quiet quiet;
-    Id file = open_file(temporary, H5F_ACC_RDWR);
-    write_group(file.get(), diagrams, classes, store_path);
-    check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL) >= 0 && file.reset(), store_path,
-          "cannot write " + temporary + " (disk full?)");
+    write_all(temporary, diagrams, classes);
   } catch (...) {
     fs::remove(temporary, ec);
     throw;

@@ -3,11 +3,13 @@
 #include "medusa/core/error.h"
 #include "medusa/core/free_memory.h"
 #include "medusa/persistence/degree_check.h"
+#include "medusa/persistence/diagram_store.h"
 #include "medusa/persistence/euler.h"
 
 #include "job_pool.h"
 
 #include <chrono>
+#include <mutex>
 
 namespace medusa::persistence {
 namespace {
@@ -46,13 +48,24 @@ Diagram audited_diagram(const std::vector<medusa::Cell>& cells, const Filtration
 
 } // namespace
 
+std::vector<std::string> medusa_diagram_names(const std::vector<int>& types) {
+  std::vector<std::string> names;
+  for (const auto& [type, direction] : medusa_jobs(types)) {
+    Diagram d;
+    d.cell_type = type;
+    d.direction = direction;
+    names.push_back(diagram_group_name(d));
+  }
+  return names;
+}
+
 std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& cells,
                                              const std::vector<int>& vertex_type,
                                              const std::vector<int>& types,
                                              const DiagramRunOptions& options) {
   std::vector<ClassRepresentatives>* forward_classes = options.forward_classes;
-  if (forward_classes != nullptr && !options.zero_length)
-    throw InternalError("medusa diagrams: representatives need the zero-length pairs kept");
+  if (forward_classes != nullptr && !options.zero_length && !options.on_diagram)
+    throw InternalError("medusa diagrams: representatives need the zero-length pairs kept, or on_diagram");
   const auto jobs = medusa_jobs(types);
   std::vector<Diagram> diagrams(jobs.size());
   if (forward_classes != nullptr)
@@ -61,6 +74,7 @@ std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& ce
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   const auto whole = [&](std::size_t i) { return jobs[i].first == all_types; };
+  std::mutex handing_over;
   const auto job = [&](std::size_t i) {
     auto start = Clock::now();
     const Filtration filtration = make_job_filtration(cells, vertex_type, jobs[i]);
@@ -69,9 +83,18 @@ std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& ce
     ClassRepresentatives* classes =
         forward_classes != nullptr && jobs[i].second == Direction::forward ? &(*forward_classes)[i] : nullptr;
     diagrams[i] = audited_diagram(cells, filtration, classes, options.representatives, options.poll);
-    if (!options.zero_length)
-      drop_zero_length(diagrams[i]);
     seconds[i].reduction = since(start);
+    start = Clock::now();
+    if (options.on_diagram) {
+      const std::lock_guard<std::mutex> one_at_a_time(handing_over);
+      options.on_diagram(i, diagrams[i], classes);
+    }
+    if (!options.zero_length) {
+      drop_zero_length(diagrams[i]);
+      if (classes != nullptr)
+        *classes = ClassRepresentatives{};
+    }
+    seconds[i].handed_over = since(start);
   };
   detail::run_jobs(jobs.size(), options.threads, whole, [&](std::size_t i) {
     job(i);
@@ -83,6 +106,7 @@ std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& ce
     for (const DiagramPhaseSeconds& s : seconds) {
       options.phases->filtrations += s.filtrations;
       options.phases->reduction += s.reduction;
+      options.phases->handed_over += s.handed_over;
     }
   return diagrams;
 }

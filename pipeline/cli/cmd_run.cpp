@@ -216,49 +216,47 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
               std::to_string(types.size()) + " cell types, forward and reverse, " +
               std::to_string(medusa.cells.size()) + " cells, PHAT)" + on);
   // Each task builds one filtration, reduces it and frees it (at most `threads` in memory, at most one
-  // of them of the whole medusa). The two stages overlap on the threads, so their wall and CPU
-  // seconds are the measured totals split in proportion to the tasks' time in each phase.
+  // of them of the whole medusa). Each diagram goes into the store as soon as it is made, with the
+  // representatives of its classes (forward diagrams, docs/MATH.md §7.11), and the summary takes its
+  // longest filled classes from it; then its zero-length pairs and representatives are dropped, so
+  // that they never all sit in memory at once. The stages overlap on the threads, so their wall and
+  // CPU seconds are the measured totals split in proportion to the tasks' time in each phase.
   clock = StageClock{};
   persistence::DiagramPhaseSeconds phases;
-  // The forward diagrams are the summary's: their classes get representatives (docs/MATH.md §7.11).
   std::vector<persistence::ClassRepresentatives> classes;
+  persistence::DiagramStoreWriter writer(store, persistence::medusa_diagram_names(types));
+  std::vector<std::vector<LongestFilled>> longest(count);
   persistence::DiagramRunOptions options;
   options.threads = threads;
   options.phases = &phases;
   options.forward_classes = &classes;
   options.representatives = representatives;
   options.poll = check_interrupted;
+  options.zero_length = false;
+  options.on_diagram = [&](std::size_t i, persistence::Diagram& d, persistence::ClassRepresentatives* c) {
+    writer.write(d, c);
+    if (c != nullptr) // class ids are rows of the diagram as stored, zero-length pairs included
+      longest[i] = longest_filled_classes(medusa, d, *c);
+  };
   result.diagrams = persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, options);
   std::vector<persistence::Diagram>& diagrams = result.diagrams;
-  const double both = phases.filtrations + phases.reduction;
-  const double share = both > 0 ? phases.filtrations / both : 0.5;
+  writer.close();
+  for (std::vector<LongestFilled>& l : longest)
+    result.longest.insert(result.longest.end(), l.begin(), l.end());
+  const double all = phases.filtrations + phases.reduction + phases.handed_over;
   const double wall = clock.wall_seconds(), cpu = clock.cpu_seconds();
-  timings.add("filtrations", share * wall, share * cpu);
-  timings.add("reduction", (1 - share) * wall, (1 - share) * cpu);
+  const auto share = [&](double phase) { return all > 0 ? phase / all : 1.0 / 3; };
+  timings.add("filtrations", share(phases.filtrations) * wall, share(phases.filtrations) * cpu);
+  timings.add("reduction", share(phases.reduction) * wall, share(phases.reduction) * cpu);
   check_interrupted();
 
   const std::string& csv = outputs.final_name(1);
   const std::string& svg = outputs.final_name(2);
   const std::string& diagram_svg = outputs.final_name(3);
-  meter.stage("exports: diagrams into the store, " + csv + ", " + svg + ", " + diagram_svg + ", summary");
+  meter.stage("exports: " + csv + ", " + svg + ", " + diagram_svg + ", summary");
   clock = StageClock{};
-  // The diagrams go into the store too (group /persistence, docs/FORMAT.md).
-  std::vector<const persistence::ClassRepresentatives*> stored_classes;
-  for (std::size_t i = 0; i < diagrams.size(); ++i)
-    stored_classes.push_back(diagrams[i].direction == persistence::Direction::forward ? &classes[i]
-                                                                                      : nullptr);
-  persistence::write_diagrams_in_place(store, diagrams, stored_classes);
-  // Before the zero-length pairs go: class ids are rows of the diagrams as stored.
-  result.longest = longest_filled_classes(medusa, diagrams, classes);
-  classes.clear();
-  classes.shrink_to_fit();
-  check_interrupted();
-  // From here on only positive-length pairs are shown (the summary skips zero-length ones too), so
-  // they are dropped in place rather than copied: the diagrams are the largest structure of this stage.
-  for (persistence::Diagram& d : diagrams)
-    persistence::drop_zero_length(d);
-  check_interrupted();
-
+  // The diagrams went into the store (group /persistence, docs/FORMAT.md) as they were made.
+  timings.add("exports", share(phases.handed_over) * wall, share(phases.handed_over) * cpu);
   const double t0 = static_cast<double>(medusa.input.frame_times.front());
   const double t_end = static_cast<double>(medusa.input.frame_times.back());
   write_temporary(outputs.temporary(1), csv, [&](std::ostream& out) { write_csv(out, diagrams, run_id); });

@@ -20,13 +20,13 @@ struct LongestFilled {
   std::vector<std::int64_t> cells; // CC3D ids of the representative, sorted
 };
 
-// For each forward diagram and k = 1, 2: among its finite positive-length pairs of degree k with a
-// representative in `classes` (aligned with `diagrams`, rows into the pairs as stored, zero-length
-// pairs included), the one of largest lifetime |death - birth|, the first in diagram order among equal
-// ones: the top row of `medusa classes --dim k --sort lifetime` among finite classes. None for a
-// degree without a filled class.
-std::vector<LongestFilled>
-longest_filled_classes(const medusa::Medusa& medusa, const std::vector<persistence::Diagram>& diagrams,
-                       const std::vector<persistence::ClassRepresentatives>& classes);
+// For a forward diagram and k = 1, 2: among its finite positive-length pairs of degree k with a
+// representative in `classes` (rows into the pairs as stored, zero-length pairs included), the one of
+// largest lifetime |death - birth|, the first in diagram order among equal ones: the top row of
+// `medusa classes --dim k --sort lifetime` among finite classes. None for a degree without a filled
+// class, nothing for a reverse diagram.
+std::vector<LongestFilled> longest_filled_classes(const medusa::Medusa& medusa,
+                                                  const persistence::Diagram& diagram,
+                                                  const persistence::ClassRepresentatives& classes);
 
 } // namespace medusa::cli

@@ -66,19 +66,23 @@ std::string run_pipeline(const RunRequest& request, const std::string& command_l
   types.erase(std::unique(types.begin(), types.end()), types.end());
   const unsigned threads =
       request.threads > 0 ? request.threads : std::max(1u, std::thread::hardware_concurrency());
+  // Each diagram goes into the store as soon as it is made, and nothing of it is kept: the caller
+  // reads the store.
   std::vector<persistence::ClassRepresentatives> classes;
+  persistence::DiagramStoreWriter writer(outputs.store_temporary(), persistence::medusa_diagram_names(types));
   persistence::DiagramRunOptions diagram_options;
   diagram_options.threads = threads;
   diagram_options.forward_classes = &classes;
   diagram_options.representatives.shorten = request.shorten_representatives;
   diagram_options.poll = cli::check_interrupted;
-  const std::vector<persistence::Diagram> diagrams =
-      persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, diagram_options);
-  cli::check_interrupted();
-  std::vector<const persistence::ClassRepresentatives*> stored;
-  for (std::size_t i = 0; i < diagrams.size(); ++i)
-    stored.push_back(diagrams[i].direction == persistence::Direction::forward ? &classes[i] : nullptr);
-  persistence::write_diagrams_in_place(outputs.store_temporary(), diagrams, stored);
+  diagram_options.zero_length = false;
+  diagram_options.on_diagram = [&](std::size_t, persistence::Diagram& d,
+                                   persistence::ClassRepresentatives* c) {
+    writer.write(d, c);
+    d.pairs = {};
+  };
+  persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, diagram_options);
+  writer.close();
   cli::check_interrupted();
   outputs.publish();
   return outputs.final_name(0);

@@ -4,6 +4,7 @@
 #include "medusa/core/error.h"
 #include "medusa/persistence/degree_check.h"
 #include "medusa/persistence/diagram.h"
+#include "medusa/persistence/diagram_store.h"
 #include "medusa/persistence/diagram_text.h"
 #include "medusa/persistence/euler.h"
 #include "medusa/persistence/medusa_diagrams.h"
@@ -320,4 +321,50 @@ TEST_CASE("Diagrams made without their zero-length pairs equal the full ones wit
   std::vector<ClassRepresentatives> classes;
   options.forward_classes = &classes;
   CHECK_THROWS_AS(compute_medusa_diagrams(cells, vertex_type, {1, 2}, options), medusa::InternalError);
+}
+
+TEST_CASE("Each diagram is handed over once, whole and with its representatives, before its zero-length "
+          "pairs go") {
+  std::vector<CellSpec> s;
+  add_closure(s, {0, 1, 2}, vt(0, 0, 0), vt(5, 0, 10));
+  s.push_back({{3}, vt(0, 0, 0), vt(5, 0, 10)});
+  s.push_back({{2, 3}, vt(2, 0, 4), vt(5, 0, 10)});
+  const auto cells = make_cells(s);
+  const std::vector<int> vertex_type{1, 1, 2, 2};
+  std::vector<ClassRepresentatives> full_classes;
+  DiagramRunOptions keep;
+  keep.forward_classes = &full_classes;
+  const auto full = compute_medusa_diagrams(cells, vertex_type, {1, 2}, keep);
+  const std::vector<std::string> names = medusa_diagram_names({1, 2});
+  REQUIRE(names.size() == full.size());
+  for (unsigned threads : {1u, 2u}) {
+    CAPTURE(threads);
+    std::vector<ClassRepresentatives> classes;
+    std::vector<int> calls(full.size(), 0);
+    DiagramRunOptions options;
+    options.threads = threads;
+    options.forward_classes = &classes;
+    options.zero_length = false;
+    options.on_diagram = [&](std::size_t i, Diagram& d, ClassRepresentatives* c) {
+      REQUIRE(i < full.size());
+      ++calls[i];
+      CHECK(diagram_group_name(d) == names[i]);
+      CHECK(points_of(d) == points_of(full[i])); // zero-length pairs still there
+      REQUIRE((c != nullptr) == (d.direction == Direction::forward));
+      if (c != nullptr) {
+        CHECK(c->rows == full_classes[i].rows);
+        CHECK(c->cycles == full_classes[i].cycles);
+      }
+    };
+    const auto lean = compute_medusa_diagrams(cells, vertex_type, {1, 2}, options);
+    CHECK(calls == std::vector<int>(full.size(), 1));
+    REQUIRE(lean.size() == full.size());
+    for (std::size_t k = 0; k < full.size(); ++k) {
+      CAPTURE(k);
+      Diagram expected = full[k];
+      drop_zero_length(expected);
+      CHECK(points_of(lean[k]) == points_of(expected));
+      CHECK(classes[k].size() == 0); // their rows named pairs that are gone
+    }
+  }
 }

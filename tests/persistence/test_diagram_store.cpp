@@ -238,3 +238,54 @@ TEST_CASE("reading diagrams from a store without them is a store error", "[persi
   CHECK_THROWS_WITH(read_diagrams(store), Catch::Contains("no group /persistence"));
   std::remove(store.c_str());
 }
+
+TEST_CASE("diagrams written one at a time in any order give the datasets and order of write_diagrams",
+          "[persistence][store]") {
+  CAPTURE(store_seed);
+  medusa::test::TempDir dir("diagram-writer");
+  const std::string whole = dir.file("whole.h5"), one_by_one = dir.file("one-by-one.h5");
+  make_store(whole);
+  fs::copy_file(whole, one_by_one);
+  const std::vector<Diagram> diagrams = diagrams_of(whole);
+  write_diagrams(whole, diagrams);
+  const std::vector<std::string> names = medusa_diagram_names({1, 2});
+  REQUIRE(names.size() == diagrams.size());
+  {
+    DiagramStoreWriter writer(one_by_one, names);
+    for (std::size_t i = diagrams.size(); i-- > 0;) // last first
+      writer.write(diagrams[i]);
+    writer.close();
+  }
+  const std::vector<Diagram> back = read_diagrams(one_by_one);
+  REQUIRE(back.size() == diagrams.size());
+  std::size_t compared = 0;
+  for (std::size_t i = 0; i < back.size(); ++i) {
+    CHECK(diagram_group_name(back[i]) == names[i]); // in the announced order, not the written one
+    for (const char* column :
+         {"birth", "death", "dimension", "birth_cell", "death_cell", "essential", "zero_length"}) {
+      const std::string name = "/persistence/" + names[i] + "/" + column;
+      CAPTURE(name);
+      CHECK(dataset_bytes(whole, name) == dataset_bytes(one_by_one, name));
+      ++compared;
+    }
+  }
+  REQUIRE(compared == 6 * 7);
+}
+
+TEST_CASE("a diagram writer refuses a diagram it was not told of, one written twice and a close with one "
+          "missing",
+          "[persistence][store]") {
+  medusa::test::TempDir dir("diagram-writer");
+  const std::string store = dir.file("store.h5");
+  make_store(store);
+  Diagram forward, reverse, typed;
+  reverse.direction = Direction::reverse;
+  typed.cell_type = 3;
+  DiagramStoreWriter writer(store, {diagram_group_name(forward), diagram_group_name(reverse)});
+  CHECK_THROWS_WITH(writer.write(typed), Catch::Contains("forward_type3") && Catch::Contains(store));
+  writer.write(forward);
+  CHECK_THROWS_WITH(writer.write(forward), Catch::Contains("written twice"));
+  CHECK_THROWS_WITH(writer.close(), Catch::Contains("reverse_all was not written"));
+  CHECK_THROWS_AS(DiagramStoreWriter(store, {"forward_all", "forward_all"}), StoreError);
+  CHECK_THROWS_AS(DiagramStoreWriter(dir.file("missing.h5"), {"forward_all"}), StoreError);
+}

@@ -5,6 +5,7 @@
 #include "medusa/persistence/diagram.h"
 #include "medusa/persistence/representatives.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,32 @@ void write_diagrams(const std::string& store_path, const std::vector<Diagram>& d
 // its store under a temporary name and publishes it with the run's other outputs at the end).
 void write_diagrams_in_place(const std::string& store_path, const std::vector<Diagram>& diagrams,
                              const std::vector<const ClassRepresentatives*>& classes = {});
+
+// The group `/persistence` written into a store one diagram at a time, as each is made: the caller
+// can then drop a diagram's zero-length pairs and representatives as soon as it is stored, where
+// they would otherwise all be held until the last diagram is done (`medusa run`: they are most of
+// its memory after the kinetic stage). Like write_diagrams_in_place, for a store nobody else can see
+// yet. The diagrams' group names (diagram_group_name) are given up front, in their order, which
+// `diagram_order` records whatever order they are written in; the datasets do not depend on that
+// order. Throws StoreError as write_diagrams does.
+class DiagramStoreWriter {
+public:
+  DiagramStoreWriter(const std::string& store_path, const std::vector<std::string>& names);
+  ~DiagramStoreWriter();
+  DiagramStoreWriter(const DiagramStoreWriter&) = delete;
+  DiagramStoreWriter& operator=(const DiagramStoreWriter&) = delete;
+
+  // Writes one of the named diagrams, with its representatives if given (StoreError: a name not
+  // given up front, or one written already).
+  void write(const Diagram& diagram, const ClassRepresentatives* classes = nullptr);
+  // Flushes and closes the store (StoreError: a named diagram was not written, or the flush failed).
+  // Without it the store is closed with its group incomplete: for a run that failed.
+  void close();
+
+private:
+  struct Open;
+  std::unique_ptr<Open> open_;
+};
 
 // Reads `/persistence` back, in the stored order. Each pair has dim, birth, death, birth_cell,
 // death_cell, essential and zero_length; the other fields of PersistencePair (virtual times,

@@ -6,16 +6,20 @@
 #include "medusa/persistence/diagram.h"
 #include "medusa/persistence/representatives.h"
 
+#include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace medusa::persistence {
 
 // The seconds spent in each phase, summed over the tasks (threads run tasks concurrently, so the
-// sum may exceed the wall time): building filtrations, and reducing them into audited diagrams.
+// sum may exceed the wall time): building filtrations, reducing them into audited diagrams, and
+// handing each over (DiagramRunOptions::on_diagram, dropping zero-length pairs).
 struct DiagramPhaseSeconds {
   double filtrations = 0.0;
   double reduction = 0.0;
+  double handed_over = 0.0;
 };
 
 // How compute_medusa_diagrams runs and what it hands back besides the diagrams.
@@ -28,9 +32,16 @@ struct DiagramRunOptions {
   // selected by `representatives`, for the forward diagrams only (the reverse ones get an empty entry).
   std::vector<ClassRepresentatives>* forward_classes = nullptr;
   RepresentativeOptions representatives;
-  // false: each diagram drops its zero-length pairs as soon as it is made, so they never all sit in
-  // memory at once (they are most pairs of a large medusa). Not with forward_classes, whose rows are
-  // positions among all pairs.
+  // When given, called with each diagram as soon as it is made and audited, whole, with the
+  // representatives of its classes when forward_classes is given (null otherwise and for reverse
+  // diagrams), to store them (DiagramStoreWriter) or read them while every pair is there. One call at
+  // a time, in the order the diagrams are finished, which with more than one thread is not theirs.
+  // It may take the pairs or the representatives away; what it leaves is returned.
+  std::function<void(std::size_t index, Diagram& diagram, ClassRepresentatives* classes)> on_diagram;
+  // false: each diagram drops its zero-length pairs as soon as it is made (after on_diagram), so they
+  // never all sit in memory at once (they are about half the pairs of a large medusa). The
+  // representatives, whose rows are positions among all pairs, go with them: forward_classes then
+  // needs on_diagram, and receives empty entries.
   bool zero_length = true;
   // Called every few thousand columns of each reduction, on the thread running it: a caller stops
   // the computation by throwing from it.
@@ -42,6 +53,10 @@ struct DiagramRunOptions {
     return options;
   }
 };
+
+// The group names (diagram_group_name) of the diagrams compute_medusa_diagrams makes for `types`, in
+// its order: the names DiagramStoreWriter is given up front.
+std::vector<std::string> medusa_diagram_names(const std::vector<int>& types);
 
 // Order: whole forward, whole reverse, then forward and reverse for each type in `types`. Throws
 // InternalError when an audit fails (check_euler, check_homology_degrees). The filtrations are
