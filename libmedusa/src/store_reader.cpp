@@ -78,23 +78,42 @@ void read_input(hid_t file, Medusa& m, const std::string& path) {
   }
 }
 
-void read_events(hid_t file, Medusa& m, const std::string& path) {
+// Returns the number of batch records in the store; all of them are kept, or with every_batch false
+// those frame_batch reads (StoreReadOptions::every_batch), one column at a time.
+std::size_t read_events(hid_t file, Medusa& m, bool every_batch, const std::string& path) {
   Handle g = open_group(file, L::events, path);
   const std::string gn = L::events;
-  const auto index = h5::read_column<std::uint64_t>(g.get(), gn, L::batch_index, path);
   const auto slab = h5::read_column<std::uint64_t>(g.get(), gn, L::batch_slab, path);
-  const auto u = h5::read_column<double>(g.get(), gn, L::batch_u, path);
-  const auto time = h5::read_column<double>(g.get(), gn, L::batch_time, path);
   const auto at_frame = h5::read_column<std::uint8_t>(g.get(), gn, L::batch_at_frame, path);
-  const auto ranks = h5::read_column<std::uint32_t>(g.get(), gn, L::batch_ranks, path);
-  const std::size_t nb = index.size();
-  if (slab.size() != nb || u.size() != nb || time.size() != nb || at_frame.size() != nb || ranks.size() != nb)
+  const std::size_t nb = slab.size();
+  if (at_frame.size() != nb)
     corrupt(path, "the batch datasets of /events have different lengths");
+  std::vector<std::size_t> kept;
+  if (!every_batch)
+    for (std::size_t i = 0; i < nb; ++i)
+      if (at_frame[i] != 0 || i + 1 == nb || slab[i + 1] != slab[i])
+        kept.push_back(i);
+  const std::size_t n = every_batch ? nb : kept.size();
+  const auto row = [&](std::size_t k) { return every_batch ? k : kept[k]; };
   // Reserved: a million-cell run has some 45 million batches, and a vector doubling its way there
   // would hold up to twice their 1.8 GB, and three times while it moves.
-  m.batches.reserve(m.batches.size() + nb);
-  for (std::size_t i = 0; i < nb; ++i)
-    m.batches.push_back({index[i], slab[i], u[i], time[i], at_frame[i] != 0, ranks[i]});
+  const std::size_t first = m.batches.size();
+  m.batches.resize(first + n);
+  const auto fill = [&](const char* name, auto value, auto set) {
+    const auto column = h5::read_column<decltype(value)>(g.get(), gn, name, path);
+    if (column.size() != nb)
+      corrupt(path, "the batch datasets of /events have different lengths");
+    for (std::size_t k = 0; k < n; ++k)
+      set(m.batches[first + k], column[row(k)]);
+  };
+  fill(L::batch_index, std::uint64_t{}, [](BatchRecord& b, std::uint64_t v) { b.batch = v; });
+  fill(L::batch_u, double{}, [](BatchRecord& b, double v) { b.u = v; });
+  fill(L::batch_time, double{}, [](BatchRecord& b, double v) { b.time = v; });
+  fill(L::batch_ranks, std::uint32_t{}, [](BatchRecord& b, std::uint32_t v) { b.ranks = v; });
+  for (std::size_t k = 0; k < n; ++k) {
+    m.batches[first + k].slab = slab[row(k)];
+    m.batches[first + k].at_frame = at_frame[row(k)] != 0;
+  }
   const auto frame = h5::read_column<std::uint64_t>(g.get(), gn, L::frame_index, path);
   const auto frame_batch = h5::read_column<std::uint64_t>(g.get(), gn, L::frame_batch, path);
   const auto frame_time = h5::read_column<double>(g.get(), gn, L::frame_time, path);
@@ -103,6 +122,7 @@ void read_events(hid_t file, Medusa& m, const std::string& path) {
   m.frames.reserve(m.frames.size() + frame.size());
   for (std::size_t i = 0; i < frame.size(); ++i)
     m.frames.push_back({frame[i], frame_batch[i], frame_time[i]});
+  return nb;
 }
 
 void read_cells(hid_t file, Medusa& m, std::uint64_t count, const std::string& path) {
@@ -305,8 +325,8 @@ Medusa read_store(const std::string& path, const StoreReadOptions& options) {
   m.end.time = h5::read_double_attribute(f, L::end_time, path);
   read_input(f, m, path);
   if (options.events) {
-    read_events(f, m, path);
-    if (m.batches.size() != h5::read_uint_attribute(f, L::batch_count, path) ||
+    const std::size_t batches = read_events(f, m, options.every_batch, path);
+    if (batches != h5::read_uint_attribute(f, L::batch_count, path) ||
         m.frames.size() != h5::read_uint_attribute(f, L::frame_count, path))
       corrupt(path, "batch_count or frame_count does not match /events");
   }

@@ -201,9 +201,12 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   const std::string& store = outputs.store_temporary();
   meter.stage("medusa store: reading back " + outputs.final_name(0));
   StageClock clock;
-  // The summary's counts at the first frame need the batch records (which batch reaches it).
+  // The summary's counts at the first and last frames need the batches that reach them, not the
+  // other batch records (one per event time).
   RunResult result;
-  result.medusa = medusa::read_store(store);
+  medusa::StoreReadOptions frame_batches;
+  frame_batches.every_batch = false;
+  result.medusa = medusa::read_store(store, frame_batches);
   const medusa::Medusa& medusa = result.medusa;
   timings.add("medusa_store", clock);
   check_interrupted();

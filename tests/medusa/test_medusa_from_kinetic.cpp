@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 using namespace medusa;
 using namespace medusa::test;
@@ -150,4 +151,43 @@ TEST_CASE("a cell present at frame 0 only is no longer in K after frame 1", "[me
   CHECK(run.statistics.deletions == 1);
   CHECK(run.engine.at_frame.at(1).count({0}) == 0);
   CHECK(run.engine.at_end.count({0}) == 0);
+}
+
+TEST_CASE("a store read with the frame batches only gives every frame's batch and complex as a whole read",
+          "[medusa][kinetic][store]") {
+  const std::uint64_t seed = GENERATE(21, 22);
+  CAPTURE(seed);
+  const int n = 40, frames = 5;
+  const int box = static_cast<int>(2000 * std::cbrt(static_cast<double>(n)));
+  const kinetic::Trajectories t = kinetic::testing::random_walk(seed, n, frames, box, 600);
+  kinetic::SquaredRadius rho2;
+  rho2.num = 1200 * 1200;
+  medusa::test::TempDir dir("frame-batches");
+  const std::string store = dir.file("walk.h5");
+  run_into_store(t, "1200", rho2, store, 1000); // audited at the frames: this test is about reading
+  const Medusa whole = read_store(store);
+  StoreReadOptions frame_batches;
+  frame_batches.every_batch = false;
+  const Medusa thin = read_store(store, frame_batches);
+  CAPTURE(whole.batches.size(), thin.batches.size());
+  REQUIRE(thin.batches.size() > 0);
+  CHECK(thin.batches.size() < whole.batches.size() / 4);
+  // Each kept record is one of the whole read's, in the same order.
+  std::size_t at = 0;
+  for (const BatchRecord& b : thin.batches) {
+    while (at < whole.batches.size() && whole.batches[at].batch != b.batch)
+      ++at;
+    REQUIRE(at < whole.batches.size());
+    const BatchRecord& w = whole.batches[at];
+    CHECK((w.slab == b.slab && w.at_frame == b.at_frame && w.ranks == b.ranks && w.time == b.time &&
+           w.u == b.u));
+  }
+  CHECK(thin.frames.size() == whole.frames.size());
+  CHECK(thin.cells.size() == whole.cells.size());
+  for (std::size_t k = 0; k < t.frames(); ++k) {
+    CAPTURE(k);
+    CHECK(frame_batch(thin, k) == frame_batch(whole, k));
+    for (std::optional<int> type : {std::optional<int>(), std::optional<int>(1)})
+      CHECK(cells_at_frame(thin, k, type) == cells_at_frame(whole, k, type));
+  }
 }

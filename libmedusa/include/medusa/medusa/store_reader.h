@@ -16,6 +16,12 @@ struct StoreReadOptions {
   // that needs only the cells (the diagrams of `medusa run`) can leave them out: Medusa::batches and
   // Medusa::frames stay empty, and /events is neither read nor checked.
   bool events = true;
+  // false (with events): of the batch records only those frame_batch needs, the frame batches and
+  // the last batch of each slab, a few per frame where a run has one per event time (45 million, 1.7
+  // GB, at a million cells). Medusa::batches then holds those only: enough for frame_batch,
+  // cells_at_frame and the summary of `medusa run`, not for what walks the event times (signatures,
+  // curves, the report).
+  bool every_batch = true;
 };
 
 Medusa read_store(const std::string& path, const StoreReadOptions& options = {});
