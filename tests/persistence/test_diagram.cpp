@@ -293,14 +293,22 @@ TEST_CASE("All diagrams of a run come whole and per type, forward and reverse, i
   CHECK(diagrams[4].pairs.size() == 1);
 }
 
-TEST_CASE("Diagrams made without their zero-length pairs equal the full ones with those pairs dropped") {
+namespace {
+
+// A triangle whole at the start (zero-length pairs), and a fourth cell that joins it later (a pair of
+// positive length); cells 0, 1 of type 1, cells 2, 3 of type 2.
+std::vector<Cell> triangle_and_late_edge() {
   std::vector<CellSpec> s;
-  // A triangle whole at the start (zero-length pairs), and a fourth cell that joins it later (a pair of
-  // positive length).
   add_closure(s, {0, 1, 2}, vt(0, 0, 0), vt(5, 0, 10));
   s.push_back({{3}, vt(0, 0, 0), vt(5, 0, 10)});
   s.push_back({{2, 3}, vt(2, 0, 4), vt(5, 0, 10)});
-  const auto cells = make_cells(s);
+  return make_cells(s);
+}
+
+} // namespace
+
+TEST_CASE("Diagrams made without their zero-length pairs equal the full ones with those pairs dropped") {
+  const auto cells = triangle_and_late_edge();
   const std::vector<int> vertex_type{1, 1, 2, 2};
   const auto full = compute_medusa_diagrams(cells, vertex_type, {1, 2});
   DiagramRunOptions options;
@@ -325,11 +333,7 @@ TEST_CASE("Diagrams made without their zero-length pairs equal the full ones wit
 
 TEST_CASE("Each diagram is handed over once, whole and with its representatives, before its zero-length "
           "pairs go") {
-  std::vector<CellSpec> s;
-  add_closure(s, {0, 1, 2}, vt(0, 0, 0), vt(5, 0, 10));
-  s.push_back({{3}, vt(0, 0, 0), vt(5, 0, 10)});
-  s.push_back({{2, 3}, vt(2, 0, 4), vt(5, 0, 10)});
-  const auto cells = make_cells(s);
+  const auto cells = triangle_and_late_edge();
   const std::vector<int> vertex_type{1, 1, 2, 2};
   std::vector<ClassRepresentatives> full_classes;
   DiagramRunOptions keep;
