@@ -95,8 +95,8 @@ std::size_t read_events(hid_t file, Medusa& m, bool every_batch, const std::stri
         kept.push_back(i);
   const std::size_t n = every_batch ? nb : kept.size();
   const auto row = [&](std::size_t k) { return every_batch ? k : kept[k]; };
-  // Reserved: a million-cell run has some 45 million batches, and a vector doubling its way there
-  // would hold up to twice their 1.8 GB, and three times while it moves.
+  // Sized at once: a million-cell run has some 45 million batches, and a vector doubling its way
+  // there would hold up to twice their 1.8 GB, and three times while it moves.
   const std::size_t first = m.batches.size();
   m.batches.resize(first + n);
   const auto fill = [&](const char* name, auto value, auto set) {

@@ -191,12 +191,6 @@ void write_all(const std::string& path, const std::vector<Diagram>& diagrams,
 
 } // namespace
 
-void write_diagrams_in_place(const std::string& store_path, const std::vector<Diagram>& diagrams,
-                             const std::vector<const ClassRepresentatives*>& classes) {
-  check_names(store_path, diagrams);
-  write_all(store_path, diagrams, classes);
-}
-
 void write_diagrams(const std::string& store_path, const std::vector<Diagram>& diagrams,
                     const std::vector<const ClassRepresentatives*>& classes) {
   check_names(store_path, diagrams);

@@ -24,18 +24,14 @@ std::string diagram_group_name(const Diagram& diagram);
 void write_diagrams(const std::string& store_path, const std::vector<Diagram>& diagrams,
                     const std::vector<const ClassRepresentatives*>& classes = {});
 
-// The same, written into the file itself: for a store nobody else can see yet (`medusa run` writes
-// its store under a temporary name and publishes it with the run's other outputs at the end).
-void write_diagrams_in_place(const std::string& store_path, const std::vector<Diagram>& diagrams,
-                             const std::vector<const ClassRepresentatives*>& classes = {});
-
 // The group `/persistence` written into a store one diagram at a time, as each is made: the caller
 // can then drop a diagram's zero-length pairs and representatives as soon as it is stored, where
 // they would otherwise all be held until the last diagram is done (`medusa run`: they are most of
-// its memory after the kinetic stage). Like write_diagrams_in_place, for a store nobody else can see
-// yet. The diagrams' group names (diagram_group_name) are given up front, in their order, which
-// `diagram_order` records whatever order they are written in; the datasets do not depend on that
-// order. Throws StoreError as write_diagrams does.
+// its memory after the kinetic stage). It writes into the file itself, so it is for a store nobody
+// else can see yet (`medusa run` writes its store under a temporary name and publishes it with the
+// run's other outputs at the end). The diagrams' group names (diagram_group_name) are given up front, in
+// their order, which `diagram_order` records whatever order they are written in; the datasets do not depend
+// on that order. Throws StoreError as write_diagrams does.
 class DiagramStoreWriter {
 public:
   DiagramStoreWriter(const std::string& store_path, const std::vector<std::string>& names);
