@@ -52,7 +52,7 @@ void validate_medusa(const Medusa& m, const std::string& name) {
       if (c.facets[k] >= n)
         invalid(name, cell_text(c) + " has an unknown facet " + std::to_string(c.facets[k]));
       const Cell& f = m.cells[c.facets[k]];
-      std::vector<VertexId> face = c.vertices;
+      std::vector<VertexId> face(c.vertices.begin(), c.vertices.end());
       face.erase(face.begin() + static_cast<std::ptrdiff_t>(k));
       if (f.vertices != face)
         invalid(name, cell_text(c) + " has facet " + cell_text(f) + " in position " + std::to_string(k));

@@ -87,14 +87,12 @@ const medusa::Cell& cell_at_position(const std::vector<medusa::Cell>& cells, std
 
 } // namespace
 
-const std::vector<kinetic::VertexId>& birth_vertices(const PersistencePair& p,
-                                                     const std::vector<medusa::Cell>& cells) {
+const medusa::CellVertices& birth_vertices(const PersistencePair& p, const std::vector<medusa::Cell>& cells) {
   return cell_at_position(cells, p.birth_position).vertices;
 }
 
-const std::vector<kinetic::VertexId>& death_vertices(const PersistencePair& p,
-                                                     const std::vector<medusa::Cell>& cells) {
-  static const std::vector<kinetic::VertexId> none;
+const medusa::CellVertices& death_vertices(const PersistencePair& p, const std::vector<medusa::Cell>& cells) {
+  static const medusa::CellVertices none{};
   return p.essential ? none : cell_at_position(cells, p.death_position).vertices;
 }
 

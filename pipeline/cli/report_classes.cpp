@@ -19,7 +19,7 @@ using json = nlohmann::ordered_json;
 // the page says so. large_3d (4,945 cells, 11 frames) has 163,185.
 constexpr std::size_t max_embedded_coordinates = 1'000'000;
 
-json vertex_list(const std::vector<kinetic::VertexId>& vertices) {
+template <class Vertices> json vertex_list(const Vertices& vertices) {
   json out = json::array();
   for (kinetic::VertexId v : vertices)
     out.push_back(v);
@@ -61,7 +61,7 @@ json class_json(const persistence::ClassRecord& r, const persistence::DiagramWit
   std::set<std::pair<kinetic::VertexId, kinetic::VertexId>> edges;
   std::set<std::array<kinetic::VertexId, 3>> triangles;
   for (medusa::CellId id : found.classes.cycles[i]) {
-    const std::vector<kinetic::VertexId>& v = medusa.cell(id).vertices;
+    const medusa::CellVertices& v = medusa.cell(id).vertices;
     if (r.dim == 0)
       continue;
     vertices.insert(v.begin(), v.end());
@@ -72,7 +72,7 @@ json class_json(const persistence::ClassRecord& r, const persistence::DiagramWit
       triangles.insert({v[0], v[1], v[2]});
   }
   for (medusa::CellId id : found.classes.clusters[i]) {
-    const std::vector<kinetic::VertexId>& v = medusa.cell(id).vertices;
+    const medusa::CellVertices& v = medusa.cell(id).vertices;
     vertices.insert(v.begin(), v.end());
   }
   json e = json::array(), t = json::array();
@@ -88,7 +88,7 @@ json class_json(const persistence::ClassRecord& r, const persistence::DiagramWit
           {"birth_cells", r.birth_cells},
           {"death_cells", r.death_cells},
           {"cells", r.cells},
-          {"vertices", vertex_list({vertices.begin(), vertices.end()})},
+          {"vertices", vertex_list(vertices)},
           {"edges", std::move(e)},
           {"triangles", std::move(t)},
           {"birth_simplex", vertex_list(medusa.cell(r.birth_cell).vertices)},

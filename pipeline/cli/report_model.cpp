@@ -37,7 +37,7 @@ std::string type_name(const kinetic::Trajectories& input, int type) {
   return index < input.type_names.size() ? input.type_names[index] : "";
 }
 
-json cc3d_ids(const std::vector<kinetic::VertexId>& vertices, const kinetic::Trajectories& input) {
+json cc3d_ids(const medusa::CellVertices& vertices, const kinetic::Trajectories& input) {
   json ids = json::array();
   for (const kinetic::VertexId v : vertices)
     ids.push_back(input.cells.at(static_cast<std::size_t>(v)).cell_id);

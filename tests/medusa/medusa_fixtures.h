@@ -47,7 +47,7 @@ inline medusa::Medusa collect(const Stream& stream, std::size_t vertices, std::s
 inline SimplexSet tuples(const medusa::Medusa& m, const std::vector<medusa::CellId>& ids) {
   SimplexSet out;
   for (medusa::CellId id : ids)
-    out.insert(m.cell(id).vertices);
+    out.insert(m.cell(id).vertices.to_vector());
   return out;
 }
 

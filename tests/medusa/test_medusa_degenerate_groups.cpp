@@ -149,7 +149,7 @@ TEST_CASE("the medusa of a box sheared through a cube holds the cube's instant c
       REQUIRE(c.birth == c.death);
       REQUIRE((!at || *at == c.birth)); // one repair, at one rank
       at = c.birth;
-      REQUIRE(repaired.insert(c.vertices).second);
+      REQUIRE(repaired.insert(c.vertices.to_vector()).second);
       seven_simplex = seven_simplex || c.vertices == std::vector<kinetic::VertexId>{0, 1, 2, 3, 4, 5, 6, 7};
     }
   REQUIRE(seven_simplex);
@@ -158,8 +158,8 @@ TEST_CASE("the medusa of a box sheared through a cube holds the cube's instant c
   std::set<std::vector<kinetic::VertexId>> alive;
   for (const medusa::Cell& c : m.cells)
     if (c.kind == medusa::CellKind::regular && c.birth <= *at && *at <= c.death) {
-      REQUIRE(repaired.count(c.vertices) == 0);
-      alive.insert(c.vertices);
+      REQUIRE(repaired.count(c.vertices.to_vector()) == 0);
+      alive.insert(c.vertices.to_vector());
     }
   CAPTURE(repaired.size(), alive.size());
   REQUIRE(repaired.size() + alive.size() == 255);
@@ -215,7 +215,7 @@ TEST_CASE("the medusa of a square pyramid through a cospherical moment holds its
   std::vector<std::vector<kinetic::VertexId>> instants;
   for (const medusa::Cell& c : m.cells)
     if (c.kind == medusa::CellKind::repair)
-      instants.push_back(c.vertices);
+      instants.push_back(c.vertices.to_vector());
   std::sort(instants.begin(), instants.end());
   REQUIRE(instants == std::vector<std::vector<kinetic::VertexId>>{{0, 1, 2, 3}, {0, 1, 2, 3, 4}});
   const std::vector<std::size_t> b = betti(m);
@@ -243,7 +243,7 @@ TEST_CASE("the medusa of a planar repair through five cocircular cells holds the
   for (const medusa::Cell& c : m.cells)
     if (c.kind == medusa::CellKind::repair) {
       REQUIRE(c.birth == c.death);
-      instants.push_back(c.vertices);
+      instants.push_back(c.vertices.to_vector());
     }
   std::sort(instants.begin(), instants.end());
   const std::vector<std::vector<kinetic::VertexId>> expected = {

@@ -30,7 +30,7 @@ TEST_CASE("random consistent streams give cells with d d = 0 and facet lifetimes
       std::map<CellId, int> second;
       for (std::size_t i = 0; i < c.facets.size(); ++i) {
         const Cell& f = m.cell(c.facets[i]);
-        std::vector<VertexId> face = c.vertices;
+        std::vector<VertexId> face = c.vertices.to_vector();
         face.erase(face.begin() + static_cast<std::ptrdiff_t>(i));
         REQUIRE(f.vertices == face);
         REQUIRE(f.birth <= c.birth);

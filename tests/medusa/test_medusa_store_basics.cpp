@@ -29,7 +29,7 @@ TEST_CASE("the Appendix B medusa survives a store round trip with its boundaries
   const CellId flip = read.cells_of_dimension(4).front();
   std::vector<std::vector<VertexId>> boundary;
   for (CellId f : read.boundary(flip))
-    boundary.push_back(read.cell(f).vertices);
+    boundary.push_back(read.cell(f).vertices.to_vector());
   CHECK(boundary == std::vector<std::vector<VertexId>>{
                         {1, 2, 3, 4}, {0, 2, 3, 4}, {0, 1, 3, 4}, {0, 1, 2, 4}, {0, 1, 2, 3}});
   CHECK(read.cells_of_dimension(0).size() == 5);

@@ -42,7 +42,7 @@ inline std::vector<Cell> make_cells(const std::vector<CellSpec>& specs) {
     if (c.vertices.size() < 2)
       continue;
     for (std::size_t k = 0; k < c.vertices.size(); ++k) {
-      std::vector<kinetic::VertexId> facet = c.vertices;
+      std::vector<kinetic::VertexId> facet = c.vertices.to_vector();
       facet.erase(facet.begin() + static_cast<std::ptrdiff_t>(k));
       bool found = false;
       for (const Cell& f : cells)

@@ -3,10 +3,10 @@
 #pragma once
 
 #include "medusa/kinetic/simplex.h"
+#include "medusa/medusa/small_list.h"
 
 #include <cstdint>
 #include <tuple>
-#include <vector>
 
 namespace medusa {
 
@@ -37,15 +37,21 @@ enum class CellKind : std::uint8_t {
   repair = 3   // a subset of a degenerate group found by a static repair (instant)
 };
 
+// Up to four vertices (a tetrahedron) and four facets are held in the cell itself: a medusa holds one
+// record per cell, and a heap block per list would cost more than the list.
+using CellVertices = SmallList<VertexId, 4>;
+using CellFacets = SmallList<CellId, 4>;
+
 struct Cell {
   CellId id = 0;
-  std::vector<VertexId> vertices; // sorted; dimension = vertices.size() - 1 (docs/MATH.md §6.1)
+  CellVertices vertices; // sorted; dimension = vertices.size() - 1 (docs/MATH.md §6.1)
   VirtualTime birth;
   VirtualTime death; // closed lifetime [birth, death]; birth == death for instant cells
   CellKind kind = CellKind::regular;
-  std::vector<CellId> facets; // ids of the facet cells, one per vertex removed (empty for vertices)
+  CellFacets facets; // ids of the facet cells, one per vertex removed (empty for vertices)
 
   int dim() const { return static_cast<int>(vertices.size()) - 1; }
 };
+static_assert(sizeof(Cell) <= 128, "Cell grew: a medusa holds one per cell");
 
 } // namespace medusa

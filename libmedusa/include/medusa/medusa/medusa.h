@@ -22,7 +22,7 @@ struct Medusa {
 
   const Cell& cell(CellId id) const { return cells.at(static_cast<std::size_t>(id)); }
   // The boundary of a cell over Z/2: its facet cells, whose lifetimes contain its own (docs/MATH.md §6.4).
-  const std::vector<CellId>& boundary(CellId id) const { return cell(id).facets; }
+  const CellFacets& boundary(CellId id) const { return cell(id).facets; }
   // The ids of the cells of dimension k, increasing.
   std::vector<CellId> cells_of_dimension(int k) const;
   // The type of every vertex of `c` is `type` (docs/MATH.md §7.4); needs the input.

@@ -66,10 +66,8 @@ inline Diagram compute_diagram(const std::vector<medusa::Cell>& cells, const Fil
 // The vertices of the cells that formed and killed the class, from the cell vector the diagram was
 // built from; death_vertices is empty for an essential class. InternalError when the position is
 // outside `cells` (a diagram paired with another cell vector).
-const std::vector<kinetic::VertexId>& birth_vertices(const PersistencePair& p,
-                                                     const std::vector<medusa::Cell>& cells);
-const std::vector<kinetic::VertexId>& death_vertices(const PersistencePair& p,
-                                                     const std::vector<medusa::Cell>& cells);
+const medusa::CellVertices& birth_vertices(const PersistencePair& p, const std::vector<medusa::Cell>& cells);
+const medusa::CellVertices& death_vertices(const PersistencePair& p, const std::vector<medusa::Cell>& cells);
 
 // The points of degree k; zero-length pairs only when asked for.
 std::vector<PersistencePair> pairs_in_dimension(const Diagram& diagram, int k, bool keep_zero_length = false);
