@@ -164,6 +164,12 @@ std::string bundled_example() {
                    "; give a CC3D output folder or cells.csv[.gz]");
 }
 
+// The size of the run read, for --timings once its trajectories are gone.
+struct InputCounts {
+  std::size_t cells = 0;
+  std::size_t frames = 0;
+};
+
 // What the summary and --timings report about the stages after the kinetic one.
 struct StoreFacts {
   std::size_t cells = 0;
@@ -287,15 +293,15 @@ std::string describe_audits(const kinetic::KineticStatistics& stats, std::size_t
 
 // The machine-readable record of --timings (read by bench/e2e_bench.py).
 void write_timings(const RunOutputs& outputs, const std::string& run_id, const RunArguments& args,
-                   const io::RunData& data, const std::string& radius, const StageTimings& timings,
+                   const InputCounts& input, const std::string& radius, const StageTimings& timings,
                    const kinetic::KineticStatistics& stats,
                    const std::vector<std::int64_t>& peak_rss_at_frame, const StoreFacts& facts,
                    unsigned threads) {
   nlohmann::ordered_json j;
   j["run_id"] = run_id;
   j["input"] = args.input;
-  j["cells"] = data.trajectories.cells.size();
-  j["frames"] = data.trajectories.frames();
+  j["cells"] = input.cells;
+  j["frames"] = input.frames;
   j["radius"] = radius;
   j["threads"] = threads;
   nlohmann::ordered_json wall = nlohmann::ordered_json::object(), cpu = nlohmann::ordered_json::object();
@@ -489,7 +495,11 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   }
   // The engine is gone: the stages below (which hold the whole medusa) reuse its memory instead of
   // adding to it, and the freed pages go back to the system so that worker threads' heaps can have
-  // them too. Peak memory is then the larger of the two parts, not their sum.
+  // them too. Peak memory is then the larger of the two parts, not their sum. The trajectories read
+  // (and the covering space's) go too: the stages below read them back from the store with the cells.
+  const InputCounts input_counts{data.trajectories.cells.size(), data.trajectories.frames()};
+  data.trajectories = kinetic::Trajectories{};
+  cover.reset();
   medusa::release_free_memory();
 
   check_interrupted();
@@ -506,8 +516,8 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   write_wrapping_loops(summary, result.medusa, outputs.store_temporary());
   timings.add("exports", clock_summary);
   if (!args.timings.empty())
-    write_timings(outputs, run_id, resolved, data, radius, timings, stats, peak_rss_at_frame, result.facts,
-                  threads);
+    write_timings(outputs, run_id, resolved, input_counts, radius, timings, stats, peak_rss_at_frame,
+                  result.facts, threads);
   // The last moment an interrupt undoes the run: after it, the outputs replace the previous ones.
   check_interrupted();
   outputs.publish();
