@@ -156,9 +156,11 @@ private:
 
   std::uint32_t size_ = 0;
   std::uint32_t capacity_ = N; // N: the values are in local_; above N: in heap_
+  // heap_ starts null, so that no path reads an indeterminate pointer (GCC cannot tell that
+  // capacity_ == N means local_ holds the values).
   union {
+    T* heap_ = nullptr;
     T local_[N];
-    T* heap_;
   };
 };
 
