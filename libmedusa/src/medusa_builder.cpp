@@ -56,9 +56,9 @@ void MedusaBuilder::check_order(const kinetic::EventTime& time, const char* what
                         " does not follow batch " + std::to_string(last_batch_));
 }
 
-std::vector<CellId> MedusaBuilder::facets_of(const std::vector<VertexId>& vertices, const InstantMap& instant,
-                                             const VirtualTime& when) const {
-  std::vector<CellId> facets;
+CellFacets MedusaBuilder::facets_of(const std::vector<VertexId>& vertices, const InstantMap& instant,
+                                    const VirtualTime& when) const {
+  CellFacets facets;
   if (vertices.size() < 2)
     return facets;
   facets.reserve(vertices.size());
@@ -106,7 +106,7 @@ void MedusaBuilder::death(const Simplex& s, const VirtualTime& when) {
                         " while a coface stays");
   Cell c;
   c.id = it->second.id;
-  c.vertices = vertices_of(s);
+  c.vertices.assign(s.begin(), s.end());
   c.birth = it->second.birth;
   c.death = when;
   c.kind = CellKind::regular;

@@ -52,8 +52,10 @@ void validate_medusa(const Medusa& m, const std::string& name) {
       if (c.facets[k] >= n)
         invalid(name, cell_text(c) + " has an unknown facet " + std::to_string(c.facets[k]));
       const Cell& f = m.cells[c.facets[k]];
-      std::vector<VertexId> face(c.vertices.begin(), c.vertices.end());
-      face.erase(face.begin() + static_cast<std::ptrdiff_t>(k));
+      CellVertices face;
+      for (std::size_t i = 0; i < c.vertices.size(); ++i)
+        if (i != k)
+          face.push_back(c.vertices[i]);
       if (f.vertices != face)
         invalid(name, cell_text(c) + " has facet " + cell_text(f) + " in position " + std::to_string(k));
       if (c.birth < f.birth || f.death < c.death)

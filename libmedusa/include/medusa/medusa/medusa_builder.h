@@ -36,7 +36,7 @@ private:
   struct Active {
     CellId id = 0;
     VirtualTime birth;
-    std::vector<CellId> facets;
+    CellFacets facets;
     std::uint32_t cofaces = 0; // active cofaces: a simplex cannot leave while one remains
   };
   using InstantMap = std::map<std::vector<VertexId>, CellId>;
@@ -45,8 +45,8 @@ private:
   void birth(const kinetic::Simplex& s, const VirtualTime& when);
   void death(const kinetic::Simplex& s, const VirtualTime& when);
   void step(const kinetic::Step& step, const VirtualTime& when);
-  std::vector<CellId> facets_of(const std::vector<VertexId>& vertices, const InstantMap& instant,
-                                const VirtualTime& when) const;
+  CellFacets facets_of(const std::vector<VertexId>& vertices, const InstantMap& instant,
+                       const VirtualTime& when) const;
 
   CellSink& sink_;
   std::unordered_map<kinetic::Simplex, Active, kinetic::SimplexHash> active_;
