@@ -97,12 +97,27 @@ std::array<std::size_t, 3> end_classes_beyond_first(const std::vector<medusa::Ce
   return rank;
 }
 
-std::array<HoleFates, 3> hole_fates(const std::vector<medusa::Cell>& cells, const std::vector<char>& member,
-                                    const Diagram& forward, const Diagram& reverse, std::uint64_t first_batch,
-                                    std::uint64_t end_batch, const std::function<void()>& poll) {
+namespace {
+
+void check_pair_of_diagrams(const Diagram& forward, const Diagram& reverse) {
   if (forward.direction != Direction::forward || reverse.direction != Direction::reverse ||
       forward.cell_type != reverse.cell_type)
     throw InternalError("hole fates: needs the forward and reverse diagrams of one sub-medusa");
+}
+
+} // namespace
+
+std::array<HoleFates, 3> hole_fates(const std::vector<medusa::Cell>& cells, const std::vector<char>& member,
+                                    const Diagram& forward, const Diagram& reverse, std::uint64_t first_batch,
+                                    std::uint64_t end_batch, const std::function<void()>& poll) {
+  check_pair_of_diagrams(forward, reverse); // before the reduction, which is the long part
+  return hole_fates(forward, reverse, first_batch, end_batch,
+                    end_classes_beyond_first(cells, member, first_batch, end_batch, poll));
+}
+
+std::array<HoleFates, 3> hole_fates(const Diagram& forward, const Diagram& reverse, std::uint64_t first_batch,
+                                    std::uint64_t end_batch, const std::array<std::size_t, 3>& beyond) {
+  check_pair_of_diagrams(forward, reverse);
   std::array<HoleFates, 3> fates;
   for (const PersistencePair& p : forward.pairs) {
     if (p.zero_length || p.dim < 1 || p.dim > 2)
@@ -120,8 +135,6 @@ std::array<HoleFates, 3> hole_fates(const std::vector<medusa::Cell>& cells, cons
   for (const PersistencePair& p : reverse.pairs)
     if (p.essential && p.dim >= 1 && p.dim <= 2 && p.birth_time.batch >= end_batch)
       ++carried[static_cast<std::size_t>(p.dim)];
-  const std::array<std::size_t, 3> beyond =
-      end_classes_beyond_first(cells, member, first_batch, end_batch, poll);
   for (std::size_t k = 1; k <= 2; ++k) {
     HoleFates& h = fates[k];
     // dim(A ∩ B) = dim B - rank(H_k(L_end) -> H_k(M, L_first)); B / (A ∩ B) embeds in H_k(M) / A.

@@ -38,8 +38,26 @@ struct ClassFates {
   std::size_t cells_leaving_at_first = 0;
 };
 
-// `medusa` must hold its batches (read_store with events). `forward` and `reverse` are the diagrams
-// of the same sub-medusa (cell_type all_types for the whole medusa), zero-length pairs dropped or not.
+// What ClassFates takes from the cells of one sub-medusa alone, without its diagrams: the Betti numbers
+// of K at the first and last frames, and the ranks of end_classes_beyond_first (one PHAT reduction of
+// the coned sub-medusa, docs/MATH.md §7.12). `medusa run` computes them before its diagrams, so that this
+// reduction does not run while the diagrams' pairs are held.
+struct FatesFromCells {
+  int cell_type = persistence::all_types;
+  std::array<std::size_t, 4> betti_first{}, betti_end{}; // b0..b3 of K at the first and last frames
+  std::size_t cells_leaving_at_first = 0;
+  std::array<std::size_t, 3> end_beyond_first{};
+};
+
+// `medusa` must hold its batches (read_store with events); `cell_type` is a type or all_types.
+FatesFromCells fates_from_cells(const medusa::Medusa& medusa, int cell_type);
+
+// `forward` and `reverse` are the diagrams of the sub-medusa of `cells` (cell_type all_types for the
+// whole medusa), zero-length pairs dropped or not; InternalError if their types differ from it.
+ClassFates class_fates(const medusa::Medusa& medusa, const FatesFromCells& cells,
+                       const persistence::Diagram& forward, const persistence::Diagram& reverse);
+
+// Both steps at once.
 ClassFates class_fates(const medusa::Medusa& medusa, const persistence::Diagram& forward,
                        const persistence::Diagram& reverse);
 

@@ -180,7 +180,8 @@ struct StoreFacts {
 struct RunResult {
   medusa::Medusa medusa;
   std::vector<persistence::Diagram> diagrams;
-  std::vector<LongestFilled> longest; // the summary's longest-lived filled loop and cavity per type
+  std::vector<FatesFromCells> from_cells; // the summary's counts that need no diagram, per sub-medusa
+  std::vector<LongestFilled> longest;     // the summary's longest-lived filled loop and cavity per type
   StoreFacts facts;
 };
 
@@ -219,6 +220,21 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
 
   const std::vector<int> vertex_type = vertex_types(medusa);
   const std::vector<int> types = distinct_types(vertex_type);
+  // The summary's counts at the first and last frames, and the reduction of each coned sub-medusa that
+  // splits its open classes (docs/MATH.md §7.12), come before the diagrams: that reduction is as large
+  // as a whole-medusa filtration's, and after the diagrams it would run beside all their pairs.
+  meter.stage("first and last frames: complexes and open classes (whole medusa and " +
+              std::to_string(types.size()) + " cell types, PHAT)");
+  clock = StageClock{};
+  std::vector<int> sub_medusas = {persistence::all_types};
+  sub_medusas.insert(sub_medusas.end(), types.begin(), types.end());
+  for (int type : sub_medusas) {
+    result.from_cells.push_back(fates_from_cells(medusa, type));
+    medusa::release_free_memory();
+  }
+  timings.add("reduction", clock);
+  check_interrupted();
+
   const std::size_t count = 2 * (types.size() + 1);
   const std::string on = " on " + std::to_string(std::min<std::size_t>(threads, count)) + " thread(s)";
   meter.stage("filtrations and reductions: " + std::to_string(count) + " (whole medusa and " +
@@ -511,8 +527,8 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   StageClock clock_summary;
   std::ostringstream summary;
   const std::vector<std::string> warnings =
-      write_run_summary(summary, result.medusa, stats, result.diagrams, radius, radius_note, result.longest,
-                        outputs.final_name(0));
+      write_run_summary(summary, result.medusa, stats, result.diagrams, result.from_cells, radius,
+                        radius_note, result.longest, outputs.final_name(0));
   write_wrapping_loops(summary, result.medusa, outputs.store_temporary());
   timings.add("exports", clock_summary);
   if (!args.timings.empty())

@@ -157,6 +157,7 @@ void describe_forward_diagram(std::ostream& out, const medusa::Medusa& medusa,
 std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
                                            const kinetic::KineticStatistics& stats,
                                            const std::vector<persistence::Diagram>& diagrams,
+                                           const std::vector<FatesFromCells>& from_cells,
                                            const std::string& radius_text, const std::string& radius_note,
                                            const std::vector<LongestFilled>& longest,
                                            const std::string& store) {
@@ -198,7 +199,11 @@ std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medu
         find_diagram(diagrams, d.cell_type, persistence::Direction::reverse);
     if (reverse == nullptr)
       throw InternalError("run summary: no reverse diagram for type " + type_label(d.cell_type));
-    const ClassFates fates = class_fates(medusa, d, *reverse);
+    const auto cells = std::find_if(from_cells.begin(), from_cells.end(),
+                                    [&](const FatesFromCells& f) { return f.cell_type == d.cell_type; });
+    if (cells == from_cells.end())
+      throw InternalError("run summary: no fates from the cells of type " + type_label(d.cell_type));
+    const ClassFates fates = class_fates(medusa, *cells, d, *reverse);
     std::string label = "all cells";
     if (d.cell_type != persistence::all_types) {
       const auto index = static_cast<std::size_t>(d.cell_type);

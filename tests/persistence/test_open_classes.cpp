@@ -215,3 +215,23 @@ TEST_CASE("Cells not closed under facets are an internal error") {
   member[0] = 0; // a vertex left out, its edges kept
   CHECK_THROWS_AS(end_classes_beyond_first(cells, member, first_batch, end_batch), medusa::InternalError);
 }
+
+TEST_CASE("Fates from ranks reduced before the diagrams equal those reduced with them, and wrong ranks are "
+          "refused") {
+  std::vector<CellSpec> s;
+  add_cycle(s, {0, 1, 2, 3}, 0, end_batch); // still open, initial
+  add_cycle(s, {4, 5, 6, 7}, 3, end_batch); // still open, formed later
+  const std::vector<medusa::Cell> cells = positional(make_cells(s));
+  const std::array<std::size_t, 3> beyond = end_classes_beyond_first(cells, {}, first_batch, end_batch);
+  CHECK(beyond == std::array<std::size_t, 3>{0, 1, 0});
+  const Diagram forward = compute_diagram(cells, make_filtration(cells, Direction::forward));
+  const Diagram reverse = compute_diagram(cells, make_filtration(cells, Direction::reverse));
+  const auto fates = hole_fates(forward, reverse, first_batch, end_batch, beyond);
+  check(fates[1], {0, 0, 1, 1, 0, 0});
+  const auto with_reduction = hole_fates(cells, {}, forward, reverse, first_batch, end_batch);
+  CHECK(with_reduction[1].still_open_formed == fates[1].still_open_formed);
+  CHECK(with_reduction[1].still_open_initial == fates[1].still_open_initial);
+  // Both loops carried to the end and formed later is more than the one formed later.
+  CHECK_THROWS_AS(hole_fates(forward, reverse, first_batch, end_batch, {0, 2, 0}), medusa::InternalError);
+  CHECK_THROWS_AS(hole_fates(reverse, forward, first_batch, end_batch, beyond), medusa::InternalError);
+}

@@ -54,4 +54,10 @@ std::array<HoleFates, 3> hole_fates(const std::vector<medusa::Cell>& cells, cons
                                     const Diagram& forward, const Diagram& reverse, std::uint64_t first_batch,
                                     std::uint64_t end_batch, const std::function<void()>& poll = {});
 
+// The same with end_classes_beyond_first's ranks `beyond` already computed for these cells and batches:
+// a caller can reduce the coned medusa before it holds the diagrams, whose pairs would otherwise sit in
+// memory beside that reduction.
+std::array<HoleFates, 3> hole_fates(const Diagram& forward, const Diagram& reverse, std::uint64_t first_batch,
+                                    std::uint64_t end_batch, const std::array<std::size_t, 3>& beyond);
+
 } // namespace medusa::persistence
