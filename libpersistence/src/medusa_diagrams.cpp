@@ -98,9 +98,9 @@ std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& ce
   };
   detail::run_jobs(jobs.size(), options.threads, whole, [&](std::size_t i) {
     job(i);
-    // The filtration and its matrix are freed: their pages go back before the next whole-medusa job.
-    if (whole(i))
-      release_free_memory();
+    // The filtration, its matrix and the zero-length pairs are freed: their pages go back before the
+    // next job, whose thread may allocate from another malloc arena that could not reuse them.
+    release_free_memory();
   });
   if (options.phases != nullptr)
     for (const DiagramPhaseSeconds& s : seconds) {
