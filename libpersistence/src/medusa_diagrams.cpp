@@ -16,9 +16,7 @@ namespace {
 
 std::vector<std::pair<int, Direction>> medusa_jobs(const std::vector<int>& types) {
   std::vector<std::pair<int, Direction>> jobs;
-  for (Direction direction : {Direction::forward, Direction::reverse})
-    jobs.emplace_back(all_types, direction);
-  for (int type : types)
+  for (int type : sub_medusa_types(types))
     for (Direction direction : {Direction::forward, Direction::reverse})
       jobs.emplace_back(type, direction);
   return jobs;
@@ -47,6 +45,12 @@ Diagram audited_diagram(const std::vector<medusa::Cell>& cells, const Filtration
 }
 
 } // namespace
+
+std::vector<int> sub_medusa_types(const std::vector<int>& types) {
+  std::vector<int> sub_medusas = {all_types};
+  sub_medusas.insert(sub_medusas.end(), types.begin(), types.end());
+  return sub_medusas;
+}
 
 std::vector<std::string> medusa_diagram_names(const std::vector<int>& types) {
   std::vector<std::string> names;

@@ -226,9 +226,7 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   meter.stage("first and last frames: complexes and open classes (whole medusa and " +
               std::to_string(types.size()) + " cell types, PHAT)");
   clock = StageClock{};
-  std::vector<int> sub_medusas = {persistence::all_types};
-  sub_medusas.insert(sub_medusas.end(), types.begin(), types.end());
-  for (int type : sub_medusas) {
+  for (int type : persistence::sub_medusa_types(types)) {
     result.from_cells.push_back(fates_from_cells(medusa, type));
     medusa::release_free_memory();
   }

@@ -331,6 +331,19 @@ TEST_CASE("Diagrams made without their zero-length pairs equal the full ones wit
   CHECK_THROWS_AS(compute_medusa_diagrams(cells, vertex_type, {1, 2}, options), medusa::InternalError);
 }
 
+TEST_CASE("A run's diagrams come whole medusa first, then each cell type, forward before reverse") {
+  const auto cells = triangle_and_late_edge();
+  const std::vector<int> sub_medusas = sub_medusa_types({1, 2});
+  REQUIRE(sub_medusas == std::vector<int>{all_types, 1, 2});
+  const auto diagrams = compute_medusa_diagrams(cells, {1, 1, 2, 2}, {1, 2});
+  REQUIRE(diagrams.size() == 2 * sub_medusas.size());
+  for (std::size_t i = 0; i < diagrams.size(); ++i) {
+    CAPTURE(i);
+    CHECK(diagrams[i].cell_type == sub_medusas[i / 2]);
+    CHECK(diagrams[i].direction == (i % 2 == 0 ? Direction::forward : Direction::reverse));
+  }
+}
+
 TEST_CASE("Each diagram is handed over once, whole and with its representatives, before its zero-length "
           "pairs go") {
   const auto cells = triangle_and_late_edge();

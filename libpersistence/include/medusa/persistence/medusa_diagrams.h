@@ -54,6 +54,10 @@ struct DiagramRunOptions {
   }
 };
 
+// The sub-medusas whose diagrams compute_medusa_diagrams makes for `types`, in its order: the whole
+// medusa (all_types), then each type of `types`.
+std::vector<int> sub_medusa_types(const std::vector<int>& types);
+
 // The group names (diagram_group_name) of the diagrams compute_medusa_diagrams makes for `types`, in
 // its order: the names DiagramStoreWriter is given up front.
 std::vector<std::string> medusa_diagram_names(const std::vector<int>& types);
