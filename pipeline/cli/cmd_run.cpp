@@ -233,7 +233,7 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   timings.add("reduction", clock);
   check_interrupted();
 
-  const std::size_t count = 2 * (types.size() + 1);
+  const std::size_t count = 2 * persistence::sub_medusa_types(types).size(); // forward and reverse
   const std::string on = " on " + std::to_string(std::min<std::size_t>(threads, count)) + " thread(s)";
   meter.stage("filtrations and reductions: " + std::to_string(count) + " (whole medusa and " +
               std::to_string(types.size()) + " cell types, forward and reverse, " +

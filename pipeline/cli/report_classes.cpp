@@ -5,6 +5,7 @@
 #include "interrupt.h"
 
 #include "medusa/persistence/class_records.h"
+#include "medusa/persistence/medusa_diagrams.h"
 
 #include <algorithm>
 #include <cmath>
@@ -108,11 +109,8 @@ json report_classes(const std::string& store, const medusa::Medusa& medusa, std:
   json periodic = json::array();
   for (std::int64_t length : medusa.run.periodic_lengths)
     periodic.push_back(static_cast<double>(length) / static_cast<double>(input.scale));
-  std::vector<int> types = {persistence::all_types};
-  for (int t : distinct_types(vertex_types(medusa)))
-    types.push_back(t);
   json sections = json::array();
-  for (int type : types) {
+  for (int type : persistence::sub_medusa_types(distinct_types(vertex_types(medusa)))) {
     check_interrupted();
     const persistence::DiagramWithClasses found = persistence::diagram_with_classes(
         store, medusa, persistence::Direction::forward, type, persistence::RepresentativeOptions{});
