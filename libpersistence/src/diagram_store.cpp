@@ -60,26 +60,23 @@ void write_diagram(hid_t parent, const Diagram& d, const ClassRepresentatives* c
   h5::write_attribute(group.get(), "direction",
                       std::string(d.direction == Direction::forward ? "forward" : "reverse"), path);
   h5::write_attribute(group.get(), "type", std::int64_t{d.cell_type}, path);
-  std::vector<double> birth, death;
-  std::vector<std::int32_t> dimension;
-  std::vector<std::uint64_t> birth_cell, death_cell;
-  std::vector<std::uint8_t> essential, zero_length;
-  for (const PersistencePair& p : d.pairs) {
-    birth.push_back(p.birth);
-    death.push_back(p.death);
-    dimension.push_back(p.dim);
-    birth_cell.push_back(p.birth_cell);
-    death_cell.push_back(p.death_cell);
-    essential.push_back(p.essential ? 1 : 0);
-    zero_length.push_back(p.zero_length ? 1 : 0);
-  }
-  h5::write_column(group.get(), "birth", birth, path);
-  h5::write_column(group.get(), "death", death, path);
-  h5::write_column(group.get(), "dimension", dimension, path);
-  h5::write_column(group.get(), "birth_cell", birth_cell, path);
-  h5::write_column(group.get(), "death_cell", death_cell, path);
-  h5::write_column(group.get(), "essential", essential, path);
-  h5::write_column(group.get(), "zero_length", zero_length, path);
+  // One column at a time, each sized exactly: beside a diagram of one pair per cell, the seven columns
+  // together would double what the diagram holds while it is written.
+  const auto write = [&](const char* column, auto value) {
+    std::vector<decltype(value(d.pairs.front()))> values;
+    values.reserve(d.pairs.size());
+    for (const PersistencePair& p : d.pairs)
+      values.push_back(value(p));
+    h5::write_column(group.get(), column, values, path);
+  };
+  write("birth", [](const PersistencePair& p) { return p.birth; });
+  write("death", [](const PersistencePair& p) { return p.death; });
+  write("dimension", [](const PersistencePair& p) { return std::int32_t{p.dim}; });
+  write("birth_cell", [](const PersistencePair& p) { return std::uint64_t{p.birth_cell}; });
+  write("death_cell", [](const PersistencePair& p) { return std::uint64_t{p.death_cell}; });
+  write("essential", [](const PersistencePair& p) { return static_cast<std::uint8_t>(p.essential ? 1 : 0); });
+  write("zero_length",
+        [](const PersistencePair& p) { return static_cast<std::uint8_t>(p.zero_length ? 1 : 0); });
   if (classes != nullptr)
     detail::write_classes(group.get(), *classes, d.pairs.size(), path);
   check(group.reset(), path, "cannot close group " + name);
