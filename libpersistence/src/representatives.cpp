@@ -28,15 +28,48 @@ Chain sum(const Chain& a, const Chain& b) {
   return out;
 }
 
-Chain reduced_column(const Matrix& matrix, Index j) {
-  std::vector<phat::index> column;
-  matrix.get_col(j, column);
-  Chain out(column.begin(), column.end());
-  std::sort(out.begin(), out.end());
-  return out;
-}
+// The reduced matrix R, compacted into one array once the reduction is done: from then on its columns
+// are only read (a death's cycle, the expressions of essential cycles), and PHAT's vector per column,
+// with the capacity its additions left, costs about twice the entries. Built before the diagram, so
+// that the matrix and the diagram, the two largest structures of a filtration, are never held together.
+class ReducedColumns {
+public:
+  explicit ReducedColumns(const Matrix& matrix) {
+    offsets_.reserve(static_cast<std::size_t>(matrix.get_num_cols()) + 1);
+    offsets_.push_back(0);
+    entries_.reserve(static_cast<std::size_t>(matrix.get_num_entries()));
+    std::vector<phat::index> column;
+    for (Index j = 0; j < matrix.get_num_cols(); ++j) {
+      column.clear(); // PHAT's pivot column appends to it
+      matrix.get_col(j, column);
+      std::sort(column.begin(), column.end());
+      entries_.insert(entries_.end(), column.begin(), column.end());
+      offsets_.push_back(entries_.size());
+    }
+  }
+
+  Chain column(Index j) const {
+    const auto at = static_cast<std::size_t>(j);
+    return Chain(entries_.begin() + static_cast<std::ptrdiff_t>(offsets_[at]),
+                 entries_.begin() + static_cast<std::ptrdiff_t>(offsets_[at + 1]));
+  }
+
+private:
+  std::vector<std::size_t> offsets_; // column j is entries_[offsets_[j], offsets_[j + 1])
+  std::vector<Index> entries_;       // ascending within a column
+};
 
 Chain boundary_of(const Filtration& f, Index j) { return f.columns[static_cast<std::size_t>(j)].to_vector(); }
+
+// The reduced boundary matrix of `f`, compacted, and its finite pairs in `pairs`; PHAT's matrix is
+// gone when this returns.
+ReducedColumns reduce_compacted(const Filtration& f, const std::function<void()>& poll,
+                                std::vector<IndexPair>& pairs) {
+  Matrix matrix = make_boundary_matrix(f);
+  PolledTwistReduction{poll}(matrix);
+  pairs = reduced_pairs(matrix);
+  return ReducedColumns(matrix);
+}
 
 // Cycles of essential classes (docs/MATH.md §7.11). The twist reduction keeps R but not V (R = D V):
 // V is rebuilt only where an essential class needs it. A reduced column R[i] is the boundary of i
@@ -46,8 +79,8 @@ Chain boundary_of(const Filtration& f, Index j) { return f.columns[static_cast<s
 // ∂b = sum of R[j] over the j found the same way, so b + sum of W(j) is a cycle whose last cell is b.
 class EssentialCycles {
 public:
-  EssentialCycles(const Matrix& matrix, const Filtration& f, const std::vector<IndexPair>& pairs)
-      : matrix_(matrix), filtration_(f), pivot_column_(f.size(), -1) {
+  EssentialCycles(const ReducedColumns& reduced, const Filtration& f, const std::vector<IndexPair>& pairs)
+      : reduced_(reduced), filtration_(f), pivot_column_(f.size(), -1) {
     for (const auto& [b, d] : pairs)
       pivot_column_[static_cast<std::size_t>(b)] = d;
   }
@@ -70,7 +103,7 @@ private:
       if (j < 0 || j >= before)
         throw InternalError("representatives: filtration index " + std::to_string(low) +
                             " is no pivot of an earlier reduced column");
-      chain = sum(chain, reduced_column(matrix_, j));
+      chain = sum(chain, reduced_.column(j));
       used.push_back(j);
     }
     return used;
@@ -91,8 +124,7 @@ private:
       }
       auto at = pending.find(i);
       if (at == pending.end()) {
-        at = pending.emplace(i, express(sum(reduced_column(matrix_, i), boundary_of(filtration_, i)), i))
-                 .first;
+        at = pending.emplace(i, express(sum(reduced_.column(i), boundary_of(filtration_, i)), i)).first;
         bool ready = true;
         for (Index j : at->second)
           if (memo_.count(j) == 0) {
@@ -112,7 +144,7 @@ private:
     return memo_.at(root);
   }
 
-  const Matrix& matrix_;
+  const ReducedColumns& reduced_;
   const Filtration& filtration_;
   std::vector<Index> pivot_column_; // by birth index: the column that kills it, -1 if none
   std::unordered_map<Index, Chain> memo_;
@@ -240,9 +272,8 @@ DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>&
                                                 const Filtration& filtration,
                                                 const RepresentativeOptions& options,
                                                 const std::function<void()>& poll) {
-  Matrix matrix = make_boundary_matrix(filtration);
-  PolledTwistReduction{poll}(matrix);
-  const std::vector<IndexPair> pairs = reduced_pairs(matrix);
+  std::vector<IndexPair> pairs;
+  const ReducedColumns reduced = reduce_compacted(filtration, poll, pairs);
 
   DiagramWithClasses out;
   out.diagram = make_diagram(cells, filtration, pairs);
@@ -256,7 +287,7 @@ DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>&
   }
   std::vector<Chain> cycles(classes.rows.size()), clusters(classes.rows.size());
   degree_zero(filtration, diagram, classes.rows, cycles, clusters);
-  EssentialCycles essential(matrix, filtration, pairs);
+  EssentialCycles essential(reduced, filtration, pairs);
   std::optional<detail::Cofaces> cofaces;
   if (options.shorten && options.max_dim >= 1)
     cofaces.emplace(filtration, options.max_dim);
@@ -264,7 +295,7 @@ DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>&
     const PersistencePair& p = diagram.pairs[classes.rows[i]];
     if (p.dim == 0)
       continue;
-    cycles[i] = p.essential ? essential.cycle_of(p.birth_index) : reduced_column(matrix, p.death_index);
+    cycles[i] = p.essential ? essential.cycle_of(p.birth_index) : reduced.column(p.death_index);
     // Cells added by shortening enter before the death, or anywhere for an essential class (§7.13).
     if (cofaces)
       detail::shorten_cycle(filtration, *cofaces,
