@@ -29,8 +29,8 @@ Chain sum(const Chain& a, const Chain& b) {
 }
 
 // The reduced matrix R, compacted into one array once the reduction is done: from then on its columns
-// are only read (a death's cycle, the expressions of essential cycles), and PHAT's vector per column,
-// with the capacity its additions left, costs about twice the entries. Built before the diagram, so
+// are only read (a death's cycle, the expressions of essential cycles), and PHAT's vector per column
+// costs a heap block and the capacity its additions left besides the entries. Built before the diagram, so
 // that the matrix and the diagram, the two largest structures of a filtration, are never held together.
 class ReducedColumns {
 public:
