@@ -438,12 +438,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
       std::cerr << "medusa: " << n << "\n";
   }
 
-  std::string radius = args.radius, radius_note;
-  if (args.radius == "auto")
-    std::tie(radius, radius_note) = radius_from_volumes(data);
-  // The volumes serve only --radius auto: let go of them before the kinetic stage, whose peak they
-  // would add to (a value per cell and frame).
-  data.volumes = io::CellVolumes{};
+  const auto [radius, radius_note] = resolve_radius(args.radius, data);
   kinetic::KineticOptions kinetic_options;
   kinetic_options.rho2 = kinetic::squared_radius_from_decimal(radius, data.trajectories.scale);
   kinetic_options.audit = args.audit;

@@ -41,6 +41,8 @@ io::RunSource choose_source(const std::string& input, const std::string& source)
   return io::RunSource::automatic;
 }
 
+namespace {
+
 std::pair<std::string, std::string> radius_from_volumes(const io::RunData& data) {
   const double volume = io::median_cell_volume(data.volumes);
   if (!(volume > 0))
@@ -54,6 +56,16 @@ std::pair<std::string, std::string> radius_from_volumes(const io::RunData& data)
                 data.trajectories.dimension == 2 ? "disc" : "ball", volume,
                 data.trajectories.dimension == 2 ? "pixels" : "voxels");
   return {buffer, note};
+}
+
+} // namespace
+
+std::pair<std::string, std::string> resolve_radius(const std::string& requested, io::RunData& data) {
+  std::pair<std::string, std::string> radius{requested, ""};
+  if (requested == "auto")
+    radius = radius_from_volumes(data);
+  data.volumes = io::CellVolumes{};
+  return radius;
 }
 
 medusa::RunInfo run_info(const io::RunData& data, const std::string& radius,

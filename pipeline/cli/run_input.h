@@ -17,9 +17,11 @@ std::string input_stem(const std::string& input);
 // has them, else lets the reader decide (VTK centroids are snapped to the grid, docs/MATH.md §1.3).
 io::RunSource choose_source(const std::string& input, const std::string& source);
 
-// --radius auto (docs/MATH.md §7.10): the equivalent-sphere (disc in 2D) radius of the median cell
-// volume as decimal text with 6 digits, and how it was chosen, for the summary.
-std::pair<std::string, std::string> radius_from_volumes(const io::RunData& data);
+// The radius of `--radius requested` as decimal text, and how it was chosen, for the summary (empty
+// unless chosen). "auto" (docs/MATH.md §7.10) is the equivalent-sphere (disc in 2D) radius of the
+// median cell volume, with 6 digits. The volumes serve nothing else: they are let go here, before the
+// kinetic stage, whose peak they would add to (a value per cell and frame).
+std::pair<std::string, std::string> resolve_radius(const std::string& requested, io::RunData& data);
 
 // What the store records of a run read as `data` at radius `radius` (decimal text): radius, sources,
 // positions and their snapping, command line and version. The caller adds the run id and the periodic

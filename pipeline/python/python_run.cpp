@@ -42,8 +42,7 @@ std::string run_pipeline(const RunRequest& request, const std::string& command_l
   outputs.check_not_read(data.sources);
   cli::check_interrupted();
 
-  const std::string radius = request.radius == "auto" ? cli::radius_from_volumes(data).first : request.radius;
-  data.volumes = io::CellVolumes{}; // they serve only --radius auto, as in `medusa run`
+  const std::string radius = cli::resolve_radius(request.radius, data).first;
   // As `medusa run`: a periodic run on the torus, the cells and their copies near the seams through the
   // canonical filter (docs/MATH.md §8); a radius too large for the period refused before any work.
   const io::PeriodicDomain domain = request.periodic_as_open ? io::PeriodicDomain{} : data.domain;
