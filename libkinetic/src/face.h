@@ -10,11 +10,18 @@
 
 namespace medusa::kinetic::detail {
 
+// A run holds one per finite face of Del, about 27 per cell in 3D, in a table at a load of 3/5: the
+// two flags share a word with the count of top simplices, which leaves the record at 16 bytes.
 struct Face {
-  bool is_short = false;
-  bool in_k = false;
+  Face() : is_short(false), in_k(false), tops(0) {}
+
+  bool is_short : 1;
+  bool in_k : 1;
+  // Top simplices of Del (infinite ones included) that contain this simplex. An edge lies in at most
+  // as many as there are cells, the infinite vertex counted (its link is a cycle of distinct vertices), and
+  // a run has fewer than max_face_tops cells (Engine::Engine), so 30 bits hold it.
+  int tops : 30;
   int cert = -1;
-  int tops = 0; // top simplices of Del (infinite ones included) that contain this simplex
   // Its finite (k+1)-cofaces in Del that are short, and those in K: the frontier rule asks whether a
   // short simplex has a short coface (docs/MATH.md §4.4), the membership rule whether any coface is in K
   // (4.5). Kept up to date by Engine::count_in_facets wherever a flag changes or a face comes or
@@ -22,6 +29,8 @@ struct Face {
   int short_cofaces = 0;
   int k_cofaces = 0;
 };
+static_assert(sizeof(Face) == 16, "a run holds one Face per finite face of Del");
+constexpr std::size_t max_face_tops = (std::size_t{1} << 29) - 1;
 
 // Calls f on every non-empty subset of the vertices of t that avoids the infinite vertex, or, with
 // `size` given, on those of that many vertices only.

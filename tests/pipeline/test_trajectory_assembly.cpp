@@ -51,3 +51,16 @@ TEST_CASE("Volumes are dropped when one sample lacks them", "[io][assembly]") {
   s[1].volume = -1;
   CHECK(assemble_trajectories(s, {"f"}, 1000000, 3).volumes.empty());
 }
+
+TEST_CASE("Each trajectory holds its positions and volumes without spare capacity", "[io][assembly]") {
+  // Five frames: grown one by one, a list of five would have room for eight.
+  std::vector<CellSample> samples;
+  for (std::int64_t k = 0; k < 5; ++k)
+    samples.push_back(sample(10 * k, 1, 1, k, k + 2));
+  const AssembledRun r = assemble_trajectories(samples, {"f"}, 1000000, 3);
+  REQUIRE(r.trajectories.cells.size() == 1);
+  CHECK(r.trajectories.cells[0].positions.size() == 5);
+  CHECK(r.trajectories.cells[0].positions.capacity() == 5);
+  REQUIRE(r.volumes.size() == 1);
+  CHECK(r.volumes[0].capacity() == 5);
+}

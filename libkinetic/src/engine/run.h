@@ -14,6 +14,10 @@ namespace medusa::kinetic::detail {
 
 template <class K>
 Engine<K>::Engine(const Trajectories& t, KineticOptions o) : traj(t), options(std::move(o)) {
+  if (traj.cells.size() >= max_face_tops)
+    throw InputError("the run has " + std::to_string(traj.cells.size()) +
+                     " cell trajectories; the kinetic engine takes fewer than " +
+                     std::to_string(max_face_tops));
   P = options.rho2.num;
   Q = options.rho2.den;
   Pi = Interval(CGAL::to_interval(CGAL::Gmpz(P.get_mpz_t())));
