@@ -17,9 +17,9 @@ struct Face {
 
   bool is_short : 1;
   bool in_k : 1;
-  // Top simplices of Del (infinite ones included) that contain this simplex. An edge lies in at most
-  // as many as there are cells, the infinite vertex counted (its link is a cycle of distinct vertices), and
-  // a run has fewer than max_face_tops cells (Engine::Engine), so 30 bits hold it.
+  // Top simplices of Del (infinite ones included) that contain this simplex: at most max_face_tops.
+  // An edge lies in at most one per vertex of its link, a cycle of distinct vertices (the cells and
+  // the infinite vertex), and the engine takes fewer cells than max_face_tops (Engine::Engine).
   int tops : 30;
   int cert = -1;
   // Its finite (k+1)-cofaces in Del that are short, and those in K: the frontier rule asks whether a
@@ -30,6 +30,7 @@ struct Face {
   int k_cofaces = 0;
 };
 static_assert(sizeof(Face) == 16, "a run holds one Face per finite face of Del");
+// The largest count Face::tops holds.
 constexpr std::size_t max_face_tops = (std::size_t{1} << 29) - 1;
 
 // Calls f on every non-empty subset of the vertices of t that avoids the infinite vertex, or, with

@@ -82,7 +82,7 @@ AssembledRun assemble_trajectories(std::vector<CellSample> samples, const std::v
     }
   }
   // The lists grew by doubling, up to 1.6 times their frames for a 20-frame run, and the trajectories
-  // are held through the kinetic stage, whose start is the run's peak of memory.
+  // are held through the kinetic stage, whose peak is at its start.
   for (kinetic::Trajectory& c : t.cells)
     c.positions.shrink_to_fit();
   for (std::vector<std::int64_t>& v : run.volumes)
