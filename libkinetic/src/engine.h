@@ -355,14 +355,17 @@ template <class K> struct Engine {
     int index = 0;
     const FlipChange* change = nullptr;
   };
-  // change_tops in three phases, for a flip: every touched face is looked up in `faces` once, and
-  // its entry is held in touched_scratch throughout (the flags, counts and frontier rules read only
+  // change_tops in phases, for a flip: every touched face is looked up in `faces` once, and its
+  // entry is held in touched_scratch throughout (the flags, counts and frontier rules read only
   // touched faces and their facets, which are touched too). apply_top_change keeps the faces that
   // leave Del, with no top simplex, until finish_top_change erases them (erasing moves entries);
   // settle_touched re-evaluates membership in between. held_flip, for a flip, lets the cells make it
-  // on the held cell.
+  // on the held cell. The Delaunay certificates of the changed top simplices' facets are installed
+  // by install_touched_facets, which reads only the triangulation: a flip calls it before
+  // settle_touched, change_tops after finish_top_change, once the touched faces are let go.
   void apply_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                         const int* added_orientations, const HeldFlip* held_flip = nullptr);
+  void install_touched_facets();
   void settle_touched(Step& step);
   void finish_top_change();
   // The changes of `tri` made again on cell_mirror, if there is one (engine/cell_mirror.h): the top

@@ -58,6 +58,7 @@ template <class K> void Engine<K>::flip(int cert, const FlipChange& change, std:
   record_delaunay_change(step, removed, added);
   const HeldFlip held{certificates[cert].cell, certificates[cert].facet_index, &change};
   apply_top_change(removed, added, orientations.data(), &held);
+  install_touched_facets();
   settle_touched(step);
   finish_top_change();
   (hull ? stats.hull_flips : dim == 2 ? stats.flips22 : (three_two ? stats.flips32 : stats.flips23))++;

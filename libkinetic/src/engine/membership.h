@@ -23,6 +23,9 @@ void Engine<K>::change_tops(const std::vector<Simplex>& removed, const std::vect
     for (const TouchedFace& t : touched_scratch.faces)
       old_k->emplace(t.face, t.old_in_k);
   finish_top_change();
+  // After the touched faces are let go: the first triangulation touches every face, and its facets'
+  // certificates, with their roots and queue entries, are the last large thing it builds.
+  install_touched_facets();
 }
 
 // A flip touches at most 2^(dim + 2) - 1 = 31 faces; a larger change overflows the cache anyway.
@@ -118,8 +121,12 @@ void Engine<K>::apply_top_change(const std::vector<Simplex>& removed, const std:
                      return state_of(x)->is_short;
                    }));
     }
-  for (const Simplex& f : touched.facets)
+}
+
+template <class K> void Engine<K>::install_touched_facets() {
+  for (const Simplex& f : touched_scratch.facets)
     install_facet(f);
+  release_if_large(touched_scratch.facets);
 }
 
 template <class K> void Engine<K>::finish_top_change() {
@@ -130,7 +137,6 @@ template <class K> void Engine<K>::finish_top_change() {
     t.state = nullptr;
   }
   release_if_large(touched_scratch.faces);
-  release_if_large(touched_scratch.facets);
 }
 
 // Creates or drops the radius certificate of s so that exactly the frontier carries one.

@@ -51,12 +51,16 @@ template <class K> void Engine<K>::initialise(Observer& observer) {
   std::vector<Step> ignored;
   resolve_delaunay(ignored); // Del(t0+) (docs/MATH.md §5.5): fix what the frozen delta left
   pending_radius.clear();
-  // Membership of every simplex, in decreasing dimension (docs/MATH.md §4.6).
-  OldMembership all;
-  all.reserve(faces.size());
-  faces.for_each([&](const Simplex& s, const Face&) { all.emplace(s, false); });
-  Step step;
-  settle_membership(all, step);
+  // Membership of every simplex, in decreasing dimension (docs/MATH.md §4.6), one pass over the face
+  // table per dimension: the order within a dimension does not matter (settle_membership), and a
+  // copy of every face, as a table of old memberships, would be held beside all of them at the
+  // kinetic stage's peak.
+  auto state_of = [&](const Simplex& x) { return state_in_table(x); };
+  for (std::size_t size = top_size(); size >= 2; --size)
+    faces.for_each([&](const Simplex& s, Face& f) {
+      if (s.size() == size)
+        settle(s, f, state_of);
+    });
   check_collisions_in_slab();
   observer.initial(event_time(true), current_complex());
   if (options.audit)
