@@ -188,15 +188,17 @@ private:
   std::vector<Index> parent_, oldest_, next_, tail_;
 };
 
-// The degree-0 representatives: cycle and cluster by row.
+// The degree-0 representatives, cycle and cluster, of the rows `zero` (positions in `rows` of
+// degree-0 points), in that order.
 void degree_zero(const Filtration& f, const Diagram& diagram, const std::vector<std::size_t>& rows,
-                 std::vector<Chain>& cycles, std::vector<Chain>& clusters) {
+                 const std::vector<std::size_t>& zero, std::vector<Chain>& cycles,
+                 std::vector<Chain>& clusters) {
+  cycles.assign(zero.size(), Chain());
+  clusters.assign(zero.size(), Chain());
   // Rows wanted, by the death column (finite) or the birth vertex (essential).
   std::unordered_map<Index, std::size_t> by_death, by_birth;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const PersistencePair& p = diagram.pairs[rows[i]];
-    if (p.dim != 0)
-      continue;
+  for (std::size_t i = 0; i < zero.size(); ++i) {
+    const PersistencePair& p = diagram.pairs[rows[zero[i]]];
     (p.essential ? by_birth[p.birth_index] : by_death[p.death_index]) = i;
   }
   if (by_death.empty() && by_birth.empty())
@@ -217,7 +219,7 @@ void degree_zero(const Filtration& f, const Diagram& diagram, const std::vector<
     const bool u_older = components.oldest(u) < components.oldest(v);
     const Index older = u_older ? u : v, younger = u_older ? v : u;
     if (const auto it = by_death.find(index); it != by_death.end()) {
-      const PersistencePair& p = diagram.pairs[rows[it->second]];
+      const PersistencePair& p = diagram.pairs[rows[zero[it->second]]];
       if (p.birth_index != components.oldest(younger))
         throw InternalError("representatives: H0 pair (" + std::to_string(p.birth_index) + ", " +
                             std::to_string(p.death_index) + ") does not follow the elder rule");
@@ -285,30 +287,39 @@ DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>&
     if (p.dim <= options.max_dim && (options.zero_length || !p.zero_length))
       classes.rows.push_back(r);
   }
-  std::vector<Chain> cycles(classes.rows.size()), clusters(classes.rows.size());
-  degree_zero(filtration, diagram, classes.rows, cycles, clusters);
+  // Degree 0 comes from one pass over the whole filtration, its chains held for its rows only. Every
+  // other cycle is turned into cell ids as soon as it is found: held for the whole diagram, the
+  // chains would sit beside their cell ids, with the slack their sums reserved (the essential
+  // cycles are long, and among the largest structures of a diagram).
+  std::vector<std::size_t> zero;
+  for (std::size_t i = 0; i < classes.rows.size(); ++i)
+    if (diagram.pairs[classes.rows[i]].dim == 0)
+      zero.push_back(i);
+  std::vector<Chain> zero_cycles, zero_clusters;
+  degree_zero(filtration, diagram, classes.rows, zero, zero_cycles, zero_clusters);
   EssentialCycles essential(reduced, filtration, pairs);
   std::optional<detail::Cofaces> cofaces;
   if (options.shorten && options.max_dim >= 1)
     cofaces.emplace(filtration, options.max_dim);
+  classes.cycles.reserve(classes.rows.size());
+  classes.clusters.reserve(classes.rows.size());
+  std::size_t next_zero = 0;
   for (std::size_t i = 0; i < classes.rows.size(); ++i) {
     const PersistencePair& p = diagram.pairs[classes.rows[i]];
-    if (p.dim == 0)
+    if (p.dim == 0) {
+      classes.cycles.push_back(cell_ids(cells, filtration, zero_cycles[next_zero]));
+      classes.clusters.push_back(cell_ids(cells, filtration, zero_clusters[next_zero]));
+      Chain().swap(zero_clusters[next_zero++]);
       continue;
-    cycles[i] = p.essential ? essential.cycle_of(p.birth_index) : reduced.column(p.death_index);
+    }
+    Chain z = p.essential ? essential.cycle_of(p.birth_index) : reduced.column(p.death_index);
     // Cells added by shortening enter before the death, or anywhere for an essential class (§7.13).
     if (cofaces)
       detail::shorten_cycle(filtration, *cofaces,
-                            p.essential ? static_cast<Index>(filtration.size()) : p.death_index, cycles[i]);
-    check_cycle(filtration, p.birth_index, cycles[i]);
-  }
-  classes.cycles.reserve(cycles.size());
-  classes.clusters.reserve(cycles.size());
-  for (std::size_t i = 0; i < cycles.size(); ++i) {
-    classes.cycles.push_back(cell_ids(cells, filtration, cycles[i]));
-    classes.clusters.push_back(cell_ids(cells, filtration, clusters[i]));
-    Chain().swap(cycles[i]);
-    Chain().swap(clusters[i]);
+                            p.essential ? static_cast<Index>(filtration.size()) : p.death_index, z);
+    check_cycle(filtration, p.birth_index, z);
+    classes.cycles.push_back(cell_ids(cells, filtration, z));
+    classes.clusters.emplace_back();
   }
   return out;
 }
