@@ -188,19 +188,22 @@ private:
   std::vector<Index> parent_, oldest_, next_, tail_;
 };
 
-// The degree-0 representatives, cycle and cluster, of the rows `zero` (positions in `rows` of
-// degree-0 points), in that order.
+// The degree-0 representatives, cycle and cluster, of the degree-0 points among `rows`, in row order
+// (entry i belongs to the i-th such row).
 void degree_zero(const Filtration& f, const Diagram& diagram, const std::vector<std::size_t>& rows,
-                 const std::vector<std::size_t>& zero, std::vector<Chain>& cycles,
-                 std::vector<Chain>& clusters) {
-  cycles.assign(zero.size(), Chain());
-  clusters.assign(zero.size(), Chain());
+                 std::vector<Chain>& cycles, std::vector<Chain>& clusters) {
   // Rows wanted, by the death column (finite) or the birth vertex (essential).
   std::unordered_map<Index, std::size_t> by_death, by_birth;
-  for (std::size_t i = 0; i < zero.size(); ++i) {
-    const PersistencePair& p = diagram.pairs[rows[zero[i]]];
-    (p.essential ? by_birth[p.birth_index] : by_death[p.death_index]) = i;
+  std::vector<std::size_t> zero; // the degree-0 rows
+  for (std::size_t row : rows) {
+    const PersistencePair& p = diagram.pairs[row];
+    if (p.dim != 0)
+      continue;
+    (p.essential ? by_birth[p.birth_index] : by_death[p.death_index]) = zero.size();
+    zero.push_back(row);
   }
+  cycles.assign(zero.size(), Chain());
+  clusters.assign(zero.size(), Chain());
   if (by_death.empty() && by_birth.empty())
     return;
   Components components(f.size());
@@ -219,7 +222,7 @@ void degree_zero(const Filtration& f, const Diagram& diagram, const std::vector<
     const bool u_older = components.oldest(u) < components.oldest(v);
     const Index older = u_older ? u : v, younger = u_older ? v : u;
     if (const auto it = by_death.find(index); it != by_death.end()) {
-      const PersistencePair& p = diagram.pairs[rows[zero[it->second]]];
+      const PersistencePair& p = diagram.pairs[zero[it->second]];
       if (p.birth_index != components.oldest(younger))
         throw InternalError("representatives: H0 pair (" + std::to_string(p.birth_index) + ", " +
                             std::to_string(p.death_index) + ") does not follow the elder rule");
@@ -291,12 +294,8 @@ DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>&
   // other cycle is turned into cell ids as soon as it is found: held for the whole diagram, the
   // chains would sit beside their cell ids, with the slack their sums reserved (the essential
   // cycles are long, and among the largest structures of a diagram).
-  std::vector<std::size_t> zero;
-  for (std::size_t i = 0; i < classes.rows.size(); ++i)
-    if (diagram.pairs[classes.rows[i]].dim == 0)
-      zero.push_back(i);
   std::vector<Chain> zero_cycles, zero_clusters;
-  degree_zero(filtration, diagram, classes.rows, zero, zero_cycles, zero_clusters);
+  degree_zero(filtration, diagram, classes.rows, zero_cycles, zero_clusters);
   EssentialCycles essential(reduced, filtration, pairs);
   std::optional<detail::Cofaces> cofaces;
   if (options.shorten && options.max_dim >= 1)
