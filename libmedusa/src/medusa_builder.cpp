@@ -34,7 +34,7 @@ bool canonical_less(const std::vector<VertexId>& a, const std::vector<VertexId>&
 
 VirtualTime virtual_time(const kinetic::EventTime& t, std::size_t rank) {
   VirtualTime v;
-  v.batch = t.batch;
+  v.batch = static_cast<std::uint32_t>(t.batch);
   v.rank = static_cast<std::uint32_t>(rank);
   v.time = t.time;
   return v;
@@ -54,6 +54,9 @@ void MedusaBuilder::check_order(const kinetic::EventTime& time, const char* what
   if (time.batch <= last_batch_)
     throw InternalError(std::string("medusa builder: ") + what + " at batch " + std::to_string(time.batch) +
                         " does not follow batch " + std::to_string(last_batch_));
+  if (time.batch > max_batch)
+    throw InputError("the run has more than " + std::to_string(max_batch) +
+                     " event batches, the most a medusa's virtual times hold");
 }
 
 CellFacets MedusaBuilder::facets_of(const std::vector<VertexId>& vertices, const InstantMap& instant,

@@ -160,8 +160,11 @@ void read_cells(hid_t file, Medusa& m, std::uint64_t count, const std::string& p
     Cell& c = m.cells[id[i]];
     c.id = id[i];
     c.kind = static_cast<CellKind>(kind[i]);
-    c.birth = VirtualTime{bb[i], br[i], bt[i]};
-    c.death = VirtualTime{db[i], dr[i], dt[i]};
+    if (bb[i] > max_batch || db[i] > max_batch)
+      corrupt(path,
+              "cell " + std::to_string(id[i]) + " has a batch index above " + std::to_string(max_batch));
+    c.birth = VirtualTime{static_cast<std::uint32_t>(bb[i]), br[i], bt[i]};
+    c.death = VirtualTime{static_cast<std::uint32_t>(db[i]), dr[i], dt[i]};
     c.vertices.assign(vertices.begin() + static_cast<std::ptrdiff_t>(voff[i]),
                       vertices.begin() + static_cast<std::ptrdiff_t>(voff[i + 1]));
     c.facets.assign(facets.begin() + static_cast<std::ptrdiff_t>(foff[i]),
@@ -320,7 +323,10 @@ Medusa read_store(const std::string& path, const StoreReadOptions& options) {
     m.run.run_id = h5::read_string_attribute(f, L::run_id, path);
   m.input.scale = h5::read_int_attribute(f, L::grid_scale, path);
   m.input.dimension = static_cast<int>(h5::read_int_attribute(f, L::dimension, path));
-  m.end.batch = h5::read_uint_attribute(f, L::end_batch, path);
+  const std::uint64_t end_batch = h5::read_uint_attribute(f, L::end_batch, path);
+  if (end_batch > max_batch)
+    corrupt(path, "end_batch " + std::to_string(end_batch) + " is above " + std::to_string(max_batch));
+  m.end.batch = static_cast<std::uint32_t>(end_batch);
   m.end.rank = static_cast<std::uint32_t>(h5::read_uint_attribute(f, L::end_rank, path));
   m.end.time = h5::read_double_attribute(f, L::end_time, path);
   read_input(f, m, path);

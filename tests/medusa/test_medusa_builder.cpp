@@ -40,7 +40,7 @@ const Cell& only_cell(const Medusa& m, std::vector<VertexId> vertices) {
   return *cells.front();
 }
 
-VirtualTime vt(std::uint64_t batch, std::uint32_t rank) {
+VirtualTime vt(std::uint32_t batch, std::uint32_t rank) {
   VirtualTime t;
   t.batch = batch;
   t.rank = rank;
@@ -247,4 +247,25 @@ TEST_CASE("an inconsistent stream is reported as an internal error", "[medusa][b
   MedusaBuilder third(collector);
   third.initial(event_time(0, 0.0), closure({Simplex{0, 1}}));
   CHECK_THROWS_AS(third.finish(event_time(0, 1.0)), medusa::InternalError);
+}
+
+TEST_CASE("a run with more batches than a virtual time holds is refused as input", "[medusa][builder]") {
+  MedusaCollector collector;
+  MedusaBuilder builder(collector);
+  builder.initial(event_time(0, 0.0), closure({Simplex{0, 1}}));
+  Step leave;
+  leave.rank = 1;
+  leave.kind = medusa::kinetic::StepKind::radius;
+  leave.left = {Simplex{0, 1}};
+  builder.batch(event_time(max_batch, 1.0), {leave});
+  CHECK_THROWS_AS(builder.finish(event_time(max_batch + 1, 2.0)), medusa::InputError);
+
+  MedusaCollector kept;
+  MedusaBuilder last(kept);
+  last.initial(event_time(0, 0.0), closure({Simplex{0, 1}}));
+  last.finish(event_time(max_batch, 2.0));
+  CHECK(last.active_cells() == 0);
+  const Medusa m = kept.take();
+  REQUIRE(m.cells.size() == 3);
+  CHECK(m.cells.back().death.batch == max_batch);
 }

@@ -259,3 +259,21 @@ TEST_CASE("stores of another format version or without the complete flag are rej
               .status == 0);
   CHECK_THROWS_WITH(read_store(path), Catch::Contains("incomplete"));
 }
+
+TEST_CASE("a store whose batch indices exceed 32 bits is rejected as corrupt", "[medusa][store][python]") {
+  const std::string path = temp_path("batch.h5");
+  RemoveFiles cleanup{{path}};
+  const std::string python = MEDUSA_PYTHON;
+  const std::string edit = python + " -c 'import sys, h5py, numpy; f = h5py.File(sys.argv[1], \"r+\"); ";
+  write_stream(appendix_b_stream(), path, 5, 2);
+  REQUIRE(run_command(edit + "f.attrs[\"end_batch\"] = numpy.uint64(2**32)' " + path).status == 0);
+  CHECK_THROWS_AS(read_store(path), StoreError);
+  CHECK_THROWS_WITH(read_store(path), Catch::Contains("end_batch 4294967296 is above 4294967295"));
+
+  write_stream(appendix_b_stream(), path, 5, 2);
+  REQUIRE(run_command(edit +
+                      "row = list(f[\"cells/id\"][:]).index(3); f[\"cells/death_batch\"][row] = 2**32' " +
+                      path)
+              .status == 0);
+  CHECK_THROWS_WITH(read_store(path), Catch::Contains("cell 3 has a batch index above 4294967295"));
+}

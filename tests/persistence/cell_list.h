@@ -14,7 +14,7 @@ namespace medusa::persistence::test {
 using medusa::Cell;
 using medusa::VirtualTime;
 
-inline VirtualTime vt(std::uint64_t batch, std::uint32_t rank, double time) { return {batch, rank, time}; }
+inline VirtualTime vt(std::uint32_t batch, std::uint32_t rank, double time) { return {batch, rank, time}; }
 
 struct CellSpec {
   std::vector<kinetic::VertexId> vertices;

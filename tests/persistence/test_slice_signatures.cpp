@@ -28,7 +28,7 @@ Medusa random_zigzag(std::mt19937_64& rng, int vertex_count, std::uint64_t batch
     m.input.cells.push_back(t);
   }
   std::map<std::vector<VertexId>, CellId> active;
-  auto open = [&](const std::vector<VertexId>& s, std::uint64_t batch, std::uint32_t rank) {
+  auto open = [&](const std::vector<VertexId>& s, std::uint32_t batch, std::uint32_t rank) {
     Cell c;
     c.id = m.cells.size();
     c.vertices = s;
@@ -41,7 +41,7 @@ Medusa random_zigzag(std::mt19937_64& rng, int vertex_count, std::uint64_t batch
     active[s] = c.id;
     m.cells.push_back(c);
   };
-  auto close = [&](const std::vector<VertexId>& s, std::uint64_t batch, std::uint32_t rank) {
+  auto close = [&](const std::vector<VertexId>& s, std::uint32_t batch, std::uint32_t rank) {
     Cell& c = m.cells[active.at(s)];
     c.death = {batch, rank, static_cast<double>(batch)};
     active.erase(s);
@@ -113,7 +113,7 @@ Medusa random_zigzag(std::mt19937_64& rng, int vertex_count, std::uint64_t batch
   }
   BatchRecord first{0, 0, 0.0, 0.0, true, 0};
   m.batches.insert(m.batches.begin(), first);
-  m.end = {batches, 0, static_cast<double>(batches)};
+  m.end = {static_cast<std::uint32_t>(batches), 0, static_cast<double>(batches)};
   for (const auto& [s, id] : std::map<std::vector<VertexId>, CellId>(active))
     m.cells[id].death = m.end;
   return m;

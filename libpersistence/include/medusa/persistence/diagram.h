@@ -35,7 +35,7 @@ struct PersistencePair {
   bool essential = false;   // never killed: a class of the whole (sub-)medusa
   bool zero_length = false; // birth and death in the same batch (docs/MATH.md §7.5), on the diagonal
 };
-static_assert(sizeof(PersistencePair) <= 120, "PersistencePair grew: a diagram holds one per cell");
+static_assert(sizeof(PersistencePair) <= 104, "PersistencePair grew: a diagram holds one per cell");
 
 // All points of one filtration, sorted by (dim, birth_index). Degrees above 3 only hold zero-length
 // pairs for a valid medusa (docs/MATH.md §7.6) and are kept as they come.
