@@ -1,5 +1,6 @@
 #include "medusa/medusa/medusa_builder.h"
 
+#include "cell_ids.h"
 #include "medusa/core/error.h"
 #include "vertex_text.h"
 
@@ -73,7 +74,7 @@ CellFacets MedusaBuilder::facets_of(const std::vector<VertexId>& vertices, const
     if (facet.size() <= 4) {
       auto it = active_.find(Simplex::from_range(facet.begin(), facet.end()));
       if (it != active_.end()) {
-        facets.push_back(it->second.id);
+        facets.push_back(static_cast<std::uint32_t>(it->second.id));
         continue;
       }
     }
@@ -81,7 +82,7 @@ CellFacets MedusaBuilder::facets_of(const std::vector<VertexId>& vertices, const
     if (it == instant.end())
       throw InternalError("medusa builder: facet " + vertex_text(facet) + " of " + vertex_text(vertices) +
                           " is not present at " + where(when));
-    facets.push_back(it->second);
+    facets.push_back(static_cast<std::uint32_t>(it->second));
   }
   return facets;
 }
@@ -92,7 +93,7 @@ void MedusaBuilder::birth(const Simplex& s, const VirtualTime& when) {
                         " but is already in K");
   Active a;
   a.facets = facets_of(vertices_of(s), InstantMap{}, when);
-  a.id = next_id_++;
+  a.id = take_cell_id(next_id_);
   a.birth = when;
   for (std::size_t i = 0; i < a.facets.size(); ++i)
     ++active_.find(s.facet(i))->second.cofaces;
@@ -195,7 +196,7 @@ void MedusaBuilder::step(const kinetic::Step& st, const VirtualTime& when) {
                           " is also a simplex of K");
     Cell c;
     c.facets = facets_of(vertices, instant_ids, when);
-    c.id = next_id_++;
+    c.id = take_cell_id(next_id_);
     c.vertices = vertices;
     c.birth = when;
     c.death = when;

@@ -133,6 +133,9 @@ void read_cells(hid_t file, Medusa& m, std::uint64_t count, const std::string& p
   if (n != count)
     corrupt(path,
             "/cells/id has " + std::to_string(n) + " entries but cell_count is " + std::to_string(count));
+  if (n > max_cell_count)
+    corrupt(path, "it has " + std::to_string(n) + " cells, more than the " + std::to_string(max_cell_count) +
+                      " a medusa holds");
   const auto kind = h5::read_column<std::uint8_t>(g.get(), gn, L::kind, path);
   const auto bb = h5::read_column<std::uint64_t>(g.get(), gn, L::birth_batch, path);
   const auto br = h5::read_column<std::uint32_t>(g.get(), gn, L::birth_rank, path);
@@ -149,6 +152,10 @@ void read_cells(hid_t file, Medusa& m, std::uint64_t count, const std::string& p
     corrupt(path, "the datasets of /cells have different lengths");
   check_offsets(voff, n, vertices.size(), "/cells/vertex_offset", path);
   check_offsets(foff, n, facets.size(), "/cells/facet_offset", path);
+  for (std::size_t j = 0; j < facets.size(); ++j)
+    if (facets[j] >= n)
+      corrupt(path, "/cells/facets entry " + std::to_string(j) + " names cell " + std::to_string(facets[j]) +
+                        ", but the store has " + std::to_string(n) + " cells");
   m.cells.assign(n, Cell{});
   std::vector<char> seen(n, 0);
   for (std::size_t i = 0; i < n; ++i) {

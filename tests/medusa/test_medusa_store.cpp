@@ -277,3 +277,21 @@ TEST_CASE("a store whose batch indices exceed 32 bits is rejected as corrupt", "
               .status == 0);
   CHECK_THROWS_WITH(read_store(path), Catch::Contains("cell 3 has a batch index above 4294967295"));
 }
+
+TEST_CASE("a store whose facet ids name no cell of it is rejected as corrupt, even past 32 bits",
+          "[medusa][store][python]") {
+  const std::string path = temp_path("facets.h5");
+  RemoveFiles cleanup{{path}};
+  const std::string python = MEDUSA_PYTHON;
+  const std::string edit = python + " -c 'import sys, h5py; f = h5py.File(sys.argv[1], \"r+\"); ";
+  // 2^32 + 1 would be cell 1 if the id were cut to the 32 bits a cell's facet list holds.
+  for (const std::string value : {"31", "2**32 + 1"}) {
+    INFO("facet id " << value);
+    write_stream(appendix_b_stream(), path, 5, 2);
+    REQUIRE(read_store(path).cells.size() == 31);
+    REQUIRE(run_command(edit + "f[\"cells/facets\"][0] = " + value + "' " + path).status == 0);
+    CHECK_THROWS_AS(read_store(path), StoreError);
+    CHECK_THROWS_WITH(read_store(path), Catch::Contains("/cells/facets entry 0 names cell") &&
+                                            Catch::Contains("but the store has 31 cells"));
+  }
+}

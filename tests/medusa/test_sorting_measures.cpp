@@ -24,7 +24,7 @@ Medusa four_cells() {
     Cell c;
     c.id = m.cells.size();
     c.vertices = std::move(v);
-    c.facets = std::move(facets);
+    c.facets.assign(facets.begin(), facets.end());
     c.birth = birth;
     c.death = death;
     m.cells.push_back(c);
@@ -132,7 +132,7 @@ TEST_CASE("the same-type fraction stays accurate with a cell of a hundred neighb
     c.id = m.cells.size();
     c.vertices.push_back(0);
     c.vertices.push_back(v);
-    c.facets = {static_cast<CellId>(v), 0};
+    c.facets = {static_cast<std::uint32_t>(v), 0};
     c.death = m.end;
     m.cells.push_back(c);
   }

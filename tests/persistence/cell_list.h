@@ -66,8 +66,8 @@ inline std::vector<Cell> positional(std::vector<Cell> cells) {
     to[cells[i].id] = i;
   for (Cell& c : cells) {
     c.id = to.at(c.id);
-    for (medusa::CellId& f : c.facets)
-      f = to.at(f);
+    for (std::uint32_t& f : c.facets)
+      f = static_cast<std::uint32_t>(to.at(f));
   }
   return cells;
 }

@@ -100,7 +100,7 @@ TEST_CASE("Cells whose ids are their positions give the same filtration as arbit
   auto renumbered = cells;
   for (Cell& c : renumbered) {
     c.id = (c.id - 1000) / 7;
-    for (medusa::CellId& facet : c.facets)
+    for (std::uint32_t& facet : c.facets)
       facet = (facet - 1000) / 7;
   }
   for (Direction direction : {Direction::forward, Direction::reverse}) {
