@@ -134,8 +134,8 @@ void read_cells(hid_t file, Medusa& m, std::uint64_t count, const std::string& p
     corrupt(path,
             "/cells/id has " + std::to_string(n) + " entries but cell_count is " + std::to_string(count));
   if (n > max_cell_count)
-    corrupt(path, "it has " + std::to_string(n) + " cells, more than the " + std::to_string(max_cell_count) +
-                      " a medusa holds");
+    corrupt(path, "/cells/id has " + std::to_string(n) + " entries, more than the " +
+                      std::to_string(max_cell_count) + " cells a medusa holds");
   const auto kind = h5::read_column<std::uint8_t>(g.get(), gn, L::kind, path);
   const auto bb = h5::read_column<std::uint64_t>(g.get(), gn, L::birth_batch, path);
   const auto br = h5::read_column<std::uint32_t>(g.get(), gn, L::birth_rank, path);
