@@ -33,7 +33,7 @@ Medusa ring(const std::vector<std::array<std::int64_t, 2>>& xy, bool both) {
     const auto a = static_cast<kinetic::VertexId>(i), b = static_cast<kinetic::VertexId>((i + 1) % xy.size());
     e.vertices = {std::min(a, b), std::max(a, b)};
     e.birth.time = 40.0;
-    e.facets = {static_cast<CellId>(a), static_cast<CellId>(b)};
+    e.facets = {static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)};
     m.cells.push_back(e);
   }
   return m;
