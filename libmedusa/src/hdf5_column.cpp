@@ -48,23 +48,44 @@ void ColumnBase::write(const void* data, std::size_t rows) {
   written_ += rows;
 }
 
-void write_whole_column(hid_t location, const std::string& name, hid_t file_type, hid_t memory_type,
-                        const void* data, std::size_t count, const std::string& path) {
+SizedColumn::SizedColumn(hid_t location, const std::string& name, hid_t file_type, hid_t memory_type,
+                         std::size_t count, const std::string& path)
+    : memory_type_(memory_type), name_(name), path_(path), size_(count) {
   const hsize_t size = count;
   const hsize_t max_size = H5S_UNLIMITED;
   const hsize_t chunk = std::max<hsize_t>(1, std::min<hsize_t>(size, chunk_bytes / H5Tget_size(file_type)));
+  chunk_ = static_cast<std::size_t>(chunk);
   Handle space = space_handle(H5Screate_simple(1, &size, &max_size));
   Handle dcpl = plist_handle(H5Pcreate(H5P_DATASET_CREATE));
   if (!space.valid() || !dcpl.valid() || H5Pset_chunk(dcpl.get(), 1, &chunk) < 0 ||
       H5Pset_shuffle(dcpl.get()) < 0 || H5Pset_deflate(dcpl.get(), 6) < 0 ||
       H5Pset_fletcher32(dcpl.get()) < 0 || H5Pset_obj_track_times(dcpl.get(), 0) < 0)
     fail(path, "cannot set up dataset " + name);
-  Handle dataset = dataset_handle(
+  dataset_ = dataset_handle(
       H5Dcreate2(location, name.c_str(), file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT));
-  if (!dataset.valid())
+  if (!dataset_.valid())
     fail(path, "cannot create dataset " + name);
-  if (size > 0 && H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
-    fail(path, "cannot write dataset " + name);
+}
+
+void SizedColumn::write(const void* data, std::size_t count) {
+  if (count > size_ - written_)
+    fail(path_, "cannot write " + std::to_string(count) + " more values to dataset " + name_ + " of " +
+                    std::to_string(size_));
+  if (count == 0)
+    return;
+  Handle file_space = space_handle(H5Dget_space(dataset_.get()));
+  const hsize_t start = written_, rows = count;
+  Handle memory_space = space_handle(H5Screate_simple(1, &rows, nullptr));
+  if (!file_space.valid() || !memory_space.valid() ||
+      H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &start, nullptr, &rows, nullptr) < 0 ||
+      H5Dwrite(dataset_.get(), memory_type_, memory_space.get(), file_space.get(), H5P_DEFAULT, data) < 0)
+    fail(path_, "cannot write dataset " + name_);
+  written_ += count;
+}
+
+void write_whole_column(hid_t location, const std::string& name, hid_t file_type, hid_t memory_type,
+                        const void* data, std::size_t count, const std::string& path) {
+  SizedColumn(location, name, file_type, memory_type, count, path).write(data, count);
 }
 
 Handle create_group(hid_t parent, const std::string& name, const std::string& path) {

@@ -27,22 +27,6 @@ void check(bool ok, const std::string& path, const std::string& what) {
 
 // Offsets and concatenated values of a list of lists. Reserved exactly: the representatives of a
 // million-cell run are about a gigabyte, and a doubling vector would hold up to twice that.
-void flatten(const std::vector<std::vector<medusa::CellId>>& lists, std::vector<std::uint64_t>& offsets,
-             std::vector<std::uint64_t>& values) {
-  std::size_t total = 0;
-  for (const auto& list : lists)
-    total += list.size();
-  values.clear();
-  values.reserve(total);
-  offsets.clear();
-  offsets.reserve(lists.size() + 1);
-  offsets.push_back(0);
-  for (const auto& list : lists) {
-    values.insert(values.end(), list.begin(), list.end());
-    offsets.push_back(values.size());
-  }
-}
-
 std::vector<std::vector<medusa::CellId>> unflatten(const std::vector<std::uint64_t>& offsets,
                                                    const std::vector<std::uint64_t>& values, std::size_t rows,
                                                    const std::string& path, const std::string& what) {
@@ -73,14 +57,10 @@ void write_classes(hid_t parent, const ClassRepresentatives& classes, std::size_
   h5::write_attribute(group.get(), "shortened", std::int64_t{classes.options.shorten ? 1 : 0}, path);
   h5::write_column(group.get(), "row", std::vector<std::uint64_t>(classes.rows.begin(), classes.rows.end()),
                    path);
-  std::vector<std::uint64_t> offsets, values;
-  flatten(classes.cycles, offsets, values);
-  h5::write_column(group.get(), "cycle_offset", offsets, path);
-  h5::write_column(group.get(), "cycle", values, path);
-  std::vector<std::uint64_t>().swap(values);
-  flatten(classes.clusters, offsets, values);
-  h5::write_column(group.get(), "cluster_offset", offsets, path);
-  h5::write_column(group.get(), "cluster", values, path);
+  // The chains go to the store a chunk at a time: gathered into one array first, they would be held
+  // twice beside the largest diagram.
+  h5::write_list_columns<std::uint64_t>(group.get(), "cycle_offset", "cycle", classes.cycles, path);
+  h5::write_list_columns<std::uint64_t>(group.get(), "cluster_offset", "cluster", classes.clusters, path);
   check(group.reset(), path, "cannot close group classes");
 }
 

@@ -308,6 +308,7 @@ DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>&
     if (p.dim == 0) {
       classes.cycles.push_back(cell_ids(cells, filtration, zero_cycles[next_zero]));
       classes.clusters.push_back(cell_ids(cells, filtration, zero_clusters[next_zero]));
+      Chain().swap(zero_cycles[next_zero]);
       Chain().swap(zero_clusters[next_zero++]);
       continue;
     }
