@@ -48,8 +48,8 @@ void ColumnBase::write(const void* data, std::size_t rows) {
   written_ += rows;
 }
 
-SizedColumn::SizedColumn(hid_t location, const std::string& name, hid_t file_type, hid_t memory_type,
-                         std::size_t count, const std::string& path)
+SizedColumnBase::SizedColumnBase(hid_t location, const std::string& name, hid_t file_type, hid_t memory_type,
+                                 std::size_t count, const std::string& path)
     : memory_type_(memory_type), name_(name), path_(path), size_(count) {
   const hsize_t size = count;
   const hsize_t max_size = H5S_UNLIMITED;
@@ -67,7 +67,7 @@ SizedColumn::SizedColumn(hid_t location, const std::string& name, hid_t file_typ
     fail(path, "cannot create dataset " + name);
 }
 
-void SizedColumn::write(const void* data, std::size_t count) {
+void SizedColumnBase::write(const void* data, std::size_t count) {
   if (count > size_ - written_)
     fail(path_, "cannot write " + std::to_string(count) + " more values to dataset " + name_ + " of " +
                     std::to_string(size_));
@@ -83,9 +83,15 @@ void SizedColumn::write(const void* data, std::size_t count) {
   written_ += count;
 }
 
+void SizedColumnBase::check_complete() const {
+  if (written_ != size_)
+    fail(path_, "dataset " + name_ + " has " + std::to_string(written_) + " of its " + std::to_string(size_) +
+                    " values");
+}
+
 void write_whole_column(hid_t location, const std::string& name, hid_t file_type, hid_t memory_type,
                         const void* data, std::size_t count, const std::string& path) {
-  SizedColumn(location, name, file_type, memory_type, count, path).write(data, count);
+  SizedColumnBase(location, name, file_type, memory_type, count, path).write(data, count);
 }
 
 Handle create_group(hid_t parent, const std::string& name, const std::string& path) {

@@ -66,21 +66,19 @@ DiagramWithClasses diagram_with_classes(const std::string& store_path, const med
         DiagramWithClasses out{std::move(d), std::move(*stored)};
         // The stored set may be larger than asked for: keep the rows the options select.
         ClassRepresentatives& c = out.classes;
-        std::size_t kept = 0;
+        std::vector<char> keep(c.size());
         for (std::size_t i = 0; i < c.size(); ++i) {
           const PersistencePair& p = out.diagram.pairs[c.rows[i]];
-          if (p.dim > options.max_dim || (p.zero_length && !options.zero_length))
-            continue;
-          if (kept != i) { // a vector moved onto itself would be left empty
-            c.rows[kept] = c.rows[i];
-            c.cycles[kept] = std::move(c.cycles[i]);
-            c.clusters[kept] = std::move(c.clusters[i]);
-          }
-          ++kept;
+          keep[i] = p.dim <= options.max_dim && (!p.zero_length || options.zero_length);
         }
-        c.rows.resize(kept);
-        c.cycles.resize(kept);
-        c.clusters.resize(kept);
+        const auto kept = [&](std::size_t i) { return keep[i] != 0; };
+        c.cycles.keep_if(kept);
+        c.clusters.keep_if(kept);
+        std::size_t rows = 0;
+        for (std::size_t i = 0; i < keep.size(); ++i)
+          if (kept(i))
+            c.rows[rows++] = c.rows[i];
+        c.rows.resize(rows);
         // Shortened cycles stay so: they are what the store holds, and as valid (docs/MATH.md §7.13).
         const bool shortened = c.options.shorten;
         c.options = options;
@@ -114,13 +112,13 @@ ClassRecord class_record(const medusa::Medusa& medusa, const DiagramWithClasses&
     r.death_kind = medusa.cell(p.death_cell).kind;
     r.death_cells = cc3d_ids(medusa, medusa.cell(p.death_cell));
   }
-  r.cycle = classes.classes.cycles[i];
+  r.cycle = classes.classes.cycles.at(i).to_vector();
   for (medusa::CellId id : r.cycle) {
     r.simplices.push_back(cc3d_ids(medusa, medusa.cell(id)));
     if (p.dim > 0)
       r.cells.insert(r.cells.end(), r.simplices.back().begin(), r.simplices.back().end());
   }
-  for (medusa::CellId id : classes.classes.clusters[i]) {
+  for (medusa::CellId id : classes.classes.clusters.at(i)) {
     const auto ids = cc3d_ids(medusa, medusa.cell(id));
     r.cells.insert(r.cells.end(), ids.begin(), ids.end());
   }

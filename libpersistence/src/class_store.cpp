@@ -25,18 +25,21 @@ void check(bool ok, const std::string& path, const std::string& what) {
     h5::fail(path, what);
 }
 
-// Offsets and concatenated values of a list of lists. Reserved exactly: the representatives of a
-// million-cell run are about a gigabyte, and a doubling vector would hold up to twice that.
-std::vector<std::vector<medusa::CellId>> unflatten(const std::vector<std::uint64_t>& offsets,
-                                                   const std::vector<std::uint64_t>& values, std::size_t rows,
-                                                   const std::string& path, const std::string& what) {
-  check(offsets.size() == rows + 1 && offsets.front() == 0 && offsets.back() == values.size() &&
-            std::is_sorted(offsets.begin(), offsets.end()),
-        path, what + " offsets do not match its rows and values");
-  std::vector<std::vector<medusa::CellId>> lists(rows);
-  for (std::size_t i = 0; i < rows; ++i)
-    lists[i].assign(values.begin() + static_cast<std::ptrdiff_t>(offsets[i]),
-                    values.begin() + static_cast<std::ptrdiff_t>(offsets[i + 1]));
+// Writes lists as datasets <name>_offset and <name> of a classes group.
+void write_lists(hid_t group, const std::string& name, const CellLists& lists, const std::string& path) {
+  h5::write_column(group, name + "_offset", lists.offsets(), path);
+  h5::SizedColumn<std::uint64_t> ids(group, name, lists.offsets().back(), path);
+  lists.for_each_id([&](medusa::CellId id) { ids.push(id); });
+  ids.finish();
+}
+
+// The lists `name` of classes group `at`, one per row (datasets <name>_offset and <name>).
+CellLists read_lists(hid_t group, const std::string& at, const std::string& name, std::size_t rows,
+                     const std::string& path) {
+  CellLists lists = CellLists::from_offsets(
+      h5::read_column<std::uint64_t>(group, at.substr(1), name + "_offset", path),
+      h5::read_column<medusa::CellId>(group, at.substr(1), name, path), path, at + "/" + name);
+  check(lists.size() == rows, path, at + "/" + name + " offsets do not match its rows and values");
   return lists;
 }
 
@@ -55,12 +58,10 @@ void write_classes(hid_t parent, const ClassRepresentatives& classes, std::size_
   h5::write_attribute(group.get(), "max_dimension", std::int64_t{classes.options.max_dim}, path);
   h5::write_attribute(group.get(), "zero_length", std::int64_t{classes.options.zero_length ? 1 : 0}, path);
   h5::write_attribute(group.get(), "shortened", std::int64_t{classes.options.shorten ? 1 : 0}, path);
-  h5::write_column(group.get(), "row", std::vector<std::uint64_t>(classes.rows.begin(), classes.rows.end()),
-                   path);
-  // The chains go to the store a chunk at a time: gathered into one array first, they would be held
-  // twice beside the largest diagram.
-  h5::write_list_columns<std::uint64_t>(group.get(), "cycle_offset", "cycle", classes.cycles, path);
-  h5::write_list_columns<std::uint64_t>(group.get(), "cluster_offset", "cluster", classes.clusters, path);
+  h5::write_column_of<std::uint64_t>(
+      group.get(), "row", classes.rows.size(), [&](std::size_t i) { return classes.rows[i]; }, path);
+  write_lists(group.get(), "cycle", classes.cycles, path);
+  write_lists(group.get(), "cluster", classes.clusters, path);
   check(group.reset(), path, "cannot close group classes");
 }
 
@@ -105,14 +106,8 @@ std::optional<ClassRepresentatives> read_classes(const std::string& store_path,
     check(rows[i] < points && (i == 0 || rows[i - 1] < rows[i]), store_path,
           at + "/row " + std::to_string(i) + " is outside the diagram or out of order");
   classes.rows.assign(rows.begin(), rows.end());
-  classes.cycles =
-      unflatten(h5::read_column<std::uint64_t>(group.get(), at.substr(1), "cycle_offset", store_path),
-                h5::read_column<std::uint64_t>(group.get(), at.substr(1), "cycle", store_path), rows.size(),
-                store_path, at + "/cycle");
-  classes.clusters =
-      unflatten(h5::read_column<std::uint64_t>(group.get(), at.substr(1), "cluster_offset", store_path),
-                h5::read_column<std::uint64_t>(group.get(), at.substr(1), "cluster", store_path), rows.size(),
-                store_path, at + "/cluster");
+  classes.cycles = read_lists(group.get(), at, "cycle", rows.size(), store_path);
+  classes.clusters = read_lists(group.get(), at, "cluster", rows.size(), store_path);
   return classes;
 }
 

@@ -30,8 +30,7 @@ std::array<double, 3> position_at(const kinetic::Trajectories& input, kinetic::V
 
 } // namespace
 
-std::array<std::int64_t, 3> cycle_winding(const medusa::Medusa& medusa,
-                                          const std::vector<medusa::CellId>& cycle) {
+std::array<std::int64_t, 3> cycle_winding(const medusa::Medusa& medusa, CellLists::List cycle) {
   std::array<std::int64_t, 3> winding{};
   const auto& lengths = medusa.run.periodic_lengths;
   if (medusa.run.periodic_axes.empty() || medusa.input.cells.empty())

@@ -60,14 +60,12 @@ void write_diagram(hid_t parent, const Diagram& d, const ClassRepresentatives* c
   h5::write_attribute(group.get(), "direction",
                       std::string(d.direction == Direction::forward ? "forward" : "reverse"), path);
   h5::write_attribute(group.get(), "type", std::int64_t{d.cell_type}, path);
-  // One column at a time, each sized exactly: the seven columns grown together took up to 76 bytes a
-  // pair, beside the diagram's 120 (one pair per cell of the filtration).
+  // One column at a time, a chunk at a time: the diagram holds one pair per cell of the filtration,
+  // and a whole column beside it would add 8 bytes a pair.
   const auto write = [&](const char* column, auto value) {
-    std::vector<decltype(value(d.pairs.front()))> values;
-    values.reserve(d.pairs.size());
-    for (const PersistencePair& p : d.pairs)
-      values.push_back(value(p));
-    h5::write_column(group.get(), column, values, path);
+    using T = decltype(value(std::declval<const PersistencePair&>()));
+    h5::write_column_of<T>(
+        group.get(), column, d.pairs.size(), [&](std::size_t i) { return value(d.pairs[i]); }, path);
   };
   write("birth", [](const PersistencePair& p) { return p.birth; });
   write("death", [](const PersistencePair& p) { return p.death; });

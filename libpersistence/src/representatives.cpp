@@ -262,13 +262,10 @@ void check_cycle(const Filtration& f, Index birth, const Chain& z) {
                         std::to_string(birth) + " is not a cycle ending at its birth cell");
 }
 
-std::vector<medusa::CellId> cell_ids(const std::vector<medusa::Cell>& cells, const Filtration& f,
-                                     const Chain& z) {
-  std::vector<medusa::CellId> ids;
-  ids.reserve(z.size());
-  for (Index j : z)
-    ids.push_back(cells[f.cells[static_cast<std::size_t>(j)]].id);
-  return ids;
+// Appends the cell ids of chain z to `lists`.
+void push_cell_ids(CellLists& lists, const std::vector<medusa::Cell>& cells, const Filtration& f,
+                   const Chain& z) {
+  lists.push_back(z, [&](Index j) { return cells[f.cells[static_cast<std::size_t>(j)]].id; });
 }
 
 } // namespace
@@ -306,8 +303,8 @@ DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>&
   for (std::size_t i = 0; i < classes.rows.size(); ++i) {
     const PersistencePair& p = diagram.pairs[classes.rows[i]];
     if (p.dim == 0) {
-      classes.cycles.push_back(cell_ids(cells, filtration, zero_cycles[next_zero]));
-      classes.clusters.push_back(cell_ids(cells, filtration, zero_clusters[next_zero]));
+      push_cell_ids(classes.cycles, cells, filtration, zero_cycles[next_zero]);
+      push_cell_ids(classes.clusters, cells, filtration, zero_clusters[next_zero]);
       Chain().swap(zero_cycles[next_zero]);
       Chain().swap(zero_clusters[next_zero++]);
       continue;
@@ -318,8 +315,8 @@ DiagramWithClasses compute_diagram_with_classes(const std::vector<medusa::Cell>&
       detail::shorten_cycle(filtration, *cofaces,
                             p.essential ? static_cast<Index>(filtration.size()) : p.death_index, z);
     check_cycle(filtration, p.birth_index, z);
-    classes.cycles.push_back(cell_ids(cells, filtration, z));
-    classes.clusters.emplace_back();
+    push_cell_ids(classes.cycles, cells, filtration, z);
+    classes.clusters.push_back({});
   }
   return out;
 }
@@ -332,10 +329,14 @@ void shorten_representatives(const std::vector<medusa::Cell>& cells, const Filtr
     for (std::size_t j = 0; j < filtration.size(); ++j)
       index_of.emplace(cells[filtration.cells[j]].id, static_cast<Index>(j));
     const detail::Cofaces cofaces(filtration, classes.options.max_dim);
+    CellLists shortened;
+    shortened.reserve(classes.size());
     for (std::size_t i = 0; i < classes.size(); ++i) {
       const PersistencePair& p = diagram.pairs.at(classes.rows[i]);
-      if (p.dim == 0)
+      if (p.dim == 0) {
+        shortened.push_back(classes.cycles[i]);
         continue;
+      }
       // Stored diagrams keep cell ids, not filtration indices: both are looked up.
       const auto index = [&](medusa::CellId id) {
         const auto it = index_of.find(id);
@@ -353,8 +354,9 @@ void shorten_representatives(const std::vector<medusa::Cell>& cells, const Filtr
       detail::shorten_cycle(filtration, cofaces,
                             p.essential ? static_cast<Index>(filtration.size()) : index(p.death_cell), z);
       check_cycle(filtration, birth, z);
-      classes.cycles[i] = cell_ids(cells, filtration, z);
+      push_cell_ids(shortened, cells, filtration, z);
     }
+    classes.cycles = std::move(shortened);
   }
   classes.options.shorten = true;
 }

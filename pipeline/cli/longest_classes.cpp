@@ -37,8 +37,8 @@ std::vector<LongestFilled> longest_filled_classes(const medusa::Medusa& medusa,
     one.diagram.pairs = {diagram.pairs[c.rows[best]]};
     one.classes.options = c.options;
     one.classes.rows = {0};
-    one.classes.cycles = {c.cycles[best]};
-    one.classes.clusters = {{}};
+    one.classes.cycles.push_back(c.cycles[best]);
+    one.classes.clusters.push_back({});
     const persistence::ClassRecord r = persistence::class_records(medusa, one).front();
     out.push_back({diagram.cell_type, k, c.rows[best], r.birth, r.death, r.cells});
   }

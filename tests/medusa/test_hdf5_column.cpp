@@ -1,4 +1,4 @@
-// Datasets of known size written a piece at a time (SizedColumn, write_list_columns) against the same
+// Datasets of known size written a piece at a time (SizedColumn, write_column_of) against the same
 // values written in one go.
 #include "medusa/core/error.h"
 #include "medusa/medusa/internal/hdf5_column.h"
@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -35,47 +36,52 @@ Layout layout_of(hid_t group, const std::string& name) {
 
 } // namespace
 
-TEST_CASE("Lists written a chunk at a time read back as their concatenation, stored as written in one go") {
-  // 8,192 eight-byte values fill a chunk: lists that end inside, on and across chunk boundaries, and
-  // empty ones, including an empty last list.
-  const std::vector<std::size_t> sizes = {0, 8191, 1, 8193, 0, 20000, 3, 0};
-  std::vector<std::vector<std::uint64_t>> lists;
-  std::vector<std::uint64_t> flat, offsets = {0};
-  std::uint64_t next = 7;
-  for (std::size_t size : sizes) {
-    lists.emplace_back();
-    for (std::size_t k = 0; k < size; ++k) {
-      next = next * 6364136223846793005u + 1442695040888963407u;
-      lists.back().push_back(next >> 20);
-      flat.push_back(next >> 20);
-    }
-    offsets.push_back(flat.size());
-  }
+TEST_CASE("A column written a chunk at a time reads back as its values, stored as if written in one go") {
+  // 8,192 eight-byte values fill a chunk: a count that ends inside, one that ends on and one past a
+  // chunk boundary, a single value and none.
   const medusa::test::TempDir dir("hdf5-column");
-  const std::string path = dir.file("lists.h5");
+  const std::string path = dir.file("pieces.h5");
   h5::Handle file = h5::file_handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
   REQUIRE(file.valid());
-  h5::write_list_columns<std::uint64_t>(file.get(), "offset", "value", lists, path);
-  h5::write_column(file.get(), "whole", flat, path);
-  CHECK(h5::read_column<std::uint64_t>(file.get(), "", "offset", path) == offsets);
-  CHECK(h5::read_column<std::uint64_t>(file.get(), "", "value", path) == flat);
-  const Layout pieces = layout_of(file.get(), "value"), whole = layout_of(file.get(), "whole");
-  CHECK(pieces.chunk == 8192);
-  CHECK(pieces.chunk == whole.chunk);
-  CHECK(pieces.storage == whole.storage);
+  for (std::size_t count :
+       {std::size_t{0}, std::size_t{1}, std::size_t{8191}, std::size_t{16384}, std::size_t{20000}}) {
+    INFO("count " << count);
+    std::vector<std::uint64_t> values;
+    std::uint64_t next = 7 + count;
+    for (std::size_t k = 0; k < count; ++k) {
+      next = next * 6364136223846793005u + 1442695040888963407u;
+      values.push_back(next >> 20);
+    }
+    const std::string name = "pieces" + std::to_string(count), whole = "whole" + std::to_string(count);
+    h5::write_column_of<std::uint64_t>(
+        file.get(), name, count, [&](std::size_t i) { return values[i]; }, path);
+    h5::write_column(file.get(), whole, values, path);
+    CHECK(h5::read_column<std::uint64_t>(file.get(), "", name, path) == values);
+    const Layout pieces = layout_of(file.get(), name), one_go = layout_of(file.get(), whole);
+    CHECK(pieces.chunk == std::max<std::size_t>(1, std::min<std::size_t>(count, 8192)));
+    CHECK(pieces.chunk == one_go.chunk);
+    CHECK(pieces.storage == one_go.storage);
+  }
 }
 
-TEST_CASE("A sized column refuses values past the size it was created with") {
+TEST_CASE("A sized column refuses values past its size, and finishing it short") {
   const medusa::test::TempDir dir("hdf5-column");
   const std::string path = dir.file("sized.h5");
   h5::Handle file = h5::file_handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
   REQUIRE(file.valid());
   const std::vector<std::uint64_t> values = {1, 2, 3, 4};
-  h5::SizedColumn column(file.get(), "sized", H5T_STD_U64LE, H5T_NATIVE_UINT64, 3, path);
+  h5::SizedColumnBase column(file.get(), "sized", H5T_STD_U64LE, H5T_NATIVE_UINT64, 3, path);
   column.write(values.data(), 2);
+  CHECK_THROWS_AS(column.check_complete(), StoreError);
   CHECK_THROWS_AS(column.write(values.data() + 2, 2), StoreError);
   column.write(values.data() + 2, 1);
   CHECK(column.written() == 3);
+  CHECK_NOTHROW(column.check_complete());
   CHECK_THROWS_AS(column.write(values.data(), 1), StoreError);
   CHECK(h5::read_column<std::uint64_t>(file.get(), "", "sized", path) == std::vector<std::uint64_t>{1, 2, 3});
+
+  h5::SizedColumn<std::uint64_t> short_column(file.get(), "short", 3, path);
+  short_column.push(1);
+  short_column.push(2);
+  CHECK_THROWS_AS(short_column.finish(), StoreError);
 }

@@ -158,7 +158,7 @@ TEST_CASE("Class representatives whose rows run past their diagram are a store e
   // Representatives that do not fit their diagram are refused when written, too.
   ClassRepresentatives wrong = run.classes[0];
   wrong.rows.push_back(run.diagrams[0].pairs.size());
-  wrong.cycles.emplace_back();
-  wrong.clusters.emplace_back();
+  wrong.cycles.push_back({});
+  wrong.clusters.push_back({});
   CHECK_THROWS_AS(write_diagrams(run.path, {run.diagrams[0]}, {&wrong}), StoreError);
 }

@@ -45,12 +45,12 @@ std::map<std::pair<int, CellId>, Found> classes_of(const std::vector<Cell>& cell
   std::map<std::pair<int, CellId>, Found> out;
   for (std::size_t i = 0; i < d.classes.size(); ++i) {
     const PersistencePair& p = d.diagram.pairs[d.classes.rows[i]];
-    out[{p.dim, p.birth_cell}] = {p, d.classes.cycles[i], d.classes.clusters[i]};
+    out[{p.dim, p.birth_cell}] = {p, d.classes.cycles[i].to_vector(), d.classes.clusters[i].to_vector()};
   }
   return out;
 }
 
-std::set<CellId> as_set(const std::vector<CellId>& v) { return {v.begin(), v.end()}; }
+std::set<CellId> as_set(CellLists::List v) { return {v.begin(), v.end()}; }
 
 // Square 0-1-2-3: vertices at t=0, edges 01, 12, 23 at t=1, 2, 3; edge 03 closes it at t=4.
 std::vector<CellSpec> square(double end) {

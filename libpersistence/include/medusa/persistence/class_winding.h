@@ -15,8 +15,7 @@ namespace medusa::persistence {
 // The winding over Z/2 of a degree-1 representative cycle (medusa cell ids of edges) around each axis
 // of the medusa's periodic domain: 1 when its edges cross the periodic boundary an odd number of
 // times along that axis, else 0. Zero on open axes, and for a cycle of another degree or an open run.
-std::array<std::int64_t, 3> cycle_winding(const medusa::Medusa& medusa,
-                                          const std::vector<medusa::CellId>& cycle);
+std::array<std::int64_t, 3> cycle_winding(const medusa::Medusa& medusa, CellLists::List cycle);
 
 // Per class of `classes` (aligned with classes.classes): the axes its loop wraps around ("x", "x,y";
 // empty for a loop that does not wrap and for other degrees). Essential loops are taken in birth order

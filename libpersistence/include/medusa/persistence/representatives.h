@@ -4,6 +4,7 @@
 #pragma once
 
 #include "medusa/medusa/cell.h"
+#include "medusa/persistence/cell_lists.h"
 #include "medusa/persistence/diagram.h"
 #include "medusa/persistence/filtration.h"
 
@@ -32,11 +33,11 @@ struct ClassRepresentatives {
   // its class is born with the birth cell and is not a boundary before the death cell (never, for an
   // essential class). Degree 0: the birth vertex and, for a finite pair, the oldest vertex of the
   // component it merges into (z = older + younger, a boundary from the death edge on).
-  std::vector<std::vector<medusa::CellId>> cycles;
+  CellLists cycles;
   // Degree 0 only (empty otherwise): the vertex cells of the component born with the class, ascending
   // in filtration order: just before the death edge merges it into an older component, or, for an
   // essential class, at the end of the filtration.
-  std::vector<std::vector<medusa::CellId>> clusters;
+  CellLists clusters;
 
   std::size_t size() const { return rows.size(); }
 };

@@ -6,6 +6,7 @@
 #include "medusa/medusa/internal/hdf5_handle.h"
 #include "medusa/medusa/internal/hdf5_types.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -58,12 +59,14 @@ private:
 // A dataset of `count` values known in advance, with Column's layout and without object timestamps, so
 // that the same values give byte-identical objects however they are handed over. Values are written in
 // order, a piece at a time, so that a caller need not gather them into one buffer first.
-class SizedColumn {
+class SizedColumnBase {
 public:
-  SizedColumn(hid_t location, const std::string& name, hid_t file_type, hid_t memory_type, std::size_t count,
-              const std::string& path);
+  SizedColumnBase(hid_t location, const std::string& name, hid_t file_type, hid_t memory_type,
+                  std::size_t count, const std::string& path);
   // Writes the next `count` values. Throws StoreError past the size given at creation.
   void write(const void* data, std::size_t count);
+  // Throws StoreError unless every value has been written: a column cut short must not look complete.
+  void check_complete() const;
   // Values per chunk: pieces of this many values each fill whole chunks.
   std::size_t chunk_values() const { return chunk_; }
   std::size_t written() const { return written_; }
@@ -78,7 +81,33 @@ private:
   std::size_t written_ = 0;
 };
 
-// Writes `count` values as the dataset `name` of `location` in one go (a SizedColumn).
+// A SizedColumnBase of T taking values one at a time, buffered a chunk at a time, so that each chunk is
+// written whole.
+template <class T> class SizedColumn : public SizedColumnBase {
+public:
+  SizedColumn(hid_t location, const std::string& name, std::size_t count, const std::string& path)
+      : SizedColumnBase(location, name, TypeOf<T>::file(), TypeOf<T>::memory(), count, path) {
+    piece_.reserve(std::min(count, chunk_values()));
+  }
+  void push(T value) {
+    piece_.push_back(value);
+    if (piece_.size() == chunk_values()) {
+      write(piece_.data(), piece_.size());
+      piece_.clear();
+    }
+  }
+  // Writes what is buffered; throws StoreError unless the column is then complete.
+  void finish() {
+    write(piece_.data(), piece_.size());
+    piece_.clear();
+    check_complete();
+  }
+
+private:
+  std::vector<T> piece_;
+};
+
+// Writes `count` values as the dataset `name` of `location` in one go (a SizedColumnBase).
 void write_whole_column(hid_t location, const std::string& name, hid_t file_type, hid_t memory_type,
                         const void* data, std::size_t count, const std::string& path);
 
@@ -89,32 +118,15 @@ void write_column(hid_t location, const std::string& name, const std::vector<T>&
                      path);
 }
 
-// Writes lists of values as two datasets of `location`: `offsets_name`, where list i is values
-// [offsets[i], offsets[i + 1]), then `values_name`, the lists one after another converted to T a chunk
-// at a time, so that their concatenation is never held in memory.
-template <class T, class Lists>
-void write_list_columns(hid_t location, const std::string& offsets_name, const std::string& values_name,
-                        const Lists& lists, const std::string& path) {
-  std::vector<T> offsets;
-  offsets.reserve(lists.size() + 1);
-  offsets.push_back(0);
-  for (const auto& list : lists)
-    offsets.push_back(offsets.back() + static_cast<T>(list.size()));
-  write_column(location, offsets_name, offsets, path);
-  SizedColumn values(location, values_name, TypeOf<T>::file(), TypeOf<T>::memory(),
-                     static_cast<std::size_t>(offsets.back()), path);
-  std::vector<T>().swap(offsets);
-  std::vector<T> piece;
-  piece.reserve(values.chunk_values());
-  for (const auto& list : lists)
-    for (const auto& value : list) {
-      piece.push_back(static_cast<T>(value));
-      if (piece.size() == values.chunk_values()) {
-        values.write(piece.data(), piece.size());
-        piece.clear();
-      }
-    }
-  values.write(piece.data(), piece.size());
+// Writes value(0), ..., value(count - 1) as the dataset `name` of `location`, converted to T a chunk at
+// a time, so that a column of a large structure is never held whole beside it.
+template <class T, class Value>
+void write_column_of(hid_t location, const std::string& name, std::size_t count, Value value,
+                     const std::string& path) {
+  SizedColumn<T> column(location, name, count, path);
+  for (std::size_t i = 0; i < count; ++i)
+    column.push(static_cast<T>(value(i)));
+  column.finish();
 }
 
 // Creates the group `name` under `parent`, without object timestamps.
