@@ -10,6 +10,12 @@ namespace medusa::persistence {
 
 Diagram make_diagram(const std::vector<medusa::Cell>& cells, const Filtration& filtration,
                      const std::vector<IndexPair>& pairs) {
+  if (cells.size() > medusa::max_cell_count)
+    throw InternalError("diagram: " + std::to_string(cells.size()) + " cells, more than a medusa holds (" +
+                        std::to_string(medusa::max_cell_count) + ")");
+  const auto position = [&](std::int64_t j) {
+    return static_cast<std::uint32_t>(filtration.cells[static_cast<std::size_t>(j)]);
+  };
   const bool forward = filtration.direction == Direction::forward;
   // The filtration value of a cell: its birth forward, its death in reverse (docs/MATH.md §7.2, §7.3).
   auto value_time = [&](std::int64_t j) -> const medusa::VirtualTime& {
@@ -46,8 +52,8 @@ Diagram make_diagram(const std::vector<medusa::Cell>& cells, const Filtration& f
     p.death_index = d;
     p.birth_cell = birth_cell.id;
     p.death_cell = death_cell.id;
-    p.birth_position = filtration.cells[static_cast<std::size_t>(b)];
-    p.death_position = filtration.cells[static_cast<std::size_t>(d)];
+    p.birth_position = position(b);
+    p.death_position = position(d);
     p.zero_length = p.birth_time.batch == p.death_time.batch;
     diagram.pairs.push_back(std::move(p));
   }
@@ -65,7 +71,7 @@ Diagram make_diagram(const std::vector<medusa::Cell>& cells, const Filtration& f
     p.death = forward ? infinity : -infinity;
     p.birth_index = j;
     p.birth_cell = c.id;
-    p.birth_position = filtration.cells[static_cast<std::size_t>(j)];
+    p.birth_position = position(j);
     p.essential = true;
     diagram.pairs.push_back(std::move(p));
   }

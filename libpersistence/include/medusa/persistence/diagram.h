@@ -28,14 +28,15 @@ struct PersistencePair {
   medusa::CellId death_cell = 0;  // 0 if essential
   // Positions of those cells in the cell vector the diagram was built from (their vertices are
   // looked up there, see birth_vertices(): a diagram holds one point per cell of a large medusa, so
-  // it does not copy vertex tuples). death_position is unused if essential.
-  std::size_t birth_position = 0;
-  std::size_t death_position = 0;
+  // it does not copy vertex tuples). death_position is unused if essential. 32 bits, as a medusa
+  // holds at most max_cell_count cells.
+  std::uint32_t birth_position = 0;
+  std::uint32_t death_position = 0;
   int dim = 0;              // homology degree = dimension of the birth cell (docs/MATH.md §7.5)
   bool essential = false;   // never killed: a class of the whole (sub-)medusa
   bool zero_length = false; // birth and death in the same batch (docs/MATH.md §7.5), on the diagonal
 };
-static_assert(sizeof(PersistencePair) <= 104, "PersistencePair grew: a diagram holds one per cell");
+static_assert(sizeof(PersistencePair) <= 96, "PersistencePair grew: a diagram holds one per cell");
 
 // All points of one filtration, sorted by (dim, birth_index). Degrees above 3 only hold zero-length
 // pairs for a valid medusa (docs/MATH.md §7.6) and are kept as they come.
