@@ -9,7 +9,9 @@ namespace medusa::persistence {
 
 namespace {
 // Blocks grow from 2 KiB to 8 MiB of ids: small sets of lists stay small, and a large one leaves at
-// most one block's spare room unused (a list longer than a block gets a block of its own).
+// most one block's spare room unused at its end (a list longer than a block gets a block of its own).
+// A list that does not fit the last block leaves the rest of it unused: little for representatives,
+// most of which are a few cells, though lists of just over half a block would each waste nearly half.
 constexpr std::size_t first_block = 256;
 constexpr std::size_t last_block = std::size_t{1} << 20;
 } // namespace
@@ -51,11 +53,24 @@ CellLists::List CellLists::at(std::size_t i) const {
   return (*this)[i];
 }
 
+const std::vector<std::uint64_t>& CellLists::offsets() const {
+  static const std::vector<std::uint64_t> none = {0};
+  return offsets_.empty() ? none : offsets_;
+}
+
+void CellLists::drop_tail(std::size_t size) {
+  blocks_.back().resize(size);
+  if (size == 0) {
+    blocks_.pop_back();
+    block_first_.pop_back();
+  }
+}
+
 std::vector<medusa::CellId>& CellLists::block_for(std::size_t n) {
   if (blocks_.empty() || blocks_.back().capacity() - blocks_.back().size() < n) {
     const std::size_t previous = blocks_.empty() ? 0 : blocks_.back().capacity();
     const std::size_t capacity = std::max(n, std::clamp(2 * previous, first_block, last_block));
-    block_first_.push_back(offsets_.back());
+    block_first_.push_back(offsets().back());
     blocks_.emplace_back();
     blocks_.back().reserve(capacity);
   }
@@ -63,7 +78,7 @@ std::vector<medusa::CellId>& CellLists::block_for(std::size_t n) {
 }
 
 bool operator==(const CellLists& a, const CellLists& b) {
-  if (a.offsets_ != b.offsets_)
+  if (a.offsets() != b.offsets())
     return false;
   for (std::size_t i = 0; i < a.size(); ++i)
     if (a[i] != b[i])

@@ -329,13 +329,11 @@ void shorten_representatives(const std::vector<medusa::Cell>& cells, const Filtr
     for (std::size_t j = 0; j < filtration.size(); ++j)
       index_of.emplace(cells[filtration.cells[j]].id, static_cast<Index>(j));
     const detail::Cofaces cofaces(filtration, classes.options.max_dim);
-    CellLists shortened;
-    shortened.reserve(classes.size());
-    for (std::size_t i = 0; i < classes.size(); ++i) {
+    classes.cycles.rebuild([&](std::size_t i, CellLists::List cycle, CellLists& shortened) {
       const PersistencePair& p = diagram.pairs.at(classes.rows[i]);
       if (p.dim == 0) {
-        shortened.push_back(classes.cycles[i]);
-        continue;
+        shortened.push_back(cycle);
+        return;
       }
       // Stored diagrams keep cell ids, not filtration indices: both are looked up.
       const auto index = [&](medusa::CellId id) {
@@ -346,8 +344,8 @@ void shorten_representatives(const std::vector<medusa::Cell>& cells, const Filtr
         return it->second;
       };
       Chain z;
-      z.reserve(classes.cycles[i].size());
-      for (medusa::CellId id : classes.cycles[i])
+      z.reserve(cycle.size());
+      for (medusa::CellId id : cycle)
         z.push_back(index(id));
       std::sort(z.begin(), z.end());
       const Index birth = index(p.birth_cell);
@@ -355,8 +353,7 @@ void shorten_representatives(const std::vector<medusa::Cell>& cells, const Filtr
                             p.essential ? static_cast<Index>(filtration.size()) : index(p.death_cell), z);
       check_cycle(filtration, birth, z);
       push_cell_ids(shortened, cells, filtration, z);
-    }
-    classes.cycles = std::move(shortened);
+    });
   }
   classes.options.shorten = true;
 }

@@ -64,7 +64,7 @@ TEST_CASE("A column written a chunk at a time reads back as its values, stored a
   }
 }
 
-TEST_CASE("A sized column refuses values past its size, and finishing it short") {
+TEST_CASE("A sized column refuses values past the size it was created with") {
   const medusa::test::TempDir dir("hdf5-column");
   const std::string path = dir.file("sized.h5");
   h5::Handle file = h5::file_handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
@@ -79,7 +79,13 @@ TEST_CASE("A sized column refuses values past its size, and finishing it short")
   CHECK_NOTHROW(column.check_complete());
   CHECK_THROWS_AS(column.write(values.data(), 1), StoreError);
   CHECK(h5::read_column<std::uint64_t>(file.get(), "", "sized", path) == std::vector<std::uint64_t>{1, 2, 3});
+}
 
+TEST_CASE("A sized column finished short of its size is a store error, not a column padded with zeros") {
+  const medusa::test::TempDir dir("hdf5-column");
+  const std::string path = dir.file("short.h5");
+  h5::Handle file = h5::file_handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+  REQUIRE(file.valid());
   h5::SizedColumn<std::uint64_t> short_column(file.get(), "short", 3, path);
   short_column.push(1);
   short_column.push(2);

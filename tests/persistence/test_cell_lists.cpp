@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -47,15 +48,15 @@ void require_same(const CellLists& lists, const Oracle& oracle) {
 
 } // namespace
 
-TEST_CASE("Cell lists hold what a vector of vectors holds through appends and filtering") {
+TEST_CASE("Cell lists hold what a vector of vectors holds through any sequence of edits") {
   for (std::uint64_t seed = 1; seed <= 100; ++seed) {
     INFO("seed " << seed);
     std::mt19937_64 random(seed);
     CellLists lists;
     Oracle oracle;
-    for (int step = 0; step < 60; ++step) {
-      const auto roll = random() % 10;
-      if (roll < 7) {
+    for (int step = 0; step < 80; ++step) {
+      const auto roll = random() % 14;
+      if (roll < 8) {
         // Mostly short lists, as representatives are; some long ones, so that blocks fill and a list
         // that does not fit the last one starts the next.
         std::vector<CellId> ids(roll == 1 ? random() % 3000 : random() % 6);
@@ -66,12 +67,11 @@ TEST_CASE("Cell lists hold what a vector of vectors holds through appends and fi
         else
           lists.push_back(ids);
         oracle.push_back(ids);
-      } else if (roll < 9 && !oracle.empty()) {
-        CellLists copy;
-        copy.push_back(lists[random() % lists.size()]);
-        lists.push_back(copy[0]);
-        oracle.push_back(copy[0].to_vector());
-      } else {
+      } else if (roll < 10 && !oracle.empty()) { // a list of its own, appended to itself
+        const std::size_t k = random() % lists.size();
+        lists.push_back(lists[k]);
+        oracle.push_back(oracle[k]);
+      } else if (roll == 10) {
         std::vector<char> keep(oracle.size());
         for (char& k : keep)
           k = random() % 3 != 0;
@@ -81,12 +81,75 @@ TEST_CASE("Cell lists hold what a vector of vectors holds through appends and fi
           if (keep[i])
             kept.push_back(oracle[i]);
         oracle = kept;
+      } else if (roll == 11) { // each list reversed and its ids doubled
+        lists.rebuild([](std::size_t, CellLists::List list, CellLists& out) {
+          std::vector<CellId> ids(list.begin(), list.end());
+          out.push_back(std::vector<CellId>(ids.rbegin(), ids.rend()), [](CellId id) { return 2 * id; });
+        });
+        for (std::vector<CellId>& ids : oracle) {
+          std::reverse(ids.begin(), ids.end());
+          for (CellId& id : ids)
+            id *= 2;
+        }
+      } else if (roll == 12) { // through the store's arrays
+        lists = CellLists::from_offsets(lists.offsets(), ids_of(lists), "s.h5", "/c");
+      } else {
+        CellLists moved = std::move(lists);
+        REQUIRE(lists.empty());
+        lists = std::move(moved);
       }
       require_same(lists, oracle);
     }
-    const CellLists again = CellLists::from_offsets(lists.offsets(), ids_of(lists), "s.h5", "/c");
-    REQUIRE(again == lists);
   }
+}
+
+TEST_CASE("Cell lists with the same offsets and different ids differ") {
+  CHECK(CellLists{{1, 2}, {3}} != CellLists{{1, 2}, {4}});
+  CHECK(CellLists{{1, 2}, {3}} != CellLists{{1}, {2, 3}});
+  CHECK(CellLists{{1, 2}, {}} == CellLists::from_offsets({0, 2, 2}, {1, 2}, "s.h5", "/c"));
+}
+
+TEST_CASE("A moved-from cell lists is empty and takes new lists") {
+  CellLists lists{{1, 2}, {3}};
+  const CellLists moved = std::move(lists);
+  CHECK(moved.size() == 2);
+  CHECK(lists.empty());
+  CHECK(lists.offsets() == std::vector<std::uint64_t>{0});
+  lists.push_back({7});
+  CHECK(lists == CellLists{{7}});
+}
+
+TEST_CASE("A list whose ids fail to convert leaves the lists as they were") {
+  CellLists lists{{1, 2}};
+  const std::vector<CellId> ids = {3, 4, 5};
+  const auto fail_at_5 = [](CellId id) {
+    if (id == 5)
+      throw medusa::InputError("no id 5");
+    return id;
+  };
+  CHECK_THROWS_AS(lists.push_back(ids, fail_at_5), medusa::InputError);
+  CHECK(lists == CellLists{{1, 2}});
+  CellLists fresh; // the failed list would have opened the first block
+  CHECK_THROWS_AS(fresh.push_back(ids, fail_at_5), medusa::InputError);
+  CHECK(fresh.empty());
+  fresh.push_back({9});
+  lists.push_back({9});
+  CHECK(fresh == CellLists{{9}});
+  CHECK(lists == CellLists{{1, 2}, {9}});
+}
+
+TEST_CASE("A rebuild that throws leaves the cell lists empty, not half let go") {
+  CellLists lists;
+  for (CellId k = 0; k < 2000; ++k)
+    lists.push_back({k, k + 1, k + 2});
+  CHECK_THROWS_AS(lists.rebuild([](std::size_t i, CellLists::List list, CellLists& out) {
+    if (i == 1500)
+      throw medusa::InputError("stop");
+    out.push_back(list);
+  }),
+                  medusa::InputError);
+  CHECK(lists.empty());
+  CHECK(lists.offsets() == std::vector<std::uint64_t>{0});
 }
 
 TEST_CASE(

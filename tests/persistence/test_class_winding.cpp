@@ -53,7 +53,7 @@ TEST_CASE("A ring that closes across the seam winds once along x", "[persistence
   // Cells at x = 1, 4, 6, 9 (y = 5) on a period of 10: the edges 1-4, 4-6, 6-9 stay inside and the
   // edge 9-1 crosses the seam (9 -> 11): one period in total.
   const Medusa m = ring({{1, 5}, {4, 5}, {6, 5}, {9, 5}}, false);
-  const auto w = persistence::cycle_winding(m, edges_of(m));
+  const auto w = persistence::cycle_winding(m, persistence::CellLists::List(edges_of(m)));
   CHECK(w == std::array<std::int64_t, 3>{1, 0, 0});
   CHECK(persistence::winding_axes(w) == "x");
 }
@@ -61,19 +61,20 @@ TEST_CASE("A ring that closes across the seam winds once along x", "[persistence
 TEST_CASE("A ring inside the domain winds zero times", "[persistence][periodic]") {
   // A square of cells at (2,2), (4,2), (4,4), (2,4) on the 10 x 10 torus: no edge crosses a seam.
   const Medusa m = ring({{2, 2}, {4, 2}, {4, 4}, {2, 4}}, true);
-  const auto w = persistence::cycle_winding(m, edges_of(m));
+  const auto w = persistence::cycle_winding(m, persistence::CellLists::List(edges_of(m)));
   CHECK(w == std::array<std::int64_t, 3>{0, 0, 0});
   CHECK(persistence::winding_axes(w).empty());
   // The same square placed across the corner of the torus: its cells at (9,9), (1,9), (1,1), (9,1)
   // are joined by edges across both seams, each crossed once there and once back.
   const Medusa corner = ring({{9, 9}, {1, 9}, {1, 1}, {9, 1}}, true);
-  CHECK(persistence::cycle_winding(corner, edges_of(corner)) == std::array<std::int64_t, 3>{0, 0, 0});
+  CHECK(persistence::cycle_winding(corner, persistence::CellLists::List(edges_of(corner))) ==
+        std::array<std::int64_t, 3>{0, 0, 0});
 }
 
 TEST_CASE("A diagonal ring on the torus winds once along x and once along y", "[persistence][periodic]") {
   // (1,1) -> (4,4) -> (7,7) -> (11,11) = (1,1) + (10,10): the closing edge from (7,7) crosses both seams.
   const Medusa m = ring({{1, 1}, {4, 4}, {7, 7}}, true);
-  const auto w = persistence::cycle_winding(m, edges_of(m));
+  const auto w = persistence::cycle_winding(m, persistence::CellLists::List(edges_of(m)));
   CHECK(w == std::array<std::int64_t, 3>{1, 1, 0});
   CHECK(persistence::winding_axes(w) == "x,y");
 }
@@ -82,7 +83,8 @@ TEST_CASE("An open run has no winding", "[persistence][periodic]") {
   Medusa m = ring({{1, 5}, {4, 5}, {6, 5}, {9, 5}}, false);
   m.run.periodic_axes.clear();
   m.run.periodic_lengths = {};
-  CHECK(persistence::cycle_winding(m, edges_of(m)) == std::array<std::int64_t, 3>{0, 0, 0});
+  CHECK(persistence::cycle_winding(m, persistence::CellLists::List(edges_of(m))) ==
+        std::array<std::int64_t, 3>{0, 0, 0});
 }
 
 TEST_CASE("Of two essential loops with the same winding only the older one wraps",

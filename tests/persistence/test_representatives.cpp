@@ -50,7 +50,7 @@ std::map<std::pair<int, CellId>, Found> classes_of(const std::vector<Cell>& cell
   return out;
 }
 
-std::set<CellId> as_set(CellLists::List v) { return {v.begin(), v.end()}; }
+template <class Ids> std::set<CellId> as_set(const Ids& v) { return {v.begin(), v.end()}; }
 
 // Square 0-1-2-3: vertices at t=0, edges 01, 12, 23 at t=1, 2, 3; edge 03 closes it at t=4.
 std::vector<CellSpec> square(double end) {

@@ -57,8 +57,8 @@ private:
 };
 
 // A dataset of `count` values known in advance, with Column's layout and without object timestamps, so
-// that the same values give byte-identical objects however they are handed over. Values are written in
-// order, a piece at a time, so that a caller need not gather them into one buffer first.
+// that the same values give the same stored chunks however they are handed over. Values are written
+// in order, a piece at a time, so that a caller need not gather them into one buffer first.
 class SizedColumnBase {
 public:
   SizedColumnBase(hid_t location, const std::string& name, hid_t file_type, hid_t memory_type,
