@@ -10,6 +10,25 @@ namespace {
 // About 64 KiB per chunk for 8-byte values: large enough for good compression, small enough that a
 // streaming writer's buffers stay small (docs/MATH.md §6.5).
 constexpr std::size_t chunk_bytes = 65536;
+
+// Every column of a store is a chunked dataset, shuffled, deflated and checksummed, growable along
+// its rows. track_times: whether it records its times (HDF5's default); sized columns do not, as
+// groups do not.
+Handle create_column(hid_t location, const std::string& name, hid_t file_type, int rank, const hsize_t* dims,
+                     const hsize_t* max_dims, const hsize_t* chunk, bool track_times,
+                     const std::string& path) {
+  Handle space = space_handle(H5Screate_simple(rank, dims, max_dims));
+  Handle dcpl = plist_handle(H5Pcreate(H5P_DATASET_CREATE));
+  if (!space.valid() || !dcpl.valid() || H5Pset_chunk(dcpl.get(), rank, chunk) < 0 ||
+      H5Pset_shuffle(dcpl.get()) < 0 || H5Pset_deflate(dcpl.get(), 6) < 0 ||
+      H5Pset_fletcher32(dcpl.get()) < 0 || (!track_times && H5Pset_obj_track_times(dcpl.get(), 0) < 0))
+    fail(path, "cannot set up dataset " + name);
+  Handle dataset = dataset_handle(
+      H5Dcreate2(location, name.c_str(), file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT));
+  if (!dataset.valid())
+    fail(path, "cannot create dataset " + name);
+  return dataset;
+}
 } // namespace
 
 ColumnBase::ColumnBase(hid_t location, const std::string& name, hid_t file_type, hid_t memory_type,
@@ -20,16 +39,7 @@ ColumnBase::ColumnBase(hid_t location, const std::string& name, hid_t file_type,
   hsize_t dims[2] = {0, width};
   hsize_t max_dims[2] = {H5S_UNLIMITED, width};
   hsize_t chunk[2] = {chunk_rows_, width};
-  Handle space = space_handle(H5Screate_simple(rank, dims, max_dims));
-  Handle dcpl = plist_handle(H5Pcreate(H5P_DATASET_CREATE));
-  if (!space.valid() || !dcpl.valid() || H5Pset_chunk(dcpl.get(), rank, chunk) < 0 ||
-      H5Pset_shuffle(dcpl.get()) < 0 || H5Pset_deflate(dcpl.get(), 6) < 0 ||
-      H5Pset_fletcher32(dcpl.get()) < 0)
-    fail(path_, "cannot set up dataset " + name_);
-  dataset_ = dataset_handle(
-      H5Dcreate2(location, name.c_str(), file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT));
-  if (!dataset_.valid())
-    fail(path_, "cannot create dataset " + name_);
+  dataset_ = create_column(location, name, file_type, rank, dims, max_dims, chunk, true, path_);
 }
 
 void ColumnBase::write(const void* data, std::size_t rows) {
@@ -55,16 +65,7 @@ SizedColumnBase::SizedColumnBase(hid_t location, const std::string& name, hid_t 
   const hsize_t max_size = H5S_UNLIMITED;
   const hsize_t chunk = std::max<hsize_t>(1, std::min<hsize_t>(size, chunk_bytes / H5Tget_size(file_type)));
   chunk_ = static_cast<std::size_t>(chunk);
-  Handle space = space_handle(H5Screate_simple(1, &size, &max_size));
-  Handle dcpl = plist_handle(H5Pcreate(H5P_DATASET_CREATE));
-  if (!space.valid() || !dcpl.valid() || H5Pset_chunk(dcpl.get(), 1, &chunk) < 0 ||
-      H5Pset_shuffle(dcpl.get()) < 0 || H5Pset_deflate(dcpl.get(), 6) < 0 ||
-      H5Pset_fletcher32(dcpl.get()) < 0 || H5Pset_obj_track_times(dcpl.get(), 0) < 0)
-    fail(path, "cannot set up dataset " + name);
-  dataset_ = dataset_handle(
-      H5Dcreate2(location, name.c_str(), file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT));
-  if (!dataset_.valid())
-    fail(path, "cannot create dataset " + name);
+  dataset_ = create_column(location, name, file_type, 1, &size, &max_size, &chunk, false, path_);
 }
 
 void SizedColumnBase::write(const void* data, std::size_t count) {
