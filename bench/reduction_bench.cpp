@@ -1,6 +1,6 @@
 // Reduction benchmark: the forward filtration of a medusa reduced by libpersistence in memory
 // (make_filtration, then reduce: the PHAT boundary matrix built from the filtration and reduced with
-// bit_tree_pivot_column + twist_reduction, docs/MATH.md §7.5) against PHAT's own `phat` command on the same
+// compact_pivot_column + twist_reduction, docs/MATH.md §7.5) against PHAT's own `phat` command on the same
 // boundary matrix saved in PHAT's binary format, and against what that command does (load_binary +
 // compute_persistence_pairs) run in this process. Checks that the three give the same pairs, then
 // prints times, peak memory and the ratios ours / phat.

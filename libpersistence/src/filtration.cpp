@@ -24,7 +24,7 @@ struct SortKey {
   std::uint64_t batch = 0; // birth batch, or the complement of the death batch (reverse)
   std::uint32_t rank = 0;  // likewise for the rank within the batch
   int dim = 0;
-  std::size_t position = 0; // in the cell vector
+  FiltrationIndex position = 0; // in the cell vector
 
   bool same_time_and_dim(const SortKey& o) const {
     return batch == o.batch && rank == o.rank && dim == o.dim;
@@ -34,7 +34,7 @@ struct SortKey {
   }
 };
 
-SortKey sort_key(const Cell& c, std::size_t position, Direction direction) {
+SortKey sort_key(const Cell& c, FiltrationIndex position, Direction direction) {
   SortKey k;
   if (direction == Direction::forward) {
     k.batch = c.birth.batch;
@@ -48,8 +48,9 @@ SortKey sort_key(const Cell& c, std::size_t position, Direction direction) {
   return k;
 }
 
-Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> selected, Direction direction,
+Filtration build(const std::vector<Cell>& cells, std::vector<FiltrationIndex> selected, Direction direction,
                  int cell_type) {
+  check_filtration_size(selected.size(), cells.size());
   // Cells read from a store have ids 0..N-1 in order (libmedusa's Medusa::cells): then an id is its
   // position and the facet lookups need no hash table, which dominated the cost of this function.
   bool ids_are_positions = true;
@@ -72,7 +73,7 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
 
   std::vector<SortKey> keys;
   keys.reserve(selected.size());
-  for (std::size_t i : selected)
+  for (FiltrationIndex i : selected)
     keys.push_back(sort_key(cells[i], i, direction));
   std::sort(keys.begin(), keys.end(), [&](const SortKey& a, const SortKey& b) {
     if (!a.same_time_and_dim(b))
@@ -88,10 +89,13 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
                           cell_name(cells[keys[j - 1].position]));
   for (std::size_t j = 0; j < keys.size(); ++j)
     selected[j] = keys[j].position;
+  // The keys go before the columns come: at a million cells they are half a gigabyte.
+  std::vector<SortKey>().swap(keys);
 
-  std::vector<std::int64_t> index_of(cells.size(), -1);
+  constexpr FiltrationIndex none = UINT32_MAX;
+  std::vector<FiltrationIndex> index_of(cells.size(), none);
   for (std::size_t j = 0; j < selected.size(); ++j)
-    index_of[selected[j]] = static_cast<std::int64_t>(j);
+    index_of[selected[j]] = static_cast<FiltrationIndex>(j);
 
   Filtration f;
   f.direction = direction;
@@ -99,13 +103,13 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
   f.cells = std::move(selected);
   f.dims.resize(f.cells.size());
   std::size_t entries = 0;
-  for (std::size_t position : f.cells)
+  for (FiltrationIndex position : f.cells)
     entries += cells[position].facets.size();
   f.columns.reserve(f.cells.size(), entries);
   std::vector<std::int64_t> column;
   for (std::size_t j = 0; j < f.cells.size(); ++j) {
     const Cell& c = cells[f.cells[j]];
-    f.dims[j] = c.dim();
+    f.dims[j] = static_cast<std::int8_t>(c.dim());
     const std::size_t expected = c.dim() >= 1 ? c.vertices.size() : 0;
     if (c.facets.size() != expected)
       throw InternalError("filtration: " + cell_name(c) + " has " + std::to_string(c.facets.size()) +
@@ -120,9 +124,9 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
       if (facet.vertices.size() + 1 != c.vertices.size() ||
           !std::includes(c.vertices.begin(), c.vertices.end(), facet.vertices.begin(), facet.vertices.end()))
         throw InternalError("filtration: " + cell_name(facet) + " is not a facet of " + cell_name(c));
-      const std::int64_t row = index_of[at];
+      const FiltrationIndex row = index_of[at];
       // A face of a type-X cell is type-X, so a missing row is a broken sub-medusa (docs/MATH.md §7.4).
-      if (row < 0 || row >= static_cast<std::int64_t>(j))
+      if (row == none || row >= j)
         throw InternalError("filtration: facet " + cell_name(facet) + " does not precede its coface " +
                             cell_name(c));
       column.push_back(row);
@@ -137,15 +141,31 @@ Filtration build(const std::vector<Cell>& cells, std::vector<std::size_t> select
 
 } // namespace
 
+void check_filtration_size(std::size_t filtration_size, std::size_t cell_count) {
+  if (filtration_size > max_filtration_size || cell_count > max_filtration_size)
+    throw InputError("filtration: " + std::to_string(std::max(filtration_size, cell_count)) +
+                     " cells; a filtration takes at most " + std::to_string(max_filtration_size));
+}
+
+void BoundaryColumns::push_back(const std::vector<std::int64_t>& column) {
+  for (std::int64_t row : column)
+    if (row < 0 || static_cast<std::uint64_t>(row) >= max_filtration_size)
+      throw InternalError("filtration: boundary entry " + std::to_string(row) + " is no filtration index");
+  entries_.insert(entries_.end(), column.begin(), column.end());
+  offsets_.push_back(entries_.size());
+}
+
 Filtration make_filtration(const std::vector<Cell>& cells, Direction direction) {
-  std::vector<std::size_t> all(cells.size());
-  std::iota(all.begin(), all.end(), std::size_t{0});
+  check_filtration_size(cells.size(), cells.size());
+  std::vector<FiltrationIndex> all(cells.size());
+  std::iota(all.begin(), all.end(), FiltrationIndex{0});
   return build(cells, std::move(all), direction, all_types);
 }
 
 Filtration make_type_filtration(const std::vector<Cell>& cells, const std::vector<int>& vertex_type, int type,
                                 Direction direction) {
-  std::vector<std::size_t> selected;
+  check_filtration_size(cells.size(), cells.size());
+  std::vector<FiltrationIndex> selected;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     bool all_x = true;
     for (kinetic::VertexId v : cells[i].vertices) {
@@ -155,7 +175,7 @@ Filtration make_type_filtration(const std::vector<Cell>& cells, const std::vecto
       all_x = all_x && vertex_type[static_cast<std::size_t>(v)] == type;
     }
     if (all_x)
-      selected.push_back(i);
+      selected.push_back(static_cast<FiltrationIndex>(i));
   }
   return build(cells, std::move(selected), direction, type);
 }

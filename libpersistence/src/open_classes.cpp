@@ -46,9 +46,10 @@ std::array<std::size_t, 3> end_classes_beyond_first(const std::vector<medusa::Ce
   Filtration f;
   std::vector<std::int64_t> col;
   // Column `at` is appended when it is complete (`col`), in filtration order.
+  check_filtration_size(end_part.size() + rest.size() + 1 + first_part.size(), cells.size());
   const auto add = [&](std::size_t cell, int dim) {
-    f.cells.push_back(cell);
-    f.dims.push_back(dim);
+    f.cells.push_back(static_cast<FiltrationIndex>(cell));
+    f.dims.push_back(static_cast<std::int8_t>(dim));
     col.clear();
     return static_cast<std::int64_t>(f.cells.size() - 1);
   };

@@ -19,7 +19,7 @@ namespace {
 
 using Index = std::int64_t;
 using Chain = std::vector<Index>; // filtration indices, ascending
-using Matrix = phat::boundary_matrix<phat::bit_tree_pivot_column>;
+using Matrix = phat::boundary_matrix<compact_pivot_column>;
 
 Chain sum(const Chain& a, const Chain& b) {
   Chain out;
@@ -43,7 +43,7 @@ public:
       column.clear(); // PHAT's pivot column appends to it
       matrix.get_col(j, column);
       std::sort(column.begin(), column.end());
-      entries_.insert(entries_.end(), column.begin(), column.end());
+      entries_.insert(entries_.end(), column.begin(), column.end()); // indices of f: 32 bits (filtration.h)
       offsets_.push_back(entries_.size());
     }
   }
@@ -55,8 +55,8 @@ public:
   }
 
 private:
-  std::vector<std::size_t> offsets_; // column j is entries_[offsets_[j], offsets_[j + 1])
-  std::vector<Index> entries_;       // ascending within a column
+  std::vector<std::size_t> offsets_;     // column j is entries_[offsets_[j], offsets_[j + 1])
+  std::vector<FiltrationIndex> entries_; // ascending within a column
 };
 
 Chain boundary_of(const Filtration& f, Index j) { return f.columns[static_cast<std::size_t>(j)].to_vector(); }

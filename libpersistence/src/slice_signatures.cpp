@@ -69,6 +69,7 @@ Coned coned_filtration(const std::vector<Cell>& cells, std::vector<std::size_t> 
 
   Coned out;
   Filtration& f = out.filtration;
+  check_filtration_size(2 * n + 1, cells.size());
   f.cells.resize(2 * n + 1);
   f.dims.resize(2 * n + 1);
   std::vector<std::int64_t> col;
@@ -77,8 +78,8 @@ Coned coned_filtration(const std::vector<Cell>& cells, std::vector<std::size_t> 
   out.cone_of.resize(n);
   for (std::size_t j = 0; j < n; ++j) {
     const Cell& c = cells[kept[j]];
-    f.cells[j] = kept[j];
-    f.dims[j] = c.dim();
+    f.cells[j] = static_cast<FiltrationIndex>(kept[j]);
+    f.dims[j] = static_cast<std::int8_t>(c.dim());
     out.births[j] = c.birth.batch;
     out.cone_of[j] = static_cast<std::size_t>(cone_index[kept[j]]);
     col.clear();
@@ -94,14 +95,14 @@ Coned coned_filtration(const std::vector<Cell>& cells, std::vector<std::size_t> 
     if (j % poll_every == 0)
       call(poll);
   }
-  f.cells[n] = cells.size(); // the apex is no cell of the medusa
+  f.cells[n] = static_cast<FiltrationIndex>(cells.size()); // the apex is no cell of the medusa
   f.dims[n] = 0;
   f.columns.push_back({});
   for (std::size_t j = 0; j < n; ++j) {
     const Cell& c = cells[by_death[j]];
     const std::size_t at = n + 1 + j;
-    f.cells[at] = by_death[j];
-    f.dims[at] = c.dim() + 1;
+    f.cells[at] = static_cast<FiltrationIndex>(by_death[j]);
+    f.dims[at] = static_cast<std::int8_t>(c.dim() + 1);
     out.deaths[j] = c.death.batch;
     col.clear();
     col.push_back(forward_index[by_death[j]]);

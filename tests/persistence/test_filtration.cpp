@@ -37,7 +37,7 @@ TEST_CASE("The forward filtration orders cells by birth batch, birth rank, dimen
   const Filtration f = make_filtration(cells, Direction::forward);
   // Vertices (0,0) by tuple 0,1,2; then 01 (1,0), 12 (1,1), 02 (2,0).
   CHECK(ids_in_order(cells, f) == std::vector<medusa::CellId>{1007, 1014, 1000, 1028, 1021, 1035});
-  CHECK(f.dims == std::vector<int>{0, 0, 0, 1, 1, 1});
+  CHECK(f.dims == std::vector<std::int8_t>{0, 0, 0, 1, 1, 1});
   CHECK(f.columns[3].to_vector() == std::vector<std::int64_t>{0, 1});
   CHECK(f.columns[4].to_vector() == std::vector<std::int64_t>{1, 2});
   CHECK(f.columns[5].to_vector() == std::vector<std::int64_t>{0, 2});
@@ -144,4 +144,24 @@ TEST_CASE("A filtration has one boundary column per cell, each of its cell's fac
     for (std::size_t j = 0; j < f.size(); ++j)
       CHECK(f.columns[j].size() == cells[f.cells[j]].facets.size());
   }
+}
+
+TEST_CASE("Boundary columns hold the largest filtration index and refuse what is none") {
+  BoundaryColumns columns;
+  const auto largest = static_cast<std::int64_t>(max_filtration_size) - 1;
+  columns.push_back({0, largest});
+  CHECK(columns[0].back() == largest);
+  CHECK_THROWS_AS(columns.push_back({-1}), InternalError);
+  CHECK_THROWS_AS(columns.push_back({largest + 1}), InternalError);
+  CHECK_THROWS_AS(columns.push_back({std::int64_t{1} << 32}), InternalError);
+  CHECK_THROWS_AS(columns.push_back({3, -1}), InternalError);
+  CHECK(columns.size() == 1);
+  CHECK(columns.entries() == 2);
+}
+
+TEST_CASE("A filtration over more cells than 32-bit indices number is refused as input") {
+  CHECK_NOTHROW(check_filtration_size(max_filtration_size, max_filtration_size));
+  CHECK_THROWS_AS(check_filtration_size(max_filtration_size + 1, 10), InputError);
+  CHECK_THROWS_AS(check_filtration_size(10, max_filtration_size + 1), InputError);
+  CHECK(max_filtration_size + 1 == UINT32_MAX); // the largest value stays free to mark "no cell"
 }

@@ -1,6 +1,7 @@
 // Boundary matrices of a filtration for PHAT, built in memory, and their reduction (docs/MATH.md §7.5).
 #pragma once
 
+#include "medusa/persistence/compact_column.h"
 #include "medusa/persistence/filtration.h"
 
 #include <phat/boundary_matrix.h>
@@ -21,7 +22,7 @@ namespace medusa::persistence {
 using IndexPair = std::pair<std::int64_t, std::int64_t>;
 
 // One column per cell in filtration order, holding its facet indices over Z/2 (docs/MATH.md §7.5).
-template <class Representation = phat::bit_tree_pivot_column>
+template <class Representation = compact_pivot_column>
 phat::boundary_matrix<Representation> make_boundary_matrix(const Filtration& filtration) {
   phat::boundary_matrix<Representation> matrix;
   matrix.set_num_cols(static_cast<phat::index>(filtration.size()));
@@ -36,7 +37,7 @@ phat::boundary_matrix<Representation> make_boundary_matrix(const Filtration& fil
 
 // The finite persistence pairs of the filtration, sorted by birth index. Essential classes are not
 // among them (PHAT reports only pairs; see diagram.h).
-template <class Representation = phat::bit_tree_pivot_column, class Algorithm = phat::twist_reduction>
+template <class Representation = compact_pivot_column, class Algorithm = phat::twist_reduction>
 std::vector<IndexPair> reduce(const Filtration& filtration) {
   auto matrix = make_boundary_matrix<Representation>(filtration);
   phat::persistence_pairs pairs;
@@ -95,7 +96,7 @@ std::vector<IndexPair> reduced_pairs(const phat::boundary_matrix<Representation>
   return result;
 }
 
-// The finite pairs by PolledTwistReduction on PHAT's default representation: what reduce() gives, and
+// The finite pairs by PolledTwistReduction on compact_pivot_column: what reduce() gives, and
 // stoppable.
 inline std::vector<IndexPair> reduce(const Filtration& filtration, const std::function<void()>& poll) {
   auto matrix = make_boundary_matrix(filtration);

@@ -52,7 +52,7 @@ Diagram make_diagram(const std::vector<medusa::Cell>& cells, const Filtration& f
                      const std::vector<IndexPair>& pairs);
 
 // Reduces the filtration with PHAT and builds its diagram.
-template <class Representation = phat::bit_tree_pivot_column, class Algorithm = phat::twist_reduction>
+template <class Representation = compact_pivot_column, class Algorithm = phat::twist_reduction>
 Diagram compute_diagram(const std::vector<medusa::Cell>& cells, const Filtration& filtration) {
   return make_diagram(cells, filtration, reduce<Representation, Algorithm>(filtration));
 }

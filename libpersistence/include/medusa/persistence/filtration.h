@@ -18,6 +18,15 @@ enum class Direction : std::uint8_t {
 // Cell type value meaning "the whole medusa", not a sub-medusa M_X.
 constexpr int all_types = -1;
 
+// Filtrations index cells in 32 bits (a whole-medusa filtration of a million cells over 20 frames holds
+// about 21 million, and every index is held once per cell and once per facet): a filtration holds
+// at most max_filtration_size cells and is built over fewer cells than that, so that no position,
+// index or "no cell" mark (the largest value) overflows. check_filtration_size throws InputError
+// otherwise.
+using FiltrationIndex = std::uint32_t;
+inline constexpr std::size_t max_filtration_size = std::size_t{UINT32_MAX} - 1;
+void check_filtration_size(std::size_t filtration_size, std::size_t cell_count);
+
 // The boundary columns of a filtration, one after another in one array: column j is
 // entries[offsets[j], offsets[j + 1]). A whole-medusa filtration has one column of at most five
 // entries per cell, and a vector per column would add 24 bytes of header and a heap block's slack to
@@ -28,9 +37,9 @@ public:
   // One column: its facet indices, ascending (docs/MATH.md §7.5).
   class Column {
   public:
-    Column(const std::int64_t* first, const std::int64_t* last) : first_(first), last_(last) {}
-    const std::int64_t* begin() const { return first_; }
-    const std::int64_t* end() const { return last_; }
+    Column(const FiltrationIndex* first, const FiltrationIndex* last) : first_(first), last_(last) {}
+    const FiltrationIndex* begin() const { return first_; }
+    const FiltrationIndex* end() const { return last_; }
     std::size_t size() const { return static_cast<std::size_t>(last_ - first_); }
     bool empty() const { return first_ == last_; }
     std::int64_t operator[](std::size_t i) const { return first_[i]; }
@@ -38,8 +47,8 @@ public:
     std::vector<std::int64_t> to_vector() const { return {first_, last_}; }
 
   private:
-    const std::int64_t* first_;
-    const std::int64_t* last_;
+    const FiltrationIndex* first_;
+    const FiltrationIndex* last_;
   };
 
   std::size_t size() const { return offsets_.size() - 1; }
@@ -51,28 +60,26 @@ public:
     offsets_.reserve(columns + 1);
     entries_.reserve(entries);
   }
-  // Appends the next column; `column` must be ascending.
-  void push_back(const std::vector<std::int64_t>& column) {
-    entries_.insert(entries_.end(), column.begin(), column.end());
-    offsets_.push_back(entries_.size());
-  }
+  // Appends the next column; `column` must be ascending and each entry an index of the filtration
+  // (InternalError otherwise, appending nothing: every builder checks its size first).
+  void push_back(const std::vector<std::int64_t>& column);
   friend bool operator==(const BoundaryColumns& a, const BoundaryColumns& b) {
     return a.offsets_ == b.offsets_ && a.entries_ == b.entries_;
   }
 
 private:
   std::vector<std::size_t> offsets_{0};
-  std::vector<std::int64_t> entries_;
+  std::vector<FiltrationIndex> entries_;
 };
 
 // A filtration over a cell vector: entry j is the j-th cell in filtration order. It refers to the
 // cell vector it was built from by position, so keep that vector alive and unchanged.
 struct Filtration {
   Direction direction = Direction::forward;
-  int cell_type = all_types;      // X for M_X (docs/MATH.md §7.4), all_types for M
-  std::vector<std::size_t> cells; // position in the input cell vector, per filtration index
-  std::vector<int> dims;          // medusa dimension (vertices - 1, docs/MATH.md §6.1) per filtration index
-  BoundaryColumns columns;        // facet filtration indices per filtration index (docs/MATH.md §7.5)
+  int cell_type = all_types;          // X for M_X (docs/MATH.md §7.4), all_types for M
+  std::vector<FiltrationIndex> cells; // position in the input cell vector, per filtration index
+  std::vector<std::int8_t> dims; // medusa dimension (vertices - 1, docs/MATH.md §6.1) per filtration index
+  BoundaryColumns columns;       // facet filtration indices per filtration index (docs/MATH.md §7.5)
 
   std::size_t size() const { return cells.size(); }
 };
