@@ -48,9 +48,9 @@ SortKey sort_key(const Cell& c, FiltrationIndex position, Direction direction) {
   return k;
 }
 
+// `selected` holds positions in `cells`, whose size the callers have checked (check_filtration_size).
 Filtration build(const std::vector<Cell>& cells, std::vector<FiltrationIndex> selected, Direction direction,
                  int cell_type) {
-  check_filtration_size(selected.size(), cells.size());
   // Cells read from a store have ids 0..N-1 in order (libmedusa's Medusa::cells): then an id is its
   // position and the facet lookups need no hash table, which dominated the cost of this function.
   bool ids_are_positions = true;

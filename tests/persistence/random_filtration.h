@@ -1,8 +1,11 @@
-// A random filtration for the reduction tests: the closure of random tetrahedra, each simplex entering
-// after its facets.
+// For the reduction tests: a random filtration (the closure of random tetrahedra, each simplex entering
+// after its facets), and the column-by-column comparison of two reduced matrices.
 #pragma once
 
 #include "medusa/persistence/filtration.h"
+
+#include <catch2/catch.hpp>
+#include <phat/helpers/misc.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -72,6 +75,22 @@ inline Filtration random_filtration(std::mt19937& rng, int vertices, int tets) {
     f.columns.push_back(column);
   }
   return f;
+}
+
+// Two boundary matrices (any PHAT representations) hold the same columns and dimensions.
+template <class A, class B> void require_same_columns(const A& a, const B& b) {
+  REQUIRE(a.get_num_cols() == b.get_num_cols());
+  std::vector<phat::index> x, y;
+  for (phat::index j = 0; j < a.get_num_cols(); ++j) {
+    // Emptied first: PHAT's pivot column appends to a non-empty vector and then adds the old entries
+    // back into itself, which changes the matrix (the other representations clear it).
+    x.clear();
+    y.clear();
+    a.get_col(j, x);
+    b.get_col(j, y);
+    REQUIRE(x == y);
+    REQUIRE(a.get_dim(j) == b.get_dim(j));
+  }
 }
 
 } // namespace medusa::persistence::test

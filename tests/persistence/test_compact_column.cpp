@@ -29,19 +29,6 @@ phat::boundary_matrix<Representation> reduced(const Filtration& f) {
   return matrix;
 }
 
-template <class A, class B> void require_same_columns(const A& a, const B& b) {
-  REQUIRE(a.get_num_cols() == b.get_num_cols());
-  std::vector<phat::index> x, y;
-  for (phat::index j = 0; j < a.get_num_cols(); ++j) {
-    x.clear(); // PHAT's pivot column appends to what it is given
-    y.clear();
-    a.get_col(j, x);
-    b.get_col(j, y);
-    REQUIRE(x == y);
-    REQUIRE(a.get_dim(j) == b.get_dim(j));
-  }
-}
-
 template <class Algorithm> void check_algorithm(const Filtration& f) {
   const auto phats = reduced<phat::bit_tree_pivot_column, Algorithm>(f);
   require_same_columns(reduced<compact_pivot_column, Algorithm>(f), phats);

@@ -58,16 +58,17 @@ public:
     std::set_symmetric_difference(begin(), end(), source.begin(), source.end(), std::back_inserter(sum));
     entries_.assign(sum.begin(), sum.end());
   }
-  // A column left shorter than its heap array is copied into one of its size (or into place).
+  // A column the reduction left short enough goes back into place and lets its heap array go.
   void _finalize() {
-    if (entries_.capacity() > entries_.size() && !entries_.is_inline())
+    if (!entries_.is_inline() && entries_.size() <= in_place)
       entries_ = Entries(entries_.begin(), entries_.end());
   }
 
 private:
   // Four in place: every cell of the medusa but its instants of dimension 4 (five facets) and the
   // columns fill-in grows.
-  using Entries = SmallList<Entry, 4>;
+  static constexpr std::uint32_t in_place = 4;
+  using Entries = SmallList<Entry, in_place>;
   Entries entries_;
 };
 static_assert(sizeof(CompactColumn) == 24, "a column per cell of the medusa");
