@@ -84,6 +84,7 @@ template <class K> struct Engine {
   // The cells the mirror's last change made: the certificates installed after a change are those of
   // their facets, found here rather than by a walk (Engine::mirror_cert).
   std::vector<CellIndex> mirror_created;
+  bool mirror_created_sorted = false; // in the order of their top simplices
 
   // Certificates and their failure times (certificate_pool.h).
   CertificatePool certificates;
@@ -377,7 +378,7 @@ template <class K> struct Engine {
                          const HeldFlip* held_flip);
   void mirror_flip(const HeldFlip& held_flip, const std::vector<Simplex>& added,
                    const std::vector<int>& orientations, const std::vector<int>& dropped);
-  void mirror_cert(const Simplex& facet, VertexId apex, int id);
+  void mirror_cert(const Simplex& facet, const std::array<VertexId, 2>& apices, int id);
   void mirror_orientation(const Simplex& t, int orientation);
   // The first difference between cell_mirror and `tri` (top simplices, orientations, apices and
   // certificate ids of every facet), or the mirror's own first violation; empty if none.

@@ -47,8 +47,8 @@ void Engine<K>::mirror_top_change(const std::vector<Simplex>& removed, const std
     news.push_back({added[i], orientations[i]});
   std::vector<int> mirrored;
   cell_mirror->replace(held, news, mirrored, &mirror_created);
-  if (mirror_created.size() > max_scanned_cells) // a static rebuild: a walk per facet is cheaper
-    mirror_created.clear();
+  // A static rebuild adds its top simplices sorted, so its cells are found by bisection.
+  mirror_created_sorted = std::is_sorted(added.begin(), added.end());
   if (mirrored != dropped)
     throw InternalError("the cell triangulation dropped other certificates than the triangulation (" +
                         std::to_string(mirrored.size()) + " against " + std::to_string(dropped.size()) + ")");
@@ -106,22 +106,36 @@ void Engine<K>::mirror_flip(const HeldFlip& held_flip, const std::vector<Simplex
                         ")");
 }
 
-template <class K> void Engine<K>::mirror_cert(const Simplex& facet, VertexId apex, int id) {
+// Either cell of the facet names its certificate: the one the last change made, when it made one
+// (a facet on the boundary of a flip has one new cell and one old), else the first apex's.
+template <class K>
+void Engine<K>::mirror_cert(const Simplex& facet, const std::array<VertexId, 2>& apices, int id) {
   if (!cell_mirror)
     return;
-  const Simplex top = facet.with(apex);
+  const std::array<Simplex, 2> tops{facet.with(apices[0]), facet.with(apices[1])};
   CellIndex c = no_cell;
-  for (CellIndex made : mirror_created)
-    if (cell_mirror->alive(made) && cell_mirror->top(made) == top)
-      c = made;
+  if (mirror_created.size() <= max_scanned_cells) {
+    for (CellIndex made : mirror_created)
+      if (cell_mirror->alive(made) &&
+          (cell_mirror->top(made) == tops[0] || cell_mirror->top(made) == tops[1]))
+        c = made;
+  } else if (mirror_created_sorted) {
+    for (std::size_t k = 0; k < 2 && c == no_cell; ++k) {
+      const auto it =
+          std::lower_bound(mirror_created.begin(), mirror_created.end(), tops[k],
+                           [&](CellIndex made, const Simplex& t) { return cell_mirror->top(made) < t; });
+      if (it != mirror_created.end() && cell_mirror->alive(*it) && cell_mirror->top(*it) == tops[k])
+        c = *it;
+    }
+  }
   if (c == no_cell)
-    c = cell_mirror->find(top);
+    c = cell_mirror->find(tops[0]);
   if (c == no_cell) {
     std::ostringstream os;
-    os << "the cell triangulation lacks the top simplex " << top;
+    os << "the cell triangulation lacks the top simplex " << tops[0];
     throw InternalError(os.str());
   }
-  const int i = cell_mirror->index_of(c, apex);
+  const int i = cell_mirror->index_of(c, cell_mirror->top(c) == tops[0] ? apices[0] : apices[1]);
   cell_mirror->set_cert(c, i, id);
   certificates.set_cell(id, c, i);
 }

@@ -552,7 +552,7 @@ template <class K> void Engine<K>::install_facet(const Simplex& facet, detail::T
   }
   kill_cert(ap.cert);
   ap.cert = new_cert(CertKind::delaunay, facet); // the table is not touched: ap stays valid
-  mirror_cert(facet, ap.v[0], ap.cert);
+  mirror_cert(facet, ap.v, ap.cert);
   install(ap.cert);
   if (!is_finite(facet) && !pending_delaunay.count({facet, ap.cert}) && hull_ridge_folded_at_now(facet)) {
     ++stats.invalid_at_creation;
