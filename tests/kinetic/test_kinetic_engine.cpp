@@ -255,6 +255,36 @@ TEST_CASE("cells meeting along one axis at a third of the slab are an error at t
   REQUIRE_THROWS_WITH(engine.run(none), Catch::Contains("cells 8 and 9 collide at time 33.3"));
 }
 
+TEST_CASE("of two collisions foretold at a frame, the earlier one is reported", "[kinetic][engine]") {
+  // Two pairs, each alone on a line far from the rest, each joined by a Delaunay edge: 8 and 9 meet
+  // at u = 1/3 of the slab; 10 and 11 at u = 1/2 (d = -40 + 80u) or at u = 1/4 (d = -40 + 160u).
+  // In the first slab (edges made by the first triangulation) or in the second (edges already there
+  // at the frame), starting at 0 or 100.
+  for (const bool later_slab : {false, true})
+    for (const bool second_first : {false, true}) {
+      CAPTURE(later_slab, second_first);
+      Trajectories t = appendix_b();
+      const auto path = [&](GridPoint from, GridPoint to) {
+        return later_slab ? std::vector<GridPoint>{from, from, to} : std::vector<GridPoint>{from, to};
+      };
+      if (later_slab) {
+        t.frame_times.push_back(200);
+        for (Trajectory& c : t.cells)
+          c.positions.push_back(c.positions.back());
+      }
+      t.cells.push_back({8, 1, 0, path({100, 7, 9}, {40, 7, 9})});
+      t.cells.push_back({9, 2, 0, path({70, 7, 9}, {100, 7, 9})});
+      t.cells.push_back({10, 1, 0, path({-100, -7, -9}, {second_first ? -60 : -40, -7, -9})});
+      t.cells.push_back({11, 2, 0, path({-60, -7, -9}, {second_first ? -180 : -80, -7, -9})});
+      Observer none;
+      KineticAlphaComplex engine(t, with_radius(49));
+      const std::string start = later_slab ? "1" : "";
+      REQUIRE_THROWS_WITH(engine.run(none),
+                          Catch::Contains(second_first ? "cells 10 and 11 collide at time " + start + "25"
+                                                       : "cells 8 and 9 collide at time " + start + "33.3"));
+    }
+}
+
 TEST_CASE("cells crossing each coordinate at different times do not collide", "[kinetic][engine]") {
   // d = (30, -20, 0) + u (-90, 80, 0): x vanishes at u = 1/3 and y at u = 1/4, never both, and the
   // reverse motion is the same near miss seen from the other cell.

@@ -7,7 +7,9 @@
 #include "medusa/core/error.h"
 
 #include <algorithm>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace medusa::kinetic::detail {
@@ -30,7 +32,8 @@ template <class K> void Engine<K>::check_collisions_at_frame(std::size_t k) cons
 // Delaunay edges at the slab start and on every edge when it is created: colliding cells are
 // joined by a Delaunay edge just before they meet. Decided in integers (meeting_in_slab); only a
 // real collision builds the rational root.
-template <class K> void Engine<K>::check_collision(const Simplex& e) const {
+template <class K>
+void Engine<K>::note_collision(const Simplex& e, std::optional<Collision>& earliest) const {
   const std::optional<MeetingTime> meeting = meeting_in_slab(pt(e[0]), pt(e[1]));
   if (!meeting)
     return;
@@ -38,27 +41,27 @@ template <class K> void Engine<K>::check_collision(const Simplex& e) const {
   root.canonicalize();
   if (!(now < SlabTime(Rational(root.get_mpq_t()))))
     return;
-  double t = double(traj.frame_times[slab]) +
-             root.get_d() * double(traj.frame_times[slab + 1] - traj.frame_times[slab]);
+  if (!earliest || root < earliest->first || (root == earliest->first && e < earliest->second))
+    earliest.emplace(std::move(root), e);
+}
+
+template <class K> void Engine<K>::throw_collision(const Collision& c) const {
+  const auto& [u, e] = c;
+  const double t = double(traj.frame_times[slab]) +
+                   u.get_d() * double(traj.frame_times[slab + 1] - traj.frame_times[slab]);
   throw GeometryError("cells " + std::to_string(traj.cells[static_cast<std::size_t>(e[0])].cell_id) +
                       " and " + std::to_string(traj.cells[static_cast<std::size_t>(e[1])].cell_id) +
                       " collide at time " + std::to_string(t));
 }
 
 template <class K> void Engine<K>::check_collisions_in_slab() const {
-  // In the plane the Delaunay edges are the triangulation's facets, whose table is smaller than the
-  // faces' (which holds the triangles too): this pass runs at every frame.
-  if constexpr (dim == 2) {
-    tri.for_each_facet([this](const Simplex& e, const detail::Triangulation::Apices&) {
-      if (is_finite(e))
-        check_collision(e);
-    });
-    return;
-  }
-  faces.for_each([this](const Simplex& s, const Face&) {
+  std::optional<Collision> earliest;
+  faces.for_each([&](const Simplex& s, const Face&) {
     if (s.size() == 2)
-      check_collision(s);
+      note_collision(s, earliest);
   });
+  if (earliest)
+    throw_collision(*earliest);
 }
 
 } // namespace medusa::kinetic::detail

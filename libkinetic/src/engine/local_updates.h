@@ -189,12 +189,16 @@ bool Engine<K>::delete_locally(VertexId v, std::vector<Simplex>& removed, std::v
     for (std::size_t j = 0; j < local[i].size(); ++j)
       sides[local[i].facet(j)].push_back(i);
   // The seed: at a finite link facet f, the top simplex of Del(link) on v's side of f (the other one
-  // when the only finite apex is on the far side).
+  // when the only finite apex is on the far side). The first finite link facet in sorted order, so
+  // that the choice, and whether an undecided side sends the deletion to a static rebuild, does not
+  // depend on the order in which v's star was listed.
+  std::vector<Simplex> finite_walls;
+  for (const auto& wall : walls)
+    if (is_finite(wall.first))
+      finite_walls.push_back(wall.first);
+  std::sort(finite_walls.begin(), finite_walls.end());
   std::size_t seed = local.size();
-  for (const auto& wall : walls) {
-    const Simplex& f = wall.first;
-    if (!is_finite(f))
-      continue;
+  for (const Simplex& f : finite_walls) {
     const auto it = sides.find(f);
     if (it == sides.end() || it->second.size() != 2)
       return false;

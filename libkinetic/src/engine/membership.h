@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace medusa::kinetic::detail {
@@ -99,12 +100,13 @@ void Engine<K>::apply_top_change(const std::vector<Simplex>& removed, const std:
       t.created = fresh;
     }
   }
+  std::optional<Collision> collision;
   for (TouchedFace& t : touched.faces) {
     if (!t.created)
       continue;
     const Simplex& f = t.face;
     if (f.size() == 2 && slab + 1 < traj.frames())
-      check_collision(f);
+      note_collision(f, collision);
     Face& state = *t.state;
     // Created in canonical order, f comes after its facets. A long facet makes f long (R is monotone,
     // docs/MATH.md §4.1) with no radius polynomial: f's longness is implied, as for any face with a long
@@ -112,6 +114,8 @@ void Engine<K>::apply_top_change(const std::vector<Simplex>& removed, const std:
     state.is_short = !FaceStates::has_long_facet(f, state_of) && compute_short(f);
     FaceStates::count_in_facets(f, int(state.is_short), 0, state_of); // a new face is not in K yet
   }
+  if (collision)
+    throw_collision(*collision);
   // Frontier membership of every surviving touched simplex: their cofaces changed (docs/MATH.md §4.4,
   // "after any change of Del"). Cofaces of new simplices are new, hence touched as well.
   for (TouchedFace& t : touched.faces)
