@@ -450,11 +450,12 @@ template <class K> struct Engine {
   // ------------------------------------ collisions (engine/collisions.h)
 
   void check_collisions_at_frame(std::size_t k) const;
-  // A collision foretold: the time u in (now, 1) at which the cells of an edge meet, and the edge.
+  // A collision foretold (docs/MATH.md §2.5): the time u in (now, 1) at which the cells of an edge
+  // meet, and the edge.
   using Collision = std::pair<mpq_class, Simplex>;
   // Keeps in `earliest` the earlier of it and e's collision, if e's cells meet after now (exact;
-  // among equal times the smaller edge), so that of the collisions foretold at one moment the
-  // earliest is reported, whatever order the edges come in.
+  // among equal times the edge first in trajectory order), so that of the collisions foretold
+  // together the earliest is reported, whatever order the edges come in.
   void note_collision(const Simplex& e, std::optional<Collision>& earliest) const;
   [[noreturn]] void throw_collision(const Collision& c) const;
   void check_collisions_in_slab() const;

@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <string>
 
 using namespace medusa::kinetic;
 using medusa::kinetic::testing::built_by_formula;
@@ -99,25 +100,32 @@ Trajectories cocircular_flip() {
 } // namespace
 
 TEST_CASE("planar: of two collisions foretold at a frame, the earlier one is reported", "[kinetic][2d]") {
-  // A still triangle near the origin; 4 and 5 meet at u = 1/3 (time 33.3) on the line y = 60, and 6
+  // A still triangle near the origin; 4 and 5 meet at u = 1/3 of the slab on the line y = 60, and 6
   // and 7 on the line y = -60 at u = 1/2 (d = -40 + 80u) or at u = 1/4 (d = -40 + 160u). Each pair
-  // is joined by a Delaunay edge at t0 (nothing lies in its diametral disc).
-  for (const bool second_first : {false, true}) {
-    CAPTURE(second_first);
-    Trajectories t = planar({0, 100});
-    still(t, 1, 0, 0);
-    still(t, 2, 10, 0);
-    still(t, 3, 0, 10);
-    moving(t, 4, {{100, 60, 0}, {40, 60, 0}});
-    moving(t, 5, {{70, 60, 0}, {100, 60, 0}});
-    moving(t, 6, {{-100, -60, 0}, {second_first ? -60 : -40, -60, 0}});
-    moving(t, 7, {{-60, -60, 0}, {second_first ? -180 : -80, -60, 0}});
-    Observer none;
-    KineticAlphaComplex engine(t, with_radius(49));
-    REQUIRE_THROWS_WITH(engine.run(none),
-                        Catch::Contains(second_first ? "cells 6 and 7 collide at time 25"
-                                                     : "cells 4 and 5 collide at time 33.3"));
-  }
+  // is joined by a Delaunay edge (nothing lies in its diametral disc). In the first slab (edges made
+  // by the first triangulation) or in the second (edges already there at the frame at 100).
+  for (const bool later_slab : {false, true})
+    for (const bool second_first : {false, true}) {
+      CAPTURE(later_slab, second_first);
+      Trajectories t =
+          planar(later_slab ? std::vector<std::int64_t>{0, 100, 200} : std::vector<std::int64_t>{0, 100});
+      const auto path = [&](GridPoint from, GridPoint to) {
+        return later_slab ? std::vector<GridPoint>{from, from, to} : std::vector<GridPoint>{from, to};
+      };
+      still(t, 1, 0, 0);
+      still(t, 2, 10, 0);
+      still(t, 3, 0, 10);
+      moving(t, 4, path({100, 60, 0}, {40, 60, 0}));
+      moving(t, 5, path({70, 60, 0}, {100, 60, 0}));
+      moving(t, 6, path({-100, -60, 0}, {second_first ? -60 : -40, -60, 0}));
+      moving(t, 7, path({-60, -60, 0}, {second_first ? -180 : -80, -60, 0}));
+      Observer none;
+      KineticAlphaComplex engine(t, with_radius(49));
+      const std::string start = later_slab ? "1" : "";
+      REQUIRE_THROWS_WITH(engine.run(none),
+                          Catch::Contains(second_first ? "cells 6 and 7 collide at time " + start + "25"
+                                                       : "cells 4 and 5 collide at time " + start + "33.3"));
+    }
 }
 
 TEST_CASE("planar: two cells approaching make their edge short exactly at the predicted time",

@@ -18,7 +18,8 @@
 
 namespace medusa::kinetic::detail {
 
-// The most cells mirror_cert scans before it walks: a local insertion or deletion makes a few dozen.
+// The most cells mirror_cert scans (a flip makes two or three, a local insertion or deletion a few
+// dozen); it bisects more cells when they are sorted, and walks otherwise.
 constexpr std::size_t max_scanned_cells = 64;
 
 template <class K>
@@ -47,7 +48,8 @@ void Engine<K>::mirror_top_change(const std::vector<Simplex>& removed, const std
     news.push_back({added[i], orientations[i]});
   std::vector<int> mirrored;
   cell_mirror->replace(held, news, mirrored, &mirror_created);
-  // A static rebuild adds its top simplices sorted, so its cells are found by bisection.
+  // Static rebuilds and local insertions and deletions add their top simplices sorted, so that their
+  // cells are found by bisection.
   mirror_created_sorted = std::is_sorted(added.begin(), added.end());
   if (mirrored != dropped)
     throw InternalError("the cell triangulation dropped other certificates than the triangulation (" +
@@ -86,6 +88,7 @@ void Engine<K>::mirror_flip(const HeldFlip& held_flip, const std::vector<Simplex
     std::array<CellIndex, dim> created{};
     cells.flip(c, i, o, mirrored, created);
     mirror_created.assign(created.begin(), created.end());
+    mirror_created_sorted = false;
   } else if constexpr (dim == 3) {
     // c holds the edge a b; the ring of cells around it has the other vertices z, p and q, and the
     // new cells are z p q a and z p q b.
@@ -96,6 +99,7 @@ void Engine<K>::mirror_flip(const HeldFlip& held_flip, const std::vector<Simplex
     cells.flip_edge(c, cells.index_of(c, change.edge[0]), cells.index_of(c, change.edge[1]), o, mirrored,
                     created);
     mirror_created.assign(created.begin(), created.end());
+    mirror_created_sorted = false;
   }
   std::vector<int> expected = dropped;
   std::sort(expected.begin(), expected.end());
@@ -116,9 +120,9 @@ void Engine<K>::mirror_cert(const Simplex& facet, const std::array<VertexId, 2>&
   CellIndex c = no_cell;
   if (mirror_created.size() <= max_scanned_cells) {
     for (CellIndex made : mirror_created)
-      if (cell_mirror->alive(made) &&
-          (cell_mirror->top(made) == tops[0] || cell_mirror->top(made) == tops[1]))
-        c = made;
+      if (cell_mirror->alive(made))
+        if (const Simplex t = cell_mirror->top(made); t == tops[0] || t == tops[1])
+          c = made;
   } else if (mirror_created_sorted) {
     for (std::size_t k = 0; k < 2 && c == no_cell; ++k) {
       const auto it =

@@ -54,6 +54,8 @@ template <class K> void Engine<K>::throw_collision(const Collision& c) const {
                       " collide at time " + std::to_string(t));
 }
 
+// Of the collisions the Delaunay edges at the slab start foretell, the earliest is reported (among
+// equal times the pair first in trajectory order), whatever order the edges are visited in.
 template <class K> void Engine<K>::check_collisions_in_slab() const {
   std::optional<Collision> earliest;
   faces.for_each([&](const Simplex& s, const Face&) {

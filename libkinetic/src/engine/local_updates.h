@@ -189,38 +189,34 @@ bool Engine<K>::delete_locally(VertexId v, std::vector<Simplex>& removed, std::v
     for (std::size_t j = 0; j < local[i].size(); ++j)
       sides[local[i].facet(j)].push_back(i);
   // The seed: at a finite link facet f, the top simplex of Del(link) on v's side of f (the other one
-  // when the only finite apex is on the far side). The first finite link facet in sorted order, so
-  // that the choice, and whether an undecided side sends the deletion to a static rebuild, does not
-  // depend on the order in which v's star was listed.
-  std::vector<Simplex> finite_walls;
+  // when the only finite apex is on the far side). f is the smallest finite link facet, so that the
+  // choice, and whether an undecided side sends the deletion to a static rebuild, does not depend on
+  // the order in which v's star was listed.
+  const Simplex* smallest = nullptr;
   for (const auto& wall : walls)
-    if (is_finite(wall.first))
-      finite_walls.push_back(wall.first);
-  std::sort(finite_walls.begin(), finite_walls.end());
-  std::size_t seed = local.size();
-  for (const Simplex& f : finite_walls) {
-    const auto it = sides.find(f);
-    if (it == sides.end() || it->second.size() != 2)
-      return false;
-    const auto apex = [&](std::size_t i) {
-      return *std::find_if(local[i].begin(), local[i].end(), [&](VertexId x) { return !f.contains(x); });
-    };
-    std::size_t near = it->second[0], far = it->second[1];
-    if (apex(near) == infinite_vertex)
-      std::swap(near, far);
-    // v's side is the recorded orientation of its top simplex on f: the triangulation's own sign.
-    std::array<VertexId, 4> seq{};
-    std::copy(f.begin(), f.end(), seq.begin());
-    seq[f.size()] = v;
-    const int own = orientation_of(seq.data(), f.size() + 1, *tri.apices(f), v),
-              other = facet_side_just_after(f, apex(near));
-    if (own == 0 || other == 0)
-      return false;
-    seed = own == other ? near : far;
-    break;
-  }
-  if (seed == local.size())
+    if (is_finite(wall.first) && (smallest == nullptr || wall.first < *smallest))
+      smallest = &wall.first;
+  if (smallest == nullptr)
     return false;
+  const Simplex& f = *smallest;
+  const auto it = sides.find(f);
+  if (it == sides.end() || it->second.size() != 2)
+    return false;
+  const auto apex = [&](std::size_t i) {
+    return *std::find_if(local[i].begin(), local[i].end(), [&](VertexId x) { return !f.contains(x); });
+  };
+  std::size_t near = it->second[0], far = it->second[1];
+  if (apex(near) == infinite_vertex)
+    std::swap(near, far);
+  // v's side is the recorded orientation of its top simplex on f: the triangulation's own sign.
+  std::array<VertexId, 4> seq{};
+  std::copy(f.begin(), f.end(), seq.begin());
+  seq[f.size()] = v;
+  const int own = orientation_of(seq.data(), f.size() + 1, *tri.apices(f), v),
+            other = facet_side_just_after(f, apex(near));
+  if (own == 0 || other == 0)
+    return false;
+  const std::size_t seed = own == other ? near : far;
   std::vector<char> filled(local.size(), 0);
   std::vector<std::size_t> todo{seed};
   filled[seed] = 1;

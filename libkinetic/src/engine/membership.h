@@ -114,6 +114,7 @@ void Engine<K>::apply_top_change(const std::vector<Simplex>& removed, const std:
     state.is_short = !FaceStates::has_long_facet(f, state_of) && compute_short(f);
     FaceStates::count_in_facets(f, int(state.is_short), 0, state_of); // a new face is not in K yet
   }
+  // The earliest of the collisions the change foretells, not the first edge's (docs/MATH.md §2.5).
   if (collision)
     throw_collision(*collision);
   // Frontier membership of every surviving touched simplex: their cofaces changed (docs/MATH.md §4.4,
