@@ -113,7 +113,23 @@ Refinement refine_root(const IntervalPoly& f, double& lo, double& hi, int sign_l
   const double mid = 0.5 * (lo + hi);
   if (!(lo < mid && mid < hi))
     return Refinement::stuck;
-  return cut_at(f, mid, lo, hi, sign_lo);
+  if (const Refinement step = cut_at(f, mid, lo, hi, sign_lo); step != Refinement::stuck)
+    return step;
+  // An undecided midpoint need not mean doubles are done: narrow_root centres an interval on its
+  // Newton estimate, so the midpoint is then the root to within rounding while the quarter points
+  // beside it still have certified signs. After both, the root lies in the middle half.
+  const double quarter = 0.25 * (hi - lo);
+  Refinement result = Refinement::stuck;
+  for (const double x : {mid - quarter, mid + quarter}) {
+    if (!(lo < x && x < hi))
+      continue;
+    const Refinement step = cut_at(f, x, lo, hi, sign_lo);
+    if (step == Refinement::exact)
+      return step;
+    if (step == Refinement::narrowed)
+      result = step;
+  }
+  return result;
 }
 
 Refinement narrow_root(const IntervalPoly& f, double& lo, double& hi, int sign_lo, double width) {

@@ -29,8 +29,9 @@ struct FirstSignChange {
 FirstSignChange first_sign_change(const IntervalPoly& f, double start, int max_depth);
 
 // One bisection step of an isolating interval (lo, hi) of a simple root of f, where f has the sign
-// `sign_lo` at lo. `stuck` when f at the midpoint has no certified sign (the interval is then as
-// tight as doubles allow); `exact` when f vanishes exactly at the midpoint (lo = hi = the root).
+// `sign_lo` at lo; when f at the midpoint has no certified sign, cuts at the quarter points instead.
+// `stuck` when none of the three has a certified sign (the interval is then within a factor of four
+// of as tight as doubles allow); `exact` when f vanishes exactly at a cut (lo = hi = the root).
 enum class Refinement { narrowed, exact, stuck };
 
 Refinement refine_root(const IntervalPoly& f, double& lo, double& hi, int sign_lo);

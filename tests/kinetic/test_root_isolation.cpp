@@ -114,6 +114,25 @@ TEST_CASE("refinement narrows an isolating interval to the root and finds dyadic
   REQUIRE(hi == 0.375);
 }
 
+TEST_CASE("a bisection step whose midpoint has no certified sign cuts at the quarter points",
+          "[kinetic][isolation]") {
+  CGAL::Protect_FPU_rounding<true> guard;
+  // u - [0.499, 0.501]: the sign is certified only outside [0.499, 0.501], so on (0.4, 0.6) the
+  // midpoint 0.5 is undecided, while the quarter points 0.45 (negative) and 0.55 (positive) are
+  // decided: the root 1/2 lies in the middle half.
+  const IntervalPoly f{Interval(-0.501, -0.499), Interval(1)};
+  double lo = 0.4, hi = 0.6;
+  REQUIRE(refine_root(f, lo, hi, -1) == Refinement::narrowed);
+  REQUIRE(lo == 0.45);
+  REQUIRE(hi == 0.55);
+  // On (0.4995, 0.5005) the quarter points 0.49975 and 0.50025 are undecided too: doubles are done.
+  lo = 0.4995;
+  hi = 0.5005;
+  REQUIRE(refine_root(f, lo, hi, -1) == Refinement::stuck);
+  REQUIRE(lo == 0.4995);
+  REQUIRE(hi == 0.5005);
+}
+
 TEST_CASE("times isolated in doubles compare exactly, equal roots of different polynomials included",
           "[kinetic][isolation]") {
   // 2u^2 - 1 and 2u^3 + 2u^2 - u - 1 (= (2u^2 - 1)(u + 1)) have the same root 1/sqrt(2) in [0, 1]: the
@@ -168,6 +187,45 @@ TEST_CASE("roots whose wide enclosures leave bisection stuck are told apart on t
   REQUIRE(a.isolated()->sharp != nullptr);
   REQUIRE(b.isolated()->sharp != nullptr);
   // The sharpened enclosures still isolate the roots: both ends bracket them.
+  double lo, hi;
+  a.enclosure(lo, hi);
+  REQUIRE(lo < 0.371001);
+  REQUIRE(0.371001 < hi);
+  b.enclosure(lo, hi);
+  REQUIRE(lo < 0.371002);
+  REQUIRE(0.371002 < hi);
+}
+
+TEST_CASE("roots narrowed around their own estimates are told apart in doubles, without the exact "
+          "polynomial",
+          "[kinetic][isolation]") {
+  // 10^6 u - 371001 and 10^6 u - 371002, their coefficients widened by 0.01 as if from plain doubles:
+  // each sign is certified except within about 1.4e-8 of its root. Each isolating interval is
+  // centred on its root (as narrow_root leaves it), 2^-19 wide, so the two overlap and bisection
+  // meets an undecided midpoint at once; the quarter points go on until the roots, 10^-6 apart,
+  // separate.
+  int requests = 0;
+  auto make = [&](long c0) {
+    auto root = make_isolated_root([c0, &requests] {
+      ++requests;
+      return to_exact_poly(exact_poly({c0, 1000000}));
+    });
+    root->enclosure = IntervalPoly{Interval(static_cast<double>(c0) - 0.01, static_cast<double>(c0) + 0.01),
+                                   Interval(1000000 - 0.01, 1000000 + 0.01)};
+    root->wide = true;
+    const double r = -static_cast<double>(c0) / 1e6;
+    root->lo = r - 0x1p-20;
+    root->hi = r + 0x1p-20;
+    root->sign_lo = -1;
+    return SlabTime(root);
+  };
+  SlabTime a = make(-371001), b = make(-371002);
+  const TimeComparisonCounts before = time_comparison_counts();
+  REQUIRE(compare(a, b) == -1);
+  REQUIRE(compare(b, a) == 1);
+  REQUIRE(requests == 0);
+  REQUIRE(time_comparison_counts().sharpened == before.sharpened);
+  REQUIRE(time_comparison_counts().algebraic == before.algebraic);
   double lo, hi;
   a.enclosure(lo, hi);
   REQUIRE(lo < 0.371001);
