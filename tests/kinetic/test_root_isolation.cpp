@@ -54,6 +54,30 @@ SlabTime isolated_time(std::initializer_list<long> c, double start = 0.0) {
   return SlabTime(root);
 }
 
+// The root of 10^6 u + c0 on (lo, hi), where it is negative at lo, with each coefficient's enclosure
+// widened by `widen` as if from plain doubles; `requests` counts the calls for its exact polynomial.
+SlabTime widened_linear_root(long c0, double widen, double lo, double hi, int& requests) {
+  auto root = make_isolated_root([c0, &requests] {
+    ++requests;
+    return to_exact_poly(exact_poly({c0, 1000000}));
+  });
+  root->enclosure = IntervalPoly{Interval(static_cast<double>(c0) - widen, static_cast<double>(c0) + widen),
+                                 Interval(1000000 - widen, 1000000 + widen)};
+  root->wide = true;
+  root->lo = lo;
+  root->hi = hi;
+  root->sign_lo = -1;
+  return SlabTime(root);
+}
+
+// Both ends of t's enclosure bracket `root`.
+void require_encloses(const SlabTime& t, double root) {
+  double lo, hi;
+  t.enclosure(lo, hi);
+  REQUIRE(lo < root);
+  REQUIRE(root < hi);
+}
+
 } // namespace
 
 TEST_CASE("isolation finds the flip time of the worked example in an interval around it",
@@ -162,20 +186,8 @@ TEST_CASE("roots whose wide enclosures leave bisection stuck are told apart on t
   // [0.3640, 0.3780] and bisection of the isolating intervals (0.3, 0.45) is stuck at once. Each
   // exact polynomial is asked for once (the rounding to intervals), and no algebraic real is built.
   int requests = 0;
-  auto make = [&](long c0) {
-    auto root = make_isolated_root([c0, &requests] {
-      ++requests;
-      return to_exact_poly(exact_poly({c0, 1000000}));
-    });
-    root->enclosure = IntervalPoly{Interval(static_cast<double>(c0) - 5000, static_cast<double>(c0) + 5000),
-                                   Interval(1000000 - 5000, 1000000 + 5000)};
-    root->wide = true;
-    root->lo = 0.3;
-    root->hi = 0.45;
-    root->sign_lo = -1;
-    return SlabTime(root);
-  };
-  SlabTime a = make(-371001), b = make(-371002);
+  SlabTime a = widened_linear_root(-371001, 5000, 0.3, 0.45, requests);
+  SlabTime b = widened_linear_root(-371002, 5000, 0.3, 0.45, requests);
   const TimeComparisonCounts before = time_comparison_counts();
   REQUIRE(compare(a, b) == -1);
   REQUIRE(compare(b, a) == 1);
@@ -187,13 +199,8 @@ TEST_CASE("roots whose wide enclosures leave bisection stuck are told apart on t
   REQUIRE(a.isolated()->sharp != nullptr);
   REQUIRE(b.isolated()->sharp != nullptr);
   // The sharpened enclosures still isolate the roots: both ends bracket them.
-  double lo, hi;
-  a.enclosure(lo, hi);
-  REQUIRE(lo < 0.371001);
-  REQUIRE(0.371001 < hi);
-  b.enclosure(lo, hi);
-  REQUIRE(lo < 0.371002);
-  REQUIRE(0.371002 < hi);
+  require_encloses(a, 0.371001);
+  require_encloses(b, 0.371002);
 }
 
 TEST_CASE("roots narrowed around their own estimates are told apart in doubles, without the exact "
@@ -205,34 +212,16 @@ TEST_CASE("roots narrowed around their own estimates are told apart in doubles, 
   // meets an undecided midpoint at once; the quarter points go on until the roots, 10^-6 apart,
   // separate.
   int requests = 0;
-  auto make = [&](long c0) {
-    auto root = make_isolated_root([c0, &requests] {
-      ++requests;
-      return to_exact_poly(exact_poly({c0, 1000000}));
-    });
-    root->enclosure = IntervalPoly{Interval(static_cast<double>(c0) - 0.01, static_cast<double>(c0) + 0.01),
-                                   Interval(1000000 - 0.01, 1000000 + 0.01)};
-    root->wide = true;
-    const double r = -static_cast<double>(c0) / 1e6;
-    root->lo = r - 0x1p-20;
-    root->hi = r + 0x1p-20;
-    root->sign_lo = -1;
-    return SlabTime(root);
-  };
-  SlabTime a = make(-371001), b = make(-371002);
+  SlabTime a = widened_linear_root(-371001, 0.01, 0.371001 - 0x1p-20, 0.371001 + 0x1p-20, requests);
+  SlabTime b = widened_linear_root(-371002, 0.01, 0.371002 - 0x1p-20, 0.371002 + 0x1p-20, requests);
   const TimeComparisonCounts before = time_comparison_counts();
   REQUIRE(compare(a, b) == -1);
   REQUIRE(compare(b, a) == 1);
   REQUIRE(requests == 0);
   REQUIRE(time_comparison_counts().sharpened == before.sharpened);
   REQUIRE(time_comparison_counts().algebraic == before.algebraic);
-  double lo, hi;
-  a.enclosure(lo, hi);
-  REQUIRE(lo < 0.371001);
-  REQUIRE(0.371001 < hi);
-  b.enclosure(lo, hi);
-  REQUIRE(lo < 0.371002);
-  REQUIRE(0.371002 < hi);
+  require_encloses(a, 0.371001);
+  require_encloses(b, 0.371002);
 }
 
 TEST_CASE("a time whose enclosure spans many points of the reporting grid is rounded to the nearest on the "
