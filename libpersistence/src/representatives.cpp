@@ -48,10 +48,12 @@ public:
     }
   }
 
-  Chain column(Index j) const {
-    const auto at = static_cast<std::size_t>(j);
-    return Chain(entries_.begin() + static_cast<std::ptrdiff_t>(offsets_[at]),
-                 entries_.begin() + static_cast<std::ptrdiff_t>(offsets_[at + 1]));
+  Chain column(Index j) const { return Chain(begin(j), end(j)); }
+  const FiltrationIndex* begin(Index j) const {
+    return entries_.data() + offsets_[static_cast<std::size_t>(j)];
+  }
+  const FiltrationIndex* end(Index j) const {
+    return entries_.data() + offsets_[static_cast<std::size_t>(j) + 1];
   }
 
 private:
@@ -86,24 +88,57 @@ public:
   }
 
   Chain cycle_of(Index b) {
-    const std::vector<Index> used = express(boundary_of(filtration_, b), b);
-    Chain z{b};
-    for (Index j : used)
-      z = sum(z, preimage(j));
+    const std::vector<Index> used = express(boundary_of(filtration_, b), {}, b);
+    // b plus the W(j), summed at once: every entry gathered, sorted, and kept when it occurs an odd
+    // number of times (pairwise sums of long cycles would cost their length once per term).
+    Chain all{b};
+    for (Index j : used) {
+      const Chain& w = preimage(j);
+      all.insert(all.end(), w.begin(), w.end());
+    }
+    std::sort(all.begin(), all.end());
+    Chain z;
+    for (std::size_t k = 0; k < all.size();) {
+      std::size_t run = k + 1;
+      while (run < all.size() && all[run] == all[k])
+        ++run;
+      if ((run - k) % 2 == 1)
+        z.push_back(all[k]);
+      k = run;
+    }
     return z;
   }
 
 private:
-  // The columns whose reduced forms sum to `chain`, each before `before`.
-  std::vector<Index> express(Chain chain, Index before) const {
+  // The columns whose reduced forms sum to a + b (both ascending), each before `before`. The sum is
+  // kept as a max-heap of entries with their multiplicity (docs/MATH.md §7.11): its largest entry
+  // present an odd number of times is eliminated by adding the reduced column with that pivot, whose
+  // other entries are pushed; each step costs the column's length times a logarithm, not the sum's
+  // length as a merge would.
+  std::vector<Index> express(const Chain& a, const Chain& b, Index before) const {
+    std::vector<Index>& heap = heap_;
+    heap.assign(a.begin(), a.end());
+    heap.insert(heap.end(), b.begin(), b.end());
+    std::make_heap(heap.begin(), heap.end());
     std::vector<Index> used;
-    while (!chain.empty()) {
-      const Index low = chain.back();
+    while (!heap.empty()) {
+      std::pop_heap(heap.begin(), heap.end());
+      const Index low = heap.back();
+      heap.pop_back();
+      if (!heap.empty() && heap.front() == low) { // a pair of equal entries cancels
+        std::pop_heap(heap.begin(), heap.end());
+        heap.pop_back();
+        continue;
+      }
       const Index j = pivot_column_[static_cast<std::size_t>(low)];
       if (j < 0 || j >= before)
         throw InternalError("representatives: filtration index " + std::to_string(low) +
                             " is no pivot of an earlier reduced column");
-      chain = sum(chain, reduced_.column(j));
+      // R[j]'s largest entry is `low`, which cancels the one just taken.
+      for (const FiltrationIndex* x = reduced_.begin(j); x + 1 < reduced_.end(j); ++x) {
+        heap.push_back(*x);
+        std::push_heap(heap.begin(), heap.end());
+      }
       used.push_back(j);
     }
     return used;
@@ -124,7 +159,7 @@ private:
       }
       auto at = pending.find(i);
       if (at == pending.end()) {
-        at = pending.emplace(i, express(sum(reduced_.column(i), boundary_of(filtration_, i)), i)).first;
+        at = pending.emplace(i, express(reduced_.column(i), boundary_of(filtration_, i), i)).first;
         bool ready = true;
         for (Index j : at->second)
           if (memo_.count(j) == 0) {
@@ -148,6 +183,7 @@ private:
   const Filtration& filtration_;
   std::vector<Index> pivot_column_; // by birth index: the column that kills it, -1 if none
   std::unordered_map<Index, Chain> memo_;
+  mutable std::vector<Index> heap_; // express()'s working sum, kept to avoid an allocation per call
 };
 
 // Union-find over the vertices in filtration order (docs/MATH.md §7.11): the components with their
