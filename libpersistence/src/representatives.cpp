@@ -6,6 +6,7 @@
 #include "cycle_shortening.h"
 
 #include <phat/algorithms/twist_reduction.h>
+#include <phat/representations/bit_tree_pivot_column.h>
 
 #include <algorithm>
 #include <iterator>
@@ -83,62 +84,45 @@ class EssentialCycles {
 public:
   EssentialCycles(const ReducedColumns& reduced, const Filtration& f, const std::vector<IndexPair>& pairs)
       : reduced_(reduced), filtration_(f), pivot_column_(f.size(), -1) {
+    column_.init(static_cast<phat::index>(f.size()));
     for (const auto& [b, d] : pairs)
       pivot_column_[static_cast<std::size_t>(b)] = d;
   }
 
   Chain cycle_of(Index b) {
     const std::vector<Index> used = express(boundary_of(filtration_, b), {}, b);
-    // b plus the W(j), summed at once: every entry gathered, sorted, and kept when it occurs an odd
-    // number of times (pairwise sums of long cycles would cost their length once per term).
-    Chain all{b};
-    for (Index j : used) {
-      const Chain& w = preimage(j);
-      all.insert(all.end(), w.begin(), w.end());
-    }
-    std::sort(all.begin(), all.end());
+    // b plus the W(j), summed at once in the pivot column (pairwise sums of long cycles would cost
+    // their length once per term). The W(j) are all found first: finding one uses the column too.
+    std::vector<const Chain*> terms;
+    terms.reserve(used.size());
+    for (Index j : used)
+      terms.push_back(&preimage(j)); // memo_'s nodes stay where they are
+    column_.add_index(static_cast<std::size_t>(b));
+    for (const Chain* w : terms)
+      column_.add_col(w->begin(), w->end());
     Chain z;
-    for (std::size_t k = 0; k < all.size();) {
-      std::size_t run = k + 1;
-      while (run < all.size() && all[run] == all[k])
-        ++run;
-      if ((run - k) % 2 == 1)
-        z.push_back(all[k]);
-      k = run;
-    }
+    column_.get_col_and_clear(z);
     return z;
   }
 
 private:
-  // The columns whose reduced forms sum to a + b (both ascending), each before `before`. The sum is
-  // kept as a max-heap of entries with their multiplicity (docs/MATH.md §7.11): its largest entry
-  // present an odd number of times is eliminated by adding the reduced column with that pivot, whose
-  // other entries are pushed; each step costs the column's length times a logarithm, not the sum's
-  // length as a merge would.
+  // The columns whose reduced forms sum to a + b, each before `before`. The sum is held in PHAT's
+  // bit-tree pivot column (docs/MATH.md §7.11), where adding an entry toggles it and the largest is
+  // at hand: each step adds the reduced column whose pivot is that entry, at the cost of the column's
+  // length, not the sum's as a merge of sorted chains would. The column is left empty.
   std::vector<Index> express(const Chain& a, const Chain& b, Index before) const {
-    std::vector<Index>& heap = heap_;
-    heap.assign(a.begin(), a.end());
-    heap.insert(heap.end(), b.begin(), b.end());
-    std::make_heap(heap.begin(), heap.end());
+    column_.add_col(a.begin(), a.end());
+    column_.add_col(b.begin(), b.end());
     std::vector<Index> used;
-    while (!heap.empty()) {
-      std::pop_heap(heap.begin(), heap.end());
-      const Index low = heap.back();
-      heap.pop_back();
-      if (!heap.empty() && heap.front() == low) { // a pair of equal entries cancels
-        std::pop_heap(heap.begin(), heap.end());
-        heap.pop_back();
-        continue;
-      }
+    while (!column_.is_empty()) {
+      const Index low = column_.get_max_index();
       const Index j = pivot_column_[static_cast<std::size_t>(low)];
-      if (j < 0 || j >= before)
+      if (j < 0 || j >= before) {
+        column_.clear();
         throw InternalError("representatives: filtration index " + std::to_string(low) +
                             " is no pivot of an earlier reduced column");
-      // R[j]'s largest entry is `low`, which cancels the one just taken.
-      for (const FiltrationIndex* x = reduced_.begin(j); x + 1 < reduced_.end(j); ++x) {
-        heap.push_back(*x);
-        std::push_heap(heap.begin(), heap.end());
       }
+      column_.add_col(reduced_.begin(j), reduced_.end(j)); // its largest entry, low, cancels
       used.push_back(j);
     }
     return used;
@@ -183,7 +167,7 @@ private:
   const Filtration& filtration_;
   std::vector<Index> pivot_column_; // by birth index: the column that kills it, -1 if none
   std::unordered_map<Index, Chain> memo_;
-  mutable std::vector<Index> heap_; // express()'s working sum, kept to avoid an allocation per call
+  mutable phat::bit_tree_column column_; // the working sum of express() and cycle_of(), empty between calls
 };
 
 // Union-find over the vertices in filtration order (docs/MATH.md §7.11): the components with their
