@@ -10,7 +10,7 @@
 
 #include "certificate.h"
 #include "event_queue.h"
-#include "large_page_allocator.h"
+#include "medusa/kinetic/large_page_allocator.h"
 
 #include <cstddef>
 #include <cstdint>

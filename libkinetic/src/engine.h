@@ -9,7 +9,7 @@
 #include "certificate_pool.h"
 #include "face.h"
 #include "face_states.h"
-#include "flat_simplex_map.h"
+#include "medusa/kinetic/flat_simplex_map.h"
 #include "root_cache.h"
 #include "static_delaunay.h"
 #include "touched_faces.h"

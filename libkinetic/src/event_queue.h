@@ -3,7 +3,7 @@
 #pragma once
 
 #include "algebraic_time.h"
-#include "large_page_allocator.h"
+#include "medusa/kinetic/large_page_allocator.h"
 
 #include <algorithm>
 #include <cstdint>

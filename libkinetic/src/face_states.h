@@ -11,7 +11,7 @@
 #pragma once
 
 #include "face.h"
-#include "flat_simplex_map.h"
+#include "medusa/kinetic/flat_simplex_map.h"
 #include "medusa/kinetic/simplex.h"
 #include "triangulation.h"
 

@@ -6,7 +6,7 @@
 // operations, docs/MATH.md §4.5).
 #pragma once
 
-#include "flat_simplex_map.h"
+#include "medusa/kinetic/flat_simplex_map.h"
 #include "medusa/kinetic/simplex.h"
 
 #include <array>

@@ -5,6 +5,7 @@
 #include "vertex_text.h"
 
 #include <algorithm>
+#include <array>
 #include <string>
 
 namespace medusa {
@@ -91,13 +92,24 @@ void MedusaBuilder::birth(const Simplex& s, const VirtualTime& when) {
   if (active_.count(s))
     throw InternalError("medusa builder: simplex " + vertex_text(s) + " enters K at " + where(when) +
                         " but is already in K");
+  // Every facet is checked before any count changes; the records stay where they are until s is
+  // inserted (the table may then move them).
+  std::array<Active*, 4> facets{};
+  const std::size_t n = s.size() > 1 ? s.size() : 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Simplex f = s.facet(i);
+    auto it = active_.find(f);
+    if (it == active_.end())
+      throw InternalError("medusa builder: facet " + vertex_text(f) + " of " + vertex_text(s) +
+                          " is not present at " + where(when));
+    facets[i] = &it->second;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    ++facets[i]->cofaces;
   Active a;
-  a.facets = facets_of(vertices_of(s), InstantMap{}, when);
-  a.id = take_cell_id(next_id_);
+  a.id = static_cast<std::uint32_t>(take_cell_id(next_id_));
   a.birth = when;
-  for (std::size_t i = 0; i < a.facets.size(); ++i)
-    ++active_.find(s.facet(i))->second.cofaces;
-  active_.emplace(s, std::move(a));
+  active_.try_emplace(s).first->second = a;
 }
 
 void MedusaBuilder::death(const Simplex& s, const VirtualTime& when) {
@@ -114,10 +126,16 @@ void MedusaBuilder::death(const Simplex& s, const VirtualTime& when) {
   c.birth = it->second.birth;
   c.death = when;
   c.kind = CellKind::regular;
-  c.facets = std::move(it->second.facets);
-  for (std::size_t i = 0; i < s.size() && s.size() > 1; ++i)
-    --active_.find(s.facet(i))->second.cofaces;
   active_.erase(it);
+  // The facets are active: each still counts s among its cofaces (birth).
+  if (s.size() > 1) {
+    c.facets.reserve(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      Active& f = active_.find(s.facet(i))->second;
+      c.facets.push_back(f.id);
+      --f.cofaces;
+    }
+  }
   sink_.cell(c);
 }
 
@@ -137,6 +155,7 @@ void MedusaBuilder::initial(const kinetic::EventTime& t0, const std::vector<Simp
   // docs/MATH.md §6.2: the initial complex is born at (0, 0).
   std::vector<Simplex> sorted = complex;
   std::sort(sorted.begin(), sorted.end());
+  active_.reserve(sorted.size());
   const VirtualTime when = virtual_time(t0, 0);
   for (const Simplex& s : sorted)
     birth(s, when);

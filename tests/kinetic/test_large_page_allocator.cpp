@@ -1,15 +1,15 @@
-// The allocator of the engine's large tables (libkinetic/src/large_page_allocator.h): blocks of 2 MiB
+// The allocator of the engine's large tables (libkinetic/include/medusa/kinetic/large_page_allocator.h): blocks of 2 MiB
 // and more start on a huge-page boundary, smaller ones come from std::allocator, and a vector grown
 // across the threshold keeps its contents.
-#include "large_page_allocator.h"
+#include "medusa/kinetic/large_page_allocator.h"
 
 #include <catch2/catch.hpp>
 
 #include <cstdint>
 #include <numeric>
 
-using medusa::kinetic::detail::LargePageAllocator;
-using medusa::kinetic::detail::LargeVector;
+using medusa::kinetic::LargePageAllocator;
+using medusa::kinetic::LargeVector;
 
 TEST_CASE("A block of at least 2 MiB starts on a huge-page boundary", "[kinetic][allocator]") {
   LargePageAllocator<std::uint64_t> a;

@@ -1,13 +1,13 @@
 // Builds the alpha medusa from the kinetic event stream (docs/MATH.md §6.2-§6.5).
 #pragma once
 
+#include "medusa/kinetic/flat_simplex_map.h"
 #include "medusa/kinetic/observer.h"
 #include "medusa/medusa/cell.h"
 #include "medusa/medusa/cell_sink.h"
 
 #include <cstdint>
 #include <map>
-#include <unordered_map>
 #include <vector>
 
 namespace medusa {
@@ -33,11 +33,13 @@ public:
   std::uint64_t cells_created() const { return next_id_; }
 
 private:
+  // A simplex of K: its cell's id (below max_cell_count, so 32 bits), its birth and its count of
+  // active cofaces. Its facet ids are not kept: a simplex leaves K only after its cofaces, so at its
+  // death its facets are still active and their ids are read from their own records.
   struct Active {
-    CellId id = 0;
-    VirtualTime birth;
-    CellFacets facets;
+    std::uint32_t id = 0;
     std::uint32_t cofaces = 0; // active cofaces: a simplex cannot leave while one remains
+    VirtualTime birth;
   };
   using InstantMap = std::map<std::vector<VertexId>, CellId>;
 
@@ -49,7 +51,9 @@ private:
                        const VirtualTime& when) const;
 
   CellSink& sink_;
-  std::unordered_map<kinetic::Simplex, Active, kinetic::SimplexHash> active_;
+  // Open addressing (flat_simplex_map.h): every birth and death looks up the simplex and its facets,
+  // one cache miss each, where a node-based map costs two and an allocation per simplex.
+  kinetic::FlatSimplexMap<Active> active_;
   CellId next_id_ = 0;
   bool started_ = false;
   bool finished_ = false;

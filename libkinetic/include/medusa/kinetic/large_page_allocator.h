@@ -16,7 +16,7 @@
 #include <sys/mman.h>
 #endif
 
-namespace medusa::kinetic::detail {
+namespace medusa::kinetic {
 
 template <class T> struct LargePageAllocator {
   using value_type = T;
@@ -60,4 +60,4 @@ private:
 // A vector whose large blocks ask for huge pages.
 template <class T> using LargeVector = std::vector<T, LargePageAllocator<T>>;
 
-} // namespace medusa::kinetic::detail
+} // namespace medusa::kinetic

@@ -5,8 +5,8 @@
 // slot, so keys must be non-empty.
 #pragma once
 
-#include "large_page_allocator.h"
 #include "medusa/core/error.h"
+#include "medusa/kinetic/large_page_allocator.h"
 #include "medusa/kinetic/simplex.h"
 
 #include <algorithm>
@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-namespace medusa::kinetic::detail {
+namespace medusa::kinetic {
 
 template <class V> class FlatSimplexMap {
 public:
@@ -207,4 +207,4 @@ private:
   std::uint64_t seed_ = seed_for(0);
 };
 
-} // namespace medusa::kinetic::detail
+} // namespace medusa::kinetic
