@@ -92,8 +92,8 @@ void MedusaBuilder::birth(const Simplex& s, const VirtualTime& when) {
   if (active_.count(s))
     throw InternalError("medusa builder: simplex " + vertex_text(s) + " enters K at " + where(when) +
                         " but is already in K");
-  // Every facet is checked before any count changes; the records stay where they are until s is
-  // inserted (the table may then move them).
+  // Every facet is checked, and the id taken, before any count changes; the records stay where they are until
+  // s is inserted (the table may then move them).
   std::array<Active*, 4> facets{};
   const std::size_t n = s.size() > 1 ? s.size() : 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -104,11 +104,11 @@ void MedusaBuilder::birth(const Simplex& s, const VirtualTime& when) {
                           " is not present at " + where(when));
     facets[i] = &it->second;
   }
-  for (std::size_t i = 0; i < n; ++i)
-    ++facets[i]->cofaces;
   Active a;
   a.id = static_cast<std::uint32_t>(take_cell_id(next_id_));
   a.birth = when;
+  for (std::size_t i = 0; i < n; ++i)
+    ++facets[i]->cofaces;
   active_.try_emplace(s).first->second = a;
 }
 
