@@ -1,6 +1,6 @@
-// The allocator of the engine's large tables (libkinetic/include/medusa/kinetic/large_page_allocator.h): blocks of 2 MiB
-// and more start on a huge-page boundary, smaller ones come from std::allocator, and a vector grown
-// across the threshold keeps its contents.
+// The allocator of the engine's large tables (libkinetic/include/medusa/kinetic/large_page_allocator.h):
+// blocks of 2 MiB and more start on a huge-page boundary, smaller ones come from std::allocator, and a vector
+// grown across the threshold keeps its contents.
 #include "medusa/kinetic/large_page_allocator.h"
 
 #include <catch2/catch.hpp>
