@@ -34,6 +34,14 @@ bool canonical_less(const std::vector<VertexId>& a, const std::vector<VertexId>&
   return a < b;
 }
 
+// A facet of a new cell that is neither in K nor among the step's instant cells: the stream is
+// inconsistent.
+template <class Facet, class Of>
+[[noreturn]] void throw_missing_facet(const Facet& facet, const Of& of, const VirtualTime& when) {
+  throw InternalError("medusa builder: facet " + vertex_text(facet) + " of " + vertex_text(of) +
+                      " is not present at " + where(when));
+}
+
 VirtualTime virtual_time(const kinetic::EventTime& t, std::size_t rank) {
   VirtualTime v;
   v.batch = static_cast<std::uint32_t>(t.batch);
@@ -81,8 +89,7 @@ CellFacets MedusaBuilder::facets_of(const std::vector<VertexId>& vertices, const
     }
     auto it = instant.find(facet);
     if (it == instant.end())
-      throw InternalError("medusa builder: facet " + vertex_text(facet) + " of " + vertex_text(vertices) +
-                          " is not present at " + where(when));
+      throw_missing_facet(facet, vertices, when);
     facets.push_back(static_cast<std::uint32_t>(it->second));
   }
   return facets;
@@ -100,8 +107,7 @@ void MedusaBuilder::birth(const Simplex& s, const VirtualTime& when) {
     const Simplex f = s.facet(i);
     auto it = active_.find(f);
     if (it == active_.end())
-      throw InternalError("medusa builder: facet " + vertex_text(f) + " of " + vertex_text(s) +
-                          " is not present at " + where(when));
+      throw_missing_facet(f, s, when);
     facets[i] = &it->second;
   }
   Active a;
