@@ -2,11 +2,10 @@
 
 #include "medusa/core/error.h"
 #include "medusa/core/free_memory.h"
+#include "medusa/core/job_pool.h"
 #include "medusa/persistence/degree_check.h"
 #include "medusa/persistence/diagram_store.h"
 #include "medusa/persistence/euler.h"
-
-#include "job_pool.h"
 
 #include <chrono>
 #include <mutex>
@@ -100,7 +99,7 @@ std::vector<Diagram> compute_medusa_diagrams(const std::vector<medusa::Cell>& ce
     }
     seconds[i].handed_over = since(start);
   };
-  detail::run_jobs(jobs.size(), options.threads, whole, [&](std::size_t i) {
+  run_jobs(jobs.size(), options.threads, whole, [&](std::size_t i) {
     job(i);
     // The filtration, its matrix and the zero-length pairs are freed: their pages go back before the
     // next job, whose thread may allocate from another malloc arena that could not reuse them.

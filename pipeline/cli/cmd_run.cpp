@@ -16,6 +16,7 @@
 
 #include "medusa/core/error.h"
 #include "medusa/core/free_memory.h"
+#include "medusa/core/job_pool.h"
 #include "medusa/core/version.h"
 #include "medusa/io/run_reader.h"
 #include "medusa/kinetic/kinetic_alpha_complex.h"
@@ -223,13 +224,19 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   // The summary's counts at the first and last frames, and the reduction of each coned sub-medusa that
   // splits its open classes (docs/MATH.md §7.12), come before the diagrams: that reduction is as large
   // as a whole-medusa filtration's, and after the diagrams it would run beside all their pairs.
+  // One job per sub-medusa, the whole medusa's alone in memory as in the diagrams below: the cell
+  // types' run beside it on the other threads.
+  const std::vector<int> sub_medusas = persistence::sub_medusa_types(types);
   meter.stage("first and last frames: complexes and open classes (whole medusa and " +
-              std::to_string(types.size()) + " cell types, PHAT)");
+              std::to_string(types.size()) + " cell types, PHAT)" + " on " +
+              std::to_string(std::min<std::size_t>(threads, sub_medusas.size())) + " thread(s)");
   clock = StageClock{};
-  for (int type : persistence::sub_medusa_types(types)) {
-    result.from_cells.push_back(fates_from_cells(medusa, type));
+  result.from_cells.resize(sub_medusas.size());
+  const auto whole = [&](std::size_t i) { return sub_medusas[i] == persistence::all_types; };
+  medusa::run_jobs(sub_medusas.size(), threads, whole, [&](std::size_t i) {
+    result.from_cells[i] = fates_from_cells(medusa, sub_medusas[i]);
     medusa::release_free_memory();
-  }
+  });
   timings.add("reduction", clock);
   check_interrupted();
 

@@ -1,9 +1,9 @@
 """The summary's split of never-filled loops and cavities against a brute-force Z/2 computation
 (run with /usr/bin/python3).
 
-usage: check_fates_oracle.py <medusa> <workdir> <run input> <radius or auto> <name>
+usage: check_fates_oracle.py <medusa> <workdir> <run input> <radius or auto> <name> [threads]
 
-Runs `medusa run` on the input into <workdir>/<name>.h5 and reads the store with h5py alone
+Runs `medusa run` on the input (on `threads` threads, 1 by default) into <workdir>/<name>.h5 and reads the store with h5py alone
 (docs/FORMAT.md). For the whole medusa and each cell type's sub-medusa M, and k = 1, 2 (k = 1 only for a
 planar run), it computes with its own Z/2 elimination (Python integers as bit columns) the subspaces
 A = image of H_k(L_first) and B = image of H_k(L_end) in H_k(M), where L_first holds the cells born at
@@ -24,8 +24,9 @@ if not __debug__:
     sys.exit("these checks are assert statements: run without -O and without PYTHONOPTIMIZE")
 
 medusa, work, data, radius, name = sys.argv[1:6]
+threads = sys.argv[6] if len(sys.argv) > 6 else "1"
 result = subprocess.run([medusa, "run", "--force", data, "-o", name + ".h5", "--radius", radius, "--quiet",
-                         "--threads", "1"], cwd=work, capture_output=True, text=True)
+                         "--threads", threads], cwd=work, capture_output=True, text=True)
 assert result.returncode == 0, f"medusa run failed ({result.returncode}): {result.stderr}"
 summary = result.stdout
 planar = "dimension 2" in summary.splitlines()[0]

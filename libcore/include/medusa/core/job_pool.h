@@ -1,8 +1,8 @@
-// The jobs of compute_medusa_diagrams on worker threads, with at most one heavy job (a filtration of
-// the whole medusa) in memory at a time: each whole-medusa filtration, its boundary matrix and its
-// reduction are the largest structures after the kinetic stage, so two at once would set the peak of
-// `medusa run` (bench/README.md, "Memory at a million cells"). Light jobs (the sub-medusas of one
-// cell type) fill the other threads meanwhile.
+// Jobs on worker threads with at most one heavy job in memory at a time: the reductions of a run
+// (its diagrams, and the open classes of its first and last frames) are one job per sub-medusa, and
+// the whole medusa's filtration, boundary matrix and reduction are the largest structures after the
+// kinetic stage, so two at once would set the peak of `medusa run` (bench/README.md, "Memory at a
+// million cells"). Light jobs (the sub-medusas of one cell type) fill the other threads meanwhile.
 #pragma once
 
 #include <algorithm>
@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-namespace medusa::persistence::detail {
+namespace medusa {
 
 // Runs task(i) once for every i in [0, count) on up to `threads` threads (1 = in the calling thread, in
 // index order). A free thread takes the lowest-numbered job not yet started, skipping heavy ones
@@ -67,4 +67,4 @@ void run_jobs(std::size_t count, unsigned threads, const Heavy& heavy, const Tas
       std::rethrow_exception(e);
 }
 
-} // namespace medusa::persistence::detail
+} // namespace medusa

@@ -1,6 +1,6 @@
-// The worker pool of compute_medusa_diagrams (libpersistence/src/job_pool.h): every job once, never
-// two heavy jobs at once, light jobs beside a heavy one, and the lowest-numbered error.
-#include "job_pool.h"
+// The worker pool of a run's reductions (medusa/core/job_pool.h): every job once, never two heavy jobs
+// at once, light jobs beside a heavy one, and the lowest-numbered error.
+#include "medusa/core/job_pool.h"
 
 #include <catch2/catch.hpp>
 
@@ -13,9 +13,9 @@
 #include <thread>
 #include <vector>
 
-using medusa::persistence::detail::run_jobs;
+using medusa::run_jobs;
 
-TEST_CASE("Every job runs exactly once on any number of threads", "[persistence][jobs]") {
+TEST_CASE("Every job runs exactly once on any number of threads", "[core][jobs]") {
   for (unsigned threads : {1U, 2U, 3U, 8U}) {
     std::vector<std::atomic<int>> runs(13);
     run_jobs(
@@ -25,14 +25,14 @@ TEST_CASE("Every job runs exactly once on any number of threads", "[persistence]
   }
 }
 
-TEST_CASE("One thread runs the jobs in index order", "[persistence][jobs]") {
+TEST_CASE("One thread runs the jobs in index order", "[core][jobs]") {
   std::vector<std::size_t> order;
   run_jobs(
       6, 1, [](std::size_t i) { return i < 2; }, [&](std::size_t i) { order.push_back(i); });
   CHECK(order == std::vector<std::size_t>{0, 1, 2, 3, 4, 5});
 }
 
-TEST_CASE("Two heavy jobs never run at once, whatever the threads", "[persistence][jobs]") {
+TEST_CASE("Two heavy jobs never run at once, whatever the threads", "[core][jobs]") {
   for (unsigned threads : {2U, 4U, 8U}) {
     std::atomic<int> heavy_now{0}, most{0}, light_done{0};
     const auto heavy = [](std::size_t i) { return i < 4; };
@@ -52,7 +52,7 @@ TEST_CASE("Two heavy jobs never run at once, whatever the threads", "[persistenc
   }
 }
 
-TEST_CASE("Light jobs run beside a heavy one", "[persistence][jobs]") {
+TEST_CASE("Light jobs run beside a heavy one", "[core][jobs]") {
   // Job 0 (heavy) waits until job 2 (light) has run; job 1 (heavy) must wait for job 0. Two threads
   // finish only if the free thread skips job 1 and takes job 2 while job 0 runs.
   std::mutex mutex;
@@ -72,7 +72,7 @@ TEST_CASE("Light jobs run beside a heavy one", "[persistence][jobs]") {
   CHECK_FALSE(waited_in_vain);
 }
 
-TEST_CASE("The error of the lowest-numbered failing job is the one thrown", "[persistence][jobs]") {
+TEST_CASE("The error of the lowest-numbered failing job is the one thrown", "[core][jobs]") {
   for (unsigned threads : {1U, 2U, 8U}) {
     std::atomic<int> runs{0};
     try {
