@@ -186,37 +186,67 @@ int SlabTime::side_of(const Rational& g) const {
   return a < b ? -1 : (b < a ? 1 : 0);
 }
 
+namespace {
+
+__extension__ typedef __int128 Int128; // GCC and Clang: a 53-bit significand times a slab's span
+__extension__ typedef unsigned __int128 UInt128;
+
+mpz_class to_mpz(Int128 x) {
+  const bool negative = x < 0;
+  const auto magnitude = static_cast<UInt128>(negative ? -x : x);
+  mpz_class r(static_cast<unsigned long>(magnitude >> 64));
+  r <<= 64;
+  r += static_cast<unsigned long>(magnitude & ~std::uint64_t{0});
+  return negative ? mpz_class(-r) : r;
+}
+
+// floor(u span 2^bits) for a double u in [0, 1] and span >= 1, exactly: u = m 2^(e - 53) with an
+// integer m < 2^53, so the value is floor(m span / 2^(53 - e - bits)), and m span < 2^116.
+template <unsigned bits> Int128 scaled_floor(double u, std::int64_t span) {
+  if (!(u > 0.0))
+    return 0;
+  int e = 0;
+  const double f = std::frexp(u, &e);
+  const Int128 product = static_cast<Int128>(static_cast<std::int64_t>(std::ldexp(f, 53))) * span;
+  const int shift = 53 - e - static_cast<int>(bits);
+  static_assert(bits < 53, "u <= 1 then needs a right shift");
+  return shift >= 120 ? 0 : product >> shift;
+}
+
+} // namespace
+
 double SlabTime::reported_time(std::int64_t t0, std::int64_t t1) const {
   if (t1 == t0)
     return static_cast<double>(t0);
-  // c = floor(t 2^33), by bisection over the cells [k 2^-33, (k + 1) 2^-33) that the enclosure
-  // [lo, hi] of u spans (usually one), then half up to the 2^-32 grid.
+  if (t1 < t0)
+    throw InternalError("reported time: a slab ends before it starts");
+  // With c = floor((t - t0) 2^33), found by bisection over the cells [k 2^-33, (k + 1) 2^-33) past t0
+  // that the enclosure [lo, hi] of u spans (usually one), the time is t0 + floor((c + 1) / 2) 2^-32:
+  // t rounded half up to the 2^-32 grid, which t0 is on. The cells are counted in 128-bit integers,
+  // exactly; a rational is made only for a grid point that the enclosure does not place.
   constexpr unsigned bits = 33;
-  const mpq_class start(static_cast<long>(t0)), span(static_cast<long>(t1 - t0));
-  auto cell_of = [&](double u) {
-    const mpq_class t = (start + mpq_class(u) * span) * mpq_class(mpz_class(1) << bits);
-    mpz_class k;
-    mpz_fdiv_q(k.get_mpz_t(), t.get_num_mpz_t(), t.get_den_mpz_t());
-    return k;
-  };
-  auto point = [&](const mpz_class& k) { // u at t = k 2^-33
-    const mpq_class u = (mpq_class(k, mpz_class(1) << bits) - start) / span;
+  const std::int64_t span = t1 - t0;
+  auto point = [&](Int128 k) { // u at t = t0 + k 2^-33
+    mpq_class u(to_mpz(k), mpz_class(span) << bits);
+    u.canonicalize();
     return Rational(u.get_mpq_t());
   };
   double lo = 0.0, hi = 0.0;
   enclosure(lo, hi);
-  mpz_class c = cell_of(std::max(lo, 0.0)), last = cell_of(std::min(hi, 1.0));
+  Int128 c = scaled_floor<bits>(std::max(lo, 0.0), span), last = scaled_floor<bits>(std::min(hi, 1.0), span);
   while (c < last) {
-    mpz_class k = c + last + 1;
-    mpz_fdiv_q_2exp(k.get_mpz_t(), k.get_mpz_t(), 1);
+    const Int128 k = (c + last + 1) / 2; // both non-negative: the floor
     if (side_of(point(k)) >= 0)
       c = k;
     else
       last = k - 1;
   }
-  mpz_class grid = c + 1;
-  mpz_fdiv_q_2exp(grid.get_mpz_t(), grid.get_mpz_t(), 1);
-  return std::ldexp(grid.get_d(), -static_cast<int>(bits - 1));
+  const Int128 grid = static_cast<Int128>(t0) * (Int128{1} << (bits - 1)) + (c + 1) / 2;
+  constexpr Int128 exact_below = Int128{1} << 53;
+  // Beyond 2^53 the conversion truncates, as GMP's does (the time is then past 2^21 MCS).
+  const double g =
+      grid > -exact_below && grid < exact_below ? static_cast<double>(grid) : to_mpz(grid).get_d();
+  return std::ldexp(g, -static_cast<int>(bits - 1));
 }
 
 void SlabTime::enclosure(double& lo, double& hi) const {

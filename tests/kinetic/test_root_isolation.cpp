@@ -478,6 +478,49 @@ TEST_CASE("a time on the 2^-32 MCS grid is reported exactly, and one off it at t
   CHECK(SlabTime(Rational(1)).reported_time(40, 60) == 60.0);
 }
 
+TEST_CASE("a reported time is the exact time rounded half up to the 2^-32 grid, for any slab and any "
+          "time in it",
+          "[kinetic][isolation][reported]") {
+  // t = t0 + u (t1 - t0) rounded in rationals here, against reported_time's integer counting: doubles
+  // u from 0 to 1 (tiny and subnormal ones among them) and rationals p/q that no double holds (their
+  // enclosures span grid points), slabs starting before MCS 0 and past 2^40 MCS, where the grid point
+  // no longer fits a double and is truncated as GMP's conversion does.
+  const unsigned seed = std::random_device{}();
+  CAPTURE(seed);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_int_distribution<int> exponent(0, 1074), pick(0, 4);
+  std::uniform_int_distribution<long> start(-1000, 200000), span(1, 1L << 31), den(2, 1000000);
+  const auto expected = [](const mpq_class& u, long t0, long t1) {
+    const mpq_class t = mpq_class(t0) + u * mpq_class(t1 - t0);
+    const mpq_class scaled = t * mpq_class(mpz_class(1) << 32) + mpq_class(1, 2);
+    mpz_class grid;
+    mpz_fdiv_q(grid.get_mpz_t(), scaled.get_num_mpz_t(), scaled.get_den_mpz_t());
+    return std::ldexp(grid.get_d(), -32);
+  };
+  int compared = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const long t0 = i % 10 == 0 ? (1L << 40) + start(rng) : start(rng);
+    const long t1 = t0 + (i % 7 == 0 ? 1 : span(rng));
+    CAPTURE(i, t0, t1);
+    if (i % 2 == 0) {
+      const int kind = pick(rng);
+      const double u = kind == 0   ? std::ldexp(1.0, -exponent(rng))
+                       : kind == 1 ? (i % 4 == 0 ? 0.0 : 1.0)
+                                   : unit(rng);
+      CAPTURE(u);
+      CHECK(SlabTime(Rational(u)).reported_time(t0, t1) == expected(mpq_class(u), t0, t1));
+    } else {
+      const long q = den(rng);
+      const long p = std::uniform_int_distribution<long>(0, q)(rng);
+      CAPTURE(p, q);
+      CHECK(SlabTime(Rational(p) / Rational(q)).reported_time(t0, t1) == expected(mpq_class(p, q), t0, t1));
+    }
+    ++compared;
+  }
+  REQUIRE(compared == 4000);
+}
+
 TEST_CASE("reported times follow the exact order of the times", "[kinetic][isolation][reported]") {
   // Roots of (u - 1/4)(u - 3/4) times 16, and of 8u - 3 (3/8) between them, in the slab [0, 10].
   const SlabTime first = isolated_time({3, -16, 16});
