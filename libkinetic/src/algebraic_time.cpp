@@ -178,8 +178,10 @@ int SlabTime::side_of(const Rational& g) const {
     const int at_g = sign_at_rational(p, g);
     if (at_g == 0)
       return 0;
-    const int left = root_->lo > 0.0 ? sign_at_rational(p, lo) : -sign_at_rational(p, hi);
-    return at_g == left ? 1 : -1;
+    if (root_->exact_sign_left == 0)
+      root_->exact_sign_left =
+          static_cast<signed char>(root_->lo > 0.0 ? sign_at_rational(p, lo) : -sign_at_rational(p, hi));
+    return at_g == root_->exact_sign_left ? 1 : -1;
   }
   const AlgebraicReal& a = algebraic();
   const AlgebraicReal b = kernel().construct_algebraic_real_1_object()(g);

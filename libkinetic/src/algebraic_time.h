@@ -49,9 +49,12 @@ struct IsolatedRoot {
     return *exact_memo;
   }
 
-  IntervalPoly enclosure;    // encloses the coefficients of the polynomial divided by u^shift
-  int shift = 0;             // (a root of multiplicity shift at the slab start divided out)
-  bool wide = false;         // enclosure from plain doubles: SlabTime::sharpen replaces it before reporting
+  IntervalPoly enclosure; // encloses the coefficients of the polynomial divided by u^shift
+  int shift = 0;          // (a root of multiplicity shift at the slab start divided out)
+  bool wide = false;      // enclosure from plain doubles: SlabTime::sharpen replaces it before reporting
+  // The sign of the exact polynomial just left of the root (0: not yet known), which a time's
+  // rounding compares with its sign at each grid point it tries (SlabTime::side_of).
+  mutable signed char exact_sign_left = 0;
   double lo = 0.0, hi = 0.0; // lo < root < hi, or lo == hi == root once found exactly
   int sign_lo = 0;           // sign of the polynomial at lo
   // The right end of the piece that isolated the root: the polynomial has no root in (root,

@@ -2,43 +2,70 @@
 #include "root_cache.h"
 
 #include "certificate_polynomials.h"
+#include "fixed_integer.h"
 #include "start_determinants.h"
+
+#include <stdexcept>
+#include <utility>
 
 namespace medusa::kinetic::detail {
 
-Poly<mpz_class> KeyPolynomial::coefficients(const std::array<MovingPoint, 5>& p) const {
-  Poly<mpz_class> f;
+namespace {
+
+// The polynomial of `key` on the points p in the number type NT; rho() gives P and Q of rho^2 = P/Q
+// in NT, asked for by the radius polynomials only.
+template <class NT, class Rho>
+Poly<NT> coefficients_in(const KeyPolynomial& key, const std::array<MovingPoint, 5>& p, const Rho& rho) {
+  const int kind = key.kind, count = key.count;
+  Poly<NT> f;
   // In-circle and planar orientation have one point fewer than in-sphere and orientation.
   if (kind == 0 && count == 4)
-    f = certificate::in_circle<mpz_class>(p[0], p[1], p[2], p[3]);
+    f = certificate::in_circle<NT>(p[0], p[1], p[2], p[3]);
   else if (kind == 0)
-    f = certificate::in_sphere<mpz_class>(p[0], p[1], p[2], p[3], p[4]);
+    f = certificate::in_sphere<NT>(p[0], p[1], p[2], p[3], p[4]);
   else if (kind == 1 && count == 3)
-    f = certificate::orientation_2<mpz_class>(p[0], p[1], p[2]);
+    f = certificate::orientation_2<NT>(p[0], p[1], p[2]);
   else if (kind == 1)
-    f = certificate::orientation<mpz_class>(p[0], p[1], p[2], p[3]);
+    f = certificate::orientation<NT>(p[0], p[1], p[2], p[3]);
   else if (kind == 4 && count == 4) // orientations of the triangles p0 p1 p2 and p0 p1 p3
-    f = certificate::orientation_2<mpz_class>(p[0], p[1], p[2]) *
-        certificate::orientation_2<mpz_class>(p[0], p[1], p[3]);
+    f = certificate::orientation_2<NT>(p[0], p[1], p[2]) * certificate::orientation_2<NT>(p[0], p[1], p[3]);
   else if (kind == 4) // orientations of the tetrahedra p0 p1 p2 p3 and p0 p1 p2 p4
-    f = certificate::orientation<mpz_class>(p[0], p[1], p[2], p[3]) *
-        certificate::orientation<mpz_class>(p[0], p[1], p[2], p[4]);
+    f = certificate::orientation<NT>(p[0], p[1], p[2], p[3]) *
+        certificate::orientation<NT>(p[0], p[1], p[2], p[4]);
   else if (kind == 3 && count == 3) // fold test at a planar hull vertex p0 with hull neighbours p1, p2
-    f = certificate::dot<mpz_class>(certificate::difference<mpz_class>(p[0], p[1]),
-                                    certificate::difference<mpz_class>(p[0], p[2]));
+    f = certificate::dot<NT>(certificate::difference<NT>(p[0], p[1]),
+                             certificate::difference<NT>(p[0], p[2]));
   else if (kind == 3) { // fold test at the hull ridge p0 p1 with apices p2, p3
-    const auto ab = certificate::difference<mpz_class>(p[0], p[1]);
-    f = certificate::dot<mpz_class>(
-        certificate::cross<mpz_class>(ab, certificate::difference<mpz_class>(p[0], p[2])),
-        certificate::cross<mpz_class>(ab, certificate::difference<mpz_class>(p[0], p[3])));
-  } else if (count == 2)
-    f = certificate::edge_radius<mpz_class>(p[0], p[1], motion->rho2->num, motion->rho2->den);
-  else if (count == 3)
-    f = certificate::triangle_radius<mpz_class>(p[0], p[1], p[2], motion->rho2->num, motion->rho2->den);
-  else
-    f = certificate::tetrahedron_radius<mpz_class>(p[0], p[1], p[2], p[3], motion->rho2->num,
-                                                   motion->rho2->den);
+    const auto ab = certificate::difference<NT>(p[0], p[1]);
+    f = certificate::dot<NT>(certificate::cross<NT>(ab, certificate::difference<NT>(p[0], p[2])),
+                             certificate::cross<NT>(ab, certificate::difference<NT>(p[0], p[3])));
+  } else {
+    const auto [P, Q] = rho();
+    if (count == 2)
+      f = certificate::edge_radius<NT>(p[0], p[1], P, Q);
+    else if (count == 3)
+      f = certificate::triangle_radius<NT>(p[0], p[1], p[2], P, Q);
+    else
+      f = certificate::tetrahedron_radius<NT>(p[0], p[1], p[2], p[3], P, Q);
+  }
   return f;
+}
+
+} // namespace
+
+Poly<mpz_class> KeyPolynomial::coefficients(const std::array<MovingPoint, 5>& p) const {
+  // In 512-bit integers first (fixed_integer.h), in GMP if a value needs more.
+  try {
+    const Poly<FixedInt> f = coefficients_in<FixedInt>(
+        *this, p, [&] { return std::make_pair(to_fixed(motion->rho2->num), to_fixed(motion->rho2->den)); });
+    Poly<mpz_class> g = Poly<mpz_class>::zero_of_degree(f.degree_bound());
+    for (int i = 0; i <= f.degree_bound(); ++i)
+      g[i] = to_mpz(f[i]);
+    return g;
+  } catch (const std::overflow_error&) {
+    return coefficients_in<mpz_class>(*this, p,
+                                      [&] { return std::make_pair(motion->rho2->num, motion->rho2->den); });
+  }
 }
 
 std::array<MovingPoint, 5> KeyPolynomial::points() const {
