@@ -1,5 +1,6 @@
 #include "algebraic_time.h"
 
+#include "fixed_integer.h"
 #include "medusa/core/error.h"
 #include "root_isolation.h"
 
@@ -189,18 +190,6 @@ int SlabTime::side_of(const Rational& g) const {
 }
 
 namespace {
-
-__extension__ typedef __int128 Int128; // GCC and Clang: a 53-bit significand times a slab's span
-__extension__ typedef unsigned __int128 UInt128;
-
-mpz_class to_mpz(Int128 x) {
-  const bool negative = x < 0;
-  const auto magnitude = static_cast<UInt128>(negative ? -x : x);
-  mpz_class r(static_cast<unsigned long>(magnitude >> 64));
-  r <<= 64;
-  r += static_cast<unsigned long>(magnitude & ~std::uint64_t{0});
-  return negative ? mpz_class(-r) : r;
-}
 
 // floor(u span 2^bits) for a double u in [0, 1] and span >= 1, exactly: u = m 2^(e - 53) with an
 // integer m < 2^53, so the value is floor(m span / 2^(53 - e - bits)), and m span < 2^116.

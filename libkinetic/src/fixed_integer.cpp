@@ -6,6 +6,16 @@
 
 namespace medusa::kinetic {
 
+mpz_class to_mpz(Int128 x) {
+  __extension__ typedef unsigned __int128 UInt128;
+  const bool negative = x < 0;
+  const auto magnitude = static_cast<UInt128>(negative ? -x : x);
+  mpz_class r(static_cast<unsigned long>(magnitude >> 64));
+  r <<= 64;
+  r += static_cast<unsigned long>(magnitude & ~std::uint64_t{0});
+  return negative ? mpz_class(-r) : r;
+}
+
 mpz_class to_mpz(const FixedInt& x) {
   const auto& limbs = x.backend();
   mpz_class r;
