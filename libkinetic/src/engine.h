@@ -4,6 +4,7 @@
 // templates over the number type, so they are defined here.
 #pragma once
 
+#include "batch_agenda.h"
 #include "cell_triangulation.h"
 #include "certificate.h"
 #include "certificate_pool.h"
@@ -91,22 +92,7 @@ template <class K> struct Engine {
   CertificatePool certificates;
 
   // Certificates found invalid at the current time, waiting in the current batch.
-  std::set<std::pair<Simplex, int>> pending_delaunay;
-  std::vector<std::pair<int, std::uint32_t>> pending_radius; // (certificate, version)
-  std::vector<std::pair<int, std::uint32_t>> pending_touch;  // radius touches at now (certificate, version)
-  std::vector<std::pair<int, std::uint32_t>> pending_hull_touch; // hull orientations touching zero at now
-  // The time each certificate fired in this batch was scheduled at: equal to now, but as the root of
-  // that certificate's own polynomial. A failure is resolved with now set to it, so that the
-  // certificates built there recognise their own root (sign_after_own_root) whichever of the batch's
-  // equal times was popped first: on a periodic run the copies of one event are such a batch
-  // (docs/MATH.md §8.6).
-  std::unordered_map<int, SlabTime> fired_times;
-  // Set when a hull ridge is found folded at now around a simplex that is not flat
-  // (hull_ridge_folded_at_now), or a hull flip would add a top simplex flat at now without turning
-  // there (flat_without_turning_at_now, flippable): the triangulation is not embedded just after
-  // now, where elementary flips chosen on local certificates can make it worse, so resolve_delaunay
-  // repairs first.
-  bool repair_pending = false;
+  BatchAgenda agenda; // what the batch at now still has to resolve (batch_agenda.h)
 
   // Event batches emitted so far, and since the last audit.
   std::size_t batch_index = 0;
@@ -119,7 +105,7 @@ template <class K> struct Engine {
 
   // Scratch space of process_batch and change_tops, kept to avoid allocations per event.
   OldMembership batch_scratch;
-  std::vector<std::pair<int, std::uint32_t>> radius_scratch; // resolve_radius's failed certificates
+  std::vector<BatchAgenda::Entry> radius_scratch; // resolve_radius's failed certificates
   TouchedFaces touched_scratch;
   std::vector<VertexId> link_scratch;                                  // gabriel_now's link vertices
   std::array<std::vector<std::pair<Simplex, bool>>, 4> settle_scratch; // settle_membership's buckets by size

@@ -63,9 +63,11 @@ template <class K> void Engine<K>::audit() {
     q = rational_between(now, at);
   }
 
-  // Each part's own invariants (certificate_pool.h, triangulation.h, face_states.h), then those
-  // between the parts.
+  // Each part's own invariants (certificate_pool.h, batch_agenda.h, triangulation.h, face_states.h),
+  // then those between the parts. The audit runs between batches.
   if (std::string v = certificates.first_violation(); !v.empty())
+    audit_failure(v);
+  if (std::string v = agenda.first_violation(certificates, true); !v.empty())
     audit_failure(v);
   if (std::string v = tri.first_violation(dim); !v.empty())
     audit_failure(v);

@@ -176,7 +176,7 @@ template <class K> void Engine<K>::kill_cert(int id) {
   if (id < 0)
     return;
   if (const Certificate& c = certificates[id]; c.kind == CertKind::delaunay)
-    pending_delaunay.erase({c.key, id});
+    agenda.withdraw_delaunay(c.key, id);
   certificates.retire(id);
 }
 
@@ -186,7 +186,7 @@ template <class K> void Engine<K>::kill_cert(int id) {
 // yet visited never hand their old ids to anyone.
 template <class K> void Engine<K>::retire_all_certs() {
   certificates.retire_all();
-  pending_delaunay.clear(); // it only ever holds live Delaunay certificates
+  agenda.withdraw_all_delaunay(); // it only ever holds live Delaunay certificates
 }
 
 // Counts a certificate built by its formula; `enclosed` says cert_enclosure took it, which it does for
@@ -533,9 +533,9 @@ template <class K> CacheKey Engine<K>::cache_key(const Certificate& c) const {
 template <class K> void Engine<K>::mark_invalid(int id) {
   const Certificate& c = certificates[id];
   if (c.kind == CertKind::delaunay)
-    pending_delaunay.insert({c.key, id});
+    agenda.fail_delaunay(c.key, id);
   else
-    pending_radius.emplace_back(id, c.version);
+    agenda.fail_radius(id, c.version);
 }
 
 // A facet that left Del has no record any more: its certificate went with it (remove_top).
@@ -554,11 +554,11 @@ template <class K> void Engine<K>::install_facet(const Simplex& facet, detail::T
   ap.cert = new_cert(CertKind::delaunay, facet); // the table is not touched: ap stays valid
   mirror_cert(facet, ap.v, ap.cert);
   install(ap.cert);
-  if (!is_finite(facet) && !pending_delaunay.count({facet, ap.cert}) && hull_ridge_folded_at_now(facet)) {
+  if (!is_finite(facet) && !agenda.delaunay_failed(facet, ap.cert) && hull_ridge_folded_at_now(facet)) {
     ++stats.invalid_at_creation;
     ++stats.hull_ridges_folded_at_now;
     mark_invalid(ap.cert);
-    repair_pending = true;
+    agenda.request_repair();
   }
 }
 

@@ -51,7 +51,7 @@ template <class K> void Engine<K>::process_batch(std::vector<Step>& steps) {
   Step settle;
   settle.kind = StepKind::settle;
   resolve_touches(old_k);
-  while (!pending_radius.empty()) {
+  while (agenda.has_radius()) {
     resolve_radius(settle, old_k);
     resolve_delaunay(steps);
   }
@@ -61,17 +61,17 @@ template <class K> void Engine<K>::process_batch(std::vector<Step>& steps) {
 }
 
 template <class K> void Engine<K>::at_own_time(int cert) {
-  if (auto it = fired_times.find(cert); it != fired_times.end())
-    now = it->second;
+  if (const SlabTime* u = agenda.fired_time(cert))
+    now = *u;
 }
 
 // A popped entry at now: its certificate fails, or its simplex touches rho.
 template <class K> void Engine<K>::fire(const QueueEntry& e) {
-  fired_times.insert_or_assign(static_cast<int>(e.cert), e.u);
+  agenda.fired(static_cast<int>(e.cert), e.u);
   if (e.touch && certificates[e.cert].kind == CertKind::radius)
-    pending_touch.emplace_back(static_cast<int>(e.cert), e.version);
+    agenda.touch(static_cast<int>(e.cert), e.version);
   else if (e.touch)
-    pending_hull_touch.emplace_back(static_cast<int>(e.cert), e.version);
+    agenda.hull_touch(static_cast<int>(e.cert), e.version);
   else {
     switch (certificates[e.cert].substitute) {
     case Substitute::hull_fold: ++stats.hull_ridges_folding; break;
@@ -104,7 +104,7 @@ template <class K> void Engine<K>::run_slab(Observer& observer) {
     const SlabTime batch_time = now; // narrowed: the reported time rounds it in doubles (§3.12)
     std::vector<Step> steps;
     process_batch(steps);
-    fired_times.clear();
+    agenda.end_batch();
     now = batch_time;
     emit_batch(observer, steps, false);
     if (options.audit && ++batches_since_audit >= options.audit_stride) {

@@ -152,7 +152,7 @@ template <class K> bool Engine<K>::flippable(const Simplex& facet, FlipChange& c
   // (checked first) do, and its new finite top simplices must not stay flat. One flat at now without
   // turning there (Engine::flat_without_turning_at_now) shows that the batch's flips have left the
   // triangulation not embedded just after now, where the certificates of later flips may all hold
-  // and leave it so: the batch repairs at once (Engine::repair_pending).
+  // and leave it so: the batch repairs at once (BatchAgenda::request_repair).
   // Nor may it take away a hull facet whose top simplex below is flat at now: that simplex may be
   // inside out just after now, its own hull certificate (pending in this batch) is what tells, and
   // once the facet is interior every certificate reads the stale orientation (docs/MATH.md §5.10;
@@ -174,7 +174,7 @@ template <class K> bool Engine<K>::flippable(const Simplex& facet, FlipChange& c
     if (orientation_sign_plus(t) == 0)
       return false;
     if (flat_without_turning_at_now(t)) {
-      repair_pending = true;
+      agenda.request_repair();
       return false;
     }
   }
@@ -187,30 +187,21 @@ template <class K> void Engine<K>::resolve_delaunay(std::vector<Step>& steps) {
   const std::size_t limit = 20 * traj.cells.size() + 1000;
   std::size_t flips_in_batch = 0, repairs_in_batch = 0;
   FlipChange change;
-  while (!pending_delaunay.empty() || repair_pending) {
+  auto live = [&](const Simplex& facet, int id) {
+    return certificates[id].alive && certificates[id].key == facet;
+  };
+  auto accept = [&](const Simplex& facet, int) { return flippable(facet, change); };
+  while (agenda.has_delaunay() || agenda.repair_due()) {
     // The first flippable failure in canonical order; a static repair when none is, when the flips
     // do not converge (docs/MATH.md §5.2 steps 2 and 3), or when a hull ridge was found folded at now.
-    bool flipped = false;
-    if (flips_in_batch < limit && !repair_pending)
-      for (auto it = pending_delaunay.begin(); it != pending_delaunay.end();) {
-        auto [facet, id] = *it;
-        if (!certificates[id].alive || certificates[id].key != facet) {
-          it = pending_delaunay.erase(it);
-          continue;
-        }
-        if (flippable(facet, change)) {
-          pending_delaunay.erase(it);
-          at_own_time(id);
-          flip(id, change, steps);
-          ++flips_in_batch;
-          flipped = true;
-          break;
-        }
-        if (repair_pending)
-          break;
-        ++it;
+    if (flips_in_batch < limit && !agenda.repair_due())
+      if (const auto failed = agenda.take_first_delaunay(live, accept)) {
+        at_own_time(failed->second);
+        flip(failed->second, change, steps);
+        ++flips_in_batch;
+        continue;
       }
-    if (flipped || (pending_delaunay.empty() && !repair_pending))
+    if (!agenda.has_delaunay() && !agenda.repair_due())
       continue;
     // A repair gives Del(now+) (docs/MATH.md §5.4), so failures left after it can only be those its
     // rational stand-in for now+ (rational_before_next_event) settled differently; a few more rounds
@@ -220,7 +211,7 @@ template <class K> void Engine<K>::resolve_delaunay(std::vector<Step>& steps) {
       os << "no progress resolving degenerate Delaunay events in slab " << slab << " at u ~ " << now.approx();
       throw InternalError(os.str());
     }
-    repair_pending = false;
+    agenda.start_repair();
     repair(steps);
     flips_in_batch = 0;
   }
@@ -233,8 +224,8 @@ template <class K> void Engine<K>::resolve_delaunay(std::vector<Step>& steps) {
 // re-evaluation of docs/MATH.md §5.2 step 4), and its certificate is installed again for its next
 // root (tests/kinetic/test_kinetic_dense_lattice.cpp).
 template <class K> void Engine<K>::resolve_touches(OldMembership& old_k) {
-  std::vector<std::pair<int, std::uint32_t>> touches;
-  touches.swap(pending_touch);
+  std::vector<BatchAgenda::Entry> touches;
+  agenda.take_touches(touches);
   for (auto [id, version] : touches) {
     if (!certificates.current(id, version))
       continue;
@@ -257,21 +248,21 @@ template <class K> void Engine<K>::resolve_touches(OldMembership& old_k) {
 // 4, 5, 11 and 14 were also coplanar; every certificate touched zero and held, and 12 lay outside the
 // hull just after). A hull facet can only turn over where it degenerates, its three cells collinear
 // (in the plane a hull edge would need two cells to collide), so at a hull touch with such a hull
-// facet at one of the certificate's cells the batch repairs (Engine::repair_pending), which builds
+// facet at one of the certificate's cells the batch repairs (BatchAgenda::request_repair), which builds
 // Del(now+) whatever happened. Any other touch (a cell touching the plane of a sound hull facet and
 // going back) is no event. The certificate is installed again for its next root either way.
 template <class K> void Engine<K>::resolve_hull_touches() {
-  std::vector<std::pair<int, std::uint32_t>> touches;
-  touches.swap(pending_hull_touch);
+  std::vector<BatchAgenda::Entry> touches;
+  agenda.take_hull_touches(touches);
   for (auto [id, version] : touches) {
     if (!certificates.current(id, version))
       continue;
     const Certificate& c = certificates[id];
     const Simplex key = c.key;
     install(id);
-    if (!repair_pending && degenerate_hull_facet_at(key)) {
+    if (!agenda.repair_due() && degenerate_hull_facet_at(key)) {
       ++stats.hull_touches_repaired;
-      repair_pending = true;
+      agenda.request_repair();
     }
   }
 }
@@ -316,11 +307,10 @@ template <class K> bool Engine<K>::radius_vanishes_now(const Simplex& s) {
 
 // Radius events: toggle shortness of the failed certificates, then one settle step.
 template <class K> void Engine<K>::resolve_radius(Step& settle, OldMembership& old_k) {
-  // Swapped with a kept buffer: certificates failing meanwhile go to pending_radius, and neither
-  // vector is reallocated per event.
-  std::vector<std::pair<int, std::uint32_t>>& failed = radius_scratch;
-  failed.clear();
-  failed.swap(pending_radius);
+  // Taken into a kept buffer: certificates failing meanwhile stay on the agenda, and neither vector is
+  // reallocated per event.
+  std::vector<BatchAgenda::Entry>& failed = radius_scratch;
+  agenda.take_radius(failed);
   for (auto [id, version] : failed) {
     if (!certificates.current(id, version))
       continue;

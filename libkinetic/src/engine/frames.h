@@ -50,7 +50,7 @@ template <class K> void Engine<K>::reinstall_all() {
     install_radius(s, f, &at_frame);
     // R = rho at the frame: a touch there, whatever the sign just after (Engine::resolve_touches).
     if (!(at_frame.inf() > 0 || at_frame.sup() < 0) && radius_vanishes_now(s))
-      pending_touch.emplace_back(f.cert, certificates[f.cert].version);
+      agenda.touch(f.cert, certificates[f.cert].version);
   });
 }
 

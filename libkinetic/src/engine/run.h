@@ -50,7 +50,7 @@ template <class K> void Engine<K>::initialise(Observer& observer) {
   rebuild_static(nullptr); // every simplex is settled below: the old memberships are not needed
   std::vector<Step> ignored;
   resolve_delaunay(ignored); // Del(t0+) (docs/MATH.md §5.5): fix what the frozen delta left
-  pending_radius.clear();
+  agenda.drop_radius();
   // Membership of every simplex, in decreasing dimension (docs/MATH.md §4.6), one pass over the face
   // table per dimension: the order within a dimension does not matter (settle_membership), and a
   // copy of every face, as a table of old memberships, would be held beside all of them at the
