@@ -53,7 +53,18 @@ template <class T> void release_if_large(std::vector<T>& scratch) {
     std::vector<T>().swap(scratch);
 }
 
-template <class K> struct Engine {
+// The kinetic engine of one run (docs/MATH.md §2-§5). Outside it, only a run and its results are seen
+// (KineticAlphaComplex); its state and its steps are private, and its member functions are defined in
+// engine/, one header per concern (docs/ARCHITECTURE.md).
+template <class K> class Engine {
+public:
+  Engine(const Trajectories& t, KineticOptions o); // engine/run.h
+  void run(Observer& observer);                    // engine/run.h
+  const KineticStatistics& statistics() const { return stats; }
+  // The alpha complex just after now: after run, at the last frame.
+  std::vector<Simplex> current_complex() const; // engine/membership.h
+
+private:
   // The input and the outputs of the run.
   const Trajectories& traj;
   KineticOptions options;
@@ -109,8 +120,6 @@ template <class K> struct Engine {
   TouchedFaces touched_scratch;
   std::vector<VertexId> link_scratch;                                  // gabriel_now's link vertices
   std::array<std::vector<std::pair<Simplex, bool>>, 4> settle_scratch; // settle_membership's buckets by size
-
-  Engine(const Trajectories& t, KineticOptions o); // engine/run.h
 
   // ------------------------------------ geometry of certificates (templates over the number type)
 
@@ -392,7 +401,6 @@ template <class K> struct Engine {
   void settle_membership(const OldMembership& old_k, Step& step);
   // The membership of s just after now, given its state; updates the coface counts of its facets.
   template <class StateOf> bool settle(const Simplex& s, Face& f, StateOf&& state_of);
-  std::vector<Simplex> current_complex() const;
 
   // ------------------------------------ flips (docs/MATH.md §4.5) and radius events (engine/flips.h)
 
@@ -482,7 +490,6 @@ template <class K> struct Engine {
 
   void check_planar() const;
   void initialise(Observer& observer);
-  void run(Observer& observer);
 
   // ------------------------------------ degenerate groups of static repairs (engine/degenerate_groups.h)
 
@@ -517,7 +524,7 @@ template <class K> template <class NT> Poly<NT> Engine<K>::cert_poly(const Certi
 }
 
 // Instantiated once per dimension, in engine_2.cpp and engine_3.cpp.
-extern template struct Engine<KineticTraits2>;
-extern template struct Engine<KineticTraits3>;
+extern template class Engine<KineticTraits2>;
+extern template class Engine<KineticTraits3>;
 
 } // namespace medusa::kinetic::detail

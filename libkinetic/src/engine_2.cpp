@@ -14,6 +14,6 @@
 
 namespace medusa::kinetic::detail {
 
-template struct Engine<KineticTraits2>;
+template class Engine<KineticTraits2>;
 
 } // namespace medusa::kinetic::detail

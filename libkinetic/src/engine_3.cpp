@@ -14,6 +14,6 @@
 
 namespace medusa::kinetic::detail {
 
-template struct Engine<KineticTraits3>;
+template class Engine<KineticTraits3>;
 
 } // namespace medusa::kinetic::detail

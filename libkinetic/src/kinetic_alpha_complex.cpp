@@ -59,7 +59,7 @@ void KineticAlphaComplex::run(Observer& observer) {
 }
 
 const KineticStatistics& KineticAlphaComplex::statistics() const {
-  return std::visit([](const auto& e) -> const KineticStatistics& { return e.stats; }, impl_->engine);
+  return std::visit([](const auto& e) -> const KineticStatistics& { return e.statistics(); }, impl_->engine);
 }
 
 std::vector<Simplex> KineticAlphaComplex::current_complex() const {
