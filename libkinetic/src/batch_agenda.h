@@ -5,7 +5,8 @@
 // resolving one does, is the engine's; this part only keeps the work list.
 //
 // Invariants (first_violation): every Delaunay failure held is a live Delaunay certificate on its
-// facet (retiring one withdraws it); and between batches, where the audit looks, nothing is left.
+// facet (retiring one withdraws it; the audit checks it as each batch resolves its failures); and
+// between batches, where the audit looks, nothing is left.
 #pragma once
 
 #include "certificate_pool.h"
@@ -35,7 +36,8 @@ public:
   bool delaunay_failed(const Simplex& facet, int id) const { return delaunay_.count({facet, id}) != 0; }
   bool has_delaunay() const { return !delaunay_.empty(); }
   // The first failure in canonical order that `accept` takes, withdrawn; none when `accept` takes
-  // none, or as soon as a repair is due (`accept` may find one). Entries `live` rejects are dropped.
+  // none, or as soon as a repair is due (`accept` may find one). Entries `live` rejects are dropped:
+  // a defence only, since while the invariant holds every entry is live.
   template <class Live, class Accept>
   std::optional<std::pair<Simplex, int>> take_first_delaunay(Live&& live, Accept&& accept) {
     for (auto it = delaunay_.begin(); it != delaunay_.end();) {
@@ -55,13 +57,13 @@ public:
     return std::nullopt;
   }
 
-  // ---- radius failures and touches, in the order they fired
+  // ---- radius failures and touches, in the order found
 
   void fail_radius(int id, std::uint32_t version) { radius_.emplace_back(id, version); }
   bool has_radius() const { return !radius_.empty(); }
   void drop_radius() { radius_.clear(); }
-  // Moves the radius failures into `into` (cleared first; its buffer is kept for the next call), so
-  // that failures found while resolving them are held for the next round.
+  // Moves the radius failures into `into` (cleared first; the two buffers swap, so neither is
+  // reallocated per round), so that failures found while resolving them are held for the next round.
   void take_radius(std::vector<Entry>& into) { take(radius_, into); }
 
   // A radius certificate touching rho without crossing it (Engine::resolve_touches).
@@ -74,8 +76,9 @@ public:
   // ---- static repairs
 
   // Requested when a hull ridge is found folded at now around a simplex that is not flat
-  // (Engine::hull_ridge_folded_at_now), or a hull flip would add a top simplex flat at now without
-  // turning there (Engine::flippable): the triangulation is not embedded just after now, where
+  // (Engine::hull_ridge_folded_at_now), a hull flip would add a top simplex flat at now without
+  // turning there (Engine::flippable), or a hull touch meets a hull facet whose cells are collinear
+  // (Engine::resolve_hull_touches): the triangulation may not be embedded just after now, where
   // elementary flips chosen on local certificates can make it worse, so the batch repairs first.
 
   void request_repair() { repair_due_ = true; }

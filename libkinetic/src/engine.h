@@ -35,7 +35,6 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,7 +60,7 @@ public:
   Engine(const Trajectories& t, KineticOptions o); // engine/run.h
   void run(Observer& observer);                    // engine/run.h
   const KineticStatistics& statistics() const { return stats; }
-  // The alpha complex just after now: after run, at the last frame.
+  // The alpha complex just after now; after run, K(t_end-), just before the last frame (docs/MATH.md §0).
   std::vector<Simplex> current_complex() const; // engine/membership.h
 
 private:

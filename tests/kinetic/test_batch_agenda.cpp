@@ -13,10 +13,7 @@ using namespace medusa::kinetic::detail;
 
 TEST_CASE("Delaunay failures are taken in canonical order, and stale ones are dropped on the way",
           "[kinetic][agenda]") {
-  CertificatePool pool;
-  const int a = pool.create(CertKind::delaunay, Simplex{1, 2, 3});
-  const int b = pool.create(CertKind::delaunay, Simplex{0, 2, 3});
-  const int c = pool.create(CertKind::delaunay, Simplex{0, 1, 3});
+  const int a = 0, b = 1, c = 2;
   BatchAgenda agenda;
   agenda.fail_delaunay(Simplex{1, 2, 3}, a);
   agenda.fail_delaunay(Simplex{0, 2, 3}, b);
@@ -67,6 +64,7 @@ TEST_CASE(
   CHECK(round == std::vector<BatchAgenda::Entry>{{7, 1}, {3, 2}});
   CHECK_FALSE(agenda.has_radius());
   agenda.fail_radius(5, 4);
+  CHECK(round.size() == 2); // a failure found meanwhile is not in the round being resolved
   agenda.take_radius(round);
   CHECK(round == std::vector<BatchAgenda::Entry>{{5, 4}});
   agenda.touch(1, 1);
@@ -107,7 +105,13 @@ TEST_CASE("the agenda's check catches a failure held for a retired certificate",
 
 TEST_CASE("between batches the agenda's check requires that nothing is left", "[kinetic][agenda]") {
   CertificatePool pool;
+  const int id = pool.create(CertKind::delaunay, Simplex{0, 1, 2});
   BatchAgenda agenda;
+  CHECK(agenda.first_violation(pool, true).empty());
+  agenda.fail_delaunay(Simplex{0, 1, 2}, id); // live: only the between-batches rule is broken
+  CHECK(agenda.first_violation(pool, false).empty());
+  CHECK_FALSE(agenda.first_violation(pool, true).empty());
+  agenda.withdraw_delaunay(Simplex{0, 1, 2}, id);
   CHECK(agenda.first_violation(pool, true).empty());
   agenda.fail_radius(0, 0);
   CHECK_FALSE(agenda.first_violation(pool, true).empty());
@@ -117,6 +121,10 @@ TEST_CASE("between batches the agenda's check requires that nothing is left", "[
   CHECK_FALSE(agenda.first_violation(pool, true).empty());
   std::vector<BatchAgenda::Entry> touches;
   agenda.take_touches(touches);
+  agenda.hull_touch(0, 0);
+  CHECK_FALSE(agenda.first_violation(pool, true).empty());
+  agenda.take_hull_touches(touches);
+  CHECK(agenda.first_violation(pool, true).empty());
   agenda.request_repair();
   CHECK_FALSE(agenda.first_violation(pool, true).empty());
   agenda.start_repair();

@@ -26,6 +26,23 @@ template <class K> void Engine<K>::audit_failure(const std::string& what) const 
 
 template <class K> void Engine<K>::audit() {
   ++stats.audits;
+  // Each part's own invariants (certificate_pool.h, batch_agenda.h, triangulation.h, face_states.h),
+  // then those between the parts, first: they need no time q, and the checks at q read the
+  // triangulation's records. The audit runs between batches.
+  if (std::string v = certificates.first_violation(); !v.empty())
+    audit_failure(v);
+  if (std::string v = agenda.first_violation(certificates, true); !v.empty())
+    audit_failure(v);
+  if (std::string v = tri.first_violation(dim); !v.empty())
+    audit_failure(v);
+  if (std::string v = mirror_difference(); !v.empty())
+    audit_failure(v);
+  if (std::string v = faces.first_violation(tri, alive); !v.empty())
+    audit_failure(v);
+  for (std::size_t i = 0; i < alive.size(); ++i)
+    if (tri.tops_of(static_cast<VertexId>(i)).empty() == bool(alive[i]))
+      audit_failure("cell " + std::to_string(i) +
+                    (alive[i] ? " is alive but not in" : " is dead but still in") + " the triangulation");
   // A rational time strictly between now and the next event (or the slab end).
   const SlabTime upper = certificates.earliest_time(SlabTime(Rational(1)));
   if (!(now < upper))
@@ -63,22 +80,6 @@ template <class K> void Engine<K>::audit() {
     q = rational_between(now, at);
   }
 
-  // Each part's own invariants (certificate_pool.h, batch_agenda.h, triangulation.h, face_states.h),
-  // then those between the parts. The audit runs between batches.
-  if (std::string v = certificates.first_violation(); !v.empty())
-    audit_failure(v);
-  if (std::string v = agenda.first_violation(certificates, true); !v.empty())
-    audit_failure(v);
-  if (std::string v = tri.first_violation(dim); !v.empty())
-    audit_failure(v);
-  if (std::string v = mirror_difference(); !v.empty())
-    audit_failure(v);
-  if (std::string v = faces.first_violation(tri, alive); !v.empty())
-    audit_failure(v);
-  for (std::size_t i = 0; i < alive.size(); ++i)
-    if (tri.tops_of(static_cast<VertexId>(i)).empty() == bool(alive[i]))
-      audit_failure("cell " + std::to_string(i) +
-                    (alive[i] ? " is alive but not in" : " is dead but still in") + " the triangulation");
   // Local Delaunay, exactly, at q (identically-zero certificates are valid, docs/MATH.md §3.9).
   for (std::size_t i = 0; i < delaunay_polys.size(); ++i) {
     const Simplex& facet = delaunay_polys[i].first;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace medusa::kinetic::detail {
@@ -187,6 +188,9 @@ template <class K> void Engine<K>::resolve_delaunay(std::vector<Step>& steps) {
   const std::size_t limit = 20 * traj.cells.size() + 1000;
   std::size_t flips_in_batch = 0, repairs_in_batch = 0;
   FlipChange change;
+  if (options.audit)
+    if (std::string v = agenda.first_violation(certificates, false); !v.empty())
+      audit_failure(v);
   auto live = [&](const Simplex& facet, int id) {
     return certificates[id].alive && certificates[id].key == facet;
   };
