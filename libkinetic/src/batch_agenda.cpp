@@ -4,10 +4,16 @@
 
 namespace medusa::kinetic::detail {
 
+bool BatchAgenda::live(const CertificatePool& pool, const Simplex& facet, int id) {
+  if (id < 0 || static_cast<std::size_t>(id) >= pool.size())
+    return false;
+  const Certificate& c = pool[id];
+  return c.alive && c.kind == CertKind::delaunay && c.key == facet;
+}
+
 std::string BatchAgenda::first_violation(const CertificatePool& pool, bool between_batches) const {
   for (const auto& [facet, id] : delaunay_) {
-    const bool known = id >= 0 && static_cast<std::size_t>(id) < pool.size();
-    if (!known || !pool[id].alive || pool[id].kind != CertKind::delaunay || pool[id].key != facet) {
+    if (!live(pool, facet, id)) {
       std::ostringstream os;
       os << "the failure of certificate " << id << " on facet " << facet
          << " is held, but that is not a live Delaunay certificate on it";

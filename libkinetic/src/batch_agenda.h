@@ -1,6 +1,6 @@
 // What a batch of simultaneous events still has to resolve (docs/MATH.md §5.2), as one part with its
 // own invariants: the failed Delaunay certificates, resolved in canonical order (by facet, then id);
-// the failed radius certificates and the touches, in the order they fired; whether a static repair is
+// the failed radius certificates and the touches, in the order found; whether a static repair is
 // due; and the time each certificate of the batch fired at. Which failure is flippable, and what
 // resolving one does, is the engine's; this part only keeps the work list.
 //
@@ -36,13 +36,13 @@ public:
   bool delaunay_failed(const Simplex& facet, int id) const { return delaunay_.count({facet, id}) != 0; }
   bool has_delaunay() const { return !delaunay_.empty(); }
   // The first failure in canonical order that `accept` takes, withdrawn; none when `accept` takes
-  // none, or as soon as a repair is due (`accept` may find one). Entries `live` rejects are dropped:
-  // a defence only, since while the invariant holds every entry is live.
-  template <class Live, class Accept>
-  std::optional<std::pair<Simplex, int>> take_first_delaunay(Live&& live, Accept&& accept) {
+  // none, or as soon as a repair is due (`accept` may find one). Entries that are not live in `pool`
+  // are dropped: a defence only, since while the invariant holds every entry is live.
+  template <class Accept>
+  std::optional<std::pair<Simplex, int>> take_first_delaunay(const CertificatePool& pool, Accept&& accept) {
     for (auto it = delaunay_.begin(); it != delaunay_.end();) {
       const auto [facet, id] = *it;
-      if (!live(facet, id)) {
+      if (!live(pool, facet, id)) {
         it = delaunay_.erase(it);
         continue;
       }
@@ -105,6 +105,8 @@ public:
   std::string first_violation(const CertificatePool& pool, bool between_batches) const;
 
 private:
+  // Is id a live Delaunay certificate on facet in pool.
+  static bool live(const CertificatePool& pool, const Simplex& facet, int id);
   static void take(std::vector<Entry>& from, std::vector<Entry>& into) {
     into.clear();
     into.swap(from);

@@ -1,6 +1,6 @@
 // BatchAgenda (what a batch still has to resolve): Delaunay failures come back in canonical order,
-// stale ones dropped, and none once a repair is due; radius failures and touches in the order they
-// fired, with failures found meanwhile kept for the next round; the times of the batch; and its own
+// stale ones dropped, and none once a repair is due; radius failures and touches in the order
+// found, with failures found meanwhile kept for the next round; the times of the batch; and its own
 // check, which catches a failure held for a retired certificate and anything left between batches.
 #include "batch_agenda.h"
 
@@ -13,18 +13,21 @@ using namespace medusa::kinetic::detail;
 
 TEST_CASE("Delaunay failures are taken in canonical order, and stale ones are dropped on the way",
           "[kinetic][agenda]") {
-  const int a = 0, b = 1, c = 2;
+  CertificatePool pool;
+  const int a = pool.create(CertKind::delaunay, Simplex{1, 2, 3});
+  const int b = pool.create(CertKind::delaunay, Simplex{0, 2, 3});
+  const int c = pool.create(CertKind::delaunay, Simplex{0, 1, 3});
   BatchAgenda agenda;
   agenda.fail_delaunay(Simplex{1, 2, 3}, a);
   agenda.fail_delaunay(Simplex{0, 2, 3}, b);
   agenda.fail_delaunay(Simplex{0, 1, 3}, c);
+  pool.retire(c); // c went stale without being withdrawn
   std::vector<int> offered;
-  auto live = [&](const Simplex&, int id) { return id != c; }; // c went stale
   auto accept = [&](const Simplex&, int id) {
     offered.push_back(id);
     return id == a;
   };
-  const auto taken = agenda.take_first_delaunay(live, accept);
+  const auto taken = agenda.take_first_delaunay(pool, accept);
   REQUIRE(taken);
   CHECK(taken->second == a);
   CHECK(taken->first == Simplex{1, 2, 3});
@@ -35,16 +38,16 @@ TEST_CASE("Delaunay failures are taken in canonical order, and stale ones are dr
 }
 
 TEST_CASE("no Delaunay failure is taken once the one offered asks for a repair", "[kinetic][agenda]") {
+  CertificatePool pool;
   BatchAgenda agenda;
-  agenda.fail_delaunay(Simplex{0, 1, 2}, 0);
-  agenda.fail_delaunay(Simplex{0, 1, 3}, 1);
+  agenda.fail_delaunay(Simplex{0, 1, 2}, pool.create(CertKind::delaunay, Simplex{0, 1, 2}));
+  agenda.fail_delaunay(Simplex{0, 1, 3}, pool.create(CertKind::delaunay, Simplex{0, 1, 3}));
   int offered = 0;
-  const auto taken = agenda.take_first_delaunay([](const Simplex&, int) { return true; },
-                                                [&](const Simplex&, int) {
-                                                  ++offered;
-                                                  agenda.request_repair();
-                                                  return false;
-                                                });
+  const auto taken = agenda.take_first_delaunay(pool, [&](const Simplex&, int) {
+    ++offered;
+    agenda.request_repair();
+    return false;
+  });
   CHECK_FALSE(taken);
   CHECK(offered == 1);
   CHECK(agenda.repair_due());

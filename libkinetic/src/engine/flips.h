@@ -191,15 +191,12 @@ template <class K> void Engine<K>::resolve_delaunay(std::vector<Step>& steps) {
   if (options.audit)
     if (std::string v = agenda.first_violation(certificates, false); !v.empty())
       audit_failure(v);
-  auto live = [&](const Simplex& facet, int id) {
-    return certificates[id].alive && certificates[id].key == facet;
-  };
   auto accept = [&](const Simplex& facet, int) { return flippable(facet, change); };
   while (agenda.has_delaunay() || agenda.repair_due()) {
     // The first flippable failure in canonical order; a static repair when none is, when the flips
     // do not converge (docs/MATH.md §5.2 steps 2 and 3), or when a hull ridge was found folded at now.
     if (flips_in_batch < limit && !agenda.repair_due())
-      if (const auto failed = agenda.take_first_delaunay(live, accept)) {
+      if (const auto failed = agenda.take_first_delaunay(certificates, accept)) {
         at_own_time(failed->second);
         flip(failed->second, change, steps);
         ++flips_in_batch;
