@@ -20,6 +20,10 @@
 
 namespace medusa::kinetic::detail {
 
+constexpr VertexId infinite_vertex = -1;
+
+inline bool is_finite(const Simplex& s) { return s[0] != infinite_vertex; }
+
 using CellIndex = std::int32_t;
 constexpr CellIndex no_cell = -1;
 
@@ -81,6 +85,33 @@ public:
   VertexId apex_across(CellIndex c, int i) const { return vertex(neighbor(c, i), mirror_index(c, i)); }
   // The position of v among c's sorted vertices, -1 if it is not one.
   int index_of(CellIndex c, VertexId v) const;
+  // The index of the facet f of c: the position of c's one vertex off f (c must hold f).
+  int facet_index(CellIndex c, const Simplex& f) const {
+    for (int i = 0; i <= D; ++i)
+      if (!f.contains(vertex(c, i)))
+        return i;
+    return -1;
+  }
+  // The two apices of c's i-th facet (the vertices completing it to its two top simplices): c's own
+  // first, then the one across; with each, the orientation of its top simplex. This is all a facet's
+  // certificates read of the triangulation (docs/MATH.md §3.2).
+  struct Apices {
+    std::array<VertexId, 2> v{};
+    std::array<signed char, 2> orientation{};
+    // The orientation of the top simplex of the facet and apex; 0 when apex is not one.
+    int orientation_with(VertexId apex) const {
+      return apex == v[0] ? orientation[0] : apex == v[1] ? orientation[1] : 0;
+    }
+    bool has(VertexId apex) const { return apex == v[0] || apex == v[1]; }
+  };
+  Apices apices(CellIndex c, int i) const {
+    const CellIndex n = neighbor(c, i);
+    const Cell& other = cells_[index(n)];
+    int j = 0;
+    while (other.n[slot(j)] != c)
+      ++j;
+    return {{vertex(c, i), other.v[slot(j)]}, {cells_[index(c)].orientation, other.orientation}};
+  }
   int orientation(CellIndex c) const { return cells_[index(c)].orientation; }
   void set_orientation(CellIndex c, int orientation);
   // The certificate id of c's i-th facet (-1: none), held by both cells of the facet.
@@ -94,6 +125,23 @@ public:
   }
   // The cell whose vertices are t's, no_cell if t is not a top simplex.
   CellIndex find(const Simplex& t) const;
+  // A cell containing every vertex of s (s non-empty), no_cell if there is none: s is a face of the
+  // triangulation iff there is one.
+  CellIndex cell_containing(const Simplex& s) const {
+    CellIndex found = no_cell;
+    walk_star(s, [&](CellIndex c) {
+      found = c;
+      return true;
+    });
+    return found;
+  }
+  // One more than the largest cell index in use: indices of living cells are below it.
+  std::size_t capacity() const { return cells_.size(); }
+  // Every facet forgets its certificate id (a frame builds them all again, docs/MATH.md §2.3).
+  void clear_certs() {
+    for (Cell& cell : cells_)
+      cell.cert.fill(-1);
+  }
   // Calls f(c) for every cell c containing every vertex of s (s non-empty), by a walk over the star
   // of one vertex of s (a finite one when s has one: the infinite vertex's star is the whole hull).
   // f must not start another walk.

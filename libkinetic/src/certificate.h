@@ -29,10 +29,10 @@ struct Certificate {
   bool alive = false;
   Substitute substitute = Substitute::none;
   // A Delaunay certificate's facet as (cell, index) in the triangulation held as cells
-  // (cell_triangulation.h): one of the facet's two cells, and the facet's index there (the position
-  // of the cell's vertex off the facet). Kept where the cells are (engine/cell_mirror.h), so that the
-  // facet is reached from its certificate without a look-up by vertex ids; -1 elsewhere. Placed
-  // beside the flags, it leaves the record at 32 bytes.
+  // (cell_triangulation.h): the cell of the facet's first apex (Engine::install_touched_facets), and
+  // the facet's index there (the position of the cell's vertex off the facet), so that the facet and
+  // its apices are reached from the certificate without a look-up by vertex ids; -1 for a radius
+  // certificate. Placed beside the flags, it leaves the record at 32 bytes.
   std::int8_t facet_index = 0;
   Simplex key; // the facet (delaunay) or the finite face (radius)
   std::uint32_t version = 0;

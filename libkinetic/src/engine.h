@@ -14,7 +14,6 @@
 #include "root_cache.h"
 #include "static_delaunay.h"
 #include "touched_faces.h"
-#include "triangulation.h"
 
 #include "algebraic_time.h"
 #include "certificate_enclosure.h"
@@ -85,18 +84,22 @@ private:
   std::shared_ptr<SlabMotion> motion; // shared with the roots isolated in this slab (root_cache.h)
   std::vector<char> alive;
 
-  // Del(now+) and the alpha-complex state of its finite simplices.
-  detail::Triangulation tri;
+  // Del(now+), held as cells (cell_triangulation.h), and the alpha-complex state of its finite
+  // simplices. Each Delaunay certificate names the cell and facet index of its facet
+  // (Certificate::cell): the cell of the facet's first apex, the one whose top simplex was there
+  // first, or the first of two made by one change (Engine::install_touched_facets).
+  CellTriangulation<dim> cells;
+  using Apices = typename CellTriangulation<dim>::Apices;
   FaceStates faces;                       // finite simplices of dimension 1..dim in Del (face_states.h)
-  std::vector<int> dropped_certs_scratch; // certificates of facets that left Del (remove_top)
-  // With the audit on, the same triangulation held as cells (cell_triangulation.h), changed beside
-  // `tri` at each change and compared with it at each audit (engine/cell_mirror.h): the structure the
-  // engine moves to, checked on every event stream the audit sees. Null without the audit.
-  std::unique_ptr<CellTriangulation<dim>> cell_mirror;
-  // The cells the mirror's last change made: the certificates installed after a change are those of
-  // their facets, found here rather than by a walk (Engine::mirror_cert).
-  std::vector<CellIndex> mirror_created;
-  bool mirror_created_sorted = false; // in the order of their top simplices
+  std::vector<int> dropped_certs_scratch; // certificates of facets that left Del
+  // The cells the last change of the triangulation made, in the order of its added top simplices:
+  // its facets' certificates are theirs, and every face it touched that stays in Del is a face of
+  // one of them. created_position[c] is c's position there during a large change, -1 otherwise.
+  std::vector<CellIndex> created_cells;
+  std::vector<int> created_position;
+  std::vector<int> orientation_scratch;                                     // apply_top_change's
+  std::vector<std::pair<Simplex, std::pair<CellIndex, int>>> facet_scratch; // install_touched_facets'
+  std::vector<Simplex> coface_scratch;                                      // resolve_radius's
 
   // Certificates and their failure times (certificate_pool.h).
   CertificatePool certificates;
@@ -143,10 +146,10 @@ private:
   }
 
   // Delaunay certificate of a facet, positive while valid (docs/MATH.md §3.1, §3.2; in the plane a facet
-  // is an edge between two triangles).
-  template <class NT> Poly<NT> delaunay_poly(const Simplex& facet) const {
-    const detail::Triangulation::Apices* ap = tri.apices(facet);
-    const VertexId p = ap->v[0], q = ap->v[1];
+  // is an edge between two triangles): c's i-th facet, c the cell of its first apex.
+  template <class NT> Poly<NT> delaunay_poly(const Simplex& facet, CellIndex c, int i) const {
+    const Apices ap = cells.apices(c, i);
+    const VertexId p = ap.v[0], q = ap.v[1];
     if (is_finite(facet)) {
       if (p == infinite_vertex || q == infinite_vertex) {
         // Case A: the orientation of the finite top simplex on the hull facet; it fails when the
@@ -154,42 +157,44 @@ private:
         const VertexId z = p == infinite_vertex ? q : p;
         const auto seq = K::join(facet, z);
         const Poly<NT> o = K::template orientation<NT>(seq, moving());
-        return orientation_of(seq.data(), K::top_size, *ap, z) > 0 ? o : -o;
+        return orientation_of(seq.data(), K::top_size, ap, z) > 0 ? o : -o;
       }
       // In-sphere (in-circle), positive while q is strictly outside the circumsphere of facet + p.
       const auto seq = K::join(facet, p);
       const Poly<NT> s = K::template in_sphere<NT>(seq, q, moving());
-      return orientation_of(seq.data(), K::top_size, *ap, p) * K::outside_sign > 0 ? s : -s;
+      return orientation_of(seq.data(), K::top_size, ap, p) * K::outside_sign > 0 ? s : -s;
     }
     // Case B: the infinite facet [-1 r] over the hull ridge r, between [-1 r p] and [-1 r q]: hull
-    // facet r + p, apex z of the finite top simplex below it; the certificate O(r, p, q) oriented so
-    // that O(r, p, z) > 0 (the hull is convex at r while q is on z's side of r + p).
+    // facet r + p (c's facet without the infinite vertex), apex z of the finite top simplex below
+    // it; the certificate O(r, p, q) oriented so that O(r, p, z) > 0 (the hull is convex at r while
+    // q is on z's side of r + p).
     const Simplex ridge = facet.facet(0);
-    const detail::Triangulation::Apices& hull = tri.two_sided(ridge.with(p));
-    const VertexId z = hull.v[0] == infinite_vertex ? hull.v[1] : hull.v[0];
+    const Apices hull = cells.apices(c, cells.index_of(c, infinite_vertex));
+    const VertexId z = hull.v[1];
     const auto seq = K::join(ridge, p, z);
     const Poly<NT> o = K::template orientation<NT>(K::join(ridge, p, q), moving());
     return orientation_of(seq.data(), K::top_size, hull, z) > 0 ? o : -o;
   }
 
-  // The in-sphere (in-circle) certificate of a facet with two finite apices, enclosed from one pass
-  // in plain doubles (certificate_enclosure.h); false for the orientation certificates at the hull.
-  bool delaunay_enclosure(const Simplex& facet, IntervalPoly& f) const {
-    const detail::Triangulation::Apices* ap = tri.apices(facet);
-    const VertexId p = ap->v[0], q = ap->v[1];
+  // The in-sphere (in-circle) certificate of c's i-th facet with two finite apices, enclosed from
+  // one pass in plain doubles (certificate_enclosure.h); false for the orientation certificates at
+  // the hull.
+  bool delaunay_enclosure(const Simplex& facet, CellIndex c, int i, IntervalPoly& f) const {
+    const Apices ap = cells.apices(c, i);
+    const VertexId p = ap.v[0], q = ap.v[1];
     if (!is_finite(facet) || p == infinite_vertex || q == infinite_vertex)
       return false;
     const auto seq = K::join(facet, p);
     f = K::in_sphere_enclosure(seq, q, moving());
-    if (orientation_of(seq.data(), K::top_size, *ap, p) * K::outside_sign < 0)
+    if (orientation_of(seq.data(), K::top_size, ap, p) * K::outside_sign < 0)
       f = -f;
     return true;
   }
 
-  // At a hull ridge whose certificate vanishes at now: whether its facets are folded onto each other
-  // at now around a top simplex that is not flat then, so that the triangulation is not embedded
-  // just after now (engine/certificates.h).
-  bool hull_ridge_folded_at_now(const Simplex& facet);
+  // At a hull ridge (c's i-th facet) whose certificate vanishes at now: whether its facets are folded
+  // onto each other at now around a top simplex that is not flat then, so that the triangulation is
+  // not embedded just after now (engine/certificates.h).
+  bool hull_ridge_folded_at_now(const Simplex& facet, CellIndex c, int i);
 
   // Whether the hull facets ridge + p and ridge + q are folded onto each other (KineticTraits::fold).
   // `at` gives the points: moving (pt) for the polynomial, at now's enclosure (points_at_now) for its
@@ -201,10 +206,10 @@ private:
   template <class NT> Poly<NT> fold_poly(const Simplex& ridge, VertexId p, VertexId q) const {
     return fold_poly<NT>(ridge, p, q, moving());
   }
-  // The hull facets at the ridge of the infinite facet [-1 a b] ([-1 a]).
-  template <class NT> Poly<NT> fold_poly(const Simplex& facet) const {
-    const detail::Triangulation::Apices* ap = tri.apices(facet);
-    return fold_poly<NT>(facet.facet(0), ap->v[0], ap->v[1]);
+  // The hull facets at the ridge of the infinite facet [-1 a b] ([-1 a]), c's i-th.
+  template <class NT> Poly<NT> hull_fold_poly(const Simplex& facet, CellIndex c, int i) const {
+    const Apices ap = cells.apices(c, i);
+    return fold_poly<NT>(facet.facet(0), ap.v[0], ap.v[1]);
   }
 
   // The orientation polynomial of a finite top simplex (a tetrahedron, a triangle in 2D); `at` gives
@@ -218,16 +223,16 @@ private:
 
   // For a finite facet with two finite apices: the product of its two top simplices' orientations,
   // each signed by its recorded orientation, positive while both keep it (Substitute::cell_orientations).
-  template <class NT> Poly<NT> cell_orientations_poly(const Simplex& facet) const {
-    const detail::Triangulation::Apices* ap = tri.apices(facet);
+  template <class NT> Poly<NT> cell_orientations_poly(const Simplex& facet, CellIndex c, int i) const {
+    const Apices ap = cells.apices(c, i);
     Poly<NT> f(NT(1));
     for (int k = 0; k < 2; ++k) {
       std::array<VertexId, 4> w{};
-      w[0] = ap->v[static_cast<std::size_t>(k)];
+      w[0] = ap.v[static_cast<std::size_t>(k)];
       std::copy(facet.begin(), facet.end(), w.begin() + 1);
       const Simplex t = Simplex::from_range(w.begin(), w.begin() + 1 + facet.size());
       const Poly<NT> o = orientation_poly<NT>(t);
-      f = f * (ap->orientation[static_cast<std::size_t>(k)] > 0 ? o : -o);
+      f = f * (ap.orientation[static_cast<std::size_t>(k)] > 0 ? o : -o);
     }
     return f;
   }
@@ -247,7 +252,7 @@ private:
   // wider. False for the orientation certificates at the hull.
   bool cert_enclosure(const Certificate& c, IntervalPoly& f) const {
     if (c.kind == CertKind::delaunay)
-      return c.substitute == Substitute::none && delaunay_enclosure(c.key, f);
+      return c.substitute == Substitute::none && delaunay_enclosure(c.key, c.cell, c.facet_index, f);
     if (!radius_enclosure(c.key, f))
       return false;
     if (faces.at(c.key).is_short)
@@ -298,8 +303,7 @@ private:
 
   // ------------------------------------ certificates and their scheduling (engine/certificates.h)
 
-  int orientation_of(const VertexId* seq, std::size_t n, const Triangulation::Apices& ap,
-                     VertexId apex) const;
+  int orientation_of(const VertexId* seq, std::size_t n, const Apices& ap, VertexId apex) const;
   int orientation_sign_plus(const Simplex& t);
   bool flat_without_turning_at_now(const Simplex& t);  // engine/certificates.h
   int orientation_sign_before_frame(const Simplex& t); // 0: none at the previous frame
@@ -331,8 +335,10 @@ private:
   CacheKey cache_key(const Certificate& c) const;
   void mark_invalid(int id);
   void retire_all_certs();
-  void install_facet(const Simplex& facet);
-  void install_facet(const Simplex& facet, detail::Triangulation::Apices& ap); // ap: facet's record
+  // The Delaunay certificate of c's i-th facet, built anew (c: the cell of its first apex); of a
+  // facet by its vertices (nothing when it is not in Del).
+  void install_facet(CellIndex c, int i);
+  void install_facet_at(const Simplex& facet);
   void install_radius(const Simplex& s) { install_radius(s, faces.at(s)); }
   void install_radius(const Simplex& s, Face& f, Interval* at_now = nullptr); // f: s's state
   bool compute_short(const Simplex& s);
@@ -340,10 +346,11 @@ private:
   // ------------------------------------ Del changes, frontier, membership (engine/membership.h)
 
   bool in_k(const Simplex& s) const { return faces.in_k(s, alive); }
-  // Replaces top simplices and records the old membership of every touched simplex in old_k, when
-  // given.
-  void change_tops(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                   OldMembership* old_k, const int* added_orientations = nullptr);
+  // Replaces top simplices (removed_cells: their cells, in the same order) and records the old
+  // membership of every touched simplex in old_k, when given.
+  void change_tops(const std::vector<Simplex>& removed, const std::vector<CellIndex>& removed_cells,
+                   const std::vector<Simplex>& added, OldMembership* old_k,
+                   const int* added_orientations = nullptr);
   // A flip, when the change is one (Engine::flip): the cell holding the flipped facet, named by the
   // facet's certificate (Certificate::cell), the facet's index there, and the change.
   struct HeldFlip {
@@ -355,29 +362,48 @@ private:
   // entry is held in touched_scratch throughout (the flags, counts and frontier rules read only
   // touched faces and their facets, which are touched too). apply_top_change keeps the faces that
   // leave Del, with no top simplex, until finish_top_change erases them (erasing moves entries);
-  // settle_touched re-evaluates membership in between. held_flip, for a flip, lets the cells make it
-  // on the held cell. The Delaunay certificates of the changed top simplices' facets are installed
-  // by install_touched_facets, which reads only the triangulation: a flip calls it before
+  // settle_touched re-evaluates membership in between. held_flip, for a flip, makes it on the held
+  // cell (removed_cells is then not read). The Delaunay certificates of the new cells' facets are
+  // installed by install_touched_facets, which reads only the triangulation: a flip calls it before
   // settle_touched, change_tops after finish_top_change, once the touched faces are let go.
-  void apply_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                        const int* added_orientations, const HeldFlip* held_flip = nullptr);
+  void apply_top_change(const std::vector<Simplex>& removed, const std::vector<CellIndex>& removed_cells,
+                        const std::vector<Simplex>& added, const int* added_orientations,
+                        const HeldFlip* held_flip = nullptr);
+  // The flip of a held change on the cells, its new cells in created_cells in the order of `added`.
+  void flip_cells(const HeldFlip& held_flip, const std::vector<Simplex>& added,
+                  const std::vector<int>& orientations, std::vector<int>& dropped);
   void install_touched_facets();
   void settle_touched(Step& step);
   void finish_top_change();
-  // The changes of `tri` made again on cell_mirror, if there is one (engine/cell_mirror.h): the top
-  // simplices replaced, with the added ones' orientations and the certificate ids `tri` dropped
-  // (the mirror must drop the same: in the same order, or for a flip, made on the held cell, the
-  // same set); a facet's certificate id; an orientation.
-  void mirror_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                         const std::vector<int>& orientations, const std::vector<int>& dropped,
-                         const HeldFlip* held_flip);
-  void mirror_flip(const HeldFlip& held_flip, const std::vector<Simplex>& added,
-                   const std::vector<int>& orientations, const std::vector<int>& dropped);
-  void mirror_cert(const Simplex& facet, const std::array<VertexId, 2>& apices, int id);
-  void mirror_orientation(const Simplex& t, int orientation);
-  // The first difference between cell_mirror and `tri` (top simplices, orientations, apices and
-  // certificate ids of every facet), or the mirror's own first violation; empty if none.
-  std::string mirror_difference() const;
+
+  // ------------------------------------ look-ups in the triangulation by vertices (engine/cells.h)
+
+  // A cell holding the simplex s, no_cell when s is not in Del: among the cells of the last change
+  // first (the faces a change touches are theirs), then by a walk round a vertex of s.
+  CellIndex cell_holding(const Simplex& s) const;
+  // The cell and index naming the facet (c, i) in its certificate: the cell of its first apex.
+  std::pair<CellIndex, int> facet_owner(CellIndex c, int i) const;
+  bool has_top(const Simplex& t) const { return cells.find(t) != no_cell; }
+  // The apex across the facet f from its apex `apex` (f + apex must be a top simplex).
+  VertexId other_apex(const Simplex& f, VertexId apex) const;
+  // Calls f(t) for every top simplex t containing s; f must not walk the triangulation itself.
+  template <class F> void for_each_top_containing(const Simplex& s, F&& f) const {
+    cells.for_each_cell_containing(s, [&](CellIndex c) { f(cells.top(c)); });
+  }
+  std::vector<Simplex> tops_containing(const Simplex& s) const {
+    std::vector<Simplex> result;
+    for_each_top_containing(s, [&](const Simplex& t) { result.push_back(t); });
+    return result;
+  }
+  // The finite (k+1)-cofaces of a finite k-simplex s, sorted, each once.
+  void finite_cofaces(const Simplex& s, std::vector<Simplex>& out) const;
+  // The top simplices of Del, in cell order.
+  std::vector<Simplex> all_tops() const {
+    std::vector<Simplex> tops;
+    tops.reserve(cells.size());
+    cells.for_each_cell([&](CellIndex c) { tops.push_back(cells.top(c)); });
+    return tops;
+  }
   bool is_short(const Simplex& s) const { return faces.is_short(s); }
   // The state of a face of Del, or nullptr: from the table, or from the faces touched by the change
   // being applied.
@@ -405,7 +431,7 @@ private:
 
   void flip(int cert, const FlipChange& change, std::vector<Step>& steps); // cert: the failed facet's
   void repair(std::vector<Step>& steps);
-  bool flippable(const Simplex& facet, FlipChange& change);
+  bool flippable(int cert, FlipChange& change); // cert: the failed facet's
   void resolve_delaunay(std::vector<Step>& steps);
   void resolve_radius(Step& settle, OldMembership& old_k);
   void resolve_touches(OldMembership& old_k);
@@ -427,13 +453,15 @@ private:
   std::vector<VertexId> alive_ids() const;
   // old_k, when given, receives the membership before the change of every simplex it touched.
   void rebuild_static(OldMembership* old_k);
-  void reorient_kept(const std::vector<Simplex>& kept); // top simplices the rebuild kept
+  void reorient_kept(const std::vector<CellIndex>& kept); // the cells the rebuild kept
+  // After a change: the added top simplices are created_cells'.
   void reinstall_hull_ridges_over(const std::vector<Simplex>& added, const std::vector<Simplex>& removed);
-  // Calls f on the infinite facets over the ridges of f_hull when it is a hull facet: the hull
-  // ridges whose certificates are oriented by the top simplex below f_hull (docs/MATH.md §3.2 case B).
-  template <class F> void for_each_hull_ridge_over(const Simplex& f_hull, F&& f) const {
-    if (tri.two_sided(f_hull).orientation_slot(infinite_vertex) < 0)
+  // Calls f on the infinite facets over the ridges of c's i-th facet when it is a hull facet: the hull
+  // ridges whose certificates are oriented by the top simplex below it (docs/MATH.md §3.2 case B).
+  template <class F> void for_each_hull_ridge_over(CellIndex c, int i, F&& f) const {
+    if (!cells.apices(c, i).has(infinite_vertex))
       return;
+    const Simplex f_hull = cells.facet(c, i);
     for (std::size_t j = 0; j < f_hull.size(); ++j)
       f(f_hull.facet(j).with(infinite_vertex));
   }
@@ -476,14 +504,14 @@ private:
   // The top simplices to remove and add (with the orientations sign^+ of the added ones, 0 for
   // infinite ones) for inserting or deleting v at now; false, with nothing changed, where a predicate
   // vanishes for the whole slab or a check fails, and the caller rebuilds statically.
-  bool insert_locally(VertexId v, std::vector<Simplex>& removed, std::vector<Simplex>& added,
+  bool insert_locally(VertexId v, std::vector<CellIndex>& removed, std::vector<Simplex>& added,
                       std::vector<int>& orientations);
-  bool delete_locally(VertexId v, std::vector<Simplex>& removed, std::vector<Simplex>& added,
+  bool delete_locally(VertexId v, std::vector<CellIndex>& removed, std::vector<Simplex>& added,
                       std::vector<int>& orientations);
   bool record_local_change(Step& step, OldMembership& old_k, VertexId v, bool insert);
-  int in_conflict_just_after(const Simplex& t, VertexId v);
+  int in_conflict_just_after(CellIndex c, VertexId v);
   int facet_side_just_after(const Simplex& f, VertexId x);
-  bool find_conflict(VertexId v, Simplex& seed);
+  bool find_conflict(VertexId v, CellIndex& seed);
 
   // ------------------------------------ the run (engine/run.h)
 
@@ -511,11 +539,11 @@ private:
 template <class K> template <class NT> Poly<NT> Engine<K>::cert_poly(const Certificate& c) const {
   if (c.kind == CertKind::delaunay) {
     switch (c.substitute) {
-    case Substitute::hull_fold: return -fold_poly<NT>(c.key);
-    case Substitute::cell_orientations: return cell_orientations_poly<NT>(c.key);
+    case Substitute::hull_fold: return -hull_fold_poly<NT>(c.key, c.cell, c.facet_index);
+    case Substitute::cell_orientations: return cell_orientations_poly<NT>(c.key, c.cell, c.facet_index);
     case Substitute::none: break;
     }
-    return delaunay_poly<NT>(c.key);
+    return delaunay_poly<NT>(c.key, c.cell, c.facet_index);
   }
   Poly<NT> f = radius_poly<NT>(c.key, pick(P, Pi, NT()), pick(Q, Qi, NT()));
   // Positive while valid: -f while short, +f while long (docs/MATH.md §3.1).

@@ -1,6 +1,6 @@
 // The engine of 3D runs: every part of engine/ instantiated with KineticTraits3.
 #include "engine/audit.h"
-#include "engine/cell_mirror.h"
+#include "engine/cells.h"
 #include "engine/certificates.h"
 #include "engine/collisions.h"
 #include "engine/degenerate_groups.h"

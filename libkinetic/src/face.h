@@ -2,8 +2,8 @@
 // and the enumeration of the finite faces of a simplex.
 #pragma once
 
+#include "cell_triangulation.h"
 #include "medusa/kinetic/simplex.h"
-#include "triangulation.h"
 
 #include <array>
 #include <cstddef>

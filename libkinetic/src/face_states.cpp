@@ -1,5 +1,6 @@
 #include "face_states.h"
 
+#include <set>
 #include <sstream>
 #include <unordered_set>
 
@@ -15,11 +16,15 @@ std::string named(const char* what, const Simplex& s) {
 
 } // namespace
 
-std::string FaceStates::first_violation(const Triangulation& tri, const std::vector<char>& alive) const {
+template <int D>
+std::string FaceStates::first_violation(const CellTriangulation<D>& cells,
+                                        const std::vector<char>& alive) const {
   const auto short_facet = [&](const Simplex& x) { return is_short(x); };
   std::unordered_set<Simplex, SimplexHash> del_faces;
   std::string violation;
-  for (const Simplex& t : tri.tops())
+  std::vector<Simplex> tops;
+  cells.for_each_cell([&](CellIndex c) { tops.push_back(cells.top(c)); });
+  for (const Simplex& t : tops)
     for_each_face(t, [&](const Simplex& s) {
       if (!violation.empty() || s.size() == 1 || !del_faces.insert(s).second)
         return;
@@ -28,12 +33,22 @@ std::string FaceStates::first_violation(const Triangulation& tri, const std::vec
         violation = named("of Del is not recorded", s);
         return;
       }
-      if (f->tops != static_cast<int>(tri.tops_containing(s).size())) {
+      int containing = 0;
+      std::set<Simplex> cofaces; // finite, each once
+      cells.for_each_cell_containing(s, [&](CellIndex c) {
+        ++containing;
+        const Simplex t = cells.top(c);
+        if (is_finite(t))
+          for (VertexId v : t)
+            if (!s.contains(v))
+              cofaces.insert(s.with(v));
+      });
+      if (f->tops != containing) {
         violation = named("of Del has a wrong count of top simplices", s);
         return;
       }
       int short_cofaces = 0, k_cofaces = 0;
-      for (const Simplex& c : tri.finite_cofaces(s)) {
+      for (const Simplex& c : cofaces) {
         short_cofaces += is_short(c);
         k_cofaces += in_k(c, alive);
       }
@@ -59,5 +74,8 @@ std::string FaceStates::first_violation(const Triangulation& tri, const std::vec
     violation = "a simplex not in Del is still recorded";
   return violation;
 }
+
+template std::string FaceStates::first_violation(const CellTriangulation<2>&, const std::vector<char>&) const;
+template std::string FaceStates::first_violation(const CellTriangulation<3>&, const std::vector<char>&) const;
 
 } // namespace medusa::kinetic::detail

@@ -10,10 +10,10 @@
 // short and its facets are in K; exactly the frontier simplices hold a radius certificate.
 #pragma once
 
+#include "cell_triangulation.h"
 #include "face.h"
 #include "medusa/kinetic/flat_simplex_map.h"
 #include "medusa/kinetic/simplex.h"
-#include "triangulation.h"
 
 #include <cstddef>
 #include <string>
@@ -112,7 +112,8 @@ public:
   }
 
   // The first of the invariants above that fails, or an empty string; alive[v]: is cell v alive.
-  std::string first_violation(const Triangulation& tri, const std::vector<char>& alive) const;
+  template <int D>
+  std::string first_violation(const CellTriangulation<D>& cells, const std::vector<char>& alive) const;
 
 private:
   FlatSimplexMap<Face> states_;

@@ -11,10 +11,10 @@
 // at one time enclosure (its value there), as in certificate_polynomials.h.
 #pragma once
 
+#include "cell_triangulation.h"
 #include "certificate_enclosure.h"
 #include "certificate_polynomials.h"
 #include "medusa/kinetic/simplex.h"
-#include "triangulation.h"
 
 #include <array>
 #include <cstddef>
@@ -76,12 +76,14 @@ template <> struct KineticTraits<3> : KineticTraitsBase<3> {
   }
   // The flip of `facet` whose apices are p and q: a 3-2 flip when an edge of the facet has exactly
   // the three tetrahedra facet+p, facet+q and edge+p+q; otherwise the 2-3 flip of the facet.
-  static FlipChange flip(const Simplex& facet, VertexId p, VertexId q, const Triangulation& tri) {
+  // has_top(t): is the tetrahedron t in the triangulation.
+  template <class HasTop>
+  static FlipChange flip(const Simplex& facet, VertexId p, VertexId q, HasTop&& has_top) {
     FlipChange c;
     for (std::size_t i = 0; i < 3; ++i) {
       Simplex e = facet.facet(i);
       Simplex t{e[0], e[1], p, q};
-      if (tri.has_top(t)) {
+      if (has_top(t)) {
         c.three_two = true;
         c.edge = e;
         c.z = facet[i];
@@ -127,7 +129,7 @@ template <> struct KineticTraits<2> : KineticTraitsBase<2> {
                                 certificate::difference<NT>(at(ridge[0]), at(q)));
   }
   // The 2-2 flip of edge xy: the triangles xyp, xyq become pqx, pqy.
-  static FlipChange flip(const Simplex& facet, VertexId p, VertexId q, const Triangulation&) {
+  template <class HasTop> static FlipChange flip(const Simplex& facet, VertexId p, VertexId q, HasTop&&) {
     FlipChange c;
     c.removed = {Simplex{facet[0], facet[1], p}, Simplex{facet[0], facet[1], q}};
     c.added = {Simplex{p, q, facet[0]}, Simplex{p, q, facet[1]}};

@@ -1,7 +1,7 @@
 #include "touched_faces.h"
 
+#include "cell_triangulation.h"
 #include "face.h"
-#include "triangulation.h"
 
 #include <algorithm>
 #include <array>

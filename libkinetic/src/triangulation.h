@@ -6,6 +6,7 @@
 // operations, docs/MATH.md §4.5).
 #pragma once
 
+#include "cell_triangulation.h"
 #include "medusa/kinetic/flat_simplex_map.h"
 #include "medusa/kinetic/simplex.h"
 
@@ -15,10 +16,6 @@
 #include <vector>
 
 namespace medusa::kinetic::detail {
-
-constexpr VertexId infinite_vertex = -1;
-
-inline bool is_finite(const Simplex& s) { return s[0] != infinite_vertex; }
 
 class Triangulation {
 public:

@@ -2,8 +2,8 @@
 // triangulation: on the augmented triangulation of one tetrahedron (one triangle in the plane) whose
 // every simplex is short and in K, the counts worked out by hand pass, and each way of breaking them
 // is named.
+#include "cell_triangulation.h"
 #include "face_states.h"
-#include "triangulation.h"
 
 #include <catch2/catch.hpp>
 
@@ -15,17 +15,28 @@ using namespace medusa::kinetic::detail;
 
 namespace {
 
+template <int D> CellTriangulation<D> augmented(const Simplex& top) {
+  std::vector<typename CellTriangulation<D>::NewTop> tops{{top, 1}};
+  for (std::size_t i = 0; i < top.size(); ++i)
+    tops.push_back({top.facet(i).with(infinite_vertex), 0});
+  CellTriangulation<D> cells;
+  cells.assign(tops);
+  return cells;
+}
+
 struct Fixture {
-  Triangulation tri;
+  CellTriangulation<2> planar;
+  CellTriangulation<3> spatial;
   FaceStates faces;
   std::vector<char> alive;
 
   // The top simplex `top` and the infinite vertex over each of its facets; every finite simplex
   // short and in K, so that only the top simplex is on the frontier (it holds certificate 0).
   explicit Fixture(const Simplex& top) : alive(top.size(), 1) {
-    tri.add_top(top, 1);
-    for (std::size_t i = 0; i < top.size(); ++i)
-      tri.add_top(top.facet(i).with(infinite_vertex), 0);
+    if (top.size() == 3)
+      planar = augmented<2>(top);
+    else
+      spatial = augmented<3>(top);
     const std::size_t n = top.size();
     for_each_face(top, [&](const Simplex& s) {
       if (s.size() == 1)
@@ -40,7 +51,9 @@ struct Fixture {
       f.cert = s.size() == n ? 0 : -1;
     });
   }
-  std::string violation() const { return faces.first_violation(tri, alive); }
+  std::string violation() const {
+    return alive.size() == 3 ? faces.first_violation(planar, alive) : faces.first_violation(spatial, alive);
+  }
 };
 
 bool names(const std::string& violation, const char* what) {

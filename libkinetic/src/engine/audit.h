@@ -26,23 +26,34 @@ template <class K> void Engine<K>::audit_failure(const std::string& what) const 
 
 template <class K> void Engine<K>::audit() {
   ++stats.audits;
-  // Each part's own invariants (certificate_pool.h, batch_agenda.h, triangulation.h, face_states.h),
-  // then those between the parts, first: they need no time q, and the checks at q read the
-  // triangulation's records. The audit runs between batches.
+  // Each part's own invariants (certificate_pool.h, batch_agenda.h, cell_triangulation.h,
+  // face_states.h), then those between the parts, first: they need no time q, and the checks at q
+  // read the triangulation. The audit runs between batches.
   if (std::string v = certificates.first_violation(); !v.empty())
     audit_failure(v);
   if (std::string v = agenda.first_violation(certificates, true); !v.empty())
     audit_failure(v);
-  if (std::string v = tri.first_violation(dim); !v.empty())
-    audit_failure(v);
-  if (std::string v = mirror_difference(); !v.empty())
-    audit_failure(v);
-  if (std::string v = faces.first_violation(tri, alive); !v.empty())
+  if (std::string v = cells.first_violation(); !v.empty())
+    audit_failure("cell triangulation: " + v);
+  if (std::string v = faces.first_violation(cells, alive); !v.empty())
     audit_failure(v);
   for (std::size_t i = 0; i < alive.size(); ++i)
-    if (tri.tops_of(static_cast<VertexId>(i)).empty() == bool(alive[i]))
+    if ((cells.cell_of(static_cast<VertexId>(i)) == no_cell) == bool(alive[i]))
       audit_failure("cell " + std::to_string(i) +
                     (alive[i] ? " is alive but not in" : " is dead but still in") + " the triangulation");
+  // Every Delaunay certificate names a living cell holding its facet, which holds its id.
+  for (int id = 0; id < static_cast<int>(certificates.size()); ++id) {
+    const Certificate& cert = certificates[id];
+    if (!cert.alive || cert.kind != CertKind::delaunay)
+      continue;
+    const CellIndex c = cert.cell;
+    if (!cells.alive(c) || cert.facet_index < 0 || cert.facet_index > dim ||
+        cells.cert(c, cert.facet_index) != id || cells.facet(c, cert.facet_index) != cert.key) {
+      std::ostringstream os;
+      os << "certificate " << id << " of facet " << cert.key << " names a cell that does not hold it";
+      audit_failure(os.str());
+    }
+  }
   // A rational time strictly between now and the next event (or the slab end).
   const SlabTime upper = certificates.earliest_time(SlabTime(Rational(1)));
   if (!(now < upper))
@@ -52,9 +63,17 @@ template <class K> void Engine<K>::audit() {
   // crossing it (a tangential root, docs/MATH.md §3.9): move q towards now until none vanishes there. The
   // signs at q (0 only for identically-zero polynomials) serve the checks below.
   std::vector<std::pair<Simplex, ExactPoly>> delaunay_polys, radius_polys;
+  std::vector<std::pair<CellIndex, int>> facet_cells; // of delaunay_polys, each the cell of its first apex
   mpz_class p = P, qq = Q;
-  for (const auto& kv : tri.facets())
-    delaunay_polys.emplace_back(kv.first, to_exact_poly(delaunay_poly<mpz_class>(kv.first)));
+  cells.for_each_cell([&](CellIndex c) {
+    for (int i = 0; i <= dim; ++i)
+      if (c < cells.neighbor(c, i)) {
+        const auto [owner, j] = facet_owner(c, i);
+        const Simplex facet = cells.facet(owner, j);
+        facet_cells.emplace_back(owner, j);
+        delaunay_polys.emplace_back(facet, to_exact_poly(delaunay_poly<mpz_class>(facet, owner, j)));
+      }
+  });
   faces.for_each([&](const Simplex& s, const Face&) {
     radius_polys.emplace_back(s, to_exact_poly(radius_poly<mpz_class>(s, p, qq)));
   });
@@ -88,8 +107,10 @@ template <class K> void Engine<K>::audit() {
       os << "facet " << facet << " is not locally Delaunay";
       audit_failure(os.str());
     }
-    const detail::Triangulation::Apices* ap = tri.apices(facet);
-    if (ap == nullptr || ap->cert < 0 || !certificates[ap->cert].alive || certificates[ap->cert].key != facet)
+    const int id = cells.cert(facet_cells[i].first, facet_cells[i].second);
+    if (id < 0 || !certificates[id].alive || certificates[id].key != facet ||
+        certificates[id].cell != facet_cells[i].first ||
+        certificates[id].facet_index != facet_cells[i].second)
       audit_failure("a facet has no certificate");
   }
   // Exactly those: a certificate left alive without its simplex would still fire.
@@ -125,8 +146,8 @@ template <class K> void Engine<K>::audit() {
   std::vector<Simplex> expected =
       detail::static_alpha_complex(dim, static_input(alive_ids()), q, rho2, cgal_tops);
   std::unordered_set<Simplex, SimplexHash> cgal_set(cgal_tops.begin(), cgal_tops.end());
-  bool same_triangulation = cgal_set.size() == tri.tops().size();
-  for (const Simplex& t : tri.tops())
+  bool same_triangulation = cgal_set.size() == cells.size();
+  for (const Simplex& t : all_tops())
     same_triangulation = same_triangulation && cgal_set.count(t);
   if (!same_triangulation) {
     // A degenerate (identically cospherical) group triangulated differently (docs/MATH.md §5.3): the
@@ -166,7 +187,9 @@ template <class K> void Engine<K>::audit_embedded(const Rational& q, const std::
   const auto volume = [&](const Simplex& t) { return value_at(orientation_poly<mpz_class>(t), q); };
   Rational ours(0), theirs(0);
   std::set<Simplex> our_hull, their_hull;
-  for (const Simplex& t : tri.tops()) {
+  std::vector<std::pair<Simplex, int>> tops;
+  cells.for_each_cell([&](CellIndex c) { tops.emplace_back(cells.top(c), cells.orientation(c)); });
+  for (const auto& [t, orientation] : tops) {
     if (!is_finite(t)) {
       our_hull.insert(t.facet(0));
       continue;
@@ -174,7 +197,7 @@ template <class K> void Engine<K>::audit_embedded(const Rational& q, const std::
     // Zero too is a failure: Del(q) has no flat top simplex, not even one flat for the whole slab
     // (the frame where one appears repairs it, Engine::top_simplex_turns_at_frame).
     const Rational v = volume(t);
-    if (CGAL::sign(v) != tri.orientation(t)) {
+    if (CGAL::sign(v) != orientation) {
       std::ostringstream os;
       os << "top simplex " << t << " is inside out or flat at the audit time";
       audit_failure(os.str());
@@ -198,8 +221,11 @@ template <class K> void Engine<K>::audit_embedded(const Rational& q, const std::
 // No cell lies strictly on the far side of the hull facet f's plane (line) at q from the apex of the
 // finite top simplex under f. Interval arithmetic at q first; exactly only where it cannot tell.
 template <class K> void Engine<K>::audit_supporting(const Rational& q, const Simplex& f) {
-  const detail::Triangulation::Apices& ap = tri.two_sided(f);
-  const VertexId z = ap.v[0] == infinite_vertex ? ap.v[1] : ap.v[0];
+  const CellIndex c = cells.find(f.with(infinite_vertex));
+  if (c == no_cell)
+    audit_failure("a hull facet has no infinite top simplex");
+  const VertexId z = cells.apex_across(c, 0); // the infinite vertex is c's first
+
   const auto side = [&](VertexId p) {
     {
       CGAL::Protect_FPU_rounding<true> guard;

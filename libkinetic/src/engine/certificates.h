@@ -37,8 +37,7 @@ int permutation_sign(const VertexId* seq, std::size_t n) {
 // The oriented sign of the sequence seq of n = dim + 1 vertices: a finite top simplex of Del, the
 // facet whose record is ap plus its apex `apex`.
 template <class K>
-int Engine<K>::orientation_of(const VertexId* seq, std::size_t n, const Triangulation::Apices& ap,
-                              VertexId apex) const {
+int Engine<K>::orientation_of(const VertexId* seq, std::size_t n, const Apices& ap, VertexId apex) const {
   const int sign = ap.orientation_with(apex);
   if (sign == 0) {
     std::ostringstream os;
@@ -162,10 +161,7 @@ template <class K> int Engine<K>::sign_after_own_root(const IntervalPoly& f, con
 template <class K> bool Engine<K>::is_hull_orientation(const Certificate& c) const {
   if (c.kind != CertKind::delaunay || c.substitute != Substitute::none)
     return false;
-  if (!is_finite(c.key))
-    return true;
-  const detail::Triangulation::Apices* ap = tri.apices(c.key);
-  return ap != nullptr && (ap->v[0] == infinite_vertex || ap->v[1] == infinite_vertex);
+  return !is_finite(c.key) || cells.apices(c.cell, c.facet_index).has(infinite_vertex);
 }
 
 template <class K> int Engine<K>::new_cert(CertKind kind, const Simplex& key) {
@@ -203,7 +199,7 @@ template <class K> void Engine<K>::count_built(const Certificate& c, bool enclos
 // has only if every top simplex round the ridge is flat at now and folded too; otherwise they wrap
 // round the ridge though every certificate may hold, and the ridge fails (docs/MATH.md §5.9). Where a
 // vertex lies on the ridge's line at now the angle is undefined, and nothing is concluded.
-template <class K> bool Engine<K>::hull_ridge_folded_at_now(const Simplex& facet) {
+template <class K> bool Engine<K>::hull_ridge_folded_at_now(const Simplex& facet, CellIndex c, int i) {
   const Simplex ridge = facet.facet(0);
   {
     // At now's enclosure first: most hull ridges are far from flat at now, and the new ridges of a
@@ -211,18 +207,18 @@ template <class K> bool Engine<K>::hull_ridge_folded_at_now(const Simplex& facet
     // side. Only the rest is decided exactly.
     CGAL::Protect_FPU_rounding<true> guard;
     const auto at = points_at_now();
-    const detail::Triangulation::Apices* ap = tri.apices(facet);
-    const VertexId p = ap->v[0], q = ap->v[1];
+    const Apices ap = cells.apices(c, i);
+    const VertexId p = ap.v[0], q = ap.v[1];
     const Interval o = K::template orientation<Interval>(K::join(ridge, p, q), at)[0];
     if (o.inf() > 0 || o.sup() < 0 || fold_poly<Interval>(ridge, p, q, at)[0].sup() < 0)
       return false;
   }
-  if (sign_at_now([&](auto tag) { return delaunay_poly<decltype(tag)>(facet); }) != 0)
+  if (sign_at_now([&](auto tag) { return delaunay_poly<decltype(tag)>(facet, c, i); }) != 0)
     return false;
-  if (sign_at_now([&](auto tag) { return fold_poly<decltype(tag)>(facet); }) <= 0)
+  if (sign_at_now([&](auto tag) { return hull_fold_poly<decltype(tag)>(facet, c, i); }) <= 0)
     return false;
   bool knife = true;
-  tri.for_each_top_containing(ridge, [&](const Simplex& t) {
+  for_each_top_containing(ridge, [&](const Simplex& t) {
     if (!knife || !is_finite(t))
       return;
     std::array<VertexId, 2> off{};
@@ -315,8 +311,7 @@ template <class K> void Engine<K>::settle_certificate(int id, bool counted, Inte
     // circle ..." in test_kinetic_engine.cpp and "planar: an isosceles trapezoid ..." in
     // test_kinetic_engine_2d.cpp).
     if (c.kind == CertKind::delaunay && is_finite(c.key) && c.substitute == Substitute::none) {
-      const detail::Triangulation::Apices* ap = tri.apices(c.key);
-      if (ap->v[0] != infinite_vertex && ap->v[1] != infinite_vertex) {
+      if (!cells.apices(c.cell, c.facet_index).has(infinite_vertex)) {
         certificates.set_substitute(id, Substitute::cell_orientations);
         settle_certificate(id, false);
         return;
@@ -495,23 +490,23 @@ template <class K> CacheKey Engine<K>::cache_key(const Certificate& c) const {
     k.v[0] = 2;
   } else if (c.substitute == Substitute::cell_orientations) {
     // The facet's points, then its two apices (Engine::cell_orientations_poly).
-    const detail::Triangulation::Apices* ap = tri.apices(c.key);
+    const Apices ap = cells.apices(c.cell, c.facet_index);
     k.v[0] = 4;
-    pts[n++] = std::min(ap->v[0], ap->v[1]);
-    pts[n++] = std::max(ap->v[0], ap->v[1]);
+    pts[n++] = std::min(ap.v[0], ap.v[1]);
+    pts[n++] = std::max(ap.v[0], ap.v[1]);
   } else if (c.substitute == Substitute::hull_fold) {
     // The ridge's points, then the two apices (Engine::fold_poly).
-    const detail::Triangulation::Apices* ap = tri.apices(c.key);
+    const Apices ap = cells.apices(c.cell, c.facet_index);
     k.v[0] = 3;
     n = 0;
     for (VertexId v : c.key.facet(0))
       pts[n++] = v;
-    pts[n++] = std::min(ap->v[0], ap->v[1]);
-    pts[n++] = std::max(ap->v[0], ap->v[1]);
+    pts[n++] = std::min(ap.v[0], ap.v[1]);
+    pts[n++] = std::max(ap.v[0], ap.v[1]);
   } else {
-    const detail::Triangulation::Apices* ap = tri.apices(c.key);
-    pts[n++] = ap->v[0];
-    pts[n++] = ap->v[1];
+    const Apices ap = cells.apices(c.cell, c.facet_index);
+    pts[n++] = ap.v[0];
+    pts[n++] = ap.v[1];
     auto* end = pts.begin() + static_cast<std::ptrdiff_t>(n);
     bool infinite = std::find(pts.begin(), end, infinite_vertex) != end;
     k.v[0] = infinite ? 1 : 0;
@@ -538,26 +533,25 @@ template <class K> void Engine<K>::mark_invalid(int id) {
     agenda.fail_radius(id, c.version);
 }
 
-// A facet that left Del has no record any more: its certificate went with it (remove_top).
-template <class K> void Engine<K>::install_facet(const Simplex& facet) {
-  if (detail::Triangulation::Apices* ap = tri.apices(facet))
-    install_facet(facet, *ap);
+// A facet that left Del has no cell any more: its certificate went with it.
+template <class K> void Engine<K>::install_facet_at(const Simplex& facet) {
+  if (const CellIndex c = cell_holding(facet); c != no_cell) {
+    const auto [owner, i] = facet_owner(c, cells.facet_index(c, facet));
+    install_facet(owner, i);
+  }
 }
 
-template <class K> void Engine<K>::install_facet(const Simplex& facet, detail::Triangulation::Apices& ap) {
-  if (ap.count != 2) {
-    std::ostringstream os;
-    os << "facet " << facet << " has " << int(ap.count) << " top simplices";
-    throw InternalError(os.str());
-  }
-  kill_cert(ap.cert);
-  ap.cert = new_cert(CertKind::delaunay, facet); // the table is not touched: ap stays valid
-  mirror_cert(facet, ap.v, ap.cert);
-  install(ap.cert);
-  if (!is_finite(facet) && !agenda.delaunay_failed(facet, ap.cert) && hull_ridge_folded_at_now(facet)) {
+template <class K> void Engine<K>::install_facet(CellIndex c, int i) {
+  kill_cert(cells.cert(c, i));
+  const Simplex facet = cells.facet(c, i);
+  const int id = new_cert(CertKind::delaunay, facet);
+  cells.set_cert(c, i, id);
+  certificates.set_cell(id, c, i);
+  install(id);
+  if (!is_finite(facet) && !agenda.delaunay_failed(facet, id) && hull_ridge_folded_at_now(facet, c, i)) {
     ++stats.invalid_at_creation;
     ++stats.hull_ridges_folded_at_now;
-    mark_invalid(ap.cert);
+    mark_invalid(id);
     agenda.request_repair();
   }
 }

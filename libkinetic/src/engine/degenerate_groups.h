@@ -134,7 +134,7 @@ std::vector<DegenerateGroup> Engine<K>::degenerate_groups(const std::vector<Simp
     return it->second;
   };
   for (const Simplex& t : added)
-    if (is_finite(t) && tri.has_top(t))
+    if (is_finite(t) && has_top(t))
       visit(t);
   std::unordered_map<Simplex, int, SimplexHash> cospherical; // facet -> in-sphere at t* == 0
   while (!todo.empty()) {
@@ -143,7 +143,7 @@ std::vector<DegenerateGroup> Engine<K>::degenerate_groups(const std::vector<Simp
     const std::size_t ti = index.at(t);
     for (std::size_t i = 0; i < t.size(); ++i) {
       Simplex f = t.facet(i);
-      VertexId y = tri.other_apex(f, t[i]);
+      VertexId y = other_apex(f, t[i]);
       if (y == infinite_vertex)
         continue;
       auto [it, fresh] = cospherical.emplace(f, 0);
@@ -192,7 +192,7 @@ std::vector<DegenerateGroup> Engine<K>::degenerate_groups(const std::vector<Simp
     for (const Simplex& t : cell)
       for (std::size_t i = 0; i < 4; ++i) {
         Simplex f = t.facet(i);
-        if (!in_cell.count(f.with(tri.other_apex(f, t[i]))))
+        if (!in_cell.count(f.with(other_apex(f, t[i]))))
           boundary.push_back(f);
       }
     std::sort(boundary.begin(), boundary.end());
@@ -224,7 +224,7 @@ std::vector<DegenerateGroup> Engine<K>::degenerate_groups(const std::vector<Simp
       std::vector<VertexId> apices;
       std::vector<Simplex> cofaces;
       for (const Simplex& f : part)
-        for (const Simplex& t : tri.tops_containing(f)) {
+        for (const Simplex& t : tops_containing(f)) {
           cofaces.push_back(t);
           for (VertexId v : t)
             if (v != infinite_vertex && !fv.count(v))

@@ -17,9 +17,10 @@
 namespace medusa::kinetic::detail {
 
 template <class K> void Engine<K>::flip(int cert, const FlipChange& change, std::vector<Step>& steps) {
-  const Simplex facet = certificates[cert].key; // a copy: the flip retires the certificate
-  const detail::Triangulation::Apices* ap = tri.apices(facet);
-  VertexId p = ap->v[0], q = ap->v[1];
+  const Simplex facet = certificates[cert].key; // copies: the flip retires the certificate
+  const HeldFlip held{certificates[cert].cell, certificates[cert].facet_index, &change};
+  const Apices ap = cells.apices(held.cell, held.index);
+  VertexId p = ap.v[0], q = ap.v[1];
   Step step;
   std::vector<VertexId> group(facet.begin(), facet.end());
   group.push_back(p);
@@ -57,8 +58,7 @@ template <class K> void Engine<K>::flip(int cert, const FlipChange& change, std:
   }
   // A hull flip removes (case A) or creates (case B) the finite top simplex that is flat at now.
   record_delaunay_change(step, removed, added);
-  const HeldFlip held{certificates[cert].cell, certificates[cert].facet_index, &change};
-  apply_top_change(removed, added, orientations.data(), &held);
+  apply_top_change(removed, {}, added, orientations.data(), &held);
   install_touched_facets();
   settle_touched(step);
   finish_top_change();
@@ -87,10 +87,20 @@ template <class K> void Engine<K>::repair(std::vector<Step>& steps) {
 // "if its configuration is flippable"). A failed certificate in generic motion always passes;
 // simultaneous degenerate failures (six or more cospherical points, an edge of degree four, a cycle
 // of flips) may not, and step 3 then asks for a static repair. `change` receives the flip.
-template <class K> bool Engine<K>::flippable(const Simplex& facet, FlipChange& change) {
-  const detail::Triangulation::Apices* ap = tri.apices(facet);
-  const VertexId p = ap->v[0], q = ap->v[1];
-  change = K::flip(facet, p, q, tri);
+template <class K> bool Engine<K>::flippable(int cert, FlipChange& change) {
+  const Simplex& facet = certificates[cert].key;
+  const CellIndex c = certificates[cert].cell;
+  const int i = certificates[cert].facet_index;
+  const VertexId p = cells.vertex(c, i), q = cells.apex_across(c, i);
+  // The top simplices of the flip are c (facet + p), its neighbour across the facet (facet + q) and,
+  // for a 3-2 flip, the neighbour of c across the facet without the facet's vertex off the edge.
+  const auto cell_across_from = [&](VertexId z) { return cells.neighbor(c, cells.index_of(c, z)); };
+  change = K::flip(facet, p, q, [&](const Simplex& t) {
+    for (VertexId z : facet)
+      if (!t.contains(z))
+        return cells.apex_across(c, cells.index_of(c, z)) == q;
+    return false;
+  });
   // A finite flip replaces top simplices that cover a region at now+ by others covering it. A top
   // simplex flat at now may be inside out just after it: the triangulation around it is then not
   // embedded at now+, the local tests below can pass a flip that leaves it so, and later certificates,
@@ -105,7 +115,7 @@ template <class K> bool Engine<K>::flippable(const Simplex& facet, FlipChange& c
   if constexpr (dim == 2) {
     // 2-2: the new edge pq must not exist yet (a vertex of degree 3 cannot lose an edge by a flip),
     // and a finite quadrilateral xpyq must be strictly convex (x and y strictly on either side of pq).
-    if (tri.apices(Simplex{p, q}) != nullptr)
+    if (cells.cell_containing(Simplex{p, q}) != no_cell)
       return false;
     if (is_finite(facet) && p != infinite_vertex && q != infinite_vertex) {
       auto side = [&](VertexId x) {
@@ -121,7 +131,7 @@ template <class K> bool Engine<K>::flippable(const Simplex& facet, FlipChange& c
   // and on a flat hull (a lattice) simultaneous failures set this up too. The local tests below do
   // not see it (tests/kinetic/test_kinetic_dense_lattice.cpp).
   if (dim == 3 &&
-      (change.three_two ? tri.apices(Simplex{change.z, p, q}) != nullptr : tri.contains_face(Simplex{p, q})))
+      cells.cell_containing(change.three_two ? Simplex{change.z, p, q} : Simplex{p, q}) != no_cell)
     return false;
   if (dim == 3 && is_finite(facet) && p != infinite_vertex && q != infinite_vertex) {
     // 2-3: the segment pq crosses the triangle's interior; 3-2 (the edge e0e1 of the facet has the
@@ -158,11 +168,13 @@ template <class K> bool Engine<K>::flippable(const Simplex& facet, FlipChange& c
   // inside out just after now, its own hull certificate (pending in this batch) is what tells, and
   // once the facet is interior every certificate reads the stale orientation (docs/MATH.md §5.10;
   // e.g. three hull cells on one line at an instant).
-  for (const Simplex& t : change.removed) {
+  for (std::size_t k = 0; k < change.removed.size(); ++k) {
+    const Simplex& t = change.removed[k];
     if (is_finite(t))
       continue;
+    const CellIndex held = k == 0 ? c : k == 1 ? cells.neighbor(c, i) : cell_across_from(change.z);
     const Simplex hull_facet = t.facet(0);
-    const Simplex below = hull_facet.with(tri.other_apex(hull_facet, infinite_vertex));
+    const Simplex below = hull_facet.with(cells.apex_across(held, cells.index_of(held, infinite_vertex)));
     if (!is_finite(below) ||
         std::find(change.removed.begin(), change.removed.end(), below) != change.removed.end())
       continue; // a case-A flip removes the flat simplex itself
@@ -191,7 +203,7 @@ template <class K> void Engine<K>::resolve_delaunay(std::vector<Step>& steps) {
   if (options.audit)
     if (std::string v = agenda.first_violation(certificates, false); !v.empty())
       audit_failure(v);
-  auto accept = [&](const Simplex& facet, int) { return flippable(facet, change); };
+  auto accept = [&](const Simplex&, int id) { return flippable(id, change); };
   while (agenda.has_delaunay() || agenda.repair_due()) {
     // The first flippable failure in canonical order; a static repair when none is, when the flips
     // do not converge (docs/MATH.md §5.2 steps 2 and 3), or when a hull ridge was found folded at now.
@@ -234,7 +246,7 @@ template <class K> void Engine<K>::resolve_touches(OldMembership& old_k) {
     const Simplex s = c.key; // install_radius replaces the certificate
     at_own_time(id);
     ++stats.radius_touches;
-    tri.for_each_top_containing(
+    for_each_top_containing(
         s, [&](const Simplex& t) { for_each_face(t, [&](const Simplex& f) { old_k.emplace(f, in_k(f)); }); });
     install_radius(s);
   }
@@ -277,7 +289,7 @@ template <class K> bool Engine<K>::degenerate_hull_facet_at(const Simplex& s) {
     if (v == infinite_vertex)
       continue;
     bool degenerate = false;
-    tri.for_each_top_containing(Simplex{infinite_vertex, v}, [&](const Simplex& t) {
+    for_each_top_containing(Simplex{infinite_vertex, v}, [&](const Simplex& t) {
       degenerate = degenerate || collinear_at_now(t.facet(0));
     });
     if (degenerate)
@@ -329,7 +341,8 @@ template <class K> void Engine<K>::resolve_radius(Step& settle, OldMembership& o
     if (s.size() > 2)
       for (std::size_t i = 0; i < s.size(); ++i)
         update_frontier(s.facet(i));
-    for (const Simplex& c : tri.finite_cofaces(s))
+    finite_cofaces(s, coface_scratch);
+    for (const Simplex& c : coface_scratch)
       update_frontier(c);
   }
   (void)settle;

@@ -35,13 +35,18 @@ template <class K> void Engine<K>::set_slab_motion(std::size_t k) {
 template <class K> void Engine<K>::reinstall_all() {
   certificates.clear_times();
   root_cache.clear();
-  // In place, in table order: installing a certificate reads the tables but never adds or removes an
-  // entry, so the records stay where they are, and a frame costs no second look-up per simplex.
-  retire_all_certs();
-  tri.for_each_facet([this](const Simplex& facet, detail::Triangulation::Apices& ap) {
-    ap.cert = -1;
-    install_facet(facet, ap);
+  // Every facet once, named as its certificate named it (the cell of its first apex), in cell order.
+  std::vector<std::pair<CellIndex, int>> owners;
+  owners.reserve(cells.size() * (dim + 1) / 2);
+  cells.for_each_cell([&](CellIndex c) {
+    for (int i = 0; i <= dim; ++i)
+      if (c < cells.neighbor(c, i))
+        owners.push_back(facet_owner(c, i));
   });
+  retire_all_certs();
+  cells.clear_certs();
+  for (const auto& [c, i] : owners)
+    install_facet(c, i);
   faces.for_each([this](const Simplex& s, Face& f) {
     if (f.cert < 0)
       return;
@@ -108,16 +113,17 @@ template <class K> bool Engine<K>::top_simplex_turns_at_frame() {
   // One switch to round-to-nearest for every top simplex, not two per test (start_determinants.h);
   // the rare flat one's follow-up tests set the mode they need themselves.
   CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-  for (const Simplex& t : tri.tops()) {
-    if (!is_finite(t))
-      continue;
+  bool turns = false;
+  cells.for_each_cell([&](CellIndex c) {
+    if (turns || cells.vertex(c, 0) == infinite_vertex)
+      return;
+    const Simplex t = cells.top(c);
     for (std::size_t i = 0; i < t.size(); ++i)
       p[i] = &pt(t[i]);
-    if (orientation_vanishes_at_start_in_nearest(p.data(), t.size()) &&
-        (orientation_sign_plus(t) != tri.orientation(t) || degenerate_hull_facet_at(t)))
-      return true;
-  }
-  return false;
+    turns = orientation_vanishes_at_start_in_nearest(p.data(), t.size()) &&
+            (orientation_sign_plus(t) != cells.orientation(c) || degenerate_hull_facet_at(t));
+  });
+  return turns;
 }
 
 // One insertion or deletion of vertex v at the current frame, as its own rank (docs/MATH.md §5.6), with
@@ -139,14 +145,15 @@ template <class K> void Engine<K>::insert_or_delete(VertexId v, bool insert, std
 }
 
 template <class K> void Engine<K>::record_top_changes(Step& step, OldMembership& old_k) {
-  std::unordered_set<Simplex, SimplexHash> before;
-  for (const Simplex& t : tri.tops())
-    before.insert(t);
+  const std::vector<Simplex> old_tops = all_tops();
+  const std::unordered_set<Simplex, SimplexHash> before(old_tops.begin(), old_tops.end());
   rebuild_static(&old_k);
-  for (const Simplex& t : before)
-    if (is_finite(t) && !tri.has_top(t))
+  const std::vector<Simplex> new_tops = all_tops();
+  const std::unordered_set<Simplex, SimplexHash> after(new_tops.begin(), new_tops.end());
+  for (const Simplex& t : old_tops)
+    if (is_finite(t) && !after.count(t))
       step.delaunay_removed.push_back(t);
-  for (const Simplex& t : tri.tops())
+  for (const Simplex& t : new_tops)
     if (is_finite(t) && !before.count(t))
       step.delaunay_created.push_back(t);
   // Hash tables iterate in no meaningful order: the stream lists them sorted.

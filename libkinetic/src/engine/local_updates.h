@@ -33,12 +33,13 @@ double squared_distance(const MovingPoint& p, const MovingPoint& q) {
 
 } // namespace
 
-// Whether v lies strictly inside the circumsphere (circumcircle) of the top simplex t just after now,
-// or, for an infinite t, strictly beyond its hull facet: +1 yes, -1 no, 0 when the predicate vanishes
-// for the whole slab (undecided; the caller rebuilds statically).
-template <class K> int Engine<K>::in_conflict_just_after(const Simplex& t, VertexId v) {
+// Whether v lies strictly inside the circumsphere (circumcircle) of the top simplex t of cell c just
+// after now, or, for an infinite t, strictly beyond its hull facet: +1 yes, -1 no, 0 when the
+// predicate vanishes for the whole slab (undecided; the caller rebuilds statically).
+template <class K> int Engine<K>::in_conflict_just_after(CellIndex c, VertexId v) {
+  const Simplex t = cells.top(c);
   if (is_finite(t)) {
-    const int o = tri.orientation(t);
+    const int o = cells.orientation(c);
     // The in-sphere (in-circle) test has the sign outside_sign * o while v is outside (delaunay_poly).
     const int s = sign_plus_now(
         [&](auto tag) { return K::template in_sphere<decltype(tag)>(K::join(t), v, moving()); });
@@ -47,8 +48,8 @@ template <class K> int Engine<K>::in_conflict_just_after(const Simplex& t, Verte
   // t = [-1 hull facet]: v is beyond the facet iff it lies on the other side of it than the facet's
   // finite top simplex.
   const Simplex f = t.facet(0);
-  const Triangulation::Apices& ap = tri.two_sided(f);
-  const VertexId z = ap.v[0] == infinite_vertex ? ap.v[1] : ap.v[0];
+  const Apices ap = cells.apices(c, 0); // c's vertex 0 is the infinite one
+  const VertexId z = ap.v[1];
   std::array<VertexId, 4> seq{};
   std::copy(f.begin(), f.end(), seq.begin());
   seq[f.size()] = z;
@@ -68,7 +69,7 @@ template <class K> int Engine<K>::facet_side_just_after(const Simplex& f, Vertex
 // v's neighbour in Del(now+) (a Gabriel edge, even among equal distances); otherwise, after rounding
 // in doubles picked another, one found by a scan. Returns false when none is found with decided
 // predicates. Insertions happen at frames, where now is u = 0 and each cell sits at its `a`.
-template <class K> bool Engine<K>::find_conflict(VertexId v, Simplex& seed) {
+template <class K> bool Engine<K>::find_conflict(VertexId v, CellIndex& seed) {
   VertexId nearest = infinite_vertex;
   double best = 0;
   for (std::size_t i = 0; i < alive.size(); ++i)
@@ -81,15 +82,19 @@ template <class K> bool Engine<K>::find_conflict(VertexId v, Simplex& seed) {
     }
   // A tie (0) is passed over here: if it touches the conflict region, the flood of insert_locally
   // meets it again and gives up; elsewhere it does not matter.
+  std::vector<CellIndex> candidates;
   if (nearest != infinite_vertex)
-    for (const Simplex& t : tri.tops_of(nearest))
-      if (in_conflict_just_after(t, v) > 0) {
-        seed = t;
-        return true;
-      }
-  for (const Simplex& t : tri.tops())
-    if (in_conflict_just_after(t, v) > 0) {
-      seed = t;
+    cells.for_each_cell_containing(Simplex{nearest}, [&](CellIndex c) { candidates.push_back(c); });
+  for (CellIndex c : candidates)
+    if (in_conflict_just_after(c, v) > 0) {
+      seed = c;
+      return true;
+    }
+  candidates.clear();
+  cells.for_each_cell([&](CellIndex c) { candidates.push_back(c); });
+  for (CellIndex c : candidates)
+    if (in_conflict_just_after(c, v) > 0) {
+      seed = c;
       return true;
     }
   return false;
@@ -98,21 +103,22 @@ template <class K> bool Engine<K>::find_conflict(VertexId v, Simplex& seed) {
 // Bowyer-Watson just after now: the top simplices in conflict with v form a region star-shaped from
 // v, connected through their facets; it is replaced by the cone from v over its boundary facets.
 template <class K>
-bool Engine<K>::insert_locally(VertexId v, std::vector<Simplex>& removed, std::vector<Simplex>& added,
+bool Engine<K>::insert_locally(VertexId v, std::vector<CellIndex>& removed, std::vector<Simplex>& added,
                                std::vector<int>& orientations) {
-  Simplex seed;
+  CellIndex seed = no_cell;
   if (!find_conflict(v, seed))
     return false;
-  std::unordered_map<Simplex, bool, SimplexHash> in_conflict{{seed, true}};
-  std::vector<Simplex> todo{seed}, boundary;
+  std::unordered_map<CellIndex, bool> in_conflict{{seed, true}};
+  std::vector<CellIndex> todo{seed};
+  std::vector<Simplex> boundary;
   removed.clear();
   while (!todo.empty()) {
-    const Simplex t = todo.back();
+    const CellIndex t = todo.back();
     todo.pop_back();
     removed.push_back(t);
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      const Simplex f = t.facet(i);
-      const Simplex other = f.with(tri.other_apex(f, t[i]));
+    for (int i = 0; i <= dim; ++i) {
+      const Simplex f = cells.facet(t, i);
+      const CellIndex other = cells.neighbor(t, i);
       auto [it, fresh] = in_conflict.try_emplace(other, false);
       if (fresh) {
         const int c = in_conflict_just_after(other, v);
@@ -145,16 +151,19 @@ bool Engine<K>::insert_locally(VertexId v, std::vector<Simplex>& removed, std::v
 // a tie just after now let CGAL's perturbation choose otherwise; then the flood would not close, and
 // the result is checked: the filled simplices must meet exactly the link facets, each once.
 template <class K>
-bool Engine<K>::delete_locally(VertexId v, std::vector<Simplex>& removed, std::vector<Simplex>& added,
+bool Engine<K>::delete_locally(VertexId v, std::vector<CellIndex>& removed, std::vector<Simplex>& added,
                                std::vector<int>& orientations) {
   if (!now.is_rational())
     return false;
-  removed = tri.tops_of(v);
-  std::unordered_map<Simplex, int, SimplexHash> walls; // link facet -> times the flood met it
+  removed.clear();
+  cells.for_each_cell_containing(Simplex{v}, [&](CellIndex c) { removed.push_back(c); });
+  std::unordered_map<Simplex, int, SimplexHash> walls;           // link facet -> times the flood met it
+  std::unordered_map<Simplex, CellIndex, SimplexHash> star_cell; // link facet -> its cell in v's star
   std::vector<VertexId> link;
-  for (const Simplex& t : removed) {
-    const Simplex f = t.facet(static_cast<std::size_t>(std::find(t.begin(), t.end(), v) - t.begin()));
+  for (CellIndex c : removed) {
+    const Simplex f = cells.facet(c, cells.index_of(c, v));
     walls.emplace(f, 0);
+    star_cell.emplace(f, c);
     for (VertexId w : f)
       if (w != infinite_vertex)
         link.push_back(w);
@@ -212,7 +221,9 @@ bool Engine<K>::delete_locally(VertexId v, std::vector<Simplex>& removed, std::v
   std::array<VertexId, 4> seq{};
   std::copy(f.begin(), f.end(), seq.begin());
   seq[f.size()] = v;
-  const int own = orientation_of(seq.data(), f.size() + 1, *tri.apices(f), v),
+  const CellIndex own_cell = star_cell.at(f);
+  const int own = orientation_of(seq.data(), f.size() + 1,
+                                 cells.apices(own_cell, cells.index_of(own_cell, v)), v),
             other = facet_side_just_after(f, apex(near));
   if (own == 0 || other == 0)
     return false;
@@ -257,10 +268,11 @@ bool Engine<K>::delete_locally(VertexId v, std::vector<Simplex>& removed, std::v
 // record_top_changes records a static rebuild.
 template <class K>
 bool Engine<K>::record_local_change(Step& step, OldMembership& old_k, VertexId v, bool insert) {
-  std::vector<Simplex> removed, added;
+  std::vector<CellIndex> removed_cells;
+  std::vector<Simplex> added;
   std::vector<int> orientations;
-  if (insert ? insert_locally(v, removed, added, orientations)
-             : delete_locally(v, removed, added, orientations)) {
+  if (insert ? insert_locally(v, removed_cells, added, orientations)
+             : delete_locally(v, removed_cells, added, orientations)) {
     // Canonical order, as after a static rebuild: the certificates are built in it.
     std::vector<std::pair<Simplex, int>> sorted;
     for (std::size_t i = 0; i < added.size(); ++i)
@@ -268,8 +280,16 @@ bool Engine<K>::record_local_change(Step& step, OldMembership& old_k, VertexId v
     std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     for (std::size_t i = 0; i < sorted.size(); ++i)
       std::tie(added[i], orientations[i]) = sorted[i];
-    std::sort(removed.begin(), removed.end());
-    change_tops(removed, added, &old_k, orientations.data());
+    std::vector<std::pair<Simplex, CellIndex>> gone;
+    for (CellIndex c : removed_cells)
+      gone.emplace_back(cells.top(c), c);
+    std::sort(gone.begin(), gone.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<Simplex> removed;
+    for (std::size_t i = 0; i < gone.size(); ++i) {
+      removed.push_back(gone[i].first);
+      removed_cells[i] = gone[i].second;
+    }
+    change_tops(removed, removed_cells, added, &old_k, orientations.data());
     reinstall_hull_ridges_over(added, removed);
     ++(insert ? stats.local_insertions : stats.local_deletions);
     record_delaunay_change(step, removed, added);

@@ -12,14 +12,16 @@
 #include <algorithm>
 #include <array>
 #include <optional>
+#include <sstream>
 #include <vector>
 
 namespace medusa::kinetic::detail {
 
 template <class K>
-void Engine<K>::change_tops(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                            OldMembership* old_k, const int* added_orientations) {
-  apply_top_change(removed, added, added_orientations);
+void Engine<K>::change_tops(const std::vector<Simplex>& removed, const std::vector<CellIndex>& removed_cells,
+                            const std::vector<Simplex>& added, OldMembership* old_k,
+                            const int* added_orientations) {
+  apply_top_change(removed, removed_cells, added, added_orientations);
   if (old_k != nullptr)
     for (const TouchedFace& t : touched_scratch.faces)
       old_k->emplace(t.face, t.old_in_k);
@@ -36,39 +38,43 @@ constexpr std::size_t max_prefetched_faces = 32;
 // has computed.
 
 template <class K>
-void Engine<K>::apply_top_change(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
-                                 const int* added_orientations, const HeldFlip* held_flip) {
+void Engine<K>::apply_top_change(const std::vector<Simplex>& removed,
+                                 const std::vector<CellIndex>& removed_cells,
+                                 const std::vector<Simplex>& added, const int* added_orientations,
+                                 const HeldFlip* held_flip) {
   TouchedFaces& touched = touched_scratch;
   collect_touched_faces(removed, added, touched);
   if (touched.faces.size() <= max_prefetched_faces) {
     // A flip: its records are requested together, so their cache misses overlap (FlatSimplexMap::prefetch).
-    for (const Simplex& t : removed)
-      tri.prefetch_top(t);
     for (const TouchedFace& t : touched.faces)
       if (t.face.size() > 1)
         faces.prefetch(t.face);
   }
-  std::vector<int>& dropped = dropped_certs_scratch;
-  dropped.clear();
-  for (const Simplex& t : removed)
-    tri.remove_top(t, dropped);
-  for (int id : dropped)
-    kill_cert(id);
-  std::vector<int> mirrored_orientations;
+  std::vector<int>& orientations = orientation_scratch;
+  orientations.assign(added.size(), 0);
   for (std::size_t i = 0; i < added.size(); ++i) {
     const Simplex& t = added[i];
-    int s = 0;
     if (is_finite(t)) {
-      s = added_orientations != nullptr ? added_orientations[i] : orientation_sign_plus(t);
-      if (s == 0)
+      orientations[i] = added_orientations != nullptr ? added_orientations[i] : orientation_sign_plus(t);
+      if (orientations[i] == 0)
         throw flat_top_simplex_error(t);
     }
-    tri.add_top(t, s);
-    if (cell_mirror)
-      mirrored_orientations.push_back(s);
   }
-  mirror_top_change(removed, added, mirrored_orientations, dropped, held_flip);
+  std::vector<int>& dropped = dropped_certs_scratch;
+  dropped.clear();
+  if (held_flip != nullptr) {
+    flip_cells(*held_flip, added, orientations, dropped);
+  } else {
+    std::vector<typename CellTriangulation<dim>::NewTop> news;
+    news.reserve(added.size());
+    for (std::size_t i = 0; i < added.size(); ++i)
+      news.push_back({added[i], orientations[i]});
+    cells.replace(removed_cells, news, dropped, &created_cells);
+  }
+  for (int id : dropped)
+    kill_cert(id);
   release_if_large(dropped);
+  release_if_large(orientations);
   // Each face counts the top simplices (infinite ones included) that hold it, so its presence in
   // Del after the change needs no search of the triangulation. With room reserved, no entry moves
   // while the new faces are added: the pointers held in `touched` stay valid until an erase.
@@ -128,10 +134,97 @@ void Engine<K>::apply_top_change(const std::vector<Simplex>& removed, const std:
     }
 }
 
+// A flip made on the cell its certificate names, without a look-up by vertex ids: 2-3 (2-2 in the
+// plane) through the facet, 3-2 around the change's edge.
+template <class K>
+void Engine<K>::flip_cells(const HeldFlip& held_flip, const std::vector<Simplex>& added,
+                           const std::vector<int>& orientations, std::vector<int>& dropped) {
+  const CellIndex c = held_flip.cell;
+  const int i = held_flip.index;
+  const FlipChange& change = *held_flip.change;
+  if (!cells.alive(c) || i < 0 || i > dim)
+    throw InternalError("a flipped facet's certificate names no living cell");
+  const Simplex facet = cells.facet(c, i);
+  const VertexId p = cells.vertex(c, i), q = cells.apex_across(c, i);
+  const auto orientation_for = [&](const Simplex& t) {
+    for (std::size_t k = 0; k < added.size(); ++k)
+      if (added[k] == t)
+        return orientations[k];
+    std::ostringstream os;
+    os << "the flip of facet " << facet << " makes " << t << ", which the change does not add";
+    throw InternalError(os.str());
+  };
+  std::array<CellIndex, dim> made{};
+  std::size_t count = 0;
+  if (!change.three_two) {
+    std::array<int, dim> o{};
+    for (int k = 0; k < dim; ++k)
+      o[static_cast<std::size_t>(k)] =
+          orientation_for(facet.facet(static_cast<std::size_t>(k)).with(p).with(q));
+    cells.flip(c, i, o, dropped, made);
+    count = dim;
+  } else if constexpr (dim == 3) {
+    // c holds the edge a b; the ring of cells around it has the other vertices z, p and q, and the
+    // new cells are z p q a and z p q b.
+    const Simplex ring{change.z, p, q};
+    const std::array<int, 2> o{orientation_for(ring.with(change.edge[0])),
+                               orientation_for(ring.with(change.edge[1]))};
+    std::array<CellIndex, 2> two{};
+    cells.flip_edge(c, cells.index_of(c, change.edge[0]), cells.index_of(c, change.edge[1]), o, dropped, two);
+    made[0] = two[0];
+    made[1] = two[1];
+    count = 2;
+  }
+  // In the order of `added`, which decides the first apex of the facets between new cells.
+  created_cells.clear();
+  for (const Simplex& t : added)
+    for (std::size_t k = 0; k < count; ++k)
+      if (cells.top(made[k]) == t)
+        created_cells.push_back(made[k]);
+  if (created_cells.size() != added.size())
+    throw InternalError("a flip on held cells made other top simplices than the change adds");
+}
+
+// The certificates of the new cells' facets, in canonical order, each named by the cell of its first
+// apex: across the boundary of the change the cell outside, which was there first; between two new
+// cells the one added first. The first apex is the one a facet's certificate is built from
+// (Engine::delaunay_poly), so this fixes each certificate's formula whatever the cells' numbering.
 template <class K> void Engine<K>::install_touched_facets() {
-  for (const Simplex& f : touched_scratch.facets)
-    install_facet(f);
-  release_if_large(touched_scratch.facets);
+  const bool few = created_cells.size() <= max_scanned_created;
+  if (!few) {
+    if (created_position.size() < cells.capacity())
+      created_position.resize(cells.capacity(), -1);
+    for (std::size_t k = 0; k < created_cells.size(); ++k)
+      created_position[static_cast<std::size_t>(created_cells[k])] = static_cast<int>(k);
+  }
+  const auto position = [&](CellIndex c) {
+    if (!few)
+      return created_position[static_cast<std::size_t>(c)];
+    for (std::size_t k = 0; k < created_cells.size(); ++k)
+      if (created_cells[k] == c)
+        return static_cast<int>(k);
+    return -1;
+  };
+  auto& todo = facet_scratch;
+  todo.clear();
+  for (std::size_t k = 0; k < created_cells.size(); ++k) {
+    const CellIndex c = created_cells[k];
+    for (int i = 0; i <= dim; ++i) {
+      const CellIndex n = cells.neighbor(c, i);
+      const int pn = position(n);
+      if (pn >= 0 && pn < static_cast<int>(k))
+        continue; // listed from n
+      todo.push_back(
+          {cells.facet(c, i), pn < 0 ? std::make_pair(n, cells.mirror_index(c, i)) : std::make_pair(c, i)});
+    }
+  }
+  if (!few)
+    for (CellIndex c : created_cells)
+      created_position[static_cast<std::size_t>(c)] = -1;
+  std::sort(todo.begin(), todo.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [facet, owner] : todo)
+    install_facet(owner.first, owner.second);
+  release_if_large(todo);
 }
 
 template <class K> void Engine<K>::finish_top_change() {
@@ -162,13 +255,18 @@ template <class K> bool Engine<K>::gabriel_now(const Simplex& s) {
   std::vector<VertexId>& link = link_scratch;
   link.clear();
   if (s.size() == static_cast<std::size_t>(dim)) {
-    // A facet: its link is its two apices, kept with it.
-    const detail::Triangulation::Apices& ap = tri.two_sided(s);
-    for (VertexId x : ap.v)
+    // A facet: its link is its two apices.
+    const CellIndex c = cell_holding(s);
+    if (c == no_cell) {
+      std::ostringstream os;
+      os << "facet " << s << " is not in the triangulation";
+      throw InternalError(os.str());
+    }
+    for (VertexId x : cells.apices(c, cells.facet_index(c, s)).v)
       if (x != infinite_vertex)
         link.push_back(x);
   } else {
-    tri.for_each_top_containing(s, [&](const Simplex& t) {
+    for_each_top_containing(s, [&](const Simplex& t) {
       for (VertexId x : t)
         if (x != infinite_vertex && !s.contains(x) && std::find(link.begin(), link.end(), x) == link.end())
           link.push_back(x);

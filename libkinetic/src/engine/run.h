@@ -26,8 +26,6 @@ Engine<K>::Engine(const Trajectories& t, KineticOptions o) : traj(t), options(st
   motion->points.resize(traj.cells.size());
   motion->rho2 = std::make_shared<const SquaredRadius>(options.rho2);
   alive.assign(traj.cells.size(), 0);
-  if (options.audit)
-    cell_mirror = std::make_unique<CellTriangulation<dim>>();
 }
 
 // A planar run keeps every cell in one plane z = const: the 2D certificates ignore z, so a differing

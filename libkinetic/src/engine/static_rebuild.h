@@ -56,18 +56,32 @@ template <class K> void Engine<K>::rebuild_static(OldMembership* old_k) {
   // draws from CGAL's default random generator (process-wide state). Sorted, the order of the
   // changes below, and of the certificates they build, does not depend on it.
   std::sort(tops.begin(), tops.end());
-  std::vector<Simplex> removed, added, kept;
-  if (tri.tops().size() == 0) {
+  std::vector<Simplex> removed, added;
+  std::vector<CellIndex> removed_cells, kept;
+  if (cells.size() == 0) {
     added = std::move(tops); // the first triangulation: no table of the target is needed
   } else {
     std::unordered_set<Simplex, SimplexHash> target(tops.begin(), tops.end());
-    for (const Simplex& t : tri.tops())
+    std::unordered_map<Simplex, CellIndex, SimplexHash> current;
+    std::vector<std::pair<Simplex, CellIndex>> gone;
+    cells.for_each_cell([&](CellIndex c) {
+      const Simplex t = cells.top(c);
+      current.emplace(t, c);
       if (!target.count(t))
-        removed.push_back(t);
+        gone.emplace_back(t, c);
+    });
+    std::sort(gone.begin(), gone.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [t, c] : gone) {
+      removed.push_back(t);
+      removed_cells.push_back(c);
+    }
     for (const Simplex& t : tops)
-      (tri.has_top(t) ? kept : added).push_back(t);
+      if (const auto it = current.find(t); it != current.end())
+        kept.push_back(it->second);
+      else
+        added.push_back(t);
   }
-  change_tops(removed, added, old_k);
+  change_tops(removed, removed_cells, added, old_k);
   reinstall_hull_ridges_over(added, removed);
   reorient_kept(kept);
 }
@@ -92,18 +106,18 @@ void Engine<K>::reinstall_hull_ridges_over(const std::vector<Simplex>& added,
         for (std::size_t i = 0; i < t.size(); ++i)
           built.insert(t.facet(i));
   std::vector<Simplex> ridges;
-  for (const Simplex& t : added) {
-    if (!is_finite(t))
+  for (std::size_t k = 0; k < added.size(); ++k) {
+    if (!is_finite(added[k]))
       continue;
-    for (std::size_t i = 0; i < t.size(); ++i)
-      for_each_hull_ridge_over(t.facet(i), [&](const Simplex& ridge) {
+    for (int i = 0; i <= dim; ++i)
+      for_each_hull_ridge_over(created_cells[k], i, [&](const Simplex& ridge) {
         if (built.insert(ridge).second)
           ridges.push_back(ridge);
       });
   }
   std::sort(ridges.begin(), ridges.end()); // certificates built in a canonical order
   for (const Simplex& r : ridges)
-    install_facet(r);
+    install_facet_at(r);
 }
 
 // Del at a rational q after an algebraic now, with q close enough that the result is Del(now+): every
@@ -176,23 +190,23 @@ std::vector<Simplex> Engine<K>::delaunay_after_algebraic_now(const std::vector<V
 // (tests/kinetic/test_kinetic_engine.cpp, docs/MATH.md §5.10). The orientation is set anew and
 // those certificates are built again: the facets of the top simplex and, for each of its facets on
 // the hull, the infinite facets over that facet's own facets (docs/MATH.md §3.2 case B).
-template <class K> void Engine<K>::reorient_kept(const std::vector<Simplex>& kept) {
-  for (const Simplex& t : kept) {
+template <class K> void Engine<K>::reorient_kept(const std::vector<CellIndex>& kept) {
+  for (CellIndex c : kept) {
+    const Simplex t = cells.top(c);
     if (!is_finite(t))
       continue;
-    const int recorded = tri.orientation(t);
+    const int recorded = cells.orientation(c);
     const int s = orientation_sign_plus(t);
     if (s == recorded)
       continue;
     if (s == 0)
       throw flat_top_simplex_error(t);
     ++stats.reoriented;
-    tri.set_orientation(t, s);
-    mirror_orientation(t, s);
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      const Simplex f = t.facet(i);
-      install_facet(f);
-      for_each_hull_ridge_over(f, [&](const Simplex& ridge) { install_facet(ridge); });
+    cells.set_orientation(c, s);
+    for (int i = 0; i <= dim; ++i) {
+      const auto [owner, j] = facet_owner(c, i);
+      install_facet(owner, j);
+      for_each_hull_ridge_over(c, i, [&](const Simplex& ridge) { install_facet_at(ridge); });
     }
   }
 }

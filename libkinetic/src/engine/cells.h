@@ -1,0 +1,68 @@
+// Look-ups in the triangulation by vertex ids. The engine reaches a facet's cells from its
+// certificate (Certificate::cell) and a change's cells from the change; where it holds only a
+// simplex (a face of K, the static changes' bookkeeping), a cell holding it is found among the last
+// change's cells, or by a walk round one of its vertices (cell_triangulation.h).
+#pragma once
+
+#include "engine.h"
+
+#include "medusa/core/error.h"
+
+#include <algorithm>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace medusa::kinetic::detail {
+
+// A flip makes at most three cells: those are scanned; a static change's many are not.
+constexpr std::size_t max_scanned_created = 8;
+
+template <class K> CellIndex Engine<K>::cell_holding(const Simplex& s) const {
+  if (created_cells.size() <= max_scanned_created)
+    for (CellIndex c : created_cells) {
+      if (!cells.alive(c))
+        continue;
+      bool all = true;
+      for (VertexId v : s)
+        all = all && cells.index_of(c, v) >= 0;
+      if (all)
+        return c;
+    }
+  return cells.cell_containing(s);
+}
+
+template <class K> std::pair<CellIndex, int> Engine<K>::facet_owner(CellIndex c, int i) const {
+  if (const int id = cells.cert(c, i); id >= 0) {
+    const Certificate& x = certificates[id];
+    if (x.alive && x.kind == CertKind::delaunay && x.cell == cells.neighbor(c, i) && cells.alive(x.cell))
+      return {x.cell, x.facet_index};
+  }
+  return {c, i};
+}
+
+template <class K> VertexId Engine<K>::other_apex(const Simplex& f, VertexId apex) const {
+  const CellIndex c = cells.find(f.with(apex));
+  if (c == no_cell) {
+    std::ostringstream os;
+    os << "facet " << f << " has no top simplex with apex " << apex;
+    throw InternalError(os.str());
+  }
+  return cells.apex_across(c, cells.index_of(c, apex));
+}
+
+template <class K> void Engine<K>::finite_cofaces(const Simplex& s, std::vector<Simplex>& out) const {
+  // A coface is s plus one vertex of a finite top simplex holding s (it may come from several).
+  out.clear();
+  cells.for_each_cell_containing(s, [&](CellIndex c) {
+    if (cells.vertex(c, 0) == infinite_vertex) // sorted: the infinite vertex comes first
+      return;
+    for (int k = 0; k <= dim; ++k)
+      if (const VertexId v = cells.vertex(c, k); !s.contains(v))
+        out.push_back(s.with(v));
+  });
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+} // namespace medusa::kinetic::detail
