@@ -1,26 +1,22 @@
-// Triangulation benchmark: the engine's own combinatorial triangulation (libkinetic/src/triangulation.h:
-// facet records with apices in a hash table, top simplices per vertex) against CGAL's
-// Triangulation_data_structure_3 and its flip operations, and the same triangulation held as cells,
-// on one sequence of 2-3 and 3-2 flips. It measures what each structure costs per flip.
+// Triangulation benchmark: the engine's triangulation held as cells (libkinetic/src/cell_triangulation.h)
+// against CGAL's Triangulation_data_structure_3 and its flip operations, on one sequence of 2-3 and
+// 3-2 flips. It measures what each structure costs per flip.
 //
 // The flips are drawn among the geometrically valid ones (CGAL's Triangulation_3::flip, exact
 // orientation tests) on the Delaunay triangulation of n random points at the cells' spacing, half
 // of them 2-3 flips of random facets and half 3-2 flips undoing earlier ones (draw_flips), and
 // recorded as vertex ids. Both structures then replay the same sequence from the same initial
 // triangulation, in one process:
-//   * ours: Triangulation::remove_top / add_top, as Engine::flip applies a flip (its look-ups by
-//     vertex ids are part of the structure);
 //   * CGAL: tds().flip_flippable on the cell (and facet or edge index) that carries the flip, found
 //     from the vertex ids by is_facet / is_edge (what a caller that keys its flips by vertex ids
 //     pays), and the flip alone (what a kinetic structure that keeps its certificates in the cells
 //     would pay);
-//   * cells: CellTriangulation (the engine's triangulation held as cells), the cell found from the
-//     vertex ids by a star walk (timed apart) and flipped in place (flip, flip_edge).
+//   * cells: CellTriangulation, the cell found from the vertex ids by a star walk (timed apart; the
+//     engine reaches it from the failed certificate instead) and flipped in place (flip, flip_edge).
 //
 // Usage: tds_bench [--points N]... [--flips M] [--seed S]
 // With no argument: 1,000 and 10,000 points, 20 flips per point.
 #include "cell_triangulation.h"
-#include "triangulation.h"
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -44,7 +40,6 @@ using medusa::kinetic::Simplex;
 using medusa::kinetic::VertexId;
 using medusa::kinetic::detail::CellIndex;
 using medusa::kinetic::detail::CellTriangulation;
-using medusa::kinetic::detail::Triangulation;
 using Clock = std::chrono::steady_clock;
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -140,49 +135,8 @@ std::vector<Flip> draw_flips(Dt& dt, const std::vector<Dt::Vertex_handle>& by_id
   return flips;
 }
 
-// The top simplices a flip removes and adds (as Engine::flip_change gives them).
-void flip_change(const Flip& f, std::vector<Simplex>& removed, std::vector<Simplex>& added) {
-  removed.clear();
-  added.clear();
-  const auto& v = f.v;
-  std::vector<Simplex>& three = f.two_three ? added : removed;
-  std::vector<Simplex>& two = f.two_three ? removed : added;
-  if (f.two_three) { // facet v0 v1 v2, apices v3 v4
-    two = {Simplex{v[0], v[1], v[2], v[3]}, Simplex{v[0], v[1], v[2], v[4]}};
-    three = {Simplex{v[0], v[1], v[3], v[4]}, Simplex{v[1], v[2], v[3], v[4]},
-             Simplex{v[0], v[2], v[3], v[4]}};
-  } else { // edge v0 v1, ring v2 v3 v4
-    three = {Simplex{v[0], v[1], v[2], v[3]}, Simplex{v[0], v[1], v[3], v[4]},
-             Simplex{v[0], v[1], v[2], v[4]}};
-    two = {Simplex{v[2], v[3], v[4], v[0]}, Simplex{v[2], v[3], v[4], v[1]}};
-  }
-}
-
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// The engine's structure: the initial top simplices added, then the flips replayed. Returns the
-// seconds of the replay; `check` receives the number of top simplices at the end.
-double replay_ours(const std::vector<Simplex>& initial, const std::vector<Flip>& flips, std::size_t& check) {
-  Triangulation tri;
-  for (const Simplex& t : initial)
-    tri.add_top(t, t[0] == -1 ? 0 : 1);
-  std::vector<Simplex> removed, added;
-  std::vector<int> dropped;
-  const auto start = Clock::now();
-  for (const Flip& f : flips) {
-    flip_change(f, removed, added);
-    for (const Simplex& t : removed)
-      tri.prefetch_top(t);
-    for (const Simplex& t : removed)
-      tri.remove_top(t, dropped);
-    for (const Simplex& t : added)
-      tri.add_top(t, 1);
-  }
-  const double s = seconds_since(start);
-  check = tri.tops().size();
-  return s;
 }
 
 // The engine's triangulation held as cells (CellTriangulation), each flip made on the cell that
@@ -205,7 +159,7 @@ double replay_cells(const std::vector<Simplex>& initial, const std::vector<Flip>
   const auto start = Clock::now();
   for (const Flip& f : flips) {
     const auto& v = f.v;
-    // v0 v1 v2 v3 is a top simplex before either kind of flip (flip_change).
+    // v0 v1 v2 v3 is a top simplex before either kind of flip (Flip).
     const auto t0 = Clock::now();
     const CellIndex c = tri.find(Simplex{v[0], v[1], v[2], v[3]});
     lookup_seconds += std::chrono::duration<double>(Clock::now() - t0).count() - clock_cost;
@@ -296,11 +250,10 @@ void run_case(std::size_t n, std::size_t flips_per_point, std::uint64_t seed) {
 
   // Alternate the two replays, three rounds, and keep each one's best (the machine's noise is
   // one-sided).
-  double ours = 1e300, cgal = 1e300, lookup = 1e300, cells = 1e300, cells_lookup = 1e300;
-  std::size_t ours_tets = 0, cgal_cells = 0, cell_count = 0;
+  double cgal = 1e300, lookup = 1e300, cells = 1e300, cells_lookup = 1e300;
+  std::size_t cgal_cells = 0, cell_count = 0;
   const double clock = clock_cost();
   for (int round = 0; round < 3; ++round) {
-    ours = std::min(ours, replay_ours(tets, flips, ours_tets));
     double l = 0;
     const double c = replay_cgal(initial, flips, l, cgal_cells);
     if (c < cgal) {
@@ -313,26 +266,23 @@ void run_case(std::size_t n, std::size_t flips_per_point, std::uint64_t seed) {
       cells_lookup = l;
     }
   }
-  if (ours_tets != cgal_cells || cell_count != cgal_cells) {
-    std::fprintf(stderr,
-                 "tds_bench: the replays disagree: %zu and %zu top simplices against CGAL's %zu cells\n",
-                 ours_tets, cell_count, cgal_cells);
+  if (cell_count != cgal_cells) {
+    std::fprintf(stderr, "tds_bench: the replays disagree: %zu top simplices against CGAL's %zu cells\n",
+                 cell_count, cgal_cells);
     std::exit(1);
   }
   const double per = 1e9 / double(flips.size());
-  const double flip_only = cgal - lookup;
+  const double flip_only = cgal - lookup, cells_only = cells - cells_lookup;
   std::printf("per flip, best of 3 alternating rounds:\n");
-  std::printf("  ours (Triangulation::remove_top/add_top, look-ups included)   %8.1f ns\n", ours * per);
-  std::printf("  CGAL TDS, is_facet/is_edge look-up + flip_flippable          %8.1f ns   ours/CGAL %.2f\n",
-              cgal * per, ours / cgal);
-  std::printf("  CGAL TDS, flip_flippable alone (look-up timed apart: %.1f ns) %8.1f ns   ours/CGAL %.2f\n",
-              lookup * per, flip_only * per, ours / flip_only);
-  std::printf("  cells (CellTriangulation::find + flip on the cell)            %8.1f ns   ours/cells %.2f\n",
-              cells * per, ours / cells);
-  std::printf("  cells, flip alone (find timed apart: %.1f ns)                 %8.1f ns   ours/cells %.2f\n",
-              cells_lookup * per, (cells - cells_lookup) * per, ours / (cells - cells_lookup));
-  std::printf("all end with %zu top simplices (%.1f per vertex)\n", ours_tets,
-              4.0 * double(ours_tets) / double(n));
+  std::printf("  CGAL TDS, is_facet/is_edge look-up + flip_flippable          %8.1f ns\n", cgal * per);
+  std::printf("  CGAL TDS, flip_flippable alone (look-up timed apart: %.1f ns) %8.1f ns\n", lookup * per,
+              flip_only * per);
+  std::printf("  cells (CellTriangulation::find + flip on the cell)            %8.1f ns   cells/CGAL %.2f\n",
+              cells * per, cells / cgal);
+  std::printf("  cells, flip alone (find timed apart: %.1f ns)                 %8.1f ns   cells/CGAL %.2f\n",
+              cells_lookup * per, cells_only * per, cells_only / flip_only);
+  std::printf("all end with %zu top simplices (%.1f per vertex)\n", cell_count,
+              4.0 * double(cell_count) / double(n));
 }
 
 } // namespace
@@ -359,8 +309,9 @@ int main(int argc, char** argv) {
     else if (a == "--help" || a == "-h") {
       std::printf(
           "usage: tds_bench [--points N]... [--flips PER_POINT] [--seed S]\n"
-          "  replays one sequence of random valid 2-3 and 3-2 flips on the engine's triangulation and on\n"
-          "  CGAL's Triangulation_data_structure_3; default 1,000 and 10,000 points, 20 flips per point\n");
+          "  replays one sequence of random valid 2-3 and 3-2 flips on the engine's cell triangulation and\n"
+          "  on CGAL's Triangulation_data_structure_3; default 1,000 and 10,000 points, 20 flips per "
+          "point\n");
       return 0;
     } else {
       std::fprintf(stderr, "tds_bench: unknown argument %s (try --help)\n", a.c_str());

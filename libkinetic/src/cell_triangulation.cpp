@@ -184,7 +184,7 @@ template <int D>
 void CellTriangulation<D>::replace(const std::vector<CellIndex>& removed, const std::vector<NewTop>& added,
                                    std::vector<int>& dropped_certs, std::vector<CellIndex>* created) {
   plan_gluing(removed, added);
-  // Facets inside the removed cells go with the later of their two cells, in Triangulation's order.
+  // Facets inside the removed cells go with the later of their two cells, in the order of `removed`.
   for (std::size_t k = 0; k < removed.size(); ++k) {
     const Cell& cell = cells_[index(removed[k])];
     for (std::size_t i = 0; i < top_size; ++i)

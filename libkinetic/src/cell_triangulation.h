@@ -5,8 +5,9 @@
 // docs/MATH.md §4.5; a local insertion or deletion a star by another), glued to the cells around
 // them without a look-up by vertices. This is the shape of CGAL's Triangulation_data_structure_3 /
 // _2, kept in arrays (cells are reused through a free list) so that a certificate or a queue entry can
-// name (cell, facet) by two integers. Geometry lives elsewhere, as in triangulation.h. "Cell" is
-// CGAL's word for a top simplex here, not a CompuCell3D cell (a vertex).
+// name (cell, facet) by two integers. Geometry lives elsewhere: certificates decide validity, this
+// structure only records the combinatorics. "Cell" is CGAL's word for a top simplex here, not a
+// CompuCell3D cell (a vertex).
 #pragma once
 
 #include "medusa/kinetic/simplex.h"
@@ -48,9 +49,9 @@ public:
   // hole exactly: each facet on the boundary of `removed` is a facet of exactly one added simplex, and
   // every other facet of an added simplex is shared by exactly two of them; InternalError otherwise,
   // leaving the triangulation as it was. Boundary facets keep their certificate ids; facets inside
-  // `removed` go, and their ids are appended to dropped_certs in the order Triangulation::remove_top
-  // would give them if the cells were removed in this order (a facet goes with the later of its two
-  // cells). The new cells' indices are written to `created`, one per added simplex, if given.
+  // `removed` go, and their ids are appended to dropped_certs in the order of `removed`, each facet
+  // with the later of its two cells. The new cells' indices are written to `created`, one per added simplex,
+  // if given.
   void replace(const std::vector<CellIndex>& removed, const std::vector<NewTop>& added,
                std::vector<int>& dropped_certs, std::vector<CellIndex>* created = nullptr);
 

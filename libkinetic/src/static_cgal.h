@@ -4,8 +4,8 @@
 // Only the CGAL types and the alpha shapes' face enumerations differ between the two dimensions.
 #pragma once
 
+#include "cell_triangulation.h"
 #include "static_delaunay.h"
-#include "triangulation.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -65,11 +65,9 @@ bool collect_local(const std::vector<Simplex>& removed, const std::vector<Simple
       std::swap(vertices[j - 1], vertices[j]);
   std::array<int, 1u << max_local> delta{};
   std::uint64_t present = 0;
-  std::size_t top_size = 0;
   for (const auto* list : {&removed, &added}) {
     const int sign = list == &removed ? -1 : 1;
     for (const Simplex& t : *list) {
-      top_size = t.size();
       unsigned m = 0;
       for (VertexId v : t)
         m |= 1u << static_cast<unsigned>(
@@ -93,8 +91,6 @@ bool collect_local(const std::vector<Simplex>& removed, const std::vector<Simple
       out.index_of_mask[m] = static_cast<std::int8_t>(out.faces.size());
       out.faces.push_back({from_mask(vertices, m), delta[m]});
     }
-    if (static_cast<std::size_t>(bits(m)) + 1 == top_size)
-      out.facets.push_back(from_mask(vertices, m));
   }
   return true;
 }
@@ -120,19 +116,10 @@ void collect_sorted(const std::vector<Simplex>& removed, const std::vector<Simpl
     Simplex face;
     int delta;
   };
-  std::size_t top_size = 0, facet_count = 0;
-  for (const auto* list : {&removed, &added})
-    for (const Simplex& t : *list) {
-      top_size = std::max(top_size, t.size());
-      facet_count += t.size();
-    }
-  out.facets.reserve(facet_count);
+  std::size_t top_size = 0;
   for (const auto* list : {&removed, &added})
     for (const Simplex& t : *list)
-      for (std::size_t i = 0; i < t.size(); ++i)
-        out.facets.push_back(t.facet(i));
-  std::sort(out.facets.begin(), out.facets.end());
-  out.facets.erase(std::unique(out.facets.begin(), out.facets.end()), out.facets.end());
+      top_size = std::max(top_size, t.size());
   std::vector<Occurrence> all;
   for (std::size_t k = 1; k <= top_size; ++k) {
     std::size_t count = 0;
@@ -191,11 +178,9 @@ TouchedFace* TouchedFaces::find(const Simplex& s) {
 void collect_touched_faces(const std::vector<Simplex>& removed, const std::vector<Simplex>& added,
                            TouchedFaces& out) {
   out.faces.clear();
-  out.facets.clear();
   out.local_count = 0;
   if (!collect_local(removed, added, out)) { // it gives up before setting local_count
     out.faces.clear();
-    out.facets.clear();
     collect_sorted(removed, added, out);
   }
 }

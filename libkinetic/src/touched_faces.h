@@ -1,6 +1,6 @@
-// The faces and facets touched when top simplices of Del are replaced (a flip, a static repair, the
-// initial triangulation), each once and in canonical order (docs/MATH.md §5.2), with the change in the
-// number of top simplices that hold each face. The engine then looks each face up once.
+// The faces touched when top simplices of Del are replaced (a flip, a static repair, the initial
+// triangulation), each once and in canonical order (docs/MATH.md §5.2), with the change in the number
+// of top simplices that hold each face. The engine then looks each face up once.
 #pragma once
 
 #include "medusa/kinetic/simplex.h"
@@ -29,7 +29,6 @@ struct TouchedFaces {
   // lexicographically: sorted by Simplex's operator<). Every facet of a touched face is touched too
   // (it lies in the same top simplex), so the engine finds it here by binary search.
   std::vector<TouchedFace> faces;
-  std::vector<Simplex> facets; // facets of the changed top simplices, infinite ones included
 
   // The entry of a touched face; nullptr when s is not touched.
   TouchedFace* find(const Simplex& s);
