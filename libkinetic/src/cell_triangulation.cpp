@@ -30,19 +30,6 @@ template <int D> void CellTriangulation<D>::clear() {
   live_count_ = 0;
 }
 
-template <int D> Simplex CellTriangulation<D>::top(CellIndex c) const {
-  const Cell& cell = cells_[index(c)];
-  return Simplex::from_range(cell.v.begin(), cell.v.end());
-}
-
-template <int D> int CellTriangulation<D>::index_of(CellIndex c, VertexId v) const {
-  const Cell& cell = cells_[index(c)];
-  for (std::size_t i = 0; i < top_size; ++i)
-    if (cell.v[i] == v)
-      return static_cast<int>(i);
-  return -1;
-}
-
 template <int D> int CellTriangulation<D>::mirror_index(CellIndex c, int i) const {
   return back_index(neighbor(c, i), c);
 }

@@ -76,7 +76,10 @@ public:
     return c >= 0 && static_cast<std::size_t>(c) < cells_.size() && cells_[index(c)].live;
   }
   VertexId vertex(CellIndex c, int i) const { return cells_[index(c)].v[slot(i)]; }
-  Simplex top(CellIndex c) const;
+  Simplex top(CellIndex c) const {
+    const Cell& cell = cells_[index(c)];
+    return Simplex::from_range(cell.v.begin(), cell.v.end());
+  }
   // The facet of c without its i-th vertex.
   Simplex facet(CellIndex c, int i) const { return top(c).facet(slot(i)); }
   CellIndex neighbor(CellIndex c, int i) const { return cells_[index(c)].n[slot(i)]; }
@@ -85,7 +88,13 @@ public:
   // The vertex of c's i-th neighbour that is not on their shared facet.
   VertexId apex_across(CellIndex c, int i) const { return vertex(neighbor(c, i), mirror_index(c, i)); }
   // The position of v among c's sorted vertices, -1 if it is not one.
-  int index_of(CellIndex c, VertexId v) const;
+  int index_of(CellIndex c, VertexId v) const {
+    const Cell& cell = cells_[index(c)];
+    for (std::size_t i = 0; i < top_size; ++i)
+      if (cell.v[i] == v)
+        return static_cast<int>(i);
+    return -1;
+  }
   // The index of the facet f of c: the position of c's one vertex off f (c must hold f).
   int facet_index(CellIndex c, const Simplex& f) const {
     for (int i = 0; i <= D; ++i)
@@ -143,14 +152,34 @@ public:
     for (Cell& cell : cells_)
       cell.cert.fill(-1);
   }
-  // Calls f(c) for every cell c containing every vertex of s (s non-empty), by a walk over the star
-  // of one vertex of s (a finite one when s has one: the infinite vertex's star is the whole hull).
-  // f must not start another walk.
+  // Calls f(c) for every cell c containing every vertex of s (s non-empty): one such cell is found by
+  // a walk over the star of a vertex of s (a finite one when s has one: the infinite vertex's star
+  // is the whole hull), and the others from it (for_each_cell_containing_from). f must not start
+  // another walk.
   template <class F> void for_each_cell_containing(const Simplex& s, F&& f) const {
-    walk_star(s, [&](CellIndex c) {
+    if (const CellIndex start = cell_containing(s); start != no_cell)
+      for_each_cell_containing_from(start, s, f);
+  }
+  // The same from a cell `start` that contains s: a walk across the facets that contain s, which
+  // reaches exactly the cells containing s (their union is a closed ball round s's interior, or its
+  // boundary, in a triangulated sphere), without testing any other cell: around an edge, its ring.
+  template <class F> void for_each_cell_containing_from(CellIndex start, const Simplex& s, F&& f) const {
+    next_epoch();
+    walk_.assign(1, start);
+    cells_[index(start)].mark = epoch_;
+    while (!walk_.empty()) {
+      const CellIndex c = walk_.back();
+      walk_.pop_back();
       f(c);
-      return false;
-    });
+      const Cell& cell = cells_[index(c)];
+      for (std::size_t i = 0; i < top_size; ++i) {
+        const Cell& next = cells_[index(cell.n[i])];
+        if (!s.contains(cell.v[i]) && next.mark != epoch_) { // the facet holds s
+          next.mark = epoch_;
+          walk_.push_back(cell.n[i]);
+        }
+      }
+    }
   }
   // Calls f(c) for every living cell, in index order.
   template <class F> void for_each_cell(F&& f) const {
@@ -202,6 +231,14 @@ private:
   // Calls f(c) for the cells c of the star of s's largest vertex that contain s, until f returns
   // true; returns whether it did. Cells seen are marked with the walk's epoch.
   template <class F> bool walk_star(const Simplex& s, F&& f) const;
+  // Starts a walk: no cell's mark is the new epoch.
+  void next_epoch() const {
+    if (++epoch_ == 0) { // wrapped: no mark may look current
+      for (const Cell& cell : cells_)
+        cell.mark = 0;
+      epoch_ = 1;
+    }
+  }
   // The index of the facet of e across which c lies; InternalError if c is not e's neighbour.
   int back_index(CellIndex e, CellIndex c) const;
   CellIndex allocate();
@@ -230,11 +267,7 @@ template <int D> template <class F> bool CellTriangulation<D>::walk_star(const S
   const CellIndex start = cell_of(centre);
   if (start == no_cell)
     return false;
-  if (++epoch_ == 0) { // wrapped: no mark may look current
-    for (const Cell& cell : cells_)
-      cell.mark = 0;
-    epoch_ = 1;
-  }
+  next_epoch();
   walk_.assign(1, start);
   cells_[index(start)].mark = epoch_;
   while (!walk_.empty()) {

@@ -386,9 +386,14 @@ private:
   bool has_top(const Simplex& t) const { return cells.find(t) != no_cell; }
   // The apex across the facet f from its apex `apex` (f + apex must be a top simplex).
   VertexId other_apex(const Simplex& f, VertexId apex) const;
+  // Calls f(c) for every cell c containing s; f must not walk the triangulation itself.
+  template <class F> void for_each_cell_containing(const Simplex& s, F&& f) const {
+    if (const CellIndex start = cell_holding(s); start != no_cell)
+      cells.for_each_cell_containing_from(start, s, f);
+  }
   // Calls f(t) for every top simplex t containing s; f must not walk the triangulation itself.
   template <class F> void for_each_top_containing(const Simplex& s, F&& f) const {
-    cells.for_each_cell_containing(s, [&](CellIndex c) { f(cells.top(c)); });
+    for_each_cell_containing(s, [&](CellIndex c) { f(cells.top(c)); });
   }
   std::vector<Simplex> tops_containing(const Simplex& s) const {
     std::vector<Simplex> result;

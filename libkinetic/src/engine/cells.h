@@ -54,7 +54,7 @@ template <class K> VertexId Engine<K>::other_apex(const Simplex& f, VertexId ape
 template <class K> void Engine<K>::finite_cofaces(const Simplex& s, std::vector<Simplex>& out) const {
   // A coface is s plus one vertex of a finite top simplex holding s (it may come from several).
   out.clear();
-  cells.for_each_cell_containing(s, [&](CellIndex c) {
+  for_each_cell_containing(s, [&](CellIndex c) {
     if (cells.vertex(c, 0) == infinite_vertex) // sorted: the infinite vertex comes first
       return;
     for (int k = 0; k <= dim; ++k)

@@ -266,9 +266,10 @@ template <class K> bool Engine<K>::gabriel_now(const Simplex& s) {
       if (x != infinite_vertex)
         link.push_back(x);
   } else {
-    for_each_top_containing(s, [&](const Simplex& t) {
-      for (VertexId x : t)
-        if (x != infinite_vertex && !s.contains(x) && std::find(link.begin(), link.end(), x) == link.end())
+    for_each_cell_containing(s, [&](CellIndex c) {
+      for (int k = 0; k <= dim; ++k)
+        if (const VertexId x = cells.vertex(c, k);
+            x != infinite_vertex && !s.contains(x) && std::find(link.begin(), link.end(), x) == link.end())
           link.push_back(x);
     });
   }
