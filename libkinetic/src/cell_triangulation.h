@@ -12,6 +12,7 @@
 
 #include "medusa/kinetic/simplex.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -166,16 +167,16 @@ public:
   template <class F> void for_each_cell_containing_from(CellIndex start, const Simplex& s, F&& f) const {
     next_epoch();
     walk_.assign(1, start);
-    cells_[index(start)].mark = epoch_;
+    marks_[index(start)] = epoch_;
     while (!walk_.empty()) {
       const CellIndex c = walk_.back();
       walk_.pop_back();
       f(c);
       const Cell& cell = cells_[index(c)];
       for (std::size_t i = 0; i < top_size; ++i) {
-        const Cell& next = cells_[index(cell.n[i])];
-        if (!s.contains(cell.v[i]) && next.mark != epoch_) { // the facet holds s
-          next.mark = epoch_;
+        std::uint32_t& mark = marks_[index(cell.n[i])];
+        if (!s.contains(cell.v[i]) && mark != epoch_) { // the facet holds s
+          mark = epoch_;
           walk_.push_back(cell.n[i]);
         }
       }
@@ -201,7 +202,6 @@ private:
     std::array<int, top_size> cert{};    // the certificate id of facet i, -1 if none
     signed char orientation = 0;
     bool live = false;
-    mutable std::uint32_t mark = 0; // the last star walk that reached the cell
   };
   // A facet to glue while replacing: its vertices, the cell and facet index it belongs to, and the
   // cell across it outside the replaced ones, or the added facet it pairs with (an index into
@@ -231,11 +231,12 @@ private:
   // Calls f(c) for the cells c of the star of s's largest vertex that contain s, until f returns
   // true; returns whether it did. Cells seen are marked with the walk's epoch.
   template <class F> bool walk_star(const Simplex& s, F&& f) const;
-  // Starts a walk: no cell's mark is the new epoch.
+  // Starts a walk: every cell has a mark, and none is the new epoch.
   void next_epoch() const {
+    if (marks_.size() < cells_.size())
+      marks_.resize(cells_.size(), 0);
     if (++epoch_ == 0) { // wrapped: no mark may look current
-      for (const Cell& cell : cells_)
-        cell.mark = 0;
+      std::fill(marks_.begin(), marks_.end(), 0);
       epoch_ = 1;
     }
   }
@@ -258,6 +259,9 @@ private:
   std::vector<VertexId> lost_;                           // the removed cells' vertices
   std::vector<CellIndex> made_;                          // the added cells
   // The star walks of const look-ups mark cells: one walk at a time (the engine is single-threaded).
+  // marks_[c]: the last walk that reached cell c, apart from the cells so that a walk reads only
+  // the cells it enters and the marks of their neighbours.
+  mutable std::vector<std::uint32_t> marks_;
   mutable std::vector<CellIndex> walk_;
   mutable std::uint32_t epoch_ = 0;
 };
@@ -269,7 +273,7 @@ template <int D> template <class F> bool CellTriangulation<D>::walk_star(const S
     return false;
   next_epoch();
   walk_.assign(1, start);
-  cells_[index(start)].mark = epoch_;
+  marks_[index(start)] = epoch_;
   while (!walk_.empty()) {
     const CellIndex c = walk_.back();
     walk_.pop_back();
@@ -280,9 +284,9 @@ template <int D> template <class F> bool CellTriangulation<D>::walk_star(const S
     if (all && f(c))
       return true;
     for (std::size_t i = 0; i < top_size; ++i) {
-      const Cell& next = cells_[index(cell.n[i])];
-      if (cell.v[i] != centre && next.mark != epoch_) { // the facet holds the centre
-        next.mark = epoch_;
+      std::uint32_t& mark = marks_[index(cell.n[i])];
+      if (cell.v[i] != centre && mark != epoch_) { // the facet holds the centre
+        mark = epoch_;
         walk_.push_back(cell.n[i]);
       }
     }
