@@ -165,22 +165,12 @@ public:
   // reaches exactly the cells containing s (their union is a closed ball round s's interior, or its
   // boundary, in a triangulated sphere), without testing any other cell: around an edge, its ring.
   template <class F> void for_each_cell_containing_from(CellIndex start, const Simplex& s, F&& f) const {
-    next_epoch();
-    walk_.assign(1, start);
-    marks_[index(start)] = epoch_;
-    while (!walk_.empty()) {
-      const CellIndex c = walk_.back();
-      walk_.pop_back();
-      f(c);
-      const Cell& cell = cells_[index(c)];
-      for (std::size_t i = 0; i < top_size; ++i) {
-        std::uint32_t& mark = marks_[index(cell.n[i])];
-        if (!s.contains(cell.v[i]) && mark != epoch_) { // the facet holds s
-          mark = epoch_;
-          walk_.push_back(cell.n[i]);
-        }
-      }
-    }
+    walk(
+        start, [&](const Cell& cell, std::size_t i) { return !s.contains(cell.v[i]); }, // the facet holds s
+        [&](CellIndex c) {
+          f(c);
+          return false;
+        });
   }
   // Calls f(c) for every living cell, in index order.
   template <class F> void for_each_cell(F&& f) const {
@@ -229,8 +219,12 @@ private:
   // The position of c in the `removed` of the replacement being planned, no_position if absent.
   std::size_t removed_position(CellIndex c) const;
   // Calls f(c) for the cells c of the star of s's largest vertex that contain s, until f returns
-  // true; returns whether it did. Cells seen are marked with the walk's epoch.
+  // true; returns whether it did.
   template <class F> bool walk_star(const Simplex& s, F&& f) const;
+  // Calls visit(c) on each cell c reached from `start` across the facets crosses(cell, i) lets it
+  // cross (the cell's i-th), each once, until visit returns true; returns whether it did. Cells
+  // reached are marked with the walk's epoch.
+  template <class Crosses, class Visit> bool walk(CellIndex start, Crosses&& crosses, Visit&& visit) const;
   // Starts a walk: every cell has a mark, and none is the new epoch.
   void next_epoch() const {
     if (marks_.size() < cells_.size())
@@ -271,21 +265,34 @@ template <int D> template <class F> bool CellTriangulation<D>::walk_star(const S
   const CellIndex start = cell_of(centre);
   if (start == no_cell)
     return false;
+  return walk(
+      start,
+      [&](const Cell& cell, std::size_t i) { return cell.v[i] != centre; }, // the facet holds the centre
+      [&](CellIndex c) {
+        for (VertexId x : s)
+          if (index_of(c, x) < 0)
+            return false;
+        return f(c);
+      });
+}
+
+template <int D>
+template <class Crosses, class Visit>
+bool CellTriangulation<D>::walk(CellIndex start, Crosses&& crosses, Visit&& visit) const {
   next_epoch();
   walk_.assign(1, start);
   marks_[index(start)] = epoch_;
   while (!walk_.empty()) {
     const CellIndex c = walk_.back();
     walk_.pop_back();
-    const Cell& cell = cells_[index(c)];
-    bool all = true;
-    for (VertexId x : s)
-      all = all && index_of(c, x) >= 0;
-    if (all && f(c))
+    if (visit(c))
       return true;
+    const Cell& cell = cells_[index(c)];
     for (std::size_t i = 0; i < top_size; ++i) {
+      if (!crosses(cell, i))
+        continue;
       std::uint32_t& mark = marks_[index(cell.n[i])];
-      if (cell.v[i] != centre && mark != epoch_) { // the facet holds the centre
+      if (mark != epoch_) {
         mark = epoch_;
         walk_.push_back(cell.n[i]);
       }
