@@ -53,14 +53,7 @@ template <int D> void CellTriangulation<D>::set_cert(CellIndex c, int i, int id)
 }
 
 template <int D> CellIndex CellTriangulation<D>::find(const Simplex& t) const {
-  if (t.size() != top_size)
-    return no_cell;
-  CellIndex found = no_cell;
-  walk_star(t, [&](CellIndex c) {
-    found = c;
-    return true;
-  });
-  return found;
+  return t.size() == top_size ? cell_containing(t) : no_cell;
 }
 
 template <int D> std::size_t CellTriangulation<D>::removed_position(CellIndex c) const {

@@ -139,14 +139,20 @@ public:
   // A cell containing every vertex of s (s non-empty), no_cell if there is none: s is a face of the
   // triangulation iff there is one.
   CellIndex cell_containing(const Simplex& s) const {
+    const VertexId centre = s[s.size() - 1]; // the largest: finite unless s is the infinite vertex
+    const CellIndex start = cell_of(centre);
+    return start == no_cell ? no_cell : cell_containing_from(start, centre, s);
+  }
+  // The same by a walk over the star of s's vertex `centre` from a cell `start` that contains it.
+  CellIndex cell_containing_from(CellIndex start, VertexId centre, const Simplex& s) const {
     CellIndex found = no_cell;
-    walk_star(s, [&](CellIndex c) {
+    walk_star(start, centre, s, [&](CellIndex c) {
       found = c;
       return true;
     });
     return found;
   }
-  // One more than the largest cell index in use: indices of living cells are below it.
+  // The number of cell records, living and free: indices of living cells are below it.
   std::size_t capacity() const { return cells_.size(); }
   // Every facet forgets its certificate id (a frame builds them all again, docs/MATH.md §2.3).
   void clear_certs() {
@@ -218,9 +224,9 @@ private:
   static constexpr std::size_t no_position = static_cast<std::size_t>(-1);
   // The position of c in the `removed` of the replacement being planned, no_position if absent.
   std::size_t removed_position(CellIndex c) const;
-  // Calls f(c) for the cells c of the star of s's largest vertex that contain s, until f returns
-  // true; returns whether it did.
-  template <class F> bool walk_star(const Simplex& s, F&& f) const;
+  // Calls f(c) for the cells c of the star of s's vertex `centre`, from the cell `start` holding
+  // it, that contain s, until f returns true; returns whether it did.
+  template <class F> bool walk_star(CellIndex start, VertexId centre, const Simplex& s, F&& f) const;
   // Calls visit(c) on each cell c reached from `start` across the facets crosses(cell, i) lets it
   // cross (the cell's i-th), each once, until visit returns true; returns whether it did. Cells
   // reached are marked with the walk's epoch.
@@ -260,11 +266,9 @@ private:
   mutable std::uint32_t epoch_ = 0;
 };
 
-template <int D> template <class F> bool CellTriangulation<D>::walk_star(const Simplex& s, F&& f) const {
-  const VertexId centre = s[s.size() - 1]; // the largest: finite unless s is the infinite vertex
-  const CellIndex start = cell_of(centre);
-  if (start == no_cell)
-    return false;
+template <int D>
+template <class F>
+bool CellTriangulation<D>::walk_star(CellIndex start, VertexId centre, const Simplex& s, F&& f) const {
   return walk(
       start,
       [&](const Cell& cell, std::size_t i) { return cell.v[i] != centre; }, // the facet holds the centre

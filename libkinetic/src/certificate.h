@@ -31,8 +31,8 @@ struct Certificate {
   // A Delaunay certificate's facet as (cell, index) in the triangulation held as cells
   // (cell_triangulation.h): the cell of the facet's first apex (Engine::install_touched_facets), and
   // the facet's index there (the position of the cell's vertex off the facet), so that the facet and
-  // its apices are reached from the certificate without a look-up by vertex ids; -1 for a radius
-  // certificate. Placed beside the flags, it leaves the record at 32 bytes.
+  // its apices are reached from the certificate without a look-up by vertex ids; cell -1 for a
+  // radius certificate. Placed beside the flags, it leaves the record at 32 bytes.
   std::int8_t facet_index = 0;
   Simplex key; // the facet (delaunay) or the finite face (radius)
   std::uint32_t version = 0;

@@ -15,7 +15,8 @@
 
 namespace medusa::kinetic::detail {
 
-// A flip makes at most three cells: those are scanned; a static change's many are not.
+// A flip makes at most three cells, a local change a few dozen: up to this many are scanned, more
+// (a static change's) are not.
 constexpr std::size_t max_scanned_created = 8;
 
 template <class K> CellIndex Engine<K>::cell_holding(const Simplex& s) const {
@@ -33,12 +34,17 @@ template <class K> CellIndex Engine<K>::cell_holding(const Simplex& s) const {
 }
 
 template <class K> std::pair<CellIndex, int> Engine<K>::facet_owner(CellIndex c, int i) const {
-  if (const int id = cells.cert(c, i); id >= 0) {
-    const Certificate& x = certificates[id];
-    if (x.alive && x.kind == CertKind::delaunay && x.cell == cells.neighbor(c, i) && cells.alive(x.cell))
-      return {x.cell, x.facet_index};
-  }
-  return {c, i};
+  const int id = cells.cert(c, i);
+  if (id < 0)
+    return {c, i}; // a facet a change made, installed from its own cells (install_touched_facets)
+  const Certificate& x = certificates[id];
+  if (x.cell == c && x.facet_index == i)
+    return {c, i};
+  if (x.cell == cells.neighbor(c, i) && x.facet_index == cells.mirror_index(c, i))
+    return {x.cell, x.facet_index};
+  std::ostringstream os;
+  os << "the certificate of facet " << cells.facet(c, i) << " names neither of its cells";
+  throw InternalError(os.str());
 }
 
 template <class K> VertexId Engine<K>::other_apex(const Simplex& f, VertexId apex) const {

@@ -95,6 +95,12 @@ template <class K> bool Engine<K>::flippable(int cert, FlipChange& change) {
   // The top simplices of the flip are c (facet + p), its neighbour across the facet (facet + q) and,
   // for a 3-2 flip, the neighbour of c across the facet without the facet's vertex off the edge.
   const auto cell_across_from = [&](VertexId z) { return cells.neighbor(c, cells.index_of(c, z)); };
+  // Whether the simplex s through p and q is in the triangulation: a walk round p from c, or round q
+  // from the cell across when p is the infinite vertex (whose star is the whole hull).
+  const auto present = [&](const Simplex& s) {
+    return (p != infinite_vertex ? cells.cell_containing_from(c, p, s)
+                                 : cells.cell_containing_from(cells.neighbor(c, i), q, s)) != no_cell;
+  };
   change = K::flip(facet, p, q, [&](const Simplex& t) {
     for (VertexId z : facet)
       if (!t.contains(z))
@@ -115,7 +121,7 @@ template <class K> bool Engine<K>::flippable(int cert, FlipChange& change) {
   if constexpr (dim == 2) {
     // 2-2: the new edge pq must not exist yet (a vertex of degree 3 cannot lose an edge by a flip),
     // and a finite quadrilateral xpyq must be strictly convex (x and y strictly on either side of pq).
-    if (cells.cell_containing(Simplex{p, q}) != no_cell)
+    if (present(Simplex{p, q}))
       return false;
     if (is_finite(facet) && p != infinite_vertex && q != infinite_vertex) {
       auto side = [&](VertexId x) {
@@ -130,8 +136,7 @@ template <class K> bool Engine<K>::flippable(int cert, FlipChange& change) {
   // at now may not be embedded: at a frame, new velocities can turn a flat tetrahedron inside out,
   // and on a flat hull (a lattice) simultaneous failures set this up too. The local tests below do
   // not see it (tests/kinetic/test_kinetic_dense_lattice.cpp).
-  if (dim == 3 &&
-      cells.cell_containing(change.three_two ? Simplex{change.z, p, q} : Simplex{p, q}) != no_cell)
+  if (dim == 3 && present(change.three_two ? Simplex{change.z, p, q} : Simplex{p, q}))
     return false;
   if (dim == 3 && is_finite(facet) && p != infinite_vertex && q != infinite_vertex) {
     // 2-3: the segment pq crosses the triangle's interior; 3-2 (the edge e0e1 of the facet has the

@@ -156,7 +156,7 @@ template <class K> void Engine<K>::record_top_changes(Step& step, OldMembership&
   for (const Simplex& t : new_tops)
     if (is_finite(t) && !before.count(t))
       step.delaunay_created.push_back(t);
-  // Hash tables iterate in no meaningful order: the stream lists them sorted.
+  // Cells are listed in the order of their indices, which means nothing: the stream lists them sorted.
   std::sort(step.delaunay_removed.begin(), step.delaunay_removed.end());
   std::sort(step.delaunay_created.begin(), step.delaunay_created.end());
 }

@@ -89,7 +89,7 @@ template <class K> void Engine<K>::rebuild_static(OldMembership* old_k) {
 // A hull ridge's certificate (docs/MATH.md §3.2 case B) is oriented by the recorded orientation of the top
 // simplex below one of its hull facets, which is not a face of the ridge's own top simplices. A
 // static change can replace that simplex and leave the ridge's top simplices as they were, so
-// apply_top_change does not rebuild the certificate. After a flip that is harmless: the old and the
+// change_tops does not rebuild the certificate. After a flip that is harmless: the old and the
 // new simplex below lie on the inner side of the hull facet just after now, so the orientation is
 // the same. A static change may replace one whose recorded orientation had turned stale (flat at
 // now, inside out just after, which is why the frame or the batch repairs), and the certificate

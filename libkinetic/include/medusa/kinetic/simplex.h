@@ -70,8 +70,8 @@ public:
   }
 
   // Unused slots hold -1, so the four entries decide. Compared as two 64-bit words without a branch
-  // between them: hash tables and the triangulation's incident lists compare keys often, and entries
-  // that differ in a late vertex made the chain of four tests mispredict.
+  // between them: hash tables compare keys often, and entries that differ in a late vertex made the
+  // chain of four tests mispredict.
   friend bool operator==(const Simplex& a, const Simplex& b) {
     std::uint64_t x[2], y[2];
     std::memcpy(x, a.v_.data(), sizeof x);
