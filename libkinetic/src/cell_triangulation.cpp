@@ -13,6 +13,9 @@ namespace medusa::kinetic::detail {
 
 namespace {
 
+// Past this many facets a change's scratch is not kept for the next one.
+constexpr std::size_t max_kept_scratch = 4096;
+
 [[noreturn]] void broken(const std::string& what) { throw InternalError("cell triangulation: " + what); }
 
 template <class T> std::string text(const T& x) {
@@ -219,6 +222,15 @@ void CellTriangulation<D>::replace(const std::vector<CellIndex>& removed, const 
   }
   if (created != nullptr)
     created->assign(made.begin(), made.end());
+  // The scratch of a static change is as large as the change (a first triangulation of a million
+  // cells: a gigabyte): let go rather than held for the rest of the run.
+  if (facets_.capacity() > max_kept_scratch) {
+    std::vector<Gluing>().swap(facets_);
+    std::vector<Gluing>().swap(boundary_);
+    std::vector<std::pair<CellIndex, std::size_t>>().swap(order_);
+    std::vector<VertexId>().swap(lost_);
+    std::vector<CellIndex>().swap(made_);
+  }
 }
 
 template <int D>
