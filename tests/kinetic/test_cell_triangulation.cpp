@@ -393,6 +393,61 @@ TEST_CASE("a vertex inserted into a cell and deleted again leaves the cells and 
   REQUIRE(p.cells.size() == before);
 }
 
+// Every vertex, edge and triangle of the triangulation, and as many pairs and triples of vertices
+// that are not faces: the walks find a cell holding each face and none for the others, and from any
+// cell holding a face the walk across its facets reaches exactly the cells the sets list.
+template <int D> void walks_agree(unsigned seed) {
+  std::mt19937 rng(seed);
+  Pair<D> p;
+  p.assign(random_delaunay(D, D == 3 ? 40 : 30, rng));
+  std::set<Simplex> faces;
+  for (const auto& [t, orientation] : p.sets.tops)
+    for (unsigned mask = 1; mask + 1 < (1u << t.size()); ++mask) {
+      std::vector<VertexId> v;
+      for (std::size_t k = 0; k < t.size(); ++k)
+        if (mask & (1u << k))
+          v.push_back(t[k]);
+      faces.insert(Simplex::from_range(v.begin(), v.end()));
+    }
+  std::size_t absent = 0, present = 0;
+  std::uniform_int_distribution<VertexId> vertex(-1, D == 3 ? 39 : 29);
+  while (absent < faces.size() / 4) {
+    const VertexId a = vertex(rng), b = vertex(rng), c = vertex(rng);
+    for (const Simplex& s : {Simplex{a, b}, Simplex{a, b, c}})
+      if (std::set<VertexId>(s.begin(), s.end()).size() == s.size() && !faces.count(s) &&
+          !p.sets.tops.count(s)) {
+        REQUIRE(p.cells.cell_containing(s) == no_cell);
+        ++absent;
+      }
+  }
+  for (const Simplex& s : faces) {
+    CAPTURE(s);
+    const std::vector<Simplex> listed = p.sets.tops_containing(s);
+    const std::set<Simplex> expected(listed.begin(), listed.end());
+    const CellIndex found = p.cells.cell_containing(s);
+    REQUIRE(found != no_cell);
+    REQUIRE(expected.count(p.cells.top(found)));
+    for (const Simplex& t : listed) {
+      std::set<Simplex> walked;
+      p.cells.for_each_cell_containing_from(
+          p.cells.find(t), s, [&](CellIndex c) { REQUIRE(walked.insert(p.cells.top(c)).second); });
+      REQUIRE(walked == expected);
+    }
+    ++present;
+  }
+  CAPTURE(present, absent);
+  REQUIRE(present > 100);
+}
+
+TEST_CASE("the walks find a cell holding each face of the triangulation, none for other simplices, and "
+          "every cell holding it from any one",
+          "[kinetic][cell_triangulation]") {
+  const unsigned seed = GENERATE(81u, 82u);
+  CAPTURE(seed);
+  walks_agree<3>(seed);
+  walks_agree<2>(seed);
+}
+
 TEST_CASE("a replacement that does not close its hole is refused and changes nothing",
           "[kinetic][cell_triangulation]") {
   std::mt19937 rng(61);
