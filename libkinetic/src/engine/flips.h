@@ -95,9 +95,13 @@ template <class K> bool Engine<K>::flippable(int cert, FlipChange& change) {
   // The top simplices of the flip are c (facet + p), its neighbour across the facet (facet + q) and,
   // for a 3-2 flip, the neighbour of c across the facet without the facet's vertex off the edge.
   const auto cell_across_from = [&](VertexId z) { return cells.neighbor(c, cells.index_of(c, z)); };
-  // Whether the simplex s through p and q is in the triangulation: a walk round p from c, or round q
-  // from the cell across when p is the infinite vertex (whose star is the whole hull).
+  // Whether the simplex s through p and q is in the triangulation. A finite one is if it has a face
+  // state (FaceStates records exactly the finite faces of Del): one look-up where a walk would
+  // enter a whole vertex star, cell by cell, to tell that it is absent. One through the infinite
+  // vertex (a hull flip) is found by a walk round its finite apex.
   const auto present = [&](const Simplex& s) {
+    if (is_finite(s))
+      return faces.find(s) != nullptr;
     return (p != infinite_vertex ? cells.cell_containing_from(c, p, s)
                                  : cells.cell_containing_from(cells.neighbor(c, i), q, s)) != no_cell;
   };
