@@ -178,6 +178,21 @@ public:
           return false;
         });
   }
+  // The finite cofaces of s (one dimension up) from a cell `start` that contains s, sorted, each
+  // once: s plus one vertex of each finite cell containing s (a vertex may come from several).
+  void finite_cofaces_from(CellIndex start, const Simplex& s, std::vector<Simplex>& out) const {
+    out.clear();
+    for_each_cell_containing_from(start, s, [&](CellIndex c) {
+      const Cell& cell = cells_[index(c)];
+      if (cell.v[0] == -1) // sorted: the infinite vertex comes first
+        return;
+      for (VertexId v : cell.v)
+        if (!s.contains(v))
+          out.push_back(s.with(v));
+    });
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  }
   // Calls f(c) for every living cell, in index order.
   template <class F> void for_each_cell(F&& f) const {
     for (std::size_t c = 0; c < cells_.size(); ++c)

@@ -402,6 +402,9 @@ private:
   }
   // The finite (k+1)-cofaces of a finite k-simplex s, sorted, each once.
   void finite_cofaces(const Simplex& s, std::vector<Simplex>& out) const;
+  // The top simplices of `held`, sorted (the canonical order a change is applied in), with `held`
+  // put in the same order.
+  std::vector<Simplex> sort_by_top(std::vector<CellIndex>& held) const;
   // The top simplices of Del, in cell order.
   std::vector<Simplex> all_tops() const {
     std::vector<Simplex> tops;

@@ -1,6 +1,5 @@
 #include "face_states.h"
 
-#include <set>
 #include <sstream>
 #include <unordered_set>
 
@@ -33,16 +32,13 @@ std::string FaceStates::first_violation(const CellTriangulation<D>& cells,
         violation = named("of Del is not recorded", s);
         return;
       }
+      const CellIndex start = cells.cell_containing(s);
       int containing = 0;
-      std::set<Simplex> cofaces; // finite, each once
-      cells.for_each_cell_containing(s, [&](CellIndex c) {
-        ++containing;
-        const Simplex t = cells.top(c);
-        if (is_finite(t))
-          for (VertexId v : t)
-            if (!s.contains(v))
-              cofaces.insert(s.with(v));
-      });
+      std::vector<Simplex> cofaces;
+      if (start != no_cell) {
+        cells.for_each_cell_containing_from(start, s, [&](CellIndex) { ++containing; });
+        cells.finite_cofaces_from(start, s, cofaces);
+      }
       if (f->tops != containing) {
         violation = named("of Del has a wrong count of top simplices", s);
         return;

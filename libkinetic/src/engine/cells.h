@@ -47,6 +47,21 @@ template <class K> std::pair<CellIndex, int> Engine<K>::facet_owner(CellIndex c,
   throw InternalError(os.str());
 }
 
+template <class K> std::vector<Simplex> Engine<K>::sort_by_top(std::vector<CellIndex>& held) const {
+  std::vector<std::pair<Simplex, CellIndex>> pairs;
+  pairs.reserve(held.size());
+  for (CellIndex c : held)
+    pairs.emplace_back(cells.top(c), c);
+  std::sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Simplex> tops;
+  tops.reserve(held.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    tops.push_back(pairs[k].first);
+    held[k] = pairs[k].second;
+  }
+  return tops;
+}
+
 template <class K> VertexId Engine<K>::other_apex(const Simplex& f, VertexId apex) const {
   const CellIndex c = cells.find(f.with(apex));
   if (c == no_cell) {
@@ -58,17 +73,10 @@ template <class K> VertexId Engine<K>::other_apex(const Simplex& f, VertexId ape
 }
 
 template <class K> void Engine<K>::finite_cofaces(const Simplex& s, std::vector<Simplex>& out) const {
-  // A coface is s plus one vertex of a finite top simplex holding s (it may come from several).
-  out.clear();
-  for_each_cell_containing(s, [&](CellIndex c) {
-    if (cells.vertex(c, 0) == infinite_vertex) // sorted: the infinite vertex comes first
-      return;
-    for (int k = 0; k <= dim; ++k)
-      if (const VertexId v = cells.vertex(c, k); !s.contains(v))
-        out.push_back(s.with(v));
-  });
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
+  if (const CellIndex start = cell_holding(s); start != no_cell)
+    cells.finite_cofaces_from(start, s, out);
+  else
+    out.clear();
 }
 
 } // namespace medusa::kinetic::detail

@@ -123,13 +123,13 @@ std::vector<DegenerateGroup> Engine<K>::degenerate_groups(const std::vector<Simp
   UnionFind uf;
   std::unordered_map<Simplex, std::size_t, SimplexHash> index;
   std::vector<Simplex> tops;
-  std::vector<Simplex> todo;
+  std::vector<Simplex> unvisited;
   auto visit = [&](const Simplex& t) {
     auto [it, fresh] = index.emplace(t, tops.size());
     if (fresh) {
       uf.add();
       tops.push_back(t);
-      todo.push_back(t);
+      unvisited.push_back(t);
     }
     return it->second;
   };
@@ -137,9 +137,9 @@ std::vector<DegenerateGroup> Engine<K>::degenerate_groups(const std::vector<Simp
     if (is_finite(t) && has_top(t))
       visit(t);
   std::unordered_map<Simplex, int, SimplexHash> cospherical; // facet -> in-sphere at t* == 0
-  while (!todo.empty()) {
-    Simplex t = todo.back();
-    todo.pop_back();
+  while (!unvisited.empty()) {
+    Simplex t = unvisited.back();
+    unvisited.pop_back();
     const std::size_t ti = index.at(t);
     for (std::size_t i = 0; i < t.size(); ++i) {
       Simplex f = t.facet(i);

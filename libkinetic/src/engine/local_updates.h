@@ -109,12 +109,12 @@ bool Engine<K>::insert_locally(VertexId v, std::vector<CellIndex>& removed, std:
   if (!find_conflict(v, seed))
     return false;
   std::unordered_map<CellIndex, bool> in_conflict{{seed, true}};
-  std::vector<CellIndex> todo{seed};
+  std::vector<CellIndex> unvisited{seed};
   std::vector<Simplex> boundary;
   removed.clear();
-  while (!todo.empty()) {
-    const CellIndex t = todo.back();
-    todo.pop_back();
+  while (!unvisited.empty()) {
+    const CellIndex t = unvisited.back();
+    unvisited.pop_back();
     removed.push_back(t);
     for (int i = 0; i <= dim; ++i) {
       const Simplex f = cells.facet(t, i);
@@ -126,7 +126,7 @@ bool Engine<K>::insert_locally(VertexId v, std::vector<CellIndex>& removed, std:
           return false;
         it->second = c > 0;
         if (it->second)
-          todo.push_back(other);
+          unvisited.push_back(other);
       }
       if (!it->second)
         boundary.push_back(f);
@@ -157,13 +157,16 @@ bool Engine<K>::delete_locally(VertexId v, std::vector<CellIndex>& removed, std:
     return false;
   removed.clear();
   cells.for_each_cell_containing(Simplex{v}, [&](CellIndex c) { removed.push_back(c); });
-  std::unordered_map<Simplex, int, SimplexHash> walls;           // link facet -> times the flood met it
-  std::unordered_map<Simplex, CellIndex, SimplexHash> star_cell; // link facet -> its cell in v's star
+  // Each link facet: the cell of v's star on it, and the times the flood below met it.
+  struct Wall {
+    CellIndex cell = no_cell;
+    int met = 0;
+  };
+  std::unordered_map<Simplex, Wall, SimplexHash> walls;
   std::vector<VertexId> link;
   for (CellIndex c : removed) {
     const Simplex f = cells.facet(c, cells.index_of(c, v));
-    walls.emplace(f, 0);
-    star_cell.emplace(f, c);
+    walls.emplace(f, Wall{c, 0});
     for (VertexId w : f)
       if (w != infinite_vertex)
         link.push_back(w);
@@ -221,7 +224,7 @@ bool Engine<K>::delete_locally(VertexId v, std::vector<CellIndex>& removed, std:
   std::array<VertexId, 4> seq{};
   std::copy(f.begin(), f.end(), seq.begin());
   seq[f.size()] = v;
-  const CellIndex own_cell = star_cell.at(f);
+  const CellIndex own_cell = walls.at(f).cell;
   const int own = orientation_of(seq.data(), f.size() + 1,
                                  cells.apices(own_cell, cells.index_of(own_cell, v)), v),
             other = facet_side_just_after(f, apex(near));
@@ -229,26 +232,26 @@ bool Engine<K>::delete_locally(VertexId v, std::vector<CellIndex>& removed, std:
     return false;
   const std::size_t seed = own == other ? near : far;
   std::vector<char> filled(local.size(), 0);
-  std::vector<std::size_t> todo{seed};
+  std::vector<std::size_t> unvisited{seed};
   filled[seed] = 1;
-  while (!todo.empty()) {
-    const std::size_t i = todo.back();
-    todo.pop_back();
+  while (!unvisited.empty()) {
+    const std::size_t i = unvisited.back();
+    unvisited.pop_back();
     for (std::size_t j = 0; j < local[i].size(); ++j) {
       const Simplex f = local[i].facet(j);
       if (const auto w = walls.find(f); w != walls.end()) {
-        ++w->second;
+        ++w->second.met;
         continue;
       }
       for (std::size_t k : sides.at(f))
         if (!filled[k]) {
           filled[k] = 1;
-          todo.push_back(k);
+          unvisited.push_back(k);
         }
     }
   }
   for (const auto& wall : walls)
-    if (wall.second != 1)
+    if (wall.second.met != 1)
       return false; // a link facet missing from Del(link), or met from both sides: the flood leaked
   added.clear();
   orientations.clear();
@@ -280,15 +283,7 @@ bool Engine<K>::record_local_change(Step& step, OldMembership& old_k, VertexId v
     std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     for (std::size_t i = 0; i < sorted.size(); ++i)
       std::tie(added[i], orientations[i]) = sorted[i];
-    std::vector<std::pair<Simplex, CellIndex>> gone;
-    for (CellIndex c : removed_cells)
-      gone.emplace_back(cells.top(c), c);
-    std::sort(gone.begin(), gone.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<Simplex> removed;
-    for (std::size_t i = 0; i < gone.size(); ++i) {
-      removed.push_back(gone[i].first);
-      removed_cells[i] = gone[i].second;
-    }
+    const std::vector<Simplex> removed = sort_by_top(removed_cells);
     change_tops(removed, removed_cells, added, &old_k, orientations.data());
     reinstall_hull_ridges_over(added, removed);
     ++(insert ? stats.local_insertions : stats.local_deletions);

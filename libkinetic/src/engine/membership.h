@@ -205,8 +205,8 @@ template <class K> void Engine<K>::install_touched_facets() {
         return static_cast<int>(k);
     return -1;
   };
-  auto& todo = facet_scratch;
-  todo.clear();
+  auto& owned = facet_scratch;
+  owned.clear();
   for (std::size_t k = 0; k < created_cells.size(); ++k) {
     const CellIndex c = created_cells[k];
     for (int i = 0; i <= dim; ++i) {
@@ -214,17 +214,17 @@ template <class K> void Engine<K>::install_touched_facets() {
       const int pn = position(n);
       if (pn >= 0 && pn < static_cast<int>(k))
         continue; // listed from n
-      todo.push_back(
+      owned.push_back(
           {cells.facet(c, i), pn < 0 ? std::make_pair(n, cells.mirror_index(c, i)) : std::make_pair(c, i)});
     }
   }
   if (!few)
     for (CellIndex c : created_cells)
       created_position[static_cast<std::size_t>(c)] = -1;
-  std::sort(todo.begin(), todo.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (const auto& [facet, owner] : todo)
+  std::sort(owned.begin(), owned.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [facet, owner] : owned)
     install_facet(owner.first, owner.second);
-  release_if_large(todo);
+  release_if_large(owned);
 }
 
 template <class K> void Engine<K>::finish_top_change() {

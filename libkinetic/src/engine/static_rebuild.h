@@ -63,18 +63,13 @@ template <class K> void Engine<K>::rebuild_static(OldMembership* old_k) {
   } else {
     std::unordered_set<Simplex, SimplexHash> target(tops.begin(), tops.end());
     std::unordered_map<Simplex, CellIndex, SimplexHash> current;
-    std::vector<std::pair<Simplex, CellIndex>> gone;
     cells.for_each_cell([&](CellIndex c) {
       const Simplex t = cells.top(c);
       current.emplace(t, c);
       if (!target.count(t))
-        gone.emplace_back(t, c);
+        removed_cells.push_back(c);
     });
-    std::sort(gone.begin(), gone.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (const auto& [t, c] : gone) {
-      removed.push_back(t);
-      removed_cells.push_back(c);
-    }
+    removed = sort_by_top(removed_cells);
     for (const Simplex& t : tops)
       if (const auto it = current.find(t); it != current.end())
         kept.push_back(it->second);
