@@ -381,6 +381,9 @@ private:
   // A cell holding the simplex s, no_cell when s is not in Del: among the cells of the last change
   // first (the faces a change touches are theirs), then by a walk round a vertex of s.
   CellIndex cell_holding(const Simplex& s) const;
+  // The same for a face of Del with its state: the cell the state names when it still holds s (set
+  // by the change that made it, apply_top_change), otherwise found as above and kept there.
+  CellIndex cell_holding(const Simplex& s, Face& state) const;
   // The cell and index naming the facet (c, i) in its certificate: the cell of its first apex.
   std::pair<CellIndex, int> facet_owner(CellIndex c, int i) const;
   bool has_top(const Simplex& t) const { return cells.find(t) != no_cell; }
@@ -400,8 +403,8 @@ private:
     for_each_top_containing(s, [&](const Simplex& t) { result.push_back(t); });
     return result;
   }
-  // The finite (k+1)-cofaces of a finite k-simplex s, sorted, each once.
-  void finite_cofaces(const Simplex& s, std::vector<Simplex>& out) const;
+  // The finite (k+1)-cofaces of a finite k-simplex s of Del with its state, sorted, each once.
+  void finite_cofaces(const Simplex& s, Face& state, std::vector<Simplex>& out) const;
   // The top simplices of `held`, sorted (the canonical order a change is applied in), with `held`
   // put in the same order.
   std::vector<Simplex> sort_by_top(std::vector<CellIndex>& held) const;
@@ -427,7 +430,7 @@ private:
   void update_frontier(const Simplex& s) { update_frontier(s, faces.at(s)); }
   void update_frontier(const Simplex& s, Face& f) { set_frontier(s, f, in_frontier(s, f)); } // f: s's state
   void set_frontier(const Simplex& s, Face& f, bool want);
-  bool gabriel_now(const Simplex& s);
+  bool gabriel_now(const Simplex& s, Face& f); // f: s's state
   void count_in_facets(const Simplex& c, int short_delta, int k_delta) {
     FaceStates::count_in_facets(c, short_delta, k_delta, [&](const Simplex& x) { return state_in_table(x); });
   }

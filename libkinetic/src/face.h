@@ -11,7 +11,8 @@
 namespace medusa::kinetic::detail {
 
 // A run holds one per finite face of Del, about 27 per cell in 3D, in a table at a load of 3/5: the
-// two flags share a word with the count of top simplices, which leaves the record at 16 bytes.
+// two flags share a word with the count of top simplices, which leaves the record at 20 bytes with
+// the cell hint.
 struct Face {
   Face() : is_short(false), in_k(false), tops(0) {}
 
@@ -28,8 +29,12 @@ struct Face {
   // goes, so neither rule searches the triangulation (edges and larger; the audit recounts).
   int short_cofaces = 0;
   int k_cofaces = 0;
+  // A cell that held this simplex when a change made the cell or a walk last found it: where the
+  // walks to its cofaces start (Engine::cell_holding). Only a hint, checked before use: cells die,
+  // and their records are reused.
+  CellIndex cell = no_cell;
 };
-static_assert(sizeof(Face) == 16, "a run holds one Face per finite face of Del");
+static_assert(sizeof(Face) == 20, "a run holds one Face per finite face of Del");
 // The largest count Face::tops holds.
 constexpr std::size_t max_face_tops = (std::size_t{1} << 29) - 1;
 

@@ -33,6 +33,18 @@ template <class K> CellIndex Engine<K>::cell_holding(const Simplex& s) const {
   return cells.cell_containing(s);
 }
 
+template <class K> CellIndex Engine<K>::cell_holding(const Simplex& s, Face& state) const {
+  if (const CellIndex c = state.cell; cells.alive(c)) {
+    bool all = true;
+    for (VertexId v : s)
+      all = all && cells.index_of(c, v) >= 0;
+    if (all)
+      return c;
+  }
+  state.cell = cell_holding(s);
+  return state.cell;
+}
+
 template <class K> std::pair<CellIndex, int> Engine<K>::facet_owner(CellIndex c, int i) const {
   const int id = cells.cert(c, i);
   if (id < 0)
@@ -72,8 +84,9 @@ template <class K> VertexId Engine<K>::other_apex(const Simplex& f, VertexId ape
   return cells.apex_across(c, cells.index_of(c, apex));
 }
 
-template <class K> void Engine<K>::finite_cofaces(const Simplex& s, std::vector<Simplex>& out) const {
-  if (const CellIndex start = cell_holding(s); start != no_cell)
+template <class K>
+void Engine<K>::finite_cofaces(const Simplex& s, Face& state, std::vector<Simplex>& out) const {
+  if (const CellIndex start = cell_holding(s, state); start != no_cell)
     cells.finite_cofaces_from(start, s, out);
   else
     out.clear();

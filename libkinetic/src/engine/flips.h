@@ -350,7 +350,7 @@ template <class K> void Engine<K>::resolve_radius(Step& settle, OldMembership& o
     if (s.size() > 2)
       for (std::size_t i = 0; i < s.size(); ++i)
         update_frontier(s.facet(i));
-    finite_cofaces(s, coface_scratch);
+    finite_cofaces(s, f, coface_scratch);
     for (const Simplex& c : coface_scratch)
       update_frontier(c);
   }

@@ -106,6 +106,20 @@ void Engine<K>::apply_top_change(const std::vector<Simplex>& removed,
       t.created = fresh;
     }
   }
+  // Each face of a flip's new cells names one of them (Face::cell), so that the walks to its cofaces
+  // start there. A larger change leaves the hints to be found again when they are needed.
+  if (touched.local_count > 0)
+    for (const CellIndex c : created_cells) {
+      unsigned mask = 0;
+      for (int i = 0; i <= dim; ++i)
+        for (std::size_t k = 0; k < touched.local_count; ++k)
+          if (touched.local[k] == cells.vertex(c, i))
+            mask |= 1u << k;
+      for (unsigned sub = mask; sub != 0; sub = (sub - 1) & mask)
+        if (const int k = touched.index_of_mask[sub]; k >= 0)
+          if (Face* state = touched.faces[static_cast<std::size_t>(k)].state)
+            state->cell = c;
+    }
   std::optional<Collision> collision;
   for (TouchedFace& t : touched.faces) {
     if (!t.created)
@@ -247,28 +261,28 @@ template <class K> void Engine<K>::set_frontier(const Simplex& s, Face& f, bool 
   }
 }
 
-template <class K> bool Engine<K>::gabriel_now(const Simplex& s) {
+template <class K> bool Engine<K>::gabriel_now(const Simplex& s, Face& f) {
   // Not strictly inside the smallest circumball: sign^+ of G1/G2 >= 0 (docs/MATH.md §3.4, §4.1 Lemma 4.2),
   // for every link vertex (each tested once). The certificates are first evaluated at now's
   // enclosure only (certificate::PointAtTime); the few that this leaves undecided get sign^+ from
   // their polynomials (sign_plus_now: interval polynomial, then exact).
   std::vector<VertexId>& link = link_scratch;
   link.clear();
+  const CellIndex c = cell_holding(s, f);
+  if (c == no_cell) {
+    std::ostringstream os;
+    os << "face " << s << " is not in the triangulation";
+    throw InternalError(os.str());
+  }
   if (s.size() == static_cast<std::size_t>(dim)) {
     // A facet: its link is its two apices.
-    const CellIndex c = cell_holding(s);
-    if (c == no_cell) {
-      std::ostringstream os;
-      os << "facet " << s << " is not in the triangulation";
-      throw InternalError(os.str());
-    }
     for (VertexId x : cells.apices(c, cells.facet_index(c, s)).v)
       if (x != infinite_vertex)
         link.push_back(x);
   } else {
-    for_each_cell_containing(s, [&](CellIndex c) {
+    cells.for_each_cell_containing_from(c, s, [&](CellIndex holder) {
       for (int k = 0; k <= dim; ++k)
-        if (const VertexId x = cells.vertex(c, k);
+        if (const VertexId x = cells.vertex(holder, k);
             x != infinite_vertex && !s.contains(x) && std::find(link.begin(), link.end(), x) == link.end())
           link.push_back(x);
     });
@@ -309,7 +323,8 @@ template <class K> bool Engine<K>::gabriel_now(const Simplex& s) {
 template <class K>
 template <class StateOf>
 bool Engine<K>::settle(const Simplex& s, Face& f, StateOf&& state_of) {
-  const bool after = s.size() == top_size() ? f.is_short : f.is_short && (f.k_cofaces > 0 || gabriel_now(s));
+  const bool after =
+      s.size() == top_size() ? f.is_short : f.is_short && (f.k_cofaces > 0 || gabriel_now(s, f));
   if (after != f.in_k) {
     FaceStates::count_in_facets(s, 0, after ? +1 : -1, state_of);
     f.in_k = after;
