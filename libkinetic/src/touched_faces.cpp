@@ -38,11 +38,14 @@ const std::vector<unsigned>& canonical_masks(std::size_t n) {
 }
 
 Simplex from_mask(const std::array<VertexId, max_local>& vertices, unsigned mask) {
-  std::array<VertexId, 4> v{};
-  std::size_t k = 0;
-  for (; mask != 0; mask &= mask - 1) // one step per set bit, lowest first
-    v[k++] = vertices[static_cast<std::size_t>(__builtin_ctz(mask))];
-  return Simplex::from_range(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k));
+  // The set bits lowest first, so the vertices ascend; four fixed steps keep them in registers.
+  const std::size_t n = static_cast<std::size_t>(bits(mask));
+  std::array<VertexId, 4> v;
+  for (VertexId& x : v) {
+    x = mask != 0 ? vertices[static_cast<std::size_t>(__builtin_ctz(mask))] : -1;
+    mask &= mask - 1;
+  }
+  return Simplex::from_sorted(v, n);
 }
 
 // The subset enumeration; false when the top simplices span more than max_local vertices.
@@ -89,7 +92,7 @@ bool collect_local(const std::vector<Simplex>& removed, const std::vector<Simple
       continue;
     if ((m & infinite) == 0) {
       out.index_of_mask[m] = static_cast<std::int8_t>(out.faces.size());
-      out.faces.push_back({from_mask(vertices, m), delta[m]});
+      out.faces.emplace_back(from_mask(vertices, m), delta[m]);
     }
   }
   return true;
@@ -149,7 +152,7 @@ void collect_sorted(const std::vector<Simplex>& removed, const std::vector<Simpl
       if (out.faces.size() > first && out.faces.back().face == f.face)
         out.faces.back().delta += f.delta;
       else
-        out.faces.push_back({f.face, f.delta});
+        out.faces.emplace_back(f.face, f.delta);
   }
 }
 

@@ -14,6 +14,10 @@ namespace medusa::kinetic::detail {
 struct Face;
 
 struct TouchedFace {
+  // Built in place (emplace_back): a temporary copied in is read back as wide words just after its
+  // fields were written one by one, which stalls the load on the stores, once per face of every flip.
+  TouchedFace(const Simplex& f, int d) : face(f), delta(d) {}
+
   Simplex face;
   int delta = 0; // (added top simplices holding it) - (removed ones holding it)
   // Filled by the engine while it applies the change: the face's entry in its table (none for a

@@ -15,6 +15,16 @@ TEST_CASE("a simplex sorts its vertices and knows its dimension", "[kinetic][sim
   REQUIRE(s == Simplex{5, 7, 2});
 }
 
+TEST_CASE("a simplex made from vertices already sorted equals the one that sorts them, of every size",
+          "[kinetic][simplex]") {
+  REQUIRE(Simplex::from_sorted({-1, 4, 8, 9}, 4) == Simplex{9, 8, 4, -1});
+  REQUIRE(Simplex::from_sorted({2, 5, 7, -1}, 3) == Simplex{7, 2, 5});
+  REQUIRE(Simplex::from_sorted({3, 6, -1, -1}, 2) == Simplex{6, 3});
+  REQUIRE(Simplex::from_sorted({0, -1, -1, -1}, 1) == Simplex{0});
+  REQUIRE(Simplex::from_sorted({3, 6, -1, -1}, 2).dim() == 1);
+  REQUIRE_FALSE(Simplex::from_sorted({3, 6, -1, -1}, 2) == Simplex{3, 6, 7});
+}
+
 TEST_CASE("the facets of a tetrahedron are its four triangles", "[kinetic][simplex]") {
   Simplex t{0, 1, 2, 3};
   REQUIRE(t.facet(0) == Simplex{1, 2, 3});

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -31,6 +32,18 @@ public:
     for (; first != last; ++first)
       s.v_[s.size_++] = *first;
     s.sort();
+    return s;
+  }
+  // n vertices already in increasing order, v[0..n), and -1 in v's other entries. Sorting reads back,
+  // as wider words, entries just written one by one, which stalls each load on the stores: a flip's
+  // touched faces, subsets of a sorted vertex set taken in registers, skip that.
+  static Simplex from_sorted(const std::array<VertexId, 4>& v, std::size_t n) {
+    Simplex s;
+    s.v_ = v;
+    s.size_ = static_cast<std::uint8_t>(n);
+    assert(
+        n <= 4 && std::is_sorted(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(n)) &&
+        std::all_of(v.begin() + static_cast<std::ptrdiff_t>(n), v.end(), [](VertexId x) { return x == -1; }));
     return s;
   }
 
