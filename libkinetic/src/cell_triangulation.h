@@ -96,6 +96,15 @@ public:
         return static_cast<int>(i);
     return -1;
   }
+  // Whether c is a living cell with every vertex of s among its vertices.
+  bool holds(CellIndex c, const Simplex& s) const {
+    if (!alive(c))
+      return false;
+    for (VertexId x : s)
+      if (index_of(c, x) < 0)
+        return false;
+    return true;
+  }
   // The index of the facet f of c: the position of c's one vertex off f (c must hold f).
   int facet_index(CellIndex c, const Simplex& f) const {
     for (int i = 0; i <= D; ++i)
@@ -287,12 +296,7 @@ bool CellTriangulation<D>::walk_star(CellIndex start, VertexId centre, const Sim
   return walk(
       start,
       [&](const Cell& cell, std::size_t i) { return cell.v[i] != centre; }, // the facet holds the centre
-      [&](CellIndex c) {
-        for (VertexId x : s)
-          if (index_of(c, x) < 0)
-            return false;
-        return f(c);
-      });
+      [&](CellIndex c) { return holds(c, s) && f(c); });
 }
 
 template <int D>

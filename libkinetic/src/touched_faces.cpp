@@ -158,19 +158,23 @@ void collect_sorted(const std::vector<Simplex>& removed, const std::vector<Simpl
 
 } // namespace
 
+unsigned TouchedFaces::local_mask(const Simplex& s) const {
+  // Both vertex lists are sorted: one merge pass.
+  unsigned mask = 0;
+  std::size_t j = 0;
+  for (VertexId v : s) {
+    while (j < local_count && local[j] < v)
+      ++j;
+    if (j == local_count || local[j] != v)
+      return 0;
+    mask |= 1u << j++;
+  }
+  return mask;
+}
+
 TouchedFace* TouchedFaces::find(const Simplex& s) {
   if (local_count != 0) {
-    // Both vertex lists are sorted: one merge pass gives s's mask over `local`.
-    unsigned mask = 0;
-    std::size_t j = 0;
-    for (VertexId v : s) {
-      while (j < local_count && local[j] < v)
-        ++j;
-      if (j == local_count || local[j] != v)
-        return nullptr;
-      mask |= 1u << j++;
-    }
-    const int index = index_of_mask[mask];
+    const int index = index_of_mask[local_mask(s)]; // index_of_mask[0] is -1: no face is empty
     return index < 0 ? nullptr : &faces[static_cast<std::size_t>(index)];
   }
   auto it = std::lower_bound(faces.begin(), faces.end(), s,

@@ -36,6 +36,8 @@ struct TouchedFaces {
 
   // The entry of a touched face; nullptr when s is not touched.
   TouchedFace* find(const Simplex& s);
+  // For a flip (local_count > 0): the bit mask of s's vertices over `local`, 0 when one is not there.
+  unsigned local_mask(const Simplex& s) const;
 
   // A flip's faces are subsets of its few vertices (collect_touched_faces): then a face is found by
   // its bit mask over `local` (an index into `faces`, -1 for none) instead of by binary search.

@@ -21,26 +21,15 @@ constexpr std::size_t max_scanned_created = 8;
 
 template <class K> CellIndex Engine<K>::cell_holding(const Simplex& s) const {
   if (created_cells.size() <= max_scanned_created)
-    for (CellIndex c : created_cells) {
-      if (!cells.alive(c))
-        continue;
-      bool all = true;
-      for (VertexId v : s)
-        all = all && cells.index_of(c, v) >= 0;
-      if (all)
+    for (CellIndex c : created_cells)
+      if (cells.holds(c, s))
         return c;
-    }
   return cells.cell_containing(s);
 }
 
 template <class K> CellIndex Engine<K>::cell_holding(const Simplex& s, Face& state) const {
-  if (const CellIndex c = state.cell; cells.alive(c)) {
-    bool all = true;
-    for (VertexId v : s)
-      all = all && cells.index_of(c, v) >= 0;
-    if (all)
-      return c;
-  }
+  if (cells.holds(state.cell, s))
+    return state.cell;
   state.cell = cell_holding(s);
   return state.cell;
 }

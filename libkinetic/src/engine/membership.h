@@ -110,11 +110,7 @@ void Engine<K>::apply_top_change(const std::vector<Simplex>& removed,
   // start there. A larger change leaves the hints to be found again when they are needed.
   if (touched.local_count > 0)
     for (const CellIndex c : created_cells) {
-      unsigned mask = 0;
-      for (int i = 0; i <= dim; ++i)
-        for (std::size_t k = 0; k < touched.local_count; ++k)
-          if (touched.local[k] == cells.vertex(c, i))
-            mask |= 1u << k;
+      const unsigned mask = touched.local_mask(cells.top(c));
       for (unsigned sub = mask; sub != 0; sub = (sub - 1) & mask)
         if (const int k = touched.index_of_mask[sub]; k >= 0)
           if (Face* state = touched.faces[static_cast<std::size_t>(k)].state)
