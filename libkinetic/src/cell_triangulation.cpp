@@ -45,6 +45,12 @@ template <int D> int CellTriangulation<D>::back_index(CellIndex e, CellIndex c) 
   broken("cell " + std::to_string(c) + " is not its neighbour's neighbour");
 }
 
+template <int D> void CellTriangulation<D>::throw_broken_ring(CellIndex start, const Simplex& s) const {
+  std::ostringstream os;
+  os << "the cells holding " << s << " from cell " << start << " do not form a ring";
+  broken(os.str());
+}
+
 template <int D> void CellTriangulation<D>::set_orientation(CellIndex c, int orientation) {
   cells_[index(c)].orientation = static_cast<signed char>(orientation);
 }

@@ -77,12 +77,22 @@ public:
     return c >= 0 && static_cast<std::size_t>(c) < cells_.size() && cells_[index(c)].live;
   }
   VertexId vertex(CellIndex c, int i) const { return cells_[index(c)].v[slot(i)]; }
+  // Built in registers from the sorted record (Simplex::from_sorted): every certificate and touched
+  // face names its simplex this way, and a sort would read back as words what it wrote one by one.
   Simplex top(CellIndex c) const {
     const Cell& cell = cells_[index(c)];
-    return Simplex::from_range(cell.v.begin(), cell.v.end());
+    std::array<VertexId, 4> v{{-1, -1, -1, -1}};
+    std::copy(cell.v.begin(), cell.v.end(), v.begin());
+    return Simplex::from_sorted(v, top_size);
   }
   // The facet of c without its i-th vertex.
-  Simplex facet(CellIndex c, int i) const { return top(c).facet(slot(i)); }
+  Simplex facet(CellIndex c, int i) const {
+    const Cell& cell = cells_[index(c)];
+    std::array<VertexId, 4> v{{-1, -1, -1, -1}};
+    for (std::size_t j = 0; j + 1 < top_size; ++j)
+      v[j] = cell.v[j < slot(i) ? j : j + 1];
+    return Simplex::from_sorted(v, top_size - 1);
+  }
   CellIndex neighbor(CellIndex c, int i) const { return cells_[index(c)].n[slot(i)]; }
   // The index of the facet shared with c in c's i-th neighbour.
   int mirror_index(CellIndex c, int i) const;
@@ -180,6 +190,10 @@ public:
   // reaches exactly the cells containing s (their union is a closed ball round s's interior, or its
   // boundary, in a triangulated sphere), without testing any other cell: around an edge, its ring.
   template <class F> void for_each_cell_containing_from(CellIndex start, const Simplex& s, F&& f) const {
+    if (s.size() + 2 == top_size) {
+      circulate(start, s, f);
+      return;
+    }
     walk(
         start, [&](const Cell& cell, std::size_t i) { return !s.contains(cell.v[i]); }, // the facet holds s
         [&](CellIndex c) {
@@ -255,6 +269,29 @@ private:
   // cross (the cell's i-th), each once, until visit returns true; returns whether it did. Cells
   // reached are marked with the walk's epoch.
   template <class Crosses, class Visit> bool walk(CellIndex start, Crosses&& crosses, Visit&& visit) const;
+  // for_each_cell_containing_from round a ridge s (an edge in 3D, a vertex in the plane): the cells
+  // holding it form a cycle, each with exactly two facets holding s, entered through one and left
+  // through the other, so the walk needs no marks and no stack. It visits them in the walk's order:
+  // from start across the later of its two facets, round to the cell across the earlier.
+  template <class F> void circulate(CellIndex start, const Simplex& s, F&& f) const {
+    CellIndex previous = start, c = start;
+    std::size_t visited = 0;
+    do {
+      f(c);
+      const Cell& cell = cells_[index(c)];
+      std::array<CellIndex, 2> across{no_cell, no_cell};
+      std::size_t k = 0;
+      for (std::size_t i = 0; i < top_size; ++i)
+        if (!s.contains(cell.v[i]))
+          across[std::min<std::size_t>(k++, 1)] = cell.n[i];
+      const CellIndex next = c == start ? across[1] : across[0] == previous ? across[1] : across[0];
+      previous = c;
+      c = next;
+      if (k != 2 || ++visited > cells_.size())
+        throw_broken_ring(start, s);
+    } while (c != start);
+  }
+  [[noreturn]] void throw_broken_ring(CellIndex start, const Simplex& s) const;
   // Starts a walk: every cell has a mark, and none is the new epoch.
   void next_epoch() const {
     if (marks_.size() < cells_.size())

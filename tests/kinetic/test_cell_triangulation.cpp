@@ -439,6 +439,62 @@ template <int D> void walks_agree(unsigned seed) {
   REQUIRE(present > 100);
 }
 
+// Round every ridge (an edge in 3D, a vertex in the plane), from every cell holding it: the cells come
+// as a ring, each sharing a facet that holds the ridge with the next and the last with the first, each
+// once, starting across the later of the first cell's two facets that hold it.
+template <int D> void rings_close(unsigned seed) {
+  std::mt19937 rng(seed);
+  Pair<D> p;
+  p.assign(random_delaunay(D, D == 3 ? 40 : 30, rng));
+  const auto across_ridge = [&](CellIndex c, const Simplex& s) {
+    std::vector<CellIndex> across;
+    for (int i = 0; i <= D; ++i)
+      if (!s.contains(p.cells.vertex(c, i)))
+        across.push_back(p.cells.neighbor(c, i));
+    return across;
+  };
+  std::set<Simplex> ridges;
+  for (const auto& [t, orientation] : p.sets.tops)
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if constexpr (D == 3) {
+        for (std::size_t j = i + 1; j < t.size(); ++j)
+          ridges.insert(Simplex{t[i], t[j]});
+      } else {
+        ridges.insert(Simplex{t[i]});
+      }
+    }
+  std::size_t rings = 0;
+  for (const Simplex& s : ridges) {
+    CAPTURE(s);
+    const std::vector<Simplex> listed = p.sets.tops_containing(s);
+    for (const Simplex& t : listed) {
+      const CellIndex start = p.cells.find(t);
+      std::vector<CellIndex> ring;
+      p.cells.for_each_cell_containing_from(start, s, [&](CellIndex c) { ring.push_back(c); });
+      REQUIRE(ring.size() == listed.size());
+      REQUIRE(std::set<CellIndex>(ring.begin(), ring.end()).size() == ring.size());
+      REQUIRE(ring.front() == start);
+      REQUIRE(across_ridge(start, s).size() == 2);
+      REQUIRE(ring[1 % ring.size()] == across_ridge(start, s)[1]);
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        const std::vector<CellIndex> across = across_ridge(ring[k], s);
+        REQUIRE(std::count(across.begin(), across.end(), ring[(k + 1) % ring.size()]) >= 1);
+      }
+      ++rings;
+    }
+  }
+  CAPTURE(rings);
+  REQUIRE(rings > 100);
+}
+
+TEST_CASE("the cells round a ridge come as a ring, in the order of a walk across its facets",
+          "[kinetic][cell_triangulation]") {
+  const unsigned seed = GENERATE(83u, 84u);
+  CAPTURE(seed);
+  rings_close<3>(seed);
+  rings_close<2>(seed);
+}
+
 TEST_CASE("the walks find a cell holding each face of the triangulation, none for other simplices, and "
           "every cell holding it from any one",
           "[kinetic][cell_triangulation]") {
