@@ -34,6 +34,8 @@ public:
   std::size_t size() const { return heap_.size(); }
   // The earliest entry; valid until the next push or pop.
   const QueueEntry& top() const { return pool_[heap_.front().slot]; }
+  // The certificate of the earliest entry, read from its key (the entry itself may still be loading).
+  std::uint32_t top_cert() const { return heap_.front().cert; }
 
   void push(QueueEntry e) {
     std::uint32_t slot;
@@ -47,6 +49,7 @@ public:
     }
     Key k;
     k.slot = slot;
+    k.cert = pool_[slot].cert;
     pool_[slot].u.enclosure(k.lo, k.hi);
     heap_.push_back(k);
     std::push_heap(heap_.begin(), heap_.end(), LaterFirst{&pool_});
@@ -56,6 +59,9 @@ public:
     std::pop_heap(heap_.begin(), heap_.end(), LaterFirst{&pool_});
     const std::uint32_t slot = heap_.back().slot;
     heap_.pop_back();
+    // The next pop's entry is needed only once the batch it ends is resolved: it loads meanwhile.
+    if (!heap_.empty())
+      __builtin_prefetch(pool_.data() + heap_.front().slot);
     // The slot keeps its time until reused (a default time would allocate a rational): at most
     // the queue's largest size of them.
     free_.push_back(slot);
@@ -89,6 +95,8 @@ public:
       pool_[k.slot].u.enclosure(lo, hi);
       if (lo < k.lo || k.hi < hi)
         return "a queued time left the enclosure it was queued with";
+      if (k.cert != pool_[k.slot].cert)
+        return "a heap key names another certificate than its entry";
     }
     return {};
   }
@@ -99,7 +107,9 @@ private:
     // enclosure, so this one stays valid.
     double lo = 0.0, hi = 0.0;
     std::uint32_t slot = 0;
+    std::uint32_t cert = 0; // the entry's, in what would be padding: prefetched before the entry is read
   };
+  static_assert(sizeof(Key) == 24, "the heap moves keys of three words");
   struct LaterFirst {
     const LargeVector<QueueEntry>* pool;
     bool operator()(const Key& a, const Key& b) const {
