@@ -41,6 +41,11 @@ public:
   }
 
   const Certificate& operator[](int id) const { return certs_[index(id)]; }
+  // Starts loading certificate id's record (none for -1).
+  void prefetch(int id) const {
+    if (id >= 0)
+      __builtin_prefetch(certs_.data() + index(id));
+  }
   const Certificate& operator[](std::uint32_t id) const { return certs_[id]; }
   // Is (id, version) the certificate as it is now: alive, and not retired since that version.
   bool current(int id, std::uint32_t version) const {

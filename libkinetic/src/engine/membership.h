@@ -232,6 +232,15 @@ template <class K> void Engine<K>::install_touched_facets() {
     for (CellIndex c : created_cells)
       created_position[static_cast<std::size_t>(c)] = -1;
   std::sort(owned.begin(), owned.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  if (few)
+    for (const auto& [facet, owner] : owned) {
+      // Each install retires the facet's certificate and reads the apex of the facet's owner, the
+      // far apex of a facet round the flip: cache misses of their own, which overlap when requested
+      // together (as the touched faces' look-ups do).
+      certificates.prefetch(cells.cert(owner.first, owner.second));
+      if (const VertexId x = cells.vertex(owner.first, owner.second); x != infinite_vertex)
+        __builtin_prefetch(&pt(x));
+    }
   for (const auto& [facet, owner] : owned)
     install_facet(owner.first, owner.second);
   release_if_large(owned);
