@@ -70,8 +70,8 @@ public:
   // The entry's certificate record is prefetched for the next earliest(), which reads it first.
   void pop() {
     events_.pop();
-    if (!events_.empty())
-      __builtin_prefetch(certs_.data() + events_.top_cert());
+    if (const std::uint32_t next = events_.first_cert_hint(); next != EventQueue::none_queued)
+      __builtin_prefetch(certs_.data() + next);
   }
   // The time of the earliest current entry, or of the earliest one later than `after`; `otherwise`
   // when there is none. Each costs a copy of the queue: for the audit and static repairs only.

@@ -7,9 +7,11 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <random>
 #include <set>
 #include <utility>
+#include <vector>
 
 using namespace medusa::kinetic;
 using namespace medusa::kinetic::detail;
@@ -67,4 +69,35 @@ TEST_CASE("the event queue pops its entries in exact time order, each once, thro
   queue.push({SlabTime(Rational(1, 2)), 1, 1});
   queue.clear();
   REQUIRE(queue.empty());
+}
+
+TEST_CASE("a time whose enclosure spans many buckets leaves the queue in exact order among the times "
+          "inside it",
+          "[kinetic][queue]") {
+  // u = 1/sqrt(2) = 0.70710..., the root of 2u^2 - 1, isolated only in (0.70, 0.72): twenty buckets of
+  // 1/1024. Rationals on either side of it, inside and outside that interval, are queued around it.
+  auto root = make_isolated_root([] { return ExactPoly(CGAL::Gmpz(-1), CGAL::Gmpz(0), CGAL::Gmpz(2)); });
+  const IntervalPoly u(Interval(0), Interval(1));
+  root->enclosure = IntervalPoly(Interval(2)) * u * u + IntervalPoly(Interval(-1));
+  root->lo = 0.70;
+  root->hi = 0.72;
+  root->clear_hi = 0.72;
+  root->sign_lo = -1;
+  const std::vector<std::pair<Rational, std::uint32_t>> times = {
+      {Rational(73, 100), 6},   {Rational(7071, 10000), 3}, {Rational(69, 100), 1},
+      {Rational(719, 1000), 5}, {Rational(703, 1000), 2},   {Rational(7072, 10000), 4}};
+  EventQueue queue;
+  queue.push({SlabTime(std::shared_ptr<IsolatedRoot>(root)), 0, 1});
+  for (const auto& [u, id] : times)
+    queue.push({SlabTime(u), id, 1});
+  REQUIRE(queue.first_violation().empty());
+  // 0.69 < 0.703 < 0.7071 < 1/sqrt(2) < 0.7072 < 0.719 < 0.73: the root is id 0, between 3 and 4.
+  const std::vector<std::uint32_t> expected = {1, 2, 3, 0, 4, 5, 6};
+  std::vector<std::uint32_t> popped;
+  while (!queue.empty()) {
+    popped.push_back(queue.top().cert);
+    queue.pop();
+    REQUIRE(queue.first_violation().empty());
+  }
+  REQUIRE(popped == expected);
 }
