@@ -35,7 +35,8 @@ struct QueueEntry {
 // horizon, the start of the first bucket not yet emptied into the heap. Before the earliest entry is
 // read, buckets are emptied into the heap, in order, until the heap's first time ends below the
 // horizon: every later time then starts at or above it, so the heap's first is the earliest of all,
-// and equal times never lie on both sides. At 100,000 cells a slab queues millions of times, about
+// and equal times never lie on both sides (in which order equal times leave does not change a
+// batch, docs/MATH.md §5.2). At 100,000 cells a slab queues millions of times, about
 // half of them for certificates retired before their time; a single heap of them all made each pop a
 // walk down twenty-odd levels, the lower ones each a cache miss, where the heap of the near ones stays
 // in cache.
