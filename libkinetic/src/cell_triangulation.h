@@ -188,7 +188,8 @@ public:
   }
   // The same from a cell `start` that contains s: a walk across the facets that contain s, which
   // reaches exactly the cells containing s (their union is a closed ball round s's interior, or its
-  // boundary, in a triangulated sphere), without testing any other cell: around an edge, its ring.
+  // boundary, in a triangulated sphere), without testing any other cell. Round a ridge (an edge in
+  // 3D, a vertex in the plane) that walk is a ring, circulated without marks (circulate).
   template <class F> void for_each_cell_containing_from(CellIndex start, const Simplex& s, F&& f) const {
     if (s.size() + 2 == top_size) {
       circulate(start, s, f);
@@ -279,16 +280,16 @@ private:
     do {
       f(c);
       const Cell& cell = cells_[index(c)];
-      std::array<CellIndex, 2> across{no_cell, no_cell};
+      std::array<CellIndex, top_size> across{};
       std::size_t k = 0;
       for (std::size_t i = 0; i < top_size; ++i)
         if (!s.contains(cell.v[i]))
-          across[std::min<std::size_t>(k++, 1)] = cell.n[i];
+          across[k++] = cell.n[i];
+      if (k != 2 || ++visited > cells_.size())
+        throw_broken_ring(start, s);
       const CellIndex next = c == start ? across[1] : across[0] == previous ? across[1] : across[0];
       previous = c;
       c = next;
-      if (k != 2 || ++visited > cells_.size())
-        throw_broken_ring(start, s);
     } while (c != start);
   }
   [[noreturn]] void throw_broken_ring(CellIndex start, const Simplex& s) const;

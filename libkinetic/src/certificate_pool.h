@@ -71,7 +71,7 @@ public:
   void pop() {
     events_.pop();
     if (const std::uint32_t next = events_.first_cert_hint(); next != EventQueue::none_queued)
-      __builtin_prefetch(certs_.data() + next);
+      prefetch(static_cast<int>(next));
   }
   // The time of the earliest current entry, or of the earliest one later than `after`; `otherwise`
   // when there is none. Each costs a copy of the queue: for the audit and static repairs only.
