@@ -315,6 +315,7 @@ private:
   bool collinear_at_now(const Simplex& f);                      // three cells, on one line at now
   int orientation_enclosure_sign(const Simplex& t);             // 0: the enclosure at now does not decide
   GeometryError flat_top_simplex_error(const Simplex& t) const; // t stays flat just after now
+  GeometryError too_many_tops_error(const Simplex& f) const;    // f would exceed max_face_tops
   int sign_after_own_root(const IntervalPoly& f, const CacheKey& key) const;
   int new_cert(CertKind kind, const Simplex& key);
   void kill_cert(int id);

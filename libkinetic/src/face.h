@@ -7,36 +7,38 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 namespace medusa::kinetic::detail {
 
-// A run holds one per finite face of Del, about 27 per cell in 3D, in a table at a load of 3/5: the
-// two flags share a word with the count of top simplices, which leaves the record at 20 bytes with
-// the cell hint.
+// A run holds one per finite face of Del, about 27 per cell in 3D, in a table at a load of 3/5 (32
+// bytes a slot with its key, FiniteKeys): the flags and the three counts share one word.
 struct Face {
-  Face() : is_short(false), in_k(false), tops(0) {}
+  Face() : is_short(false), in_k(false), tops(0), short_cofaces(0), k_cofaces(0) {}
 
   bool is_short : 1;
   bool in_k : 1;
-  // Top simplices of Del (infinite ones included) that contain this simplex: at most max_face_tops.
-  // An edge lies in at most one per vertex of its link, a cycle of distinct vertices (the cells and
-  // the infinite vertex), and the engine takes fewer cells than max_face_tops (Engine::Engine).
-  int tops : 30;
-  int cert = -1;
+  // Top simplices of Del (infinite ones included) that contain this simplex: at most max_face_tops
+  // (Engine::add_tops refuses more). An edge lies in one per vertex of its link, a cycle of
+  // distinct vertices; only a million cells on one circle would come near.
+  std::uint64_t tops : 20;
   // Its finite (k+1)-cofaces in Del that are short, and those in K: the frontier rule asks whether a
   // short simplex has a short coface (docs/MATH.md §4.4), the membership rule whether any coface is in K
   // (4.5). Kept up to date by Engine::count_in_facets wherever a flag changes or a face comes or
-  // goes, so neither rule searches the triangulation (edges and larger; the audit recounts).
-  int short_cofaces = 0;
-  int k_cofaces = 0;
+  // goes, so neither rule searches the triangulation (edges and larger; the audit recounts). Each
+  // counts cofaces recorded in the table, every one of which lies in a top simplex holding this
+  // simplex before or after the change being applied: at most 2 max_face_tops, which 21 bits hold.
+  std::int64_t short_cofaces : 21;
+  std::int64_t k_cofaces : 21;
+  int cert = -1;
   // A cell that held this simplex when a change made the cell or a walk last found it: where the
   // walks to its cofaces start (Engine::cell_holding). Only a hint, checked before use: cells die,
   // and their records are reused.
   CellIndex cell = no_cell;
 };
-static_assert(sizeof(Face) == 20, "a run holds one Face per finite face of Del");
-// The largest count Face::tops holds.
-constexpr std::size_t max_face_tops = (std::size_t{1} << 29) - 1;
+static_assert(sizeof(Face) == 16, "a run holds one Face per finite face of Del");
+// The largest count Face::tops takes.
+constexpr int max_face_tops = (1 << 19) - 1;
 
 // Calls f on every non-empty subset of the vertices of t that avoids the infinite vertex, or, with
 // `size` given, on those of that many vertices only.

@@ -50,12 +50,12 @@ public:
   // Calls f(simplex, state) for every recorded simplex, in table order; f may change the states but
   // not add or erase one.
   template <class F> void for_each(F&& f) {
-    for (auto& [s, state] : states_)
-      f(s, state);
+    for (auto& slot : states_)
+      f(slot.simplex(), slot.second);
   }
   template <class F> void for_each(F&& f) const {
-    for (const auto& [s, state] : states_)
-      f(s, state);
+    for (const auto& slot : states_)
+      f(slot.simplex(), slot.second);
   }
 
   // Is s in K (a vertex: while its cell is alive)? Is s short (a vertex always is)? A simplex not
@@ -116,7 +116,7 @@ public:
   std::string first_violation(const CellTriangulation<D>& cells, const std::vector<char>& alive) const;
 
 private:
-  FlatSimplexMap<Face> states_;
+  FlatSimplexMap<Face, FiniteKeys> states_;
 };
 
 } // namespace medusa::kinetic::detail

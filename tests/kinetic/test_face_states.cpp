@@ -127,3 +127,31 @@ TEST_CASE("a vertex is in K while its cell lives and is always short, and a simp
   REQUIRE_FALSE(x.faces.in_k(Simplex{0, 5}, x.alive));
   REQUIRE_FALSE(x.faces.is_short(Simplex{0, 5}));
 }
+
+TEST_CASE("a face's packed fields hold max_face_tops top simplices and twice as many cofaces") {
+  // face.h: mid-change, a coface count counts cofaces of the old and of the new triangulation, at most
+  // 2 max_face_tops; the fields share one word and must not spill into each other.
+  Face f;
+  REQUIRE(f.tops == 0);
+  REQUIRE(f.short_cofaces == 0);
+  REQUIRE(f.k_cofaces == 0);
+  REQUIRE_FALSE(f.is_short);
+  REQUIRE_FALSE(f.in_k);
+  f.is_short = f.in_k = true;
+  f.tops = static_cast<unsigned>(max_face_tops);
+  f.short_cofaces = 2 * max_face_tops;
+  f.k_cofaces = -2 * max_face_tops;
+  f.cert = 7;
+  f.cell = 9;
+  REQUIRE(f.is_short);
+  REQUIRE(f.in_k);
+  REQUIRE(f.tops == static_cast<unsigned>(max_face_tops));
+  REQUIRE(f.short_cofaces == 2 * max_face_tops);
+  REQUIRE(f.k_cofaces == -2 * max_face_tops);
+  f.short_cofaces += -1;
+  f.k_cofaces += 1;
+  REQUIRE(f.short_cofaces == 2 * max_face_tops - 1);
+  REQUIRE(f.k_cofaces == -2 * max_face_tops + 1);
+  REQUIRE(f.cert == 7);
+  REQUIRE(f.cell == 9);
+}

@@ -76,6 +76,13 @@ template <class K> GeometryError Engine<K>::flat_top_simplex_error(const Simplex
   return GeometryError(os.str());
 }
 
+template <class K> GeometryError Engine<K>::too_many_tops_error(const Simplex& f) const {
+  std::ostringstream os;
+  os << "cells " << f << " lie in more than " << max_face_tops
+     << " Delaunay top simplices (cells on one circle round them), more than the kinetic engine counts";
+  return GeometryError(os.str());
+}
+
 template <class K> int Engine<K>::orientation_sign_plus(const Simplex& t) {
   if (t.size() == top_size() && is_finite(t)) {
     // The value at now first: a new top simplex of a flip is far from flat at now, and a sign there

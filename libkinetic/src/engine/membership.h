@@ -94,8 +94,11 @@ void Engine<K>::apply_top_change(const std::vector<Simplex>& removed,
     Face& state = *added_state;
     t.state = &state;
     t.old_in_k = state.in_k;
-    state.tops += t.delta;
-    t.leaves = state.tops == 0;
+    const int tops = static_cast<int>(state.tops) + t.delta;
+    if (tops > max_face_tops)
+      throw too_many_tops_error(f);
+    state.tops = static_cast<unsigned>(tops);
+    t.leaves = tops == 0;
     if (t.leaves) {
       // Leaving Del: its facets are touched, and those staying lose it as a coface.
       FaceStates::count_in_facets(f, -int(state.is_short), -int(state.in_k), state_of);

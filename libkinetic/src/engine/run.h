@@ -14,10 +14,12 @@ namespace medusa::kinetic::detail {
 
 template <class K>
 Engine<K>::Engine(const Trajectories& t, KineticOptions o) : traj(t), options(std::move(o)) {
-  if (traj.cells.size() >= max_face_tops)
+  // Vertex ids and cell indices are 32-bit, and Del has some seven top simplices per vertex in 3D.
+  constexpr std::size_t max_trajectories = (std::size_t{1} << 28) - 1;
+  if (traj.cells.size() > max_trajectories)
     throw InputError("the run has " + std::to_string(traj.cells.size()) +
-                     " cell trajectories; the kinetic engine takes fewer than " +
-                     std::to_string(max_face_tops));
+                     " cell trajectories; the kinetic engine takes at most " +
+                     std::to_string(max_trajectories));
   P = options.rho2.num;
   Q = options.rho2.den;
   Pi = Interval(CGAL::to_interval(CGAL::Gmpz(P.get_mpz_t())));

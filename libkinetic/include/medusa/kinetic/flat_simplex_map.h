@@ -10,19 +10,59 @@
 #include "medusa/kinetic/simplex.h"
 
 #include <algorithm>
+#include <array>
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <utility>
 #include <vector>
 
 namespace medusa::kinetic {
 
-template <class V> class FlatSimplexMap {
+// How a slot holds its key. WholeKeys: the simplex itself (20 bytes, infinite vertices allowed).
+struct WholeKeys {
+  using Key = Simplex;
+  static const Simplex& key(const Simplex& s) { return s; }
+  static const Simplex& simplex(const Simplex& k) { return k; }
+  static bool used(const Simplex& k) { return k.size() != 0; }
+  static bool equal(const Simplex& k, const Simplex& s) { return k == s; }
+};
+
+// FiniteKeys: a simplex of vertex ids >= 0 by its four entries alone (16 bytes), its size being where
+// the -1 padding starts. The face table holds some 27 simplices per cell and is looked up at every
+// flip: with a 16-byte value its slots are 32 bytes, two to a cache line, where 40-byte slots put
+// every second look-up across two lines.
+struct FiniteKeys {
+  struct Key {
+    std::array<VertexId, 4> v{{-1, -1, -1, -1}};
+  };
+  static Key key(const Simplex& s) {
+    assert(s.size() != 0 && s[0] >= 0);
+    return {s.padded()};
+  }
+  static Simplex simplex(const Key& k) {
+    const std::size_t n = std::size_t(k.v[0] >= 0) + std::size_t(k.v[1] >= 0) + std::size_t(k.v[2] >= 0) +
+                          std::size_t(k.v[3] >= 0);
+    return Simplex::from_sorted(k.v, n);
+  }
+  static bool used(const Key& k) { return k.v[0] >= 0; }
+  // As Simplex's operator==: two words, no branch between them; the padding decides the size.
+  static bool equal(const Key& k, const Simplex& s) {
+    std::uint64_t x[2], y[2];
+    std::memcpy(x, k.v.data(), sizeof x);
+    std::memcpy(y, s.padded().data(), sizeof y);
+    return ((x[0] ^ y[0]) | (x[1] ^ y[1])) == 0;
+  }
+};
+
+template <class V, class Keys = WholeKeys> class FlatSimplexMap {
 public:
   struct Slot {
-    Simplex first;
+    typename Keys::Key first;
     V second{};
-    bool used() const { return first.size() != 0; }
+    bool used() const { return Keys::used(first); }
+    decltype(auto) simplex() const { return Keys::simplex(first); }
   };
   using Slots = LargeVector<Slot>;
 
@@ -115,11 +155,11 @@ public:
       grow_to(slots_.size() + slots_.size() / 2);
     std::size_t i = home(s);
     while (slots_[i].used()) {
-      if (slots_[i].first == s)
+      if (Keys::equal(slots_[i].first, s))
         return {at_slot(i), false};
       i = next(i);
     }
-    slots_[i].first = s;
+    slots_[i].first = Keys::key(s);
     slots_[i].second = V{};
     ++size_;
     return {at_slot(i), true};
@@ -133,7 +173,7 @@ public:
       j = next(j);
       if (!slots_[j].used())
         break;
-      std::size_t k = home(slots_[j].first);
+      std::size_t k = home(slots_[j].simplex());
       // Slot j may move back to i iff its home k is not cyclically within (i, j].
       bool stays = i <= j ? (i < k && k <= j) : (i < k || k <= j);
       if (!stays) {
@@ -157,7 +197,7 @@ private:
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
   // At most three quarters of the slots are used. Capacities are not powers of two: a table grows by
   // half, so it stays between 1/2 and 3/4 full where doubling leaves it between 3/8 and 3/4 (the
-  // face table of a million cells holds 27 million simplices at 40 bytes a slot).
+  // face table of a million cells holds 27 million simplices at 32 bytes a slot).
   bool full_at(std::size_t n) const { return 4 * n > 3 * slots_.size(); }
   std::size_t next(std::size_t i) const { return i + 1 == slots_.size() ? 0 : i + 1; }
   // The mixed hash scaled to [0, capacity) (multiply-high), on the hash mixed with a seed of the
@@ -186,7 +226,7 @@ private:
     for (std::size_t i = home(s);; i = next(i)) {
       if (!slots_[i].used())
         return npos;
-      if (slots_[i].first == s)
+      if (Keys::equal(slots_[i].first, s))
         return i;
     }
   }
@@ -199,7 +239,7 @@ private:
     size_ = 0;
     for (Slot& e : old)
       if (e.used())
-        try_emplace(e.first).first->second = std::move(e.second);
+        try_emplace(e.simplex()).first->second = std::move(e.second);
   }
 
   Slots slots_;

@@ -47,6 +47,9 @@ public:
     return s;
   }
 
+  // The four entries, -1 past the last vertex (the key FlatSimplexMap's FiniteKeys stores).
+  const std::array<VertexId, 4>& padded() const { return v_; }
+
   int dim() const { return static_cast<int>(size_) - 1; }
   std::size_t size() const { return size_; }
   VertexId operator[](std::size_t i) const { return v_[i]; }
