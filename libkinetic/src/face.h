@@ -19,7 +19,7 @@ struct Face {
   bool is_short : 1;
   bool in_k : 1;
   // Top simplices of Del (infinite ones included) that contain this simplex: at most max_face_tops
-  // (Engine::add_tops refuses more). An edge lies in one per vertex of its link, a cycle of
+  // (Engine::apply_top_change refuses more). An edge lies in one per vertex of its link, a cycle of
   // distinct vertices; only a million cells on one circle would come near.
   std::uint64_t tops : 20;
   // Its finite (k+1)-cofaces in Del that are short, and those in K: the frontier rule asks whether a

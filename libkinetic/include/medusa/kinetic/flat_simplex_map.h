@@ -14,7 +14,6 @@
 #include <cassert>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -47,13 +46,8 @@ struct FiniteKeys {
     return Simplex::from_sorted(k.v, n);
   }
   static bool used(const Key& k) { return k.v[0] >= 0; }
-  // As Simplex's operator==: two words, no branch between them; the padding decides the size.
-  static bool equal(const Key& k, const Simplex& s) {
-    std::uint64_t x[2], y[2];
-    std::memcpy(x, k.v.data(), sizeof x);
-    std::memcpy(y, s.padded().data(), sizeof y);
-    return ((x[0] ^ y[0]) | (x[1] ^ y[1])) == 0;
-  }
+  // The padding decides the size.
+  static bool equal(const Key& k, const Simplex& s) { return Simplex::same_entries(k.v, s.padded()); }
 };
 
 template <class V, class Keys = WholeKeys> class FlatSimplexMap {

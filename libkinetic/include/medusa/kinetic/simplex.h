@@ -89,10 +89,13 @@ public:
   // between them: hash tables compare keys often, and entries that differ in a late vertex made the
   // chain of four tests mispredict.
   friend bool operator==(const Simplex& a, const Simplex& b) {
+    return same_entries(a.v_, b.v_) & (a.size_ == b.size_);
+  }
+  static bool same_entries(const std::array<VertexId, 4>& a, const std::array<VertexId, 4>& b) {
     std::uint64_t x[2], y[2];
-    std::memcpy(x, a.v_.data(), sizeof x);
-    std::memcpy(y, b.v_.data(), sizeof y);
-    return ((x[0] ^ y[0]) | (x[1] ^ y[1]) | std::uint64_t(a.size_ ^ b.size_)) == 0;
+    std::memcpy(x, a.data(), sizeof x);
+    std::memcpy(y, b.data(), sizeof y);
+    return ((x[0] ^ y[0]) | (x[1] ^ y[1])) == 0;
   }
   friend bool operator!=(const Simplex& a, const Simplex& b) { return !(a == b); }
   // Order by dimension, then lexicographically: the canonical order of docs/MATH.md §5.2 and §7.2.
