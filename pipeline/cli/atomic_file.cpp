@@ -1,14 +1,47 @@
 #include "atomic_file.h"
 
+#include "run_outputs.h"
+
 #include "medusa/core/error.h"
 
+#include <array>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <unistd.h>
 
 namespace medusa::cli {
 
+namespace {
+
+// The HDF5 format signature, found at the start of the superblock, which lies at byte 0 or, after a
+// user block, at byte 512, 1024, 2048, ... of the file (HDF5 File Format Specification, II.A).
+bool is_hdf5(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    return false;
+  constexpr std::array<char, 8> signature{'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};
+  for (std::uint64_t at = 0; at <= (std::uint64_t{1} << 30); at = at == 0 ? 512 : 2 * at) {
+    std::array<char, 8> bytes{};
+    in.seekg(static_cast<std::streamoff>(at));
+    if (!in.read(bytes.data(), bytes.size()))
+      return false;
+    if (bytes == signature)
+      return true;
+  }
+  return false;
+}
+
+} // namespace
+
+void refuse_to_replace_hdf5(const std::string& path) {
+  if (is_hdf5(path))
+    throw UsageError("output " + path +
+                     " is an HDF5 file (a medusa store?); it is not replaced: choose another name");
+}
+
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+  refuse_to_replace_hdf5(path);
   const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
   try {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);

@@ -7,8 +7,15 @@
 
 namespace medusa::cli {
 
+// UsageError if `path` (or the file a link there leads to) is an HDF5 file, a medusa store or
+// another: a report, plot or table written there would replace it, and a store is what a run
+// computed for minutes or hours. Commands call it on their outputs before their work;
+// write_file_atomically calls it again.
+void refuse_to_replace_hdf5(const std::string& path);
+
 // Calls `write` on a stream to `<path>.tmp-<pid>`, then renames it to `path`. On any failure the
-// temporary file is removed and StoreError names `path`.
+// temporary file is removed and StoreError names `path`; nothing is written over an HDF5 file
+// (refuse_to_replace_hdf5).
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 } // namespace medusa::cli

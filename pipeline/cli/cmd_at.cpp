@@ -226,6 +226,8 @@ void at_command(const AtArguments& args) {
   if (args.times.empty() && !args.classes.empty() && !ends_with(args.output, ".vtk"))
     throw CLI::ValidationError("--output",
                                "--class draws classes in a .vtk file, not in '" + args.output + "'");
+  if (args.times.empty())
+    refuse_to_replace_hdf5(args.output);
   const medusa::Medusa medusa = medusa::read_store(args.store);
   check_interrupted();
   if (args.type) {

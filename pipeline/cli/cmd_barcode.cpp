@@ -24,6 +24,9 @@ struct BarcodeArguments {
 };
 
 void barcode_command(const BarcodeArguments& args) {
+  const bool to_stdout = args.output.empty() || args.output == "-";
+  if (!to_stdout)
+    refuse_to_replace_hdf5(args.output);
   const medusa::Medusa medusa = medusa::read_store(args.store);
   check_interrupted();
   const std::vector<persistence::Diagram> diagrams = selected_diagrams(medusa, args.selection);
@@ -44,7 +47,7 @@ void barcode_command(const BarcodeArguments& args) {
     else
       write_diagram_svg(out, diagrams, t0, t_end, args.max_points);
   };
-  if (args.output.empty() || args.output == "-")
+  if (to_stdout)
     write(std::cout);
   else
     write_file_atomically(args.output, write);

@@ -164,6 +164,9 @@ void write_classes_json(std::ostream& out, const std::vector<persistence::ClassR
 }
 
 void classes_command(const ClassesArguments& args) {
+  const bool to_stdout = args.output.empty() || args.output == "-";
+  if (!to_stdout)
+    refuse_to_replace_hdf5(args.output);
   medusa::StoreReadOptions cells_only;
   cells_only.events = false;
   const medusa::Medusa medusa = medusa::read_store(args.store, cells_only);
@@ -192,7 +195,7 @@ void classes_command(const ClassesArguments& args) {
     else
       write_table(out, records, wraps);
   };
-  if (args.output.empty() || args.output == "-")
+  if (to_stdout)
     write(std::cout);
   else
     write_file_atomically(args.output, write);
