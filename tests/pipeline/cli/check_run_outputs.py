@@ -15,17 +15,15 @@ import hashlib
 import os
 import shutil
 import stat
-import subprocess
 import sys
+
+from cli_checks import run_logged
 
 if not __debug__:
     sys.exit("these checks are assert statements: run without -O and without PYTHONOPTIMIZE")
 
 
-def run(args, cwd):
-    result = subprocess.run(args, cwd=cwd, capture_output=True, text=True)
-    print("$", " ".join(args), "->", result.returncode, result.stderr.strip()[-300:])
-    return result
+run = run_logged
 
 
 def digest(path):

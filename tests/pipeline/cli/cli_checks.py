@@ -14,6 +14,14 @@ def cli(binary, *args):
     return out.stdout
 
 
+def run_logged(args, cwd):
+    """The finished process of `args` run in `cwd`, its command, exit code and the end of its stderr
+    printed first (what a failing check's log shows)."""
+    result = subprocess.run(args, cwd=cwd, capture_output=True, text=True)
+    print("$", " ".join(args), "->", result.returncode, result.stderr.strip()[-300:])
+    return result
+
+
 def normalised(c):
     """A class as a dict whose birth, death and lifetime are floats, whatever wrote it."""
     return {k: (float(v) if k in ("birth", "death", "lifetime") else v) for k, v in c.items()}
