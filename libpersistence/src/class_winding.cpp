@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 namespace medusa::persistence {
 
@@ -65,8 +66,17 @@ std::vector<std::string> class_wrapping_axes(const medusa::Medusa& medusa,
   for (std::size_t i = 0; i < reps.size(); ++i)
     if (classes.diagram.pairs[reps.rows[i]].dim == 1)
       order.push_back(i);
+  // Birth order is the filtration order of the birth cells (docs/MATH.md §7.2, reverse §7.3), read
+  // from the cells: a diagram read back from a store holds no filtration indices.
+  const bool forward = classes.diagram.direction == Direction::forward;
+  const auto birth_cell = [&](std::size_t i) -> const medusa::Cell& {
+    return medusa.cell(classes.diagram.pairs[reps.rows[i]].birth_cell);
+  };
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return classes.diagram.pairs[reps.rows[a]].birth_index < classes.diagram.pairs[reps.rows[b]].birth_index;
+    const medusa::Cell &x = birth_cell(a), &y = birth_cell(b);
+    const medusa::VirtualTime &tx = forward ? x.birth : y.death, &ty = forward ? y.birth : x.death;
+    const int dx = x.dim(), dy = y.dim();
+    return std::tie(tx.batch, tx.rank, dx, x.vertices) < std::tie(ty.batch, ty.rank, dy, y.vertices);
   });
   // Gaussian elimination over Z/2 in birth order: an essential class may take the sum of its
   // representative and older essential ones, which keeps its birth (the elder rule); so it wraps only
@@ -77,7 +87,7 @@ std::vector<std::string> class_wrapping_axes(const medusa::Medusa& medusa,
     unsigned bits = 0;
     for (std::size_t a = 0; a < 3; ++a)
       bits |= static_cast<unsigned>(w[a] & 1) << a;
-    const bool essential = classes.diagram.pairs[reps.rows[i]].death_index < 0;
+    const bool essential = classes.diagram.pairs[reps.rows[i]].essential;
     if (essential)
       for (const auto& [b, pivot] : basis)
         if (bits & pivot)

@@ -91,16 +91,51 @@ TEST_CASE("Of two essential loops with the same winding only the older one wraps
           "[persistence][periodic]") {
   // Two essential classes whose representatives both wind once along x: the younger plus the older
   // (a representative of the younger class with the same birth) winds zero times, so the younger is
-  // a hole in the tissue. Listed younger first, to show the order is the birth order.
-  const Medusa m = ring({{1, 5}, {4, 5}, {6, 5}, {9, 5}}, false);
+  // a hole in the tissue. Listed younger first, to show the order is the birth order: that of the
+  // birth cells in the filtration (their batches here), not of the rows.
+  Medusa m = ring({{1, 5}, {4, 5}, {6, 5}, {9, 5}}, false);
+  const std::vector<CellId> edges = edges_of(m);
+  m.cells[edges[3]].birth.batch = 9;
+  m.cells[edges[1]].birth.batch = 5;
   persistence::DiagramWithClasses d;
   d.diagram.pairs.resize(2);
-  d.diagram.pairs[0].dim = 1;
-  d.diagram.pairs[0].birth_index = 9;
-  d.diagram.pairs[1].dim = 1;
-  d.diagram.pairs[1].birth_index = 5;
+  for (persistence::PersistencePair& p : d.diagram.pairs) {
+    p.dim = 1;
+    p.essential = true;
+  }
+  d.diagram.pairs[0].birth_cell = edges[3];
+  d.diagram.pairs[1].birth_cell = edges[1];
   d.classes.rows = {0, 1};
-  d.classes.cycles = {edges_of(m), edges_of(m)};
+  d.classes.cycles = {edges, edges};
   d.classes.clusters = {{}, {}};
   CHECK(persistence::class_wrapping_axes(m, d) == std::vector<std::string>{"", "x"});
+}
+
+TEST_CASE("A diagram read from a store finds the older wrapping loop without filtration indices",
+          "[persistence][periodic]") {
+  // As a store gives them back: no filtration index in any pair (0, and -1 for every death), a finite
+  // class among the essential ones. Three loops winding once along x, born in batches 2 (finite: it
+  // died, so it neither wraps nor reduces the others), 5 and 9, listed in the opposite order: only the
+  // essential one of batch 5 wraps. Ordering by the (all-zero) indices left the rows' order, and
+  // marked the one of batch 9; counting the finite one as essential would have marked it instead.
+  Medusa m = ring({{1, 5}, {4, 5}, {6, 5}, {9, 5}}, false);
+  const std::vector<CellId> edges = edges_of(m);
+  m.cells[edges[0]].birth.batch = 9;
+  m.cells[edges[1]].birth.batch = 5;
+  m.cells[edges[2]].birth.batch = 2;
+  persistence::DiagramWithClasses d;
+  d.diagram.pairs.resize(3);
+  for (std::size_t i = 0; i < 3; ++i) {
+    d.diagram.pairs[i].dim = 1;
+    d.diagram.pairs[i].birth_index = 0;
+    d.diagram.pairs[i].death_index = -1;
+    d.diagram.pairs[i].birth_cell = edges[i];
+    d.diagram.pairs[i].essential = i != 2;
+  }
+  d.classes.rows = {0, 1, 2};
+  d.classes.cycles = {edges, edges, edges};
+  d.classes.clusters = {{}, {}, {}};
+  const std::vector<std::string> axes = persistence::class_wrapping_axes(m, d);
+  CHECK(axes[0].empty());
+  CHECK(axes[1] == "x");
 }
