@@ -1,5 +1,6 @@
 // `medusa info`: what a store holds (docs/FORMAT.md).
 #include "commands.h"
+#include "diagram_export.h"
 #include "diagram_selection.h"
 #include "position_source.h"
 #include "side_outputs.h"
@@ -11,6 +12,23 @@
 
 namespace medusa::cli {
 namespace {
+
+// Open, or periodic along which axes with which periods (docs/MATH.md §8).
+std::string describe_domain(const medusa::Medusa& medusa) {
+  std::string axes, periods;
+  for (std::size_t a = 0; a < 3; ++a) {
+    const std::int64_t length = medusa.run.periodic_lengths[a];
+    if (length <= 0)
+      continue;
+    axes += (axes.empty() ? "" : ", ") + std::string(1, static_cast<char>('x' + a));
+    periods += (periods.empty() ? "" : " x ") +
+               format_time(static_cast<double>(length) / static_cast<double>(medusa.input.scale));
+  }
+  if (axes.empty())
+    return "open (no periodic boundary)";
+  return "periodic along " + axes + " (period " + periods +
+         " lattice units; loops that close through the boundary: column 'wraps' of `medusa classes --dim 1`)";
+}
 
 void info_command(const std::string& path) {
   const medusa::Medusa medusa = medusa::read_store(path);
@@ -27,6 +45,7 @@ void info_command(const std::string& path) {
   std::cout << "dimension: " << input.dimension << "\n"
             << "grid scale: " << input.scale << "\n"
             << "positions: " << describe_positions(medusa.run) << "\n"
+            << "domain: " << describe_domain(medusa) << "\n"
             << "cells: " << input.cells.size() << "\n"
             << "frames: " << input.frames() << "\n";
   if (!input.frame_times.empty())

@@ -90,6 +90,12 @@ def hand(medusa, work):
     classes = list(csv.DictReader(io.StringIO(p.stdout)))
     assert [r["wraps"] for r in classes] == ["x"], p.stdout
     print("ok: its loop wraps around the domain along x, in the summary and in medusa classes")
+    p = subprocess.run([medusa, "info", os.path.join(work, "ring.h5")], capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    assert "\ndomain: periodic along x (period 10 lattice units;" in p.stdout, p.stdout
+    p = subprocess.run([medusa, "info", os.path.join(work, "ring_open.h5")], capture_output=True, text=True)
+    assert "\ndomain: open (no periodic boundary)\n" in p.stdout, p.stdout
+    print("ok: medusa info names the periodic axes and the period, and an open run as open")
     # `medusa at` draws the seam edge whole (docs/FORMAT.md): at MCS 100 cell 1 (x = 1) and cell 5
     # (x = 9) are 2 apart across the seam; the edge is drawn from cell 1, in the lattice, to a copy of
     # cell 5 beyond the seam at x = -1, an extra point marked beyond_seam. Every drawn edge is then
