@@ -116,15 +116,6 @@ std::string type_heading(const medusa::Medusa& medusa, const std::string& label)
   return "type " + label + (index < names.size() && !names[index].empty() ? " (" + names[index] + ")" : "");
 }
 
-// A fraction for the terminal: three decimals, "n/a" without a denominator.
-std::string share(double x) {
-  if (std::isnan(x))
-    return "n/a";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3f", x);
-  return buffer;
-}
-
 void curves_command(const CurvesArguments& args) {
   const medusa::Medusa medusa = medusa::read_store(args.store);
   check_interrupted();
@@ -180,10 +171,8 @@ void curves_command(const CurvesArguments& args) {
          "of its own type; clusters and the largest one's cells; README):\n";
   for (std::size_t g = 0; g < sorting.front().measures.size(); ++g) {
     const medusa::SortingMeasures &a = sorting.front().measures[g], &b = sorting.back().measures[g];
-    std::cout << "  " << (a.type ? "type " + std::to_string(*a.type) : std::string("all cells"))
-              << ": heterotypic contacts " << share(a.heterotypic_fraction()) << " -> "
-              << share(b.heterotypic_fraction()) << ", same-type neighbours " << share(a.same_type_fraction)
-              << " -> " << share(b.same_type_fraction) << ", clusters " << a.clusters << " -> " << b.clusters
+    std::cout << "  " << (a.type ? "type " + std::to_string(*a.type) : std::string("all cells")) << ": "
+              << contact_fractions(a, b, " -> ") << ", clusters " << a.clusters << " -> " << b.clusters
               << ", largest cluster " << a.largest_cluster << " -> " << b.largest_cluster << " cells\n";
   }
   // All four files or none: an interrupt between two writes removes those already written.

@@ -68,7 +68,10 @@ void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
          "filtration, docs/MATH.md §7.6); times between frames come from linear interpolation of the cell "
          "centres. <b>Criterion</b> for &ldquo;sorts&rdquo;: a cell type that is in several clusters at the "
          "first frame is one cluster at every frame from some frame to the last; no other threshold "
-         "enters.</p>\n"
+         "enters. Under each type, the classical measures of the same complexes (docs/MATH.md §6.9): "
+         "<b>heterotypic contacts</b>, the fraction of its links that join cells of different types, and "
+         "<b>same-type neighbours</b>, the mean fraction of a cell's linked neighbours of its own type; "
+         "sorting lowers the first and raises the second, whether or not a type ends in one cluster.</p>\n"
       << "<div id=\"headlines\" class=\"cards\"></div>\n<div id=\"radius-answer\"></div>\n"
       << "<div id=\"glance-charts\" class=\"charts\"></div>\n";
   const bool explained = scale.contains("notes") && !scale["notes"].empty();

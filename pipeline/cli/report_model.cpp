@@ -1,14 +1,17 @@
 #include "report_model.h"
 
 #include "betti_frames.h"
+#include "diagram_export.h"
 #include "diagram_selection.h"
 #include "forward_counts.h"
 #include "interrupt.h"
 #include "report_answer.h"
 #include "report_classes.h"
 #include "run_summary.h"
+#include "sorting_export.h"
 
 #include "medusa/core/error.h"
+#include "medusa/medusa/sorting_measures.h"
 #include "medusa/medusa/store_reader.h"
 #include "medusa/persistence/medusa_diagrams.h"
 
@@ -16,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -134,6 +138,9 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
       persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, options);
   check_interrupted();
   const std::vector<TypeSlices> slices = slices_at_frames(medusa);
+  // The classical measures (docs/MATH.md §6.9) at the first and the last slice, as `medusa curves`
+  // prints them: what a biologist compares the clusters with.
+  const std::vector<medusa::SortingSample> sorting = medusa::sorting_over_time(medusa, check_interrupted);
   const double t0 = static_cast<double>(input.frame_times.front());
   const double t_end = static_cast<double>(input.frame_times.back());
 
@@ -179,9 +186,19 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
     for (const Signature& g : s->at_frame)
       b0.push_back(g.betti[0]);
     const TypeCourse course = type_course(input.frame_times, b0, forward_counts(d).merge_times);
+    const auto measures_of = [&](const medusa::SortingSample& sample) {
+      const std::optional<int> type =
+          d.cell_type == persistence::all_types ? std::nullopt : std::optional<int>(d.cell_type);
+      return *std::find_if(sample.measures.begin(), sample.measures.end(),
+                           [&](const medusa::SortingMeasures& m) { return m.type == type; });
+    };
     headlines.push_back({{"label", label},
                          {"name", tname},
                          {"text", course.text},
+                         {"contacts", contact_fractions(measures_of(sorting.front()),
+                                                        measures_of(sorting.back()), " \u2192 ") +
+                                          " (MCS " + format_time(sorting.front().time) + " \u2192 " +
+                                          format_time(sorting.back().time) + ")"},
                          {"gathered_at", course.gathered_at ? json(*course.gathered_at) : json(nullptr)}});
     if (d.cell_type != persistence::all_types)
       verdict_types.push_back({"type " + label + (tname.empty() ? "" : " (" + tname + ")"), course});

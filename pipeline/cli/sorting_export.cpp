@@ -5,6 +5,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <string>
 
@@ -27,7 +28,23 @@ std::string label_of(const medusa::SortingMeasures& m) { return m.type ? std::to
 // hundreds of thousands of batches gives a small SVG.
 constexpr double buckets = 2400;
 
+// A fraction in words: three decimals, "n/a" without a denominator.
+std::string share(double x) {
+  if (std::isnan(x))
+    return "n/a";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3f", x);
+  return buffer;
+}
+
 } // namespace
+
+std::string contact_fractions(const medusa::SortingMeasures& first, const medusa::SortingMeasures& last,
+                              const std::string& arrow) {
+  return "heterotypic contacts " + share(first.heterotypic_fraction()) + arrow +
+         share(last.heterotypic_fraction()) + ", same-type neighbours " + share(first.same_type_fraction) +
+         arrow + share(last.same_type_fraction);
+}
 
 void write_sorting_csv(std::ostream& out, const std::vector<medusa::SortingSample>& samples) {
   out << "time,type,cells,edges,heterotypic_edges,heterotypic_fraction,cells_with_neighbours,"

@@ -6,6 +6,7 @@
 #include "medusa/medusa/sorting_measures.h"
 
 #include <ostream>
+#include <string>
 #include <vector>
 
 namespace medusa::cli {
@@ -17,5 +18,10 @@ void write_sorting_csv(std::ostream& out, const std::vector<medusa::SortingSampl
 // cluster size), one curve per label, thinned to a few samples per pixel column of [t0, t_end].
 std::vector<CurvePanel> sorting_panels(const std::vector<medusa::SortingSample>& samples, double t0,
                                        double t_end);
+
+// "heterotypic contacts 0.670 -> 0.537, same-type neighbours 0.498 -> 0.633": the two fractions from
+// `first` to `last` (three decimals, "n/a" without a denominator), joined by `arrow`.
+std::string contact_fractions(const medusa::SortingMeasures& first, const medusa::SortingMeasures& last,
+                              const std::string& arrow);
 
 } // namespace medusa::cli

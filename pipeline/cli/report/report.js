@@ -207,6 +207,7 @@
         const li = html("li", { class: "headline" + (x.label === "all" ? " muted" : ""), "data-type": x.label }, ul);
         html("b", {}, li, typeTitle(x.label, x.name) + ": ");
         li.appendChild(document.createTextNode(x.text));
+        html("div", { class: "contacts muted" }, li, x.contacts);
       }
       // With several runs the table and statements under the cards say it for all of them at once.
       if ((run.scale || []).length && data.sweeps.filter((w) => w.run >= 0).length === 1) {

@@ -157,6 +157,22 @@ def check_answer(driver, failures):
                     failures.append(f"three.html {name} type {label}: {line!r}, expected one cluster from MCS {times[start]:.0f}")
             elif "never one cluster" not in line and "split again" not in line and series[0] > 1:
                 failures.append(f"three.html {name} type {label}: {line!r} does not say it never stays one cluster")
+        # The contact fractions under each type are those `medusa curves` prints for the same store (their
+        # values checked against counts on `medusa at` exports by check_sorting_measures.py); in a sorting
+        # run the condensing type's heterotypic contacts fall.
+        printed = {m.group(1): m.group(2) for m in re.finditer(
+            r"^  (?:type (\d+)|all cells): (heterotypic contacts \S+ -> \S+, same-type neighbours \S+ -> \S+),",
+            call("curves", f"{name}.h5", "-o", f"curves_{name}"), re.M) if m.group(1)}
+        for label in ("1", "2"):
+            shown = driver.find_element(
+                "css selector", f".run-card[data-run='{ri}'] .headline[data-type='{label}'] .contacts").text
+            expected = printed.get(label, "?").replace(" -> ", " \u2192 ")
+            if not shown.startswith(expected + " (MCS "):
+                failures.append(f"three.html {name} type {label}: contacts {shown!r}, `medusa curves` says {expected!r}")
+        if SORTING[name]:
+            first, last = (float(x) for x in re.search(r"heterotypic contacts (\S+) -> (\S+),", printed["1"]).groups())
+            if not last < first:
+                failures.append(f"{name}: type 1's heterotypic contacts do not fall ({first} -> {last})")
         verdict = driver.find_element("css selector", f".verdict[data-run='{ri}']").text
         if verdict.startswith(f"{name} sorts") != bool(gathered) or bool(gathered) != SORTING[name]:
             failures.append(f"three.html {name}: verdict {verdict!r}; types one cluster to the end: {gathered}, "
