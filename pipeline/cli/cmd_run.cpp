@@ -73,6 +73,8 @@ struct RunArguments {
 std::string radius_problem(const std::string& value) {
   if (value == "auto")
     return "";
+  if (value.size() > 1 && value[0] == '-' && radius_problem(value.substr(1)).empty())
+    return "'" + value + "' is not positive: a radius is a length";
   const bool digits_only = value.find_first_not_of("0123456789.") == std::string::npos &&
                            std::count(value.begin(), value.end(), '.') <= 1 &&
                            value.find_first_of("0123456789") != std::string::npos;
