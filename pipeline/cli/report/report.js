@@ -140,10 +140,11 @@
   }
 
   // The H0 panels end a little after the last birth or join (a round value), when that is well before
-  // the end of the run: clusters join in the first few hundred MCS. Other degrees span the whole run.
+  // the end of the run: clusters join in the first few hundred MCS. Other degrees, and an H0 panel
+  // without a join (one cluster throughout), span the whole run.
   function zoomedEnd(run, panel) {
     const t0 = run.facts.t0, t1 = run.facts.t_end;
-    if (panel.dim !== 0 || !panel.pairs.length) return t1;
+    if (panel.dim !== 0 || !panel.pairs.some((p) => p[1] !== null)) return t1;
     let last = t0;
     for (const p of panel.pairs) last = Math.max(last, p[0], p[1] === null ? p[0] : p[1]);
     const target = t0 + Math.max(last - t0, (t1 - t0) / 100) * 1.1;

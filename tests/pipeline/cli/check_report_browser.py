@@ -209,6 +209,20 @@ def check_answer(driver, failures):
         .map((t) => t.textContent).join(" | ");""")
     if "zoomed to the joins" not in axis:
         failures.append(f"three.html: the type 1 H0 panel of sorting_3d is not zoomed: {axis!r}")
+    # An H0 panel without a join (one cluster from the first frame on) is not zoomed: nothing to zoom to.
+    unjoined = driver.execute_script("""const data = JSON.parse(document.getElementById("report-data").textContent);
+        const out = [];
+        data.runs.forEach((run, ri) => run.panels.forEach((p) => {
+          if (p.dim !== 0 || p.pairs.some((x) => x[1] !== null)) return;
+          const texts = [...document.querySelectorAll(`.panel[data-run='${ri}'][data-type='${p.label}'][data-dim='0'] text`)];
+          out.push([run.name, p.label, texts.map((t) => t.textContent).join(" | ")]);
+        }));
+        return out;""")
+    if not unjoined:
+        failures.append("three.html: no H0 panel without a join (the check of the unzoomed panel ran on none)")
+    for name, label, axis in unjoined:
+        if "zoomed" in axis:
+            failures.append(f"three.html: {name} {label} H0 has no join but its panel is zoomed: {axis!r}")
 
 
 options = Options()
