@@ -19,7 +19,6 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <optional>
 #include <set>
 #include <sstream>
 
@@ -141,6 +140,8 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
   // The classical measures (docs/MATH.md §6.9) at the first and the last slice, as `medusa curves`
   // prints them: what a biologist compares the clusters with.
   const std::vector<medusa::SortingSample> sorting = medusa::sorting_over_time(medusa, check_interrupted);
+  if (sorting.empty())
+    throw InternalError("report: no time slice in " + store);
   const double t0 = static_cast<double>(input.frame_times.front());
   const double t_end = static_cast<double>(input.frame_times.back());
 
@@ -187,10 +188,14 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
       b0.push_back(g.betti[0]);
     const TypeCourse course = type_course(input.frame_times, b0, forward_counts(d).merge_times);
     const auto measures_of = [&](const medusa::SortingSample& sample) {
-      const std::optional<int> type =
-          d.cell_type == persistence::all_types ? std::nullopt : std::optional<int>(d.cell_type);
-      return *std::find_if(sample.measures.begin(), sample.measures.end(),
-                           [&](const medusa::SortingMeasures& m) { return m.type == type; });
+      const bool whole = d.cell_type == persistence::all_types;
+      const auto m =
+          std::find_if(sample.measures.begin(), sample.measures.end(), [&](const medusa::SortingMeasures& x) {
+            return whole ? !x.type.has_value() : x.type.has_value() && *x.type == d.cell_type;
+          });
+      if (m == sample.measures.end())
+        throw InternalError("report: no sorting measures for " + label);
+      return *m;
     };
     headlines.push_back({{"label", label},
                          {"name", tname},
