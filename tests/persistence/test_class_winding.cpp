@@ -4,6 +4,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <utility>
+
 using namespace medusa;
 
 namespace {
@@ -45,6 +48,30 @@ std::vector<CellId> edges_of(const Medusa& m) {
     if (c.dim() == 1)
       out.push_back(c.id);
   return out;
+}
+
+// Loop classes of the ring `m`, one per entry of `born`: the class born with the ring's edge
+// `born[i].first` in batch `born[i].second`, essential unless listed in `finite`, each with the whole
+// ring as representative (winding once along x). As a store gives them back: no filtration index.
+persistence::DiagramWithClasses ring_loops(Medusa& m,
+                                           const std::vector<std::pair<std::size_t, std::uint32_t>>& born,
+                                           const std::vector<std::size_t>& finite = {}) {
+  const std::vector<CellId> edges = edges_of(m);
+  persistence::DiagramWithClasses d;
+  for (std::size_t i = 0; i < born.size(); ++i) {
+    m.cells[edges[born[i].first]].birth.batch = born[i].second;
+    persistence::PersistencePair p;
+    p.dim = 1;
+    p.birth_index = 0;
+    p.death_index = -1;
+    p.birth_cell = edges[born[i].first];
+    p.essential = std::find(finite.begin(), finite.end(), i) == finite.end();
+    d.diagram.pairs.push_back(p);
+    d.classes.rows.push_back(i);
+    d.classes.cycles.push_back(edges);
+    d.classes.clusters.push_back({});
+  }
+  return d;
 }
 
 } // namespace
@@ -94,20 +121,7 @@ TEST_CASE("Of two essential loops with the same winding only the older one wraps
   // a hole in the tissue. Listed younger first, to show the order is the birth order: that of the
   // birth cells in the filtration (their batches here), not of the rows.
   Medusa m = ring({{1, 5}, {4, 5}, {6, 5}, {9, 5}}, false);
-  const std::vector<CellId> edges = edges_of(m);
-  m.cells[edges[3]].birth.batch = 9;
-  m.cells[edges[1]].birth.batch = 5;
-  persistence::DiagramWithClasses d;
-  d.diagram.pairs.resize(2);
-  for (persistence::PersistencePair& p : d.diagram.pairs) {
-    p.dim = 1;
-    p.essential = true;
-  }
-  d.diagram.pairs[0].birth_cell = edges[3];
-  d.diagram.pairs[1].birth_cell = edges[1];
-  d.classes.rows = {0, 1};
-  d.classes.cycles = {edges, edges};
-  d.classes.clusters = {{}, {}};
+  const persistence::DiagramWithClasses d = ring_loops(m, {{3, 9}, {1, 5}});
   CHECK(persistence::class_wrapping_axes(m, d) == std::vector<std::string>{"", "x"});
 }
 
@@ -119,22 +133,7 @@ TEST_CASE("A diagram read from a store finds the older wrapping loop without fil
   // essential one of batch 5 wraps. Ordering by the (all-zero) indices left the rows' order, and
   // marked the one of batch 9; counting the finite one as essential would have marked it instead.
   Medusa m = ring({{1, 5}, {4, 5}, {6, 5}, {9, 5}}, false);
-  const std::vector<CellId> edges = edges_of(m);
-  m.cells[edges[0]].birth.batch = 9;
-  m.cells[edges[1]].birth.batch = 5;
-  m.cells[edges[2]].birth.batch = 2;
-  persistence::DiagramWithClasses d;
-  d.diagram.pairs.resize(3);
-  for (std::size_t i = 0; i < 3; ++i) {
-    d.diagram.pairs[i].dim = 1;
-    d.diagram.pairs[i].birth_index = 0;
-    d.diagram.pairs[i].death_index = -1;
-    d.diagram.pairs[i].birth_cell = edges[i];
-    d.diagram.pairs[i].essential = i != 2;
-  }
-  d.classes.rows = {0, 1, 2};
-  d.classes.cycles = {edges, edges, edges};
-  d.classes.clusters = {{}, {}, {}};
+  const persistence::DiagramWithClasses d = ring_loops(m, {{0, 9}, {1, 5}, {2, 2}}, {2});
   const std::vector<std::string> axes = persistence::class_wrapping_axes(m, d);
   CHECK(axes[0].empty());
   CHECK(axes[1] == "x");
