@@ -33,6 +33,8 @@ TypeCourse type_course(const std::vector<std::int64_t>& times, const std::vector
   const std::size_t n = b0.size();
   if (n == 0 || times.size() != n)
     return course;
+  course.first_clusters = b0.front();
+  course.last_clusters = b0.back();
   const double t0 = static_cast<double>(times.front()), t_end = static_cast<double>(times.back());
   // The last stretch of frames at which the type is one cluster.
   std::size_t from = n;
@@ -85,8 +87,22 @@ std::string run_verdict(const std::vector<TypeVerdictInput>& types, const std::s
   if (!types.empty() && started_one == types.size())
     return "cannot tell at radius " + radius + ": every type is one cluster from the first frame on (" +
            at_start + "); the radius is too large to show sorting, see the radii below";
-  return "does not sort at radius " + radius +
-         ": no cell type gathers into one cluster that lasts to the end";
+  std::string how_far;
+  for (const TypeVerdictInput& t : types) {
+    const TypeCourse& c = t.course;
+    how_far += (how_far.empty() ? "" : "; ") + t.title;
+    if (c.one_from_start)
+      how_far += " is one cluster throughout";
+    else if (c.first_clusters == c.last_clusters)
+      how_far += " has " + clusters(c.first_clusters) + " at the first and at the last frame";
+    else
+      how_far += " goes from " + clusters(c.first_clusters) + " to " +
+                 (c.last_clusters == 1 ? "one" : std::to_string(c.last_clusters));
+    if (!t.contacts.empty())
+      how_far += ", " + t.contacts;
+  }
+  return "has no type in one cluster to the end at radius " + radius +
+         (how_far.empty() ? "" : ": " + how_far);
 }
 
 } // namespace medusa::cli

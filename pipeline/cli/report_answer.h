@@ -18,6 +18,8 @@ struct TypeCourse {
   std::string text;                  // "7 clusters at MCS 0, one cluster from MCS 100 to the end (...)"
   std::optional<double> gathered_at; // the first frame of that last stretch, if the type gathers
   bool one_from_start = false;       // one cluster at every frame, the first included
+  std::size_t first_clusters = 0;    // clusters at the first frame
+  std::size_t last_clusters = 0;     // clusters at the last frame
 };
 
 // `times` the frame times, `b0` the clusters at each frame, `joins` the join times (increasing).
@@ -27,10 +29,13 @@ TypeCourse type_course(const std::vector<std::int64_t>& times, const std::vector
 struct TypeVerdictInput {
   std::string title; // "type 1 (Condensing)"
   TypeCourse course;
+  std::string contacts; // "heterotypic contacts 0.667 → 0.268", from the first slice to the last
 };
 
 // "sorts: type 1 (Condensing) gathers into one cluster by MCS 100 and stays one to the end", or why
-// not, for the run's types (the whole tissue left out).
+// not, for the run's types (the whole tissue left out). When no type gathers, the verdict says how far
+// each got (clusters at the first and last frame, and its contacts) rather than only "no": a type that
+// goes from 22 clusters to 2 while its heterotypic contacts fall has sorted most of the way.
 std::string run_verdict(const std::vector<TypeVerdictInput>& types, const std::string& radius);
 
 } // namespace medusa::cli

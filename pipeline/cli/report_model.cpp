@@ -206,7 +206,9 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
                                           format_time(sorting.back().time) + ")"},
                          {"gathered_at", course.gathered_at ? json(*course.gathered_at) : json(nullptr)}});
     if (d.cell_type != persistence::all_types)
-      verdict_types.push_back({"type " + label + (tname.empty() ? "" : " (" + tname + ")"), course});
+      verdict_types.push_back(
+          {"type " + label + (tname.empty() ? "" : " (" + tname + ")"), course,
+           heterotypic_contacts(measures_of(sorting.front()), measures_of(sorting.back()), " \u2192 ")});
     for (int k = 0; k <= 2; ++k)
       panels.push_back(panel(d, k, max_bars, medusa));
     run.h0_points.emplace_back(

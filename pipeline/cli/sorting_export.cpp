@@ -41,9 +41,14 @@ std::string share(double x) {
 
 std::string contact_fractions(const medusa::SortingMeasures& first, const medusa::SortingMeasures& last,
                               const std::string& arrow) {
+  return heterotypic_contacts(first, last, arrow) + ", same-type neighbours " +
+         share(first.same_type_fraction) + arrow + share(last.same_type_fraction);
+}
+
+std::string heterotypic_contacts(const medusa::SortingMeasures& first, const medusa::SortingMeasures& last,
+                                 const std::string& arrow) {
   return "heterotypic contacts " + share(first.heterotypic_fraction()) + arrow +
-         share(last.heterotypic_fraction()) + ", same-type neighbours " + share(first.same_type_fraction) +
-         arrow + share(last.same_type_fraction);
+         share(last.heterotypic_fraction());
 }
 
 void write_sorting_csv(std::ostream& out, const std::vector<medusa::SortingSample>& samples) {

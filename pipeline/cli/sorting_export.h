@@ -24,4 +24,8 @@ std::vector<CurvePanel> sorting_panels(const std::vector<medusa::SortingSample>&
 std::string contact_fractions(const medusa::SortingMeasures& first, const medusa::SortingMeasures& last,
                               const std::string& arrow);
 
+// Its first half: "heterotypic contacts 0.670 -> 0.537".
+std::string heterotypic_contacts(const medusa::SortingMeasures& first, const medusa::SortingMeasures& last,
+                                 const std::string& arrow);
+
 } // namespace medusa::cli

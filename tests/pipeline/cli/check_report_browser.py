@@ -180,6 +180,20 @@ def check_answer(driver, failures):
         for label, t in gathered.items():
             if f"type {label}" not in verdict or f"by MCS {t:.0f}" not in verdict:
                 failures.append(f"three.html {name}: verdict {verdict!r} does not name type {label} by MCS {t:.0f}")
+        # Without a gathering type the verdict says how far each type got: its clusters at the first and
+        # last frame (from `medusa sweep`) and its heterotypic contacts (from `medusa curves`).
+        if not gathered:
+            for label in ("1", "2"):
+                first, last = b0[label][0], b0[label][-1]
+                if first == 1 and all(c == 1 for c in b0[label]):
+                    how = "is one cluster throughout"
+                elif first == last:
+                    how = f"has {first if first > 1 else 'one'} cluster{'s' if first > 1 else ''} at the first and at the last frame"
+                else:
+                    how = f"goes from {first if first > 1 else 'one'} cluster{'s' if first > 1 else ''} to {last if last > 1 else 'one'}"
+                contacts = printed.get(label, "?").split(",")[0].replace(" -> ", " \u2192 ")
+                if f"type {label}" not in verdict or f"{how}, {contacts}" not in verdict:
+                    failures.append(f"three.html {name}: verdict {verdict!r} does not say type {label} {how}, {contacts}")
     # At which radii the runs differ: one cluster at the last frame in some runs but not in all.
     for label in ("1", "2"):
         differ = [r for r in default_radii

@@ -47,12 +47,27 @@ TEST_CASE("The verdict names the types that gather, or says why it cannot tell")
   const auto split = type_course(five_frames, {12, 8, 4, 2, 2}, {265});
   const auto one = type_course(five_frames, {1, 1, 1, 1, 1}, {});
   CHECK(
-      run_verdict({{"type 1 (Condensing)", gathers}, {"type 2", split}}, "3") ==
+      run_verdict({{"type 1 (Condensing)", gathers, ""}, {"type 2", split, ""}}, "3") ==
       "sorts at radius 3: type 1 (Condensing) gathers into one cluster by MCS 200 and stays one to the end");
-  CHECK(run_verdict({{"type 1", split}, {"type 2", split}}, "3") ==
-        "does not sort at radius 3: no cell type gathers into one cluster that lasts to the end");
-  CHECK(run_verdict({{"type 1", one}, {"type 2", one}}, "4.5")
+  CHECK(run_verdict({{"type 1", split, ""}, {"type 2", split, ""}}, "3") ==
+        "has no type in one cluster to the end at radius 3: type 1 goes from 12 clusters "
+        "to 2; type 2 goes from 12 clusters to 2");
+  CHECK(run_verdict({{"type 1", one, ""}, {"type 2", one, ""}}, "4.5")
             .rfind("cannot tell at radius 4.5: every type is one "
                    "cluster from the first frame on",
                    0) == 0);
+}
+
+TEST_CASE("A verdict without a gathering type says how far each type got, with its contacts") {
+  const auto most_of_the_way = type_course(five_frames, {22, 9, 4, 2, 2}, {10, 20, 30});
+  const auto one = type_course(five_frames, {1, 1, 1, 1, 1}, {});
+  const auto ends_in_one_again = type_course({0, 100, 200}, {1, 3, 1}, {150});
+  CHECK(run_verdict({{"type 1 (Condensing)", most_of_the_way, "heterotypic contacts 0.667 \u2192 0.268"},
+                     {"type 2 (NonCondensing)", one, "heterotypic contacts 0.310 \u2192 0.110"},
+                     {"type 3", ends_in_one_again, ""}},
+                    "2.7") ==
+        "has no type in one cluster to the end at radius 2.7: type 1 (Condensing) goes from "
+        "22 clusters to 2, heterotypic contacts 0.667 \u2192 0.268; type 2 (NonCondensing) is one cluster "
+        "throughout, heterotypic contacts 0.310 \u2192 0.110; type 3 has one cluster at the first and at the "
+        "last frame");
 }
