@@ -62,8 +62,8 @@ struct RunArguments {
   std::string timings;
   unsigned threads = 0;         // 0: one per hardware thread
   std::size_t audit_stride = 0; // 0: not given (audit, if at all, after every batch)
-  bool audit = false, snap = false, exact_vtk = false, periodic_as_open = false, quiet = false,
-       progress = false, force = false;
+  bool audit = false, snap = false, exact_vtk = false, round_csv = false, periodic_as_open = false,
+       quiet = false, progress = false, force = false;
   bool skip_unreadable_frames = false;
   bool shorten_representatives = false;
 };
@@ -426,6 +426,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   io::RunOptions options;
   options.source = choose_source(input, args.source);
   options.snap = !args.exact_vtk;
+  options.round_csv = args.round_csv;
   options.allow_periodic_as_open = args.periodic_as_open;
   options.read_periodic = !args.periodic_as_open;
   options.skip_unreadable_frames = args.skip_unreadable_frames;
@@ -578,6 +579,9 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
       ->check(CLI::IsMember({"csv", "vtk"}));
   run->add_flag("--exact-vtk", args->exact_vtk,
                 "refuse VTK centroids off the 10^-6 grid instead of snapping them");
+  run->add_flag("--round-csv", args->round_csv,
+                "round CSV centres with more than 6 decimals to the 10^-6 grid (nearest, ties to even; "
+                "recorded in the store, docs/MATH.md §1.2) instead of refusing them");
   run->add_flag("--snap", args->snap,
                 "snap VTK centroids to the 10^-6 grid (the default; accepted for older scripts)");
   run->add_flag("--periodic-as-open", args->periodic_as_open,

@@ -34,7 +34,7 @@ struct SweepArguments {
   std::string prefix;
   std::string source;
   unsigned threads = 0;
-  bool snap = false, periodic_as_open = false, quiet = false;
+  bool snap = false, exact_vtk = false, round_csv = false, periodic_as_open = false, quiet = false;
 };
 
 // The radii in increasing order, each once (compared by exact decimal value).
@@ -97,13 +97,17 @@ void sweep_command(const SweepArguments& args) {
     throw InputError("input " + args.input + " does not exist");
   io::RunOptions options;
   options.source = choose_source(args.input, args.source);
-  options.snap = args.snap;
+  options.snap = !args.exact_vtk; // as `medusa run`: VTK centroids snapped unless --exact-vtk
+  options.round_csv = args.round_csv;
   options.allow_periodic_as_open = args.periodic_as_open;
   options.read_periodic = !args.periodic_as_open;
   const io::RunData data = io::read_run(args.input, options);
-  if (!args.quiet)
+  if (!args.quiet) {
     for (const std::string& w : data.warnings)
       std::cerr << "medusa: warning: " << w << "\n";
+    for (const std::string& n : data.notes)
+      std::cerr << "medusa: " << n << "\n";
+  }
   // Bad radius text, and on a periodic run a radius too large for the period (docs/MATH.md §8.3),
   // fail here, before any work.
   for (const std::string& r : radii) {
@@ -185,13 +189,22 @@ void add_sweep_command(CLI::App& app) {
                     "<prefix>.crocker.svg and <prefix>.sweep.txt (default: <input-name>)");
   sweep->add_option("--source", args->source, "positions from 'csv' or 'vtk', as for `medusa run`")
       ->check(CLI::IsMember({"csv", "vtk"}));
-  sweep->add_flag("--snap", args->snap, "snap VTK centroids to the 10^-6 grid");
+  sweep->add_flag("--exact-vtk", args->exact_vtk,
+                  "refuse VTK centroids off the 10^-6 grid instead of snapping them, as for `medusa run`");
+  sweep->add_flag("--snap", args->snap, "snap VTK centroids to the 10^-6 grid (the default)");
+  sweep->add_flag("--round-csv", args->round_csv,
+                  "round CSV centres with more than 6 decimals to the 10^-6 grid (nearest, ties to even, "
+                  "docs/MATH.md §1.2) instead of refusing them");
   sweep->add_flag("--periodic-as-open", args->periodic_as_open,
                   "read a periodic run as if its boundaries were open");
   sweep->add_option("--threads", args->threads, "radii computed at once (0 = one per hardware thread)")
       ->capture_default_str();
   sweep->add_flag("-q,--quiet", args->quiet, "no warnings and no progress on stderr");
-  sweep->callback([args] { sweep_command(*args); });
+  sweep->callback([args] {
+    if (args->snap && args->exact_vtk)
+      throw CLI::ValidationError("--exact-vtk", "contradicts --snap: give one of them");
+    sweep_command(*args);
+  });
 }
 
 } // namespace medusa::cli

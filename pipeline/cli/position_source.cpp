@@ -18,13 +18,16 @@ std::string describe_positions(const medusa::RunInfo& run) {
     what = run.position_source;
   if (run.snap_policy == "exact")
     return what + ", exact on the grid";
+  // VTK centroids are snapped (docs/MATH.md §1.3), CSV centres rounded on request (§1.2).
+  const bool vtk = positions_from_vtk(run);
   if (run.snapped_positions == 0)
-    return what + ", all on the grid (none snapped)";
+    return what + ", all on the grid (none " + (vtk ? "snapped" : "rounded") + ")";
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.2g", run.snap_max_displacement);
-  return what + " snapped to the grid (" + run.snap_policy + "): " + std::to_string(run.snapped_positions) +
-         " moved, at most " + buffer +
-         " grid units per coordinate; exact results are for the snapped positions (docs/MATH.md §1.3)";
+  return what + (vtk ? " snapped" : " rounded") + " to the grid (" + run.snap_policy +
+         "): " + std::to_string(run.snapped_positions) + " moved, at most " + buffer +
+         " grid units per coordinate; exact results are for the " + (vtk ? "snapped" : "rounded") +
+         " positions (docs/MATH.md " + (vtk ? "§1.3" : "§1.2") + ")";
 }
 
 } // namespace medusa::cli

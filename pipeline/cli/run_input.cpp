@@ -77,7 +77,7 @@ medusa::RunInfo run_info(const io::RunData& data, const std::string& radius,
   info.command_line = command_line;
   info.software_version = medusa::version;
   info.position_source = data.position_convention;
-  info.snap_policy = data.used == io::RunSource::vtk && data.snap.snapped ? "nearest-ties-to-even" : "exact";
+  info.snap_policy = data.snap.snapped ? "nearest-ties-to-even" : "exact";
   info.snapped_positions = static_cast<std::uint64_t>(data.snap.moved);
   info.snap_max_displacement = data.snap.max_displacement();
   return info;

@@ -186,7 +186,7 @@ public:
 
 std::shared_ptr<StoreView> run(const std::string& input, const py::object& radius, const std::string& output,
                                const std::string& source, bool snap, unsigned threads, bool force,
-                               bool shorten_representatives, bool periodic_as_open) {
+                               bool shorten_representatives, bool periodic_as_open, bool round_csv) {
   RunRequest request;
   request.input = input;
   request.radius =
@@ -198,6 +198,7 @@ std::shared_ptr<StoreView> run(const std::string& input, const py::object& radiu
   request.force = force;
   request.shorten_representatives = shorten_representatives;
   request.periodic_as_open = periodic_as_open;
+  request.round_csv = round_csv;
   std::string path;
   {
     const SignalHook hook;
@@ -263,12 +264,14 @@ PYBIND11_MODULE(medusa, m) {
            "(docs/MATH.md §7.8), at the frame times by default");
 
   m.def("open", &open_store, py::arg("path"), "Open a store written by `medusa run` or medusa.run");
-  m.def("run", &run, py::arg("input"), py::arg("radius") = "auto", py::arg("output") = "",
-        py::arg("source") = "", py::arg("snap") = false, py::arg("threads") = 0, py::arg("force") = false,
-        py::arg("shorten_representatives") = false, py::arg("periodic_as_open") = false,
-        "Run the pipeline of `medusa run` in this process (the GIL is released) on a CC3D output folder "
-        "or cells.csv[.gz], write the store (default <input name>.h5; an existing one only with force=True) "
-        "and return it opened. Ctrl-C stops it with KeyboardInterrupt and leaves no store. A periodic run "
-        "is analysed on the torus (docs/MATH.md §8). shorten_representatives, periodic_as_open: as "
-        "`medusa run --shorten-representatives` (docs/MATH.md §7.13) and `--periodic-as-open`.");
+  m.def(
+      "run", &run, py::arg("input"), py::arg("radius") = "auto", py::arg("output") = "",
+      py::arg("source") = "", py::arg("snap") = false, py::arg("threads") = 0, py::arg("force") = false,
+      py::arg("shorten_representatives") = false, py::arg("periodic_as_open") = false,
+      py::arg("round_csv") = false,
+      "Run the pipeline of `medusa run` in this process (the GIL is released) on a CC3D output folder "
+      "or cells.csv[.gz], write the store (default <input name>.h5; an existing one only with force=True) "
+      "and return it opened. Ctrl-C stops it with KeyboardInterrupt and leaves no store. A periodic run "
+      "is analysed on the torus (docs/MATH.md §8). shorten_representatives, periodic_as_open, round_csv: as "
+      "`medusa run --shorten-representatives` (docs/MATH.md §7.13) and `--periodic-as-open`.");
 }

@@ -36,6 +36,7 @@ std::string run_pipeline(const RunRequest& request, const std::string& command_l
   io::RunOptions options;
   options.source = cli::choose_source(request.input, request.source);
   options.snap = request.snap;
+  options.round_csv = request.round_csv;
   options.allow_periodic_as_open = request.periodic_as_open;
   options.read_periodic = !request.periodic_as_open;
   io::RunData data = io::read_run(request.input, options);

@@ -17,6 +17,7 @@ struct RunRequest {
   bool force = false;                   // replace an existing store (as `medusa run --force`)
   bool shorten_representatives = false; // as `medusa run --shorten-representatives`
   bool periodic_as_open = false;        // as `medusa run --periodic-as-open`
+  bool round_csv = false;               // as `medusa run --round-csv`
 };
 
 // Runs the pipeline and returns the path of the complete store. A periodic run is analysed on the torus

@@ -68,6 +68,34 @@ TEST_CASE("A CSV value with more than six decimals is refused at scale 10^6", "[
   CHECK(c.samples[1].position[0] == 40000005);
 }
 
+TEST_CASE("An over-precise CSV value points to --round-csv", "[io][csv]") {
+  CHECK_THAT(csv_error("too_many_decimals.csv"), Contains("--round-csv"));
+}
+
+TEST_CASE("CSV centres are rounded to the grid, ties to even, and the rounding counted on request",
+          "[io][csv]") {
+  io::test::TempDir dir;
+  // Row 1 on the grid; row 2 rounds down by 0.4 and up by 0.3 grid units; row 3 is a tie (to even,
+  // 0.5 units) and an exponent.
+  std::ofstream(dir.file("fine.csv")) << "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n"
+                                         "0,1,1,1.5,2,3\n"
+                                         "0,2,1,4.0000004,5.0000007,6\n"
+                                         "0,3,2,7.0000015,8.1e-6,9.25E1\n";
+  CsvOptions o;
+  o.round = true;
+  const CsvContents c = read_csv(dir.file("fine.csv"), o);
+  REQUIRE(c.samples.size() == 3);
+  CHECK(c.samples[0].position == kinetic::GridPoint{1500000, 2000000, 3000000});
+  CHECK(c.samples[1].position == kinetic::GridPoint{4000000, 5000001, 6000000});
+  CHECK(c.samples[2].position == kinetic::GridPoint{7000002, 8, 92500000});
+  CHECK(c.rounding.snapped);
+  CHECK(c.rounding.positions == 3);
+  CHECK(c.rounding.moved == 2);
+  CHECK(c.rounding.max_displacement_num * 2 == c.rounding.max_displacement_den);
+  CHECK_THAT(io::test::input_error([&] { read_csv(dir.file("fine.csv")); }),
+             Contains("fine.csv:3") && Contains("cell 2") && Contains("xCOM") && Contains("7 decimals"));
+}
+
 TEST_CASE("A duplicate (MCS, cell) row in a CSV names both lines", "[io][csv]") {
   CHECK_THAT(csv_error("duplicate.csv"),
              Contains("duplicate.csv:5") && Contains("cell 2") && Contains("MCS 0") && Contains("line 3"));

@@ -4,10 +4,6 @@
 
 namespace medusa::io {
 
-namespace {
-__extension__ using Wide = __int128; // exact cross-multiplication of two int64 fractions
-} // namespace
-
 bool centroid_on_grid(const std::array<std::int64_t, 3>& scaled_sum, std::int64_t n) {
   for (std::int64_t x : scaled_sum)
     if (x % n != 0)
@@ -36,12 +32,7 @@ kinetic::GridPoint snap_centroid(const std::array<std::int64_t, 3>& scaled_sum, 
     const std::int64_t num = x - q * n < 0 ? q * n - x : x - q * n;
     if (num != 0) {
       moved = true;
-      // num/n > best_num/best_den  <=>  num * best_den > best_num * n (exact in 128 bits)
-      if (static_cast<Wide>(num) * report.max_displacement_den >
-          static_cast<Wide>(report.max_displacement_num) * n) {
-        report.max_displacement_num = num;
-        report.max_displacement_den = n;
-      }
+      report.widen(num, n);
     }
   }
   if (moved)

@@ -51,6 +51,7 @@ CsvContents read_csv(const std::string& path, const CsvOptions& options) {
   scale_decimals(options.scale);
   GzipReader in(path);
   CsvContents out;
+  out.rounding.snapped = options.round;
   std::string line;
   if (!in.next_line(line))
     throw InputError(path + ": empty file (expected a header line)");
@@ -106,9 +107,26 @@ CsvContents read_csv(const std::string& path, const CsvOptions& options) {
     if (type <= 0 || type > 1000000)
       throw InputError(cell + ": type " + std::to_string(type) + " is not a cell type (must be 1, 2, ...)");
     s.type = static_cast<int>(type);
-    for (int a = 0; a < 3; ++a)
-      s.position[a] =
-          parse_scaled_decimal(f[col_xyz[a]], options.scale, cell + ": column " + column_names[a]);
+    bool rounded = false;
+    for (int a = 0; a < 3; ++a) {
+      const GridDecimal x = read_grid_decimal(f[col_xyz[a]], options.scale, options.round);
+      if (x.problem == GridDecimal::Problem::too_many_decimals)
+        throw InputError(cell + ": column " + column_names[a] + ": " +
+                         grid_decimal_problem(x, f[col_xyz[a]], options.scale) +
+                         "; --round-csv rounds the centres to the grid (recorded in the store)");
+      if (x.problem != GridDecimal::Problem::none)
+        throw InputError(cell + ": column " + column_names[a] + ": " +
+                         grid_decimal_problem(x, f[col_xyz[a]], options.scale));
+      s.position[a] = x.value;
+      if (x.rounded) {
+        rounded = true;
+        out.rounding.widen(x.offset_num, x.offset_den);
+      }
+    }
+    if (options.round) {
+      ++out.rounding.positions;
+      out.rounding.moved += rounded ? 1 : 0;
+    }
     if (col_volume) {
       s.volume = parse_integer(f[*col_volume], cell + ": column " + c.volume);
       if (s.volume < 0)

@@ -158,25 +158,38 @@ void take_assembly(RunData& run, AssembledRun&& assembled) {
   run.warnings.insert(run.warnings.end(), assembled.warnings.begin(), assembled.warnings.end());
 }
 
-// One line on what snapping did (docs/MATH.md §1.3): the user's results are exact for the snapped
-// positions, which differ from the voxel means by at most half a grid unit per coordinate.
-std::string snap_note(const SnapReport& report, std::int64_t scale) {
+std::string grid_name(std::int64_t scale) {
   int digits = 0;
   std::int64_t power = 1;
   while (power < scale && power <= std::numeric_limits<std::int64_t>::max() / 10) {
     power *= 10;
     ++digits;
   }
-  const std::string grid = power == scale ? "10^-" + std::to_string(digits) : "1/" + std::to_string(scale);
+  return power == scale ? "10^-" + std::to_string(digits) : "1/" + std::to_string(scale);
+}
+
+// One line on what policy R did (docs/MATH.md §1.2, §1.3): the user's results are exact for the moved
+// positions, which differ from the read ones by at most half a grid unit per coordinate.
+std::string policy_r_note(const SnapReport& report, std::int64_t scale, const std::string& what,
+                          const std::string& moved, const std::string& reference) {
   const double grid_units = report.max_displacement();
-  char buffer[320];
-  std::snprintf(buffer, sizeof buffer,
-                "VTK centroids snapped to the %s grid: %lld of %lld positions moved, the largest by "
-                "%.2g grid units (%.2g lattice units); exact results are for the snapped positions "
-                "(docs/MATH.md §1.3; --exact-vtk refuses off-grid centroids instead)",
-                grid.c_str(), static_cast<long long>(report.moved), static_cast<long long>(report.positions),
-                grid_units, grid_units / static_cast<double>(scale));
-  return buffer;
+  char figures[160];
+  std::snprintf(figures, sizeof figures,
+                ": %lld of %lld positions moved, the largest by %.2g grid units (%.2g lattice units); ",
+                static_cast<long long>(report.moved), static_cast<long long>(report.positions), grid_units,
+                grid_units / static_cast<double>(scale));
+  return what + " to the " + grid_name(scale) + " grid" + figures + "exact results are for the " + moved +
+         " positions (" + reference + ")";
+}
+
+std::string snap_note(const SnapReport& report, std::int64_t scale) {
+  return policy_r_note(report, scale, "VTK centroids snapped", "snapped",
+                       "docs/MATH.md §1.3; --exact-vtk refuses off-grid centroids instead");
+}
+
+std::string rounding_note(const SnapReport& report, std::int64_t scale) {
+  return policy_r_note(report, scale, "CSV centres rounded", "rounded",
+                       "docs/MATH.md §1.2; without --round-csv they are refused");
 }
 
 } // namespace
@@ -268,8 +281,11 @@ RunData read_csv_run(const std::string& path, const RunOptions& options,
   run.simulation = simulation;
   run.position_convention = "csv-centres";
   check_periodic(simulation, options, run, as_open_consequence);
-  CsvContents csv = read_csv(path, CsvOptions{options.csv_columns, options.scale});
+  CsvContents csv = read_csv(path, CsvOptions{options.csv_columns, options.scale, options.round_csv});
   run.sources.push_back(path);
+  run.snap = csv.rounding;
+  if (options.round_csv)
+    run.notes.push_back(rounding_note(run.snap, options.scale));
   if (simulation) {
     run.domain = periodic_domain(*simulation, {0, 0, 0}, {options.scale, options.scale, options.scale});
     wrap_csv_centres(csv.samples, run.domain, path, options.csv_columns);

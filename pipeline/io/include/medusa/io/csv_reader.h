@@ -3,6 +3,7 @@
 #pragma once
 
 #include "medusa/io/cell_sample.h"
+#include "medusa/io/centroid.h"
 
 #include <cstdint>
 #include <string>
@@ -25,18 +26,22 @@ struct CsvColumns {
 struct CsvOptions {
   CsvColumns columns;
   std::int64_t scale = 1000000; // grid scale S = 10^m (docs/MATH.md §1.1)
+  // Centres with more decimals than the grid holds are rounded to it, ties to even (policy R,
+  // docs/MATH.md §1.2) and counted in CsvContents::rounding; otherwise they are InputErrors.
+  bool round = false;
 };
 
 struct CsvContents {
   std::vector<CellSample> samples;     // in file order; source index 0 = the file
   std::vector<std::string> type_names; // index = type id; "" where the file names none
   bool has_volume = false;
+  SnapReport rounding; // snapped: CsvOptions::round was in force
 };
 
 // Reads every row. Row order does not matter. Throws a one-line InputError naming file, line and
 // (when known) cell for: an unreadable or truncated file, a missing column, a wrong number of fields,
-// a non-numeric / NaN / over-precise value, a duplicate (MCS, cell), a cell that changes type, a
-// type id with two names, a non-positive cell id or type.
+// a non-numeric / NaN value, an over-precise one unless rounding was asked for, a duplicate (MCS, cell), a
+// cell that changes type, a type id with two names, a non-positive cell id or type.
 CsvContents read_csv(const std::string& path, const CsvOptions& options = {});
 
 } // namespace medusa::io

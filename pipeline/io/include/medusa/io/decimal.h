@@ -11,12 +11,32 @@ namespace medusa::io {
 // (1, 10, ..., 10^18).
 int scale_decimals(std::int64_t scale);
 
-// Parses a decimal string "[+-]digits[.digits]" into X = x * S exactly (docs/MATH.md §1.2):
-// X = sign * (int_part * 10^m + frac_part padded right to m digits). A value with more than m
-// significant decimals is an InputError (never rounded); trailing zeros beyond m are exact and
-// accepted. NaN, infinities, exponent notation and anything non-numeric are InputErrors. Surrounding
-// blanks are ignored. `where` (e.g. "cells.csv:12: column xCOM of cell 5") starts every message.
+// A decimal string x read onto the grid of scale S: X = x * S, exactly or rounded.
+struct GridDecimal {
+  enum class Problem { none, not_finite, not_decimal, too_many_decimals, out_of_range };
+  Problem problem = Problem::none;
+  std::int64_t value = 0; // X, when problem == none
+  int decimals = 0;       // significant decimals of x (up to 19; 19 stands for more than 18)
+  bool rounded = false;   // value is x * S rounded (only with `round`)
+  // |x * S - value| in grid units as offset_num / offset_den (0 when exact, at most 1/2 when rounded;
+  // exact up to 18 digits beyond the grid, below 10^-18 grid units off beyond that).
+  std::int64_t offset_num = 0;
+  std::int64_t offset_den = 1;
+};
+
+// Reads "[+-]digits[.digits][(e|E)[+-]digits]" (surrounding blanks ignored; the exponent only
+// moves the decimal point) as X = x * S exactly (docs/MATH.md §1.2), never through double. A value
+// with more significant decimals than S holds is Problem::too_many_decimals, or with `round` the
+// nearest grid value, ties to even, with its offset. Trailing zeros are exact and accepted. NaN,
+// infinities and anything non-numeric are problems too. Never throws.
+GridDecimal read_grid_decimal(std::string_view text, std::int64_t scale, bool round);
+
+// read_grid_decimal without rounding; any problem is an InputError starting with `where` (e.g.
+// "cells.csv:12: column xCOM of cell 5").
 std::int64_t parse_scaled_decimal(std::string_view text, std::int64_t scale, const std::string& where);
+
+// The problem of `d` read from `text` at scale S, in words ("'1.2345678' has 7 decimals, more ...").
+std::string grid_decimal_problem(const GridDecimal& d, std::string_view text, std::int64_t scale);
 
 // Parses a decimal integer "[+-]digits" (surrounding blanks ignored); InputError otherwise.
 std::int64_t parse_integer(std::string_view text, const std::string& where);

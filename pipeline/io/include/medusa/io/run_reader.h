@@ -27,6 +27,9 @@ struct RunOptions {
   // VTK centroids off the grid are snapped to the nearest grid point (policy R, docs/MATH.md §1.3),
   // as CC3D's own centres in cells.csv are rounded; false refuses them (CLI: --exact-vtk).
   bool snap = true;
+  // CSV centres with more decimals than the grid holds are rounded to it (policy R, docs/MATH.md
+  // §1.2) and the rounding recorded in RunData::snap; false refuses them (CLI: --round-csv).
+  bool round_csv = false;
   bool allow_periodic_as_open = false; // read a periodic run as if its boundaries were open
   // Read a periodic run as periodic (docs/MATH.md §8): no refusal and no warning; RunData::domain holds
   // its periodic axes for the caller to run it on the torus.
@@ -48,7 +51,7 @@ struct RunData {
   CellVolumes volumes;              // volumes[i][f] of trajectory i at frame first_frame + f
   std::vector<std::string> sources; // files read, in order (VTK snapshots by MCS, or the CSV)
   RunSource used = RunSource::csv;  // vtk or csv
-  SnapReport snap;                  // policy R bookkeeping (VTK only; snapped: policy R was in force)
+  SnapReport snap;                  // policy R bookkeeping (snapped: policy R was in force)
   // How positions were obtained, for output headers: "csv-centres" (CC3D's centres, 6 decimals) or
   // "vtk-centroids-voxel-corner" (exact voxel means, voxel (i,j,k) at origin + spacing*(i,j,k)).
   std::string position_convention;
