@@ -87,6 +87,8 @@ void report_command(const ReportArguments& args) {
     check_interrupted();
     runs.push_back(report_run(args.stores[i], names[i], args.max_bars, threads));
   }
+  if (const std::string mixed = mixed_dimensions_note(runs); !mixed.empty() && !args.quiet)
+    std::cerr << "medusa: warning: " << mixed << "\n";
   ScaleOptions scale;
   scale.stores = args.stores;
   scale.given = args.sweeps;

@@ -55,6 +55,7 @@ void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
     names += (names.empty() ? "" : ", ") + r.name;
     data["runs"].push_back(r.data);
   }
+  const std::string mixed = mixed_dimensions_note(runs);
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       << "<title>medusa report: " << xml_escape(names) << "</title>\n<style>\n"
       << report_css << report_classes_css << "</style>\n</head>\n<body>\n"
@@ -74,6 +75,8 @@ void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
          "<b>heterotypic contacts</b>, the fraction of its links that join cells of different types, and "
          "<b>same-type neighbours</b>, the mean fraction of a cell's linked neighbours of its own type; "
          "sorting lowers the first and raises the second, whether or not a type ends in one cluster.</p>\n"
+      << (mixed.empty() ? ""
+                        : "<p class=\"note\" id=\"mixed-dimensions\">Note: " + xml_escape(mixed) + ".</p>\n")
       << "<div id=\"headlines\" class=\"cards\"></div>\n<div id=\"radius-answer\"></div>\n"
       << "<div id=\"glance-charts\" class=\"charts\"></div>\n";
   const bool explained = scale.contains("notes") && !scale["notes"].empty();

@@ -224,4 +224,17 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
   return run;
 }
 
+std::string mixed_dimensions_note(const std::vector<ReportRun>& runs) {
+  std::string planar, spatial;
+  for (const ReportRun& r : runs)
+    (r.dimension == 2 ? planar : spatial) +=
+        ((r.dimension == 2 ? planar : spatial).empty() ? "" : ", ") + r.name;
+  if (planar.empty() || spatial.empty())
+    return "";
+  return "runs of different dimension, planar (2D): " + planar + "; 3D: " + spatial +
+         ". A radius is a disc in the plane and a ball in space, and a cell has fewer neighbours in the "
+         "plane, so clusters, contacts and radii are read within each run; the distances between runs "
+         "compare the shapes of their diagrams only";
+}
+
 } // namespace medusa::cli
