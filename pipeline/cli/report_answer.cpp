@@ -66,7 +66,13 @@ TypeCourse type_course(const std::vector<std::int64_t>& times, const std::vector
       text +=
           ", one cluster at " + at_mcs(static_cast<double>(times[first_one])) + " but split again by the end";
   }
-  course.text = text + " (" + joins_text(joins) + ")";
+  // Pieces that split off after the first frame and touch again were one cluster before: no join.
+  const bool split_later = *std::max_element(b0.begin(), b0.end()) > b0.front();
+  course.text = text + " (" +
+                (joins.empty() && split_later ? "no join: the pieces that split off later were part of one "
+                                                "cluster before"
+                                              : joins_text(joins)) +
+                ")";
   return course;
 }
 

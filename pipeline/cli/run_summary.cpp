@@ -230,7 +230,10 @@ std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medu
       << (input.dimension == 2 ? "loops" : "loops and cavities")
       << " come from the forward filtration (docs/MATH.md §7.6, §7.12): one that broke open without being "
          "filled "
-         "stays a class of the space-time medusa (README, Reading the summary).\n"
+         "stays a class of the space-time medusa (README, Reading the summary). The last join is when "
+         "every cluster has touched another in space-time, not when the type became one cluster at every "
+         "frame: a piece can split off and touch again later (`medusa report` gives the frame from which "
+         "a type is one cluster to the end).\n"
       << "Times between frames come from linear interpolation of the cell centres between frames "
          "(docs/MATH.md §2.2).\n";
   if (leaving > 0)

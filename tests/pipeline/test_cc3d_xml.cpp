@@ -16,6 +16,8 @@ TEST_CASE("The CC3DML of a real periodic run gives its lattice, periodic axes an
   const Cc3dSimulation flat = read_cc3d_xml(io::test::data("cc3d/sorting_2d/Simulation/sorting_2d.xml"));
   CHECK(flat.dimensions == std::array<std::int64_t, 3>{100, 100, 1});
   CHECK(periodic_axes(flat).empty());
+  CHECK(sim.steps == 2001);
+  CHECK(flat.steps == 10000);
 }
 
 TEST_CASE("Commented-out CC3DML tags are ignored and a missing Dimensions is refused", "[io][xml]") {

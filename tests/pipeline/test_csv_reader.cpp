@@ -45,7 +45,17 @@ TEST_CASE("CSV column names are configurable and volume and type name are option
 }
 
 TEST_CASE("A CSV without a required column names the column and the file", "[io][csv]") {
-  CHECK_THAT(csv_error("missing_column.csv"), Contains("missing_column.csv:1") && Contains("'zCOM'"));
+  CHECK_THAT(csv_error("missing_column.csv"),
+             Contains("missing_column.csv:1") && Contains("missing column 'zCOM'"));
+}
+
+TEST_CASE("A CSV without several required columns names them all and lists what is required", "[io][csv]") {
+  io::test::TempDir dir;
+  std::ofstream(dir.file("mine.csv")) << "mcs,id,type,xCOM,y,zCOM\n0,1,1,1,2,3\n";
+  CHECK_THAT(
+      io::test::input_error([&] { read_csv(dir.file("mine.csv")); }),
+      Contains("mine.csv:1: missing columns 'cell_id', 'type_id', 'yCOM'") &&
+          Contains("(required: mcs, cell_id, type_id, xCOM, yCOM, zCOM; optional: volume, type_name)"));
 }
 
 TEST_CASE("A non-numeric CSV value names file, line, cell and column", "[io][csv]") {
@@ -160,5 +170,5 @@ TEST_CASE("Input quoted in a message is cut to about 200 characters with control
   // A header of binary bytes is escaped too.
   std::ofstream(dir.file("binary.csv"), std::ios::binary) << std::string("\x01\x02\xff,b\n0,1\n", 10);
   const std::string binary = io::test::input_error([&] { read_csv(dir.file("binary.csv")); });
-  CHECK_THAT(binary, Contains("missing column 'mcs'") && Contains("'\\x01\\x02\\xFF,b'"));
+  CHECK_THAT(binary, Contains("missing columns 'mcs', 'cell_id'") && Contains("'\\x01\\x02\\xFF,b'"));
 }

@@ -27,7 +27,7 @@ TEST_CASE("Trailing zeros beyond the scale are exact and accepted", "[io][decima
 TEST_CASE("More decimals than the scale holds is an error unless the scale is raised", "[io][decimal]") {
   const std::string m =
       io::test::input_error([] { parse_scaled_decimal("1.2345678", 1000000, "f.csv:3: column xCOM"); });
-  CHECK_THAT(m, Contains("f.csv:3: column xCOM") && Contains("7 decimals") && Contains("10^7"));
+  CHECK_THAT(m, Contains("f.csv:3: column xCOM") && Contains("7 decimals, more than the 6 that the grid"));
   CHECK(parse_scaled_decimal("1.2345678", 10000000, "t") == 12345678);
   CHECK(parse_scaled_decimal("2.5", 10, "t") == 25);
   CHECK(parse_scaled_decimal("2", 1, "t") == 2);
@@ -56,7 +56,7 @@ TEST_CASE("An exponent moves the decimal point exactly", "[io][decimal]") {
   CHECK(parse_scaled_decimal("0.000e99999999999999999999", S, "t") == 0);
   CHECK(parse_scaled_decimal("4.2e0", S, "t") == 4200000);
   CHECK_THAT(io::test::input_error([] { parse_scaled_decimal("1e-7", 1000000, "w"); }),
-             Contains("7 decimals") && Contains("10^7"));
+             Contains("7 decimals, more than the 6"));
   CHECK_THAT(io::test::input_error([] { parse_scaled_decimal("1.5e-30", 1000000, "w"); }),
              Contains("more than 18 decimals"));
   CHECK_THAT(io::test::input_error([] { parse_scaled_decimal("1e13", 1000000, "w"); }),

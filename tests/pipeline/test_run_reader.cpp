@@ -236,3 +236,22 @@ TEST_CASE("A snapshot missing from the middle of an evenly saved series is an er
   CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 10, 30, 40});
   CHECK(has_warning(r, "MCS 20 is missing"));
 }
+
+TEST_CASE("A series that stops a frame spacing or more before the simulation's last MCS is said to be "
+          "missing frames",
+          "[io][run]") {
+  io::test::TempDir dir;
+  write(dir.file("cells.csv"), "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n0,1,1,1,2,3\n0,2,2,3,4,5\n"
+                               "100,1,1,1,2,3.5\n100,2,2,3,4,5.5\n");
+  // The simulation runs MCS 0 to 300: frames 200 and 300 are missing.
+  write(dir.file("Simulation/run.xml"), cc3d_xml("x=\"10\" y=\"10\" z=\"10\"", "    <Steps>301</Steps>\n"));
+  const RunData cut = read_run(dir.path().string());
+  CHECK(has_warning(cut, "the last frame read is MCS 100, but "));
+  CHECK(has_warning(cut,
+                    "runs to MCS 300 (<Steps>301</Steps>) with frames every 100 MCS: its later frames are "
+                    "missing (a run still going, or files not copied), and the analysis covers MCS 0 to 100 "
+                    "only"));
+  // MCS 0 to 199: the next frame, MCS 200, would be beyond the run; nothing is said.
+  write(dir.file("Simulation/run.xml"), cc3d_xml("x=\"10\" y=\"10\" z=\"10\"", "    <Steps>200</Steps>\n"));
+  CHECK_FALSE(has_warning(read_run(dir.path().string()), "the last frame read"));
+}

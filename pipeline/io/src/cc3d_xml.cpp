@@ -101,6 +101,11 @@ Cc3dSimulation read_cc3d_xml(const std::string& path) {
       throw InputError(path + ": <Dimensions> " + axes[a] + " must be positive");
     sim.periodic[a] = element_text(text, std::string("Boundary_") + axes[a]) == "Periodic";
   }
+  if (const std::string steps = element_text(text, "Steps"); !steps.empty()) {
+    sim.steps = parse_integer(steps, path + ": <Steps>");
+    if (sim.steps <= 0)
+      throw InputError(path + ": <Steps> must be positive, got " + steps);
+  }
   for (const std::string& attrs : tags(text, "CellType")) {
     const std::string name = attribute(attrs, "TypeName"), id = attribute(attrs, "TypeId");
     if (name.empty() || id.empty())

@@ -59,23 +59,31 @@ CsvContents read_csv(const std::string& path, const CsvOptions& options) {
   if (line.rfind("\xEF\xBB\xBF", 0) == 0)
     line.erase(0, 3);
   const std::vector<std::string_view> header = split_commas(line);
-  const auto column = [&](const std::string& name, bool required) -> std::optional<std::size_t> {
+  const auto column = [&](const std::string& name) -> std::optional<std::size_t> {
     if (name.empty())
       return std::nullopt;
     for (std::size_t k = 0; k < header.size(); ++k)
       if (trim(header[k]) == name)
         return k;
-    if (required)
-      throw InputError(path + ":" + std::to_string(in.line()) + ": missing column '" + name +
-                       "' in header '" + excerpt(line) + "'");
     return std::nullopt;
   };
   const CsvColumns& c = options.columns;
-  const std::size_t col_mcs = *column(c.mcs, true), col_id = *column(c.cell_id, true),
-                    col_type = *column(c.type, true);
-  const std::size_t col_xyz[3] = {*column(c.x, true), *column(c.y, true), *column(c.z, true)};
-  const std::optional<std::size_t> col_volume = column(c.volume, false),
-                                   col_name = column(c.type_name, false);
+  // Every missing required column at once, so that a hand-written file is fixed in one go.
+  std::string missing;
+  std::size_t n_missing = 0;
+  for (const std::string* name : {&c.mcs, &c.cell_id, &c.type, &c.x, &c.y, &c.z})
+    if (!column(*name)) {
+      missing += (missing.empty() ? "'" : ", '") + *name + "'";
+      ++n_missing;
+    }
+  if (n_missing > 0)
+    throw InputError(path + ":" + std::to_string(in.line()) + ": missing column" +
+                     (n_missing > 1 ? "s " : " ") + missing + " in header '" + excerpt(line) +
+                     "' (required: " + c.mcs + ", " + c.cell_id + ", " + c.type + ", " + c.x + ", " + c.y +
+                     ", " + c.z + "; optional: " + c.volume + ", " + c.type_name + ")");
+  const std::size_t col_mcs = *column(c.mcs), col_id = *column(c.cell_id), col_type = *column(c.type);
+  const std::size_t col_xyz[3] = {*column(c.x), *column(c.y), *column(c.z)};
+  const std::optional<std::size_t> col_volume = column(c.volume), col_name = column(c.type_name);
   const std::vector<std::string> column_names = {c.x, c.y, c.z};
   out.has_volume = col_volume.has_value();
   const std::size_t n_fields = header.size();

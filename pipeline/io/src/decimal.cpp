@@ -194,8 +194,8 @@ std::string grid_decimal_problem(const GridDecimal& d, std::string_view text, st
   case Problem::not_decimal: return quoted + " is not a decimal number";
   case Problem::too_many_decimals:
     return quoted + " has " + (d.decimals > 18 ? "more than 18" : std::to_string(d.decimals)) +
-           " decimals, more than the grid scale " + std::to_string(scale) + " holds exactly" +
-           (d.decimals > 18 ? "" : " (10^" + std::to_string(d.decimals) + " would)");
+           " decimals, more than the " + std::to_string(scale_decimals(scale)) + " that the grid (10^-" +
+           std::to_string(scale_decimals(scale)) + " lattice units) holds exactly";
   case Problem::out_of_range: return quoted + " is out of range for the grid scale " + std::to_string(scale);
   case Problem::none: break;
   }

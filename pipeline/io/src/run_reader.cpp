@@ -192,6 +192,25 @@ std::string rounding_note(const SnapReport& report, std::int64_t scale) {
                        "docs/MATH.md §1.2; without --round-csv they are refused");
 }
 
+// A series that stops at least one frame spacing before the simulation's last MCS is missing its later
+// frames (a run still going, files not copied): said, since the analysis then covers less of the run.
+void warn_if_cut_short(RunData& run, const std::optional<Cc3dSimulation>& simulation) {
+  const std::vector<std::int64_t>& times = run.trajectories.frame_times;
+  if (!simulation || simulation->steps <= 0 || times.size() < 2)
+    return;
+  const std::int64_t last = times.back(), spacing = last - times[times.size() - 2];
+  const std::int64_t end = simulation->steps - 1;
+  if (end - last >= spacing)
+    run.warnings.push_back((run.sources.empty() ? std::string("input") : run.sources.back()) +
+                           ": the last frame read is MCS " + std::to_string(last) + ", but " +
+                           simulation->path + " runs to MCS " + std::to_string(end) + " (<Steps>" +
+                           std::to_string(simulation->steps) + "</Steps>) with frames every " +
+                           std::to_string(spacing) +
+                           " MCS: its later frames are missing (a run still going, or files not copied), "
+                           "and the analysis covers MCS " +
+                           std::to_string(times.front()) + " to " + std::to_string(last) + " only");
+}
+
 } // namespace
 
 RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& options,
@@ -268,6 +287,7 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
                                            dims[2] == 1 ? 2 : 3, frame_times));
   unwrap_trajectories(run.trajectories, run.domain, run.sources);
   name_types(run, {});
+  warn_if_cut_short(run, simulation);
   if (run.snap.moved > 0)
     run.notes.push_back(snap_note(run.snap, options.scale));
   run.trajectories.validate();
@@ -316,6 +336,7 @@ RunData read_csv_run(const std::string& path, const RunOptions& options,
   take_assembly(run, assemble_trajectories(std::move(csv.samples), run.sources, options.scale, dimension));
   unwrap_trajectories(run.trajectories, run.domain, run.sources);
   name_types(run, csv.type_names);
+  warn_if_cut_short(run, simulation);
   run.trajectories.validate();
   return run;
 }

@@ -110,8 +110,9 @@ AssembledRun assemble_trajectories(std::vector<CellSample> samples, const std::v
     run.warnings.push_back(std::to_string(last_frame_ids.size()) +
                            (last_frame_ids.size() == 1 ? " trajectory is" : " trajectories are") +
                            " present at the last frame only (cells " + listed(last_frame_ids) +
-                           "): the run ends just before that frame, so they add nothing to the medusa "
-                           "(docs/MATH.md §6.2)");
+                           "): the analysis ends at the state just before the last frame's instant, "
+                           "K(t_end-), which cells new at that frame are not part of, so they are in no "
+                           "complex, count or class of the run (docs/MATH.md §6.2)");
   return run;
 }
 

@@ -91,7 +91,7 @@ def main(medusa, source, work):
     errors = refused.stderr.splitlines()
     assert len(errors) == 1, errors
     assert re.match(r"medusa: .*noisy\.csv:2: cell \d+: column xCOM: '\d+\.\d{10}' has 10 decimals, more than the "
-                    r"grid scale 1000000 holds exactly \(10\^10 would\); --round-csv rounds", errors[0]), errors
+                    r"6 that the grid \(10\^-6 lattice units\) holds exactly; --round-csv rounds", errors[0]), errors
     assert not os.path.exists(os.path.join(work, "refused.h5"))
 
     result = run([medusa, "run", "noisy.csv", "-o", "noisy.h5", "--radius", "3", "--round-csv"], work)

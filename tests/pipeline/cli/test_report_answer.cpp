@@ -71,3 +71,9 @@ TEST_CASE("A verdict without a gathering type says how far each type got, with i
         "throughout, heterotypic contacts 0.310 \u2192 0.110; type 3 has one cluster at the first and at the "
         "last frame");
 }
+
+TEST_CASE("A type that splits after the first frame without any join says why there is no join") {
+  const auto c = type_course({0, 100, 200, 300}, {1, 5, 2, 1}, {});
+  CHECK(c.text == "one cluster at MCS 0, up to 5 clusters later, one cluster at the last frame (MCS 300) "
+                  "(no join: the pieces that split off later were part of one cluster before)");
+}

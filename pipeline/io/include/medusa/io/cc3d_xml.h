@@ -16,6 +16,7 @@ struct Cc3dSimulation {
   std::array<std::int64_t, 3> dimensions{}; // <Dimensions x= y= z=/>
   std::array<bool, 3> periodic{};           // <Boundary_x>Periodic</Boundary_x> etc.
   std::vector<std::string> type_names;      // <CellType TypeName= TypeId=/>, index = type id
+  std::int64_t steps = 0;                   // <Steps>N</Steps>: MCS 0 to N - 1 (0 if absent)
 };
 
 // A CC3DML file without <Dimensions>: not the simulation's lattice description (another XML).
