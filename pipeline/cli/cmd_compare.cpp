@@ -210,9 +210,11 @@ void compare_command(const CompareArguments& args) {
             << "; each run's time rescaled to 0..1, t -> (t - t0) / (t_end - t0)\n"
             << "classes: finite = ended (a cluster joined another, a loop or cavity was filled), essential = "
                "never ended\n";
+  std::vector<int> dimensions;
   for (std::size_t i = 0; i < args.stores.size(); ++i) {
     check_interrupted();
     std::vector<ComparedDiagram> d = compared_diagrams(args.stores[i], selections);
+    dimensions.push_back(d.front().dimension);
     std::cout << "  " << names[i] << ": MCS " << short_number(d.front().t0) << " to "
               << short_number(d.front().t_end);
     for (std::size_t c = 0; c < d.size(); ++c) {
@@ -241,6 +243,8 @@ void compare_command(const CompareArguments& args) {
   check_interrupted();
 
   std::vector<std::string> warnings;
+  if (const std::string mixed = mixed_dimensions_note(names, dimensions); !mixed.empty())
+    warnings.push_back(mixed);
   for (const Comparison& c : comparisons)
     if (trivially_zero(c, args.essential))
       warnings.push_back("every distance of " + words_of(c.selection) + " is 0: no run has a " +

@@ -501,7 +501,11 @@ void run_command(const RunArguments& args, const std::string& command_line) {
     std::optional<periodic::CanonicalFilter> torus;
     if (cover)
       torus.emplace(*cover, torus_audit ? static_cast<kinetic::Observer&>(*torus_audit) : observer);
-    engine.run(torus ? static_cast<kinetic::Observer&>(*torus) : observer);
+    try {
+      engine.run(torus ? static_cast<kinetic::Observer&>(*torus) : observer);
+    } catch (const GeometryError& e) {
+      throw GeometryError(input + ": " + e.what()); // collisions name cells and times, not the file
+    }
     // The engine's wall time includes the time spent in the store side's callbacks (with a thread of
     // its own: queueing the calls, and waiting for it at the end), which belongs to the store stage;
     // their CPU time is not measured apart (see ProgressObserver::timed) and stays in the kinetic

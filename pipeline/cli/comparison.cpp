@@ -69,6 +69,7 @@ std::vector<ComparedDiagram> compared_diagrams(const std::string& store,
     c.name = std::filesystem::path(store).stem().string();
     c.t0 = t0;
     c.t_end = t_end;
+    c.dimension = medusa.input.dimension;
     c.points = persistence::normalise_time(persistence::to_points(*d, s.dim), d->direction, t0, t_end);
     result.push_back(std::move(c));
   }
@@ -145,6 +146,20 @@ std::string ComparisonMetric::reading() const {
 double ComparisonMetric::largest_relative_error() const {
   const std::lock_guard<std::mutex> lock(mutex_);
   return relative_error_;
+}
+
+std::string mixed_dimensions_note(const std::vector<std::string>& names, const std::vector<int>& dimensions) {
+  std::string planar, spatial;
+  for (std::size_t i = 0; i < names.size() && i < dimensions.size(); ++i) {
+    std::string& list = dimensions[i] == 2 ? planar : spatial;
+    list += (list.empty() ? "" : ", ") + names[i];
+  }
+  if (planar.empty() || spatial.empty())
+    return "";
+  return "runs of different dimension, planar (2D): " + planar + "; 3D: " + spatial +
+         ". A radius is a disc in the plane and a ball in space, and a cell has fewer neighbours in the "
+         "plane, so clusters, contacts and radii are read within each run; the distances between runs "
+         "compare the shapes of their diagrams only";
 }
 
 } // namespace medusa::cli

@@ -16,6 +16,7 @@ struct ComparedDiagram {
   std::string name; // the store's file name without folder and `.h5`
   persistence::PointDiagram points;
   double t0 = 0, t_end = 0; // the run's first and last frame time (MCS) before normalisation
+  int dimension = 3;        // 2 for a planar run
 };
 
 struct ComparisonSelection {
@@ -66,5 +67,9 @@ private:
 
 // Checks a metric spec for the command line: empty string if valid, else the reason.
 std::string metric_spec_error(const std::string& spec);
+
+// "" when the runs (names[i] of dimension dimensions[i]) all have one dimension; otherwise which are
+// planar and which 3D, and what that means for comparing them (said by `medusa compare` and `report`).
+std::string mixed_dimensions_note(const std::vector<std::string>& names, const std::vector<int>& dimensions);
 
 } // namespace medusa::cli

@@ -1,6 +1,7 @@
 #include "report_model.h"
 
 #include "betti_frames.h"
+#include "comparison.h"
 #include "diagram_export.h"
 #include "diagram_selection.h"
 #include "forward_counts.h"
@@ -225,16 +226,13 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
 }
 
 std::string mixed_dimensions_note(const std::vector<ReportRun>& runs) {
-  std::string planar, spatial;
-  for (const ReportRun& r : runs)
-    (r.dimension == 2 ? planar : spatial) +=
-        ((r.dimension == 2 ? planar : spatial).empty() ? "" : ", ") + r.name;
-  if (planar.empty() || spatial.empty())
-    return "";
-  return "runs of different dimension, planar (2D): " + planar + "; 3D: " + spatial +
-         ". A radius is a disc in the plane and a ball in space, and a cell has fewer neighbours in the "
-         "plane, so clusters, contacts and radii are read within each run; the distances between runs "
-         "compare the shapes of their diagrams only";
+  std::vector<std::string> names;
+  std::vector<int> dimensions;
+  for (const ReportRun& r : runs) {
+    names.push_back(r.name);
+    dimensions.push_back(r.dimension);
+  }
+  return mixed_dimensions_note(names, dimensions);
 }
 
 } // namespace medusa::cli

@@ -36,8 +36,7 @@ struct ReportRun {
 ReportRun report_run(const std::string& store, const std::string& name, std::size_t max_bars,
                      unsigned threads);
 
-// "" when every run has the same dimension; otherwise which runs are planar and which 3D, and what
-// that means for reading them side by side (the page and stderr say it).
+// mixed_dimensions_note (comparison.h) of the runs: "" unless some are planar and some 3D.
 std::string mixed_dimensions_note(const std::vector<ReportRun>& runs);
 
 } // namespace medusa::cli

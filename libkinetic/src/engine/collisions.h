@@ -14,18 +14,35 @@
 
 namespace medusa::kinetic::detail {
 
+// X / S as a decimal ("27.5", "-0.000001"): S is a power of ten (docs/MATH.md §1.1).
+inline std::string grid_coordinate_text(std::int64_t x, std::int64_t scale) {
+  const bool negative = x < 0;
+  const std::uint64_t v = negative ? 0 - static_cast<std::uint64_t>(x) : static_cast<std::uint64_t>(x);
+  const std::uint64_t s = static_cast<std::uint64_t>(scale);
+  std::string fraction = std::to_string(v % s + s).substr(1); // v % s with leading zeros
+  while (!fraction.empty() && fraction.back() == '0')
+    fraction.pop_back();
+  return (negative ? "-" : "") + std::to_string(v / s) + (fraction.empty() ? "" : "." + fraction);
+}
+
 template <class K> void Engine<K>::check_collisions_at_frame(std::size_t k) const {
   std::vector<std::pair<GridPoint, std::size_t>> pos;
   for (std::size_t i = 0; i < traj.cells.size(); ++i)
     if (traj.cells[i].present(k))
       pos.emplace_back(traj.cells[i].at(k), i);
   std::sort(pos.begin(), pos.end());
-  for (std::size_t i = 1; i < pos.size(); ++i)
-    if (pos[i].first == pos[i - 1].first)
-      throw GeometryError("cells " + std::to_string(traj.cells[pos[i - 1].second].cell_id) + " and " +
-                          std::to_string(traj.cells[pos[i].second].cell_id) +
-                          " are at the same position at frame " + std::to_string(k) + " (time " +
-                          std::to_string(traj.frame_times[k]) + ")");
+  for (std::size_t i = 1; i < pos.size(); ++i) {
+    if (pos[i].first != pos[i - 1].first)
+      continue;
+    std::string at;
+    for (int a = 0; a < K::dimension; ++a)
+      at += (a ? ", " : "") + grid_coordinate_text(pos[i].first[static_cast<std::size_t>(a)], traj.scale);
+    throw GeometryError("cells " + std::to_string(traj.cells[pos[i - 1].second].cell_id) + " and " +
+                        std::to_string(traj.cells[pos[i].second].cell_id) +
+                        " are at the same position at frame " + std::to_string(k) + " (MCS " +
+                        std::to_string(traj.frame_times[k]) + ", centre (" + at +
+                        ")): two cells cannot share a centre (docs/MATH.md §2.5)");
+  }
 }
 
 // Collision inside the slab (docs/MATH.md §2.5): p_i(u) = p_j(u) for some u in (now, 1). Tested on the
@@ -49,9 +66,11 @@ template <class K> void Engine<K>::throw_collision(const Collision& c) const {
   const auto& [u, e] = c;
   const double t = double(traj.frame_times[slab]) +
                    u.get_d() * double(traj.frame_times[slab + 1] - traj.frame_times[slab]);
-  throw GeometryError("cells " + std::to_string(traj.cells[static_cast<std::size_t>(e[0])].cell_id) +
-                      " and " + std::to_string(traj.cells[static_cast<std::size_t>(e[1])].cell_id) +
-                      " collide at time " + std::to_string(t));
+  throw GeometryError(
+      "cells " + std::to_string(traj.cells[static_cast<std::size_t>(e[0])].cell_id) + " and " +
+      std::to_string(traj.cells[static_cast<std::size_t>(e[1])].cell_id) + " collide at time " +
+      std::to_string(t) + " (between the frames at MCS " + std::to_string(traj.frame_times[slab]) + " and " +
+      std::to_string(traj.frame_times[slab + 1]) + "): two cells cannot share a centre (docs/MATH.md §2.5)");
 }
 
 // Of the collisions the Delaunay edges at the slab start foretell, the earliest is reported (among
