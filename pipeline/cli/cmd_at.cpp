@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "complex_export.h"
 #include "diagram_export.h"
+#include "diagram_selection.h"
 #include "interrupt.h"
 
 #include "medusa/core/error.h"
@@ -295,7 +296,8 @@ void add_at_command(CLI::App& app) {
                  "shape.vtk (legacy ASCII unstructured grid, positions interpolated at T) or shape.csv "
                  "(dimension,v0..v3: one simplex per row, CC3D cell ids sorted); a folder with --times")
       ->required();
-  at->add_option("--type", args->type, "only the subcomplex of this cell type id (docs/MATH.md §7.4)");
+  at->add_option("--type", args->type, "only the subcomplex of this cell type id (docs/MATH.md §7.4)")
+      ->check(type_validator(false));
   at->add_option("--class", args->classes,
                  "draw this class's representative (its id from `medusa classes`, same --type and "
                  "--filtration; repeatable): cell and point data in_class and class_id")

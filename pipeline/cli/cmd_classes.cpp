@@ -211,14 +211,7 @@ void add_classes_command(CLI::App& app) {
   classes
       ->add_option("--type", args->type,
                    "the sub-medusa of this cell type id (docs/MATH.md §7.4), or 'all' for the whole medusa")
-      ->check(CLI::Validator(
-          [](std::string& value) {
-            return value == "all" || (!value.empty() && value.size() <= 9 &&
-                                      value.find_first_not_of("0123456789") == std::string::npos)
-                       ? std::string()
-                       : "'" + value + "' is not a type id or 'all'";
-          },
-          "TYPE"))
+      ->check(type_validator())
       ->capture_default_str();
   classes->add_option("--dim", args->dim, "only this homology degree (default: 0, 1 and 2)")
       ->check(CLI::Range(0, 3));

@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "comparison.h"
 #include "diagram_export.h"
+#include "diagram_selection.h"
 #include "interrupt.h"
 #include "matrix_svg.h"
 
@@ -332,14 +333,7 @@ void add_compare_command(CLI::App& app) {
               "--type", args->selection.type,
               "compare the sub-medusa of this cell type id (docs/MATH.md §7.4), or 'all' for the whole "
               "medusa (default without --type and --dim: every cell type of the runs, in H0, H1 and H2)")
-          ->check(CLI::Validator(
-              [](std::string& value) {
-                return value == "all" || (!value.empty() && value.size() < 10 &&
-                                          value.find_first_not_of("0123456789") == std::string::npos)
-                           ? std::string()
-                           : "'" + value + "' is not a type id or 'all'";
-              },
-              "TYPE"));
+          ->check(type_validator());
   CLI::Option* dim = compare
                          ->add_option("--dim", args->selection.dim,
                                       "compare this homology degree only (with --type alone: 0; --dim alone: "

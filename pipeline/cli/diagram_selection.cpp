@@ -24,6 +24,17 @@ unsigned worker_threads(unsigned requested) {
   return requested > 0 ? requested : std::max(1u, std::thread::hardware_concurrency());
 }
 
+CLI::Validator type_validator(bool all) {
+  return CLI::Validator(
+      [all](std::string& value) {
+        if ((all && value == "all") || parse_type(value))
+          return std::string();
+        return "'" + value + "' is not a cell type id" + (all ? " or 'all'" : "") +
+               ": types are given by number (1, 2, ...); `medusa info <store>` lists each type's id and name";
+      },
+      "TYPE");
+}
+
 void add_selection_options(CLI::App& command, DiagramSelection& selection) {
   command
       .add_option("--filtration", selection.filtration, "forward, reverse or both (docs/MATH.md §7.2, §7.3)")
@@ -33,12 +44,7 @@ void add_selection_options(CLI::App& command, DiagramSelection& selection) {
       .add_option(
           "--type", selection.type,
           "only the sub-medusa of this cell type id (docs/MATH.md §7.4), or 'all' for the whole medusa only")
-      ->check(CLI::Validator(
-          [](std::string& value) {
-            return value == "all" || parse_type(value) ? std::string()
-                                                       : "'" + value + "' is not a type id or 'all'";
-          },
-          "TYPE"));
+      ->check(type_validator());
   command.add_option("--dim", selection.dim, "only this homology degree")->check(CLI::Range(0, 3));
   command.add_flag("--zero-length", selection.zero_length,
                    "keep zero-length pairs (birth and death in the same batch)");

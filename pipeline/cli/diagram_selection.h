@@ -25,6 +25,10 @@ struct DiagramSelection {
 // Adds --filtration, --type, --dim, --zero-length and --threads to a subcommand.
 void add_selection_options(CLI::App& command, DiagramSelection& selection);
 
+// The check of a --type option: a cell type id (1, 2, ...) or, when `all` is true, "all". A type
+// name is refused with a pointer to `medusa info`, which lists each type's id and name.
+CLI::Validator type_validator(bool all = true);
+
 // The worker threads for a --threads value: 0 means one per hardware thread (at least 1).
 unsigned worker_threads(unsigned requested);
 
