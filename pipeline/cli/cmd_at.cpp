@@ -253,7 +253,8 @@ void at_command(const AtArguments& args) {
       cells_at(medusa, index, time, positions, classes ? &*classes : nullptr, marks);
   const std::string what =
       std::string(args.type ? "type " + std::to_string(*args.type) + " subcomplex of " : "") +
-      "K(t+) at MCS " + format_time(time);
+      (time == static_cast<double>(medusa.input.frame_times.back()) ? "K(t_end-)" : "K(t+)") + " at MCS " +
+      format_time(time);
   std::cout << what << ": " << counts_line(medusa, index.at_time(time)) << "\n";
   if (classes) {
     std::size_t drawn = 0;
