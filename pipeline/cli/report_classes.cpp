@@ -3,6 +3,7 @@
 #include "complex_export.h"
 #include "diagram_selection.h"
 #include "interrupt.h"
+#include "ring_fate.h"
 
 #include "medusa/persistence/class_records.h"
 #include "medusa/persistence/medusa_diagrams.h"
@@ -76,6 +77,14 @@ json class_json(const persistence::ClassRecord& r, const persistence::DiagramWit
     const medusa::CellVertices& v = medusa.cell(id).vertices;
     vertices.insert(v.begin(), v.end());
   }
+  json ring = nullptr;
+  if (r.essential && r.dim >= 1) {
+    const RingFate fate = ring_fate(medusa, found.classes.cycles[i], medusa.cell(r.birth_cell).birth);
+    ring = {{"state", fate.state == RingFate::State::whole_at_end ? "whole at the end"
+                      : fate.state == RingFate::State::broke      ? "broke"
+                                                                  : "never whole"},
+            {"broke_at", fate.state == RingFate::State::broke ? json(fate.broke_at) : json(nullptr)}};
+  }
   json e = json::array(), t = json::array();
   for (const auto& [a, b] : edges)
     e.push_back({a, b});
@@ -86,6 +95,7 @@ json class_json(const persistence::ClassRecord& r, const persistence::DiagramWit
           {"death", r.essential ? json(nullptr) : json(r.death)},
           {"birth_kind", persistence::cell_kind_name(r.birth_kind)},
           {"death_kind", r.essential ? json(nullptr) : json(persistence::cell_kind_name(r.death_kind))},
+          {"ring", std::move(ring)},
           {"birth_cells", r.birth_cells},
           {"death_cells", r.death_cells},
           {"cells", r.cells},

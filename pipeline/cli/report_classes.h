@@ -19,7 +19,8 @@ namespace medusa::cli {
 // trajectory absent there; every frame unless the run is large, then every k-th and the last.
 // sections: per type (all cells first) and degree 0..2 {label, name, dim, total, classes}, the `top`
 // classes in the order of `medusa classes --sort lifetime` (essential classes first), each {id, birth,
-// death (null if essential), birth_kind, death_kind, birth_cells, death_cells, cells (CC3D ids as
+// death (null if essential), birth_kind, death_kind, ring (essential loops and cavities: {state, broke_at},
+// ring_fate.h; null otherwise), birth_cells, death_cells, cells (CC3D ids as
 // `medusa classes` lists them), vertices, edges, triangles, birth_simplex, death_simplex (vertex ids)}.
 // The classes are those stored under /persistence (computed when the store has none).
 nlohmann::ordered_json report_classes(const std::string& store, const medusa::Medusa& medusa,

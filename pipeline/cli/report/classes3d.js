@@ -233,7 +233,7 @@
       const sec = view.section, nm = names(view.run, sec.dim);
       view.caption.textContent = typeTitle(sec.label, sec.name) + " · H" + sec.dim + " " + nm[0] + " " + cls.id +
         " at MCS " + fmt(view.time) + ": born at MCS " + fmt(cls.birth) + ", " +
-        (cls.death === null ? "never " + deathWord(sec.dim) : deathWord(sec.dim) + " at MCS " + fmt(cls.death)) +
+        (cls.death === null ? "never " + deathWord(sec.dim) + ringWords(cls.ring, sec.dim) : deathWord(sec.dim) + " at MCS " + fmt(cls.death)) +
         "; " + view.drawn.length + " cells: " + list(view.drawn, 40) +
         (view.absent.length ? " (not present at this time: " + view.absent.join(" ") + ")" : "");
     }
@@ -387,13 +387,23 @@
         "data-class": cls.id, title: "show this " + nm[0] + " in the 3D view" }, body);
       html("td", {}, tr, String(cls.id));
       html("td", {}, tr, fmt(cls.birth));
-      html("td", {}, tr, cls.death === null ? "never " + deathWord(section.dim) : fmt(cls.death));
+      html("td", { class: "fate", "data-broke-at": cls.ring && cls.ring.broke_at !== null ? String(cls.ring.broke_at) : "" }, tr, cls.death === null ? "never " + deathWord(section.dim) + ringWords(cls.ring, section.dim) : fmt(cls.death));
       html("td", {}, tr, cls.death === null ? "≥ " + fmt(run.facts.t_end - cls.birth) : fmt(cls.death - cls.birth));
       html("td", {}, tr, cls.birth_cells.join(" "));
       html("td", {}, tr, cls.death === null ? "–" : cls.death_cells.join(" "));
       html("td", { class: "cells", title: cls.cells.join(" ") }, tr, cls.cells.length + ": " + list(cls.cells, 12));
       tr.addEventListener("click", () => select(view, section, cls));
     }
+  }
+
+  // An essential loop or cavity is never filled; its cells' ring or shell can still have broken open
+  // (pipeline/cli/ring_fate.h).
+  function ringWords(ring, dim) {
+    if (!ring) return "";
+    const what = dim === 2 ? "shell" : "ring";
+    if (ring.state === "broke") return "; this " + what + " broke open at MCS " + fmt(ring.broke_at);
+    if (ring.state === "never whole") return "; a loop in space-time (its cells never all at once)";
+    return "; this " + what + " is whole at the end";
   }
 
   function build() {
@@ -405,7 +415,9 @@
       html("p", { class: "note" }, sec, "Per cell type and degree, the " + run.classes.top + " classes that lived longest " +
         "(the ones never filled or joined first). A class's cells are those of its representative: for a cluster the cells " +
         "in it just before it joined an older one, for a loop or a cavity the cells on a ring or a shell around it " +
-        "when it formed (docs/MATH.md §7.11). 'Formed by' and 'killed by' are the cells whose contact created and " +
+        "when it formed (docs/MATH.md §7.11). A loop or cavity never filled is a class of the space-time medusa to the " +
+        "end, so its lifetime reads '≥'; whether the cells it is listed with are still a ring or shell at the end, broke " +
+        "open at some time, or were never all present at once is said beside it. 'Formed by' and 'killed by' are the cells whose contact created and " +
         "ended it: the last edge or triangle that closed it, the triangle or tetrahedron that filled it. Click a row " +
         "to see the class in 3D at the time it formed; move the time to watch it close and fill. The full lists: " +
         "medusa classes STORE --type T --dim K (ids as in the first column).");

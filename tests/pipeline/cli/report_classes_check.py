@@ -45,6 +45,47 @@ def vtk_positions(path):
     return dict(zip(ids, map(tuple, xyz)))
 
 
+def simplices_at(call, store, label, t, path):
+    """The simplices (tuples of CC3D ids) of type `label`'s K(t+) as `medusa at` writes them."""
+    call("at", store, "--type", label, "--time", repr(t), "-o", path)
+    with open(path) as f:
+        next(f)
+        return {tuple(int(v) for v in line.strip().split(",")[1:] if v) for line in f}
+
+
+def check_ring_fates(driver, call, page, name, ri, expected, t_end, failures):
+    """Each essential loop or cavity row says what became of the ring or shell it is listed with; checked
+    on the complexes `medusa at` gives: a ring whole at the end has all its simplices in K(t_end-); one
+    that broke open at MCS x has them all halfway from its birth to x and not all just after x."""
+    checked = 0
+    for cell in driver.find_elements("css selector", f".class-row[data-run='{ri}'] td.fate"):
+        text = cell.text
+        if not text.startswith("never") or "ring" not in text and "shell" not in text:
+            continue
+        row = cell.find_element("xpath", "..")
+        label, dim, cid = row.get_attribute("data-type"), int(row.get_attribute("data-dim")), int(row.get_attribute("data-class"))
+        if label == "all":
+            continue  # `medusa at --type` takes a cell type
+        want = expected[(label, dim)][cid]
+        ring = {tuple(s) for s in want["simplices"]}
+        store = f"{name}.h5"
+        what = f"{page} {name} type {label} H{dim} class {cid} ({text!r})"
+        if "whole at the end" in text:
+            if not ring <= simplices_at(call, store, label, t_end, f"ring_{ri}.csv"):
+                failures.append(f"{what}: not every simplex of it is in K(t_end-)")
+        else:
+            x = float(cell.get_attribute("data-broke-at"))
+            after = simplices_at(call, store, label, x * (1 + 1e-9) + 1e-9, f"ring_{ri}.csv")
+            if ring <= after:
+                failures.append(f"{what}: every simplex of it is still in K just after MCS {x}")
+            if want["birth"] < x:
+                before = simplices_at(call, store, label, (want["birth"] + x) / 2, f"ring_{ri}.csv")
+                if not ring <= before:
+                    failures.append(f"{what}: not every simplex of it is in K halfway from its birth to MCS {x}")
+        checked += 1
+    return checked
+
+
 def canvas_has_colour(view, colour, png):
     view.find_element("css selector", "canvas").screenshot(png)
     pixels = np.asarray(Image.open(png).convert("RGB")).reshape(-1, 3).astype(float)
@@ -125,6 +166,10 @@ def check_classes(driver, call, page, stores, failures, screenshot=None, shown=N
             time.sleep(0.3)
             view.screenshot("class_view.png")
             Image.open("class_view.png").convert("RGB").save(screenshot, optimize=True)
+        t_end = driver.execute_script(f"return window.medusaReport.range({ri})[1]")
+        fates = check_ring_fates(driver, call, page, name, ri, expected, t_end, failures)
+        if fates == 0:
+            failures.append(f"{page} {name}: no essential loop or cavity row of a cell type says what became of its ring")
         # Positions between frames: those `medusa at` interpolates.
         t0, t1 = driver.execute_script(f"return [window.medusaReport.range({ri})[0], window.medusaReport.range({ri})[1]]")
         t = t0 + (t1 - t0) * 0.6173
@@ -145,6 +190,6 @@ def check_classes(driver, call, page, stores, failures, screenshot=None, shown=N
         driver.execute_script("arguments[0].value = arguments[1]; arguments[0].dispatchEvent(new Event('change'))", box, t)
         if abs(driver.execute_script(f"return window.medusaReport.highlighted({ri}).time") - t) > 1e-6:
             failures.append(f"{page} {name}: the time input did not move the view to MCS {t}")
-        print(f"{page} {name}: classes section: {len(tables)} tables, {len(picks)} classes clicked, "
+        print(f"{page} {name}: classes section: {len(tables)} tables, {len(picks)} classes clicked, {fates} rings checked, "
               f"positions at MCS {t:.4g} within {worst:.2g} of medusa at ({len(at)} cells)")
     return clicks

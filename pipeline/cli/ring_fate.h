@@ -1,0 +1,23 @@
+// What became of the cells of an essential loop's or cavity's representative (docs/MATH.md §7.6): the
+// class is never filled, since the forward filtration keeps the past, but the ring or shell of cells
+// it is listed with can still be whole at the end, have broken open at some time, or never have been
+// whole at one time (a loop in space-time). A statement about those cells, not about the class: another
+// cycle of the same class can outlive this one.
+#pragma once
+
+#include "medusa/medusa/medusa.h"
+#include "medusa/persistence/cell_lists.h"
+
+namespace medusa::cli {
+
+struct RingFate {
+  enum class State { whole_at_end, broke, never_whole };
+  State state = State::whole_at_end;
+  double broke_at = 0; // MCS at which the first of its cells left (State::broke)
+};
+
+// `cycle`: the representative's cells; `born`: the class's birth, the birth of its last cell.
+RingFate ring_fate(const medusa::Medusa& medusa, persistence::CellLists::List cycle,
+                   const medusa::VirtualTime& born);
+
+} // namespace medusa::cli
