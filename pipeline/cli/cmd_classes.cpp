@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "diagram_export.h"
 #include "diagram_selection.h"
+#include "ring_fate.h"
 
 #include "medusa/core/error.h"
 #include "medusa/medusa/store_reader.h"
@@ -129,8 +130,9 @@ nlohmann::json time_json(double t) {
   return std::isinf(t) ? nlohmann::json(format_time(t)) : nlohmann::json(t);
 }
 
-void write_classes_json(std::ostream& out, const std::vector<persistence::ClassRecord>& records,
-                        const Wraps& wraps, int cell_type, persistence::Direction direction, bool shortened) {
+void write_classes_json(std::ostream& out, const medusa::Medusa& medusa,
+                        const std::vector<persistence::ClassRecord>& records, const Wraps& wraps,
+                        int cell_type, persistence::Direction direction, bool shortened) {
   nlohmann::json list = nlohmann::json::array();
   for (std::size_t i = 0; i < records.size(); ++i) {
     const persistence::ClassRecord& r = records[i];
@@ -152,6 +154,14 @@ void write_classes_json(std::ostream& out, const std::vector<persistence::ClassR
          {"medusa_death_cell", r.essential ? nlohmann::json(nullptr) : nlohmann::json(r.death_cell)},
          {"medusa_cycle", r.cycle},
          {"simplices", r.simplices}});
+    // What became of an essential loop's or cavity's cells in time running forward (ring_fate.h).
+    if (direction == persistence::Direction::forward && r.essential && r.dim >= 1) {
+      const RingFate fate =
+          ring_fate(medusa, persistence::CellLists::List(r.cycle), medusa.cell(r.birth_cell).birth);
+      list.back()["ring"] = {{"state", ring_state_name(fate.state)},
+                             {"broke_at", fate.state == RingFate::State::broke ? nlohmann::json(fate.broke_at)
+                                                                               : nlohmann::json(nullptr)}};
+    }
     if (!wraps.empty()) // the axes the loop wraps around, on a periodic run (docs/MATH.md §8.8)
       list.back()["wraps"] = wraps[i] == "-" ? "" : wraps[i];
   }
@@ -191,7 +201,7 @@ void classes_command(const ClassesArguments& args) {
     if (args.format == "csv")
       write_classes_csv(out, records, wraps);
     else if (args.format == "json")
-      write_classes_json(out, records, wraps, cell_type, direction, classes.classes.options.shorten);
+      write_classes_json(out, medusa, records, wraps, cell_type, direction, classes.classes.options.shorten);
     else
       write_table(out, records, wraps);
   };

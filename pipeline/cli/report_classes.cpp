@@ -80,9 +80,7 @@ json class_json(const persistence::ClassRecord& r, const persistence::DiagramWit
   json ring = nullptr;
   if (r.essential && r.dim >= 1) {
     const RingFate fate = ring_fate(medusa, found.classes.cycles[i], medusa.cell(r.birth_cell).birth);
-    ring = {{"state", fate.state == RingFate::State::whole_at_end ? "whole at the end"
-                      : fate.state == RingFate::State::broke      ? "broke"
-                                                                  : "never whole"},
+    ring = {{"state", ring_state_name(fate.state)},
             {"broke_at", fate.state == RingFate::State::broke ? json(fate.broke_at) : json(nullptr)}};
   }
   json e = json::array(), t = json::array();

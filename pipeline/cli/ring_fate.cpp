@@ -2,6 +2,15 @@
 
 namespace medusa::cli {
 
+const char* ring_state_name(RingFate::State state) {
+  switch (state) {
+  case RingFate::State::whole_at_end: return "whole at the end";
+  case RingFate::State::broke: return "broke";
+  case RingFate::State::never_whole: return "never whole";
+  }
+  return "";
+}
+
 RingFate ring_fate(const medusa::Medusa& medusa, persistence::CellLists::List cycle,
                    const medusa::VirtualTime& born) {
   // The first of its cells to leave: a cell alive at t_end dies at medusa.end (docs/MATH.md §6.2).

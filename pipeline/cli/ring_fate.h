@@ -17,6 +17,9 @@ struct RingFate {
 };
 
 // `cycle`: the representative's cells; `born`: the class's birth, the birth of its last cell.
+// "whole at the end", "broke" or "never whole", as `medusa classes --format json` and the report write it.
+const char* ring_state_name(RingFate::State state);
+
 RingFate ring_fate(const medusa::Medusa& medusa, persistence::CellLists::List cycle,
                    const medusa::VirtualTime& born);
 

@@ -4,6 +4,7 @@
 #include "interrupt.h"
 #include "python_run.h"
 #include "python_store.h"
+#include "ring_fate.h"
 
 #include "medusa/core/error.h"
 #include "medusa/persistence/points.h"
@@ -110,6 +111,16 @@ py::list classes(StoreView& store, const py::object& type, std::optional<int> di
     c["medusa_death_cell"] = r.essential ? py::object(py::none()) : py::object(py::int_(r.death_cell));
     c["medusa_cycle"] = r.cycle;
     c["simplices"] = r.simplices;
+    if (direction_of(filtration) == persistence::Direction::forward && r.essential && r.dim >= 1) {
+      // As `medusa classes --format json`: what became of the representative's cells (ring_fate.h).
+      const cli::RingFate fate = cli::ring_fate(store.medusa(), persistence::CellLists::List(r.cycle),
+                                                store.medusa().cell(r.birth_cell).birth);
+      py::dict ring;
+      ring["state"] = cli::ring_state_name(fate.state);
+      ring["broke_at"] = fate.state == cli::RingFate::State::broke ? py::object(py::float_(fate.broke_at))
+                                                                   : py::object(py::none());
+      c["ring"] = std::move(ring);
+    }
     if (!wraps.empty()) // on a periodic run, as `medusa classes --format json` (docs/MATH.md §8.8)
       c["wraps"] = wraps[i];
     out.append(std::move(c));

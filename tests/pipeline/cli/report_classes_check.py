@@ -70,11 +70,16 @@ def check_ring_fates(driver, call, page, name, ri, expected, t_end, failures):
         ring = {tuple(s) for s in want["simplices"]}
         store = f"{name}.h5"
         what = f"{page} {name} type {label} H{dim} class {cid} ({text!r})"
+        listed = (want.get("ring") or {}).get("state")
+        if listed != ("whole at the end" if "whole at the end" in text else "broke"):
+            failures.append(f"{what}: `medusa classes --format json` says ring {want.get('ring')}")
         if "whole at the end" in text:
             if not ring <= simplices_at(call, store, label, t_end, f"ring_{ri}.csv"):
                 failures.append(f"{what}: not every simplex of it is in K(t_end-)")
         else:
             x = float(cell.get_attribute("data-broke-at"))
+            if want.get("ring", {}).get("broke_at") != x:
+                failures.append(f"{what}: broke open at MCS {x} on the page, {want.get('ring')} in `medusa classes`")
             after = simplices_at(call, store, label, x * (1 + 1e-9) + 1e-9, f"ring_{ri}.csv")
             if ring <= after:
                 failures.append(f"{what}: every simplex of it is still in K just after MCS {x}")
