@@ -406,7 +406,13 @@ TEST_CASE("a run's event stream is unchanged by a similarity of its input",
     } catch (const medusa::GeometryError& e) {
       error_b = e.what();
     }
-    REQUIRE(error_a == error_b);
+    // The same collision, between the same cells at the same frame or time; only the centre it names
+    // moves with the similarity.
+    const auto without_centre = [](const std::string& error) {
+      const std::size_t at = error.find(", centre (");
+      return at == std::string::npos ? error : error.substr(0, at);
+    };
+    REQUIRE(without_centre(error_a) == without_centre(error_b));
     REQUIRE(a.lines.size() > 3);
     REQUIRE(a.lines.size() == b.lines.size());
     for (std::size_t i = 0; i < a.lines.size(); ++i) {
