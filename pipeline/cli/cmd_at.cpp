@@ -2,6 +2,7 @@
 // of simplices (CSV); with --class, persistence classes' representatives drawn in it (docs/MATH.md
 // §7.11); with --times, a series of VTK files and a ParaView collection.
 #include "atomic_file.h"
+#include "cell_type.h"
 #include "commands.h"
 #include "complex_export.h"
 #include "diagram_export.h"
@@ -53,7 +54,8 @@ struct AtArguments {
   std::optional<double> time;
   std::string times;
   std::string output;
-  std::optional<int> type;
+  std::optional<std::string> type_text; // --type as given: an id or a name
+  std::optional<int> type;              // its id in the store, once read
   std::vector<std::size_t> classes;
   std::string filtration = "forward";
 };
@@ -217,7 +219,7 @@ void write_series(const AtArguments& args, const medusa::Medusa& medusa, const m
             << format_time(times.back()) << ")\n";
 }
 
-void at_command(const AtArguments& args) {
+void at_command(AtArguments& args) {
   if (args.time && !args.times.empty())
     throw CLI::ValidationError("--time", "give --time or --times, not both");
   if (args.times.empty() && !args.time && args.classes.empty())
@@ -231,12 +233,8 @@ void at_command(const AtArguments& args) {
     refuse_to_replace_hdf5(args.output);
   const medusa::Medusa medusa = medusa::read_store(args.store);
   check_interrupted();
-  if (args.type) {
-    const auto& cells = medusa.input.cells;
-    if (std::none_of(cells.begin(), cells.end(),
-                     [&](const kinetic::Trajectory& c) { return c.type == *args.type; }))
-      throw InputError("cell type " + std::to_string(*args.type) + " does not occur in " + args.store);
-  }
+  if (args.type_text)
+    args.type = resolve_cell_type(*args.type_text, medusa.input, args.store, false);
   std::optional<ClassCells> classes;
   if (!args.classes.empty())
     classes = class_cells(args.store, medusa, args);
@@ -297,7 +295,10 @@ void add_at_command(CLI::App& app) {
                  "shape.vtk (legacy ASCII unstructured grid, positions interpolated at T) or shape.csv "
                  "(dimension,v0..v3: one simplex per row, CC3D cell ids sorted); a folder with --times")
       ->required();
-  at->add_option("--type", args->type, "only the subcomplex of this cell type id (docs/MATH.md §7.4)")
+  at->add_option(
+        "--type", args->type_text,
+        "only the subcomplex of this cell type, by id or name as `medusa info` lists them (docs/MATH.md "
+        "§7.4)")
       ->check(type_validator(false));
   at->add_option("--class", args->classes,
                  "draw this class's representative (its id from `medusa classes`, same --type and "

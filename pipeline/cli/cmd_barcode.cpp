@@ -29,7 +29,7 @@ void barcode_command(const BarcodeArguments& args) {
     refuse_to_replace_hdf5(args.output);
   const medusa::Medusa medusa = medusa::read_store(args.store);
   check_interrupted();
-  const std::vector<persistence::Diagram> diagrams = selected_diagrams(medusa, args.selection);
+  const std::vector<persistence::Diagram> diagrams = selected_diagrams(medusa, args.selection, args.store);
   check_interrupted();
   const double t0 =
       medusa.input.frame_times.empty() ? 0.0 : static_cast<double>(medusa.input.frame_times.front());

@@ -1,6 +1,7 @@
 // `medusa classes`: every persistence class of one diagram with the CompuCell3D cells that make it
 // (docs/MATH.md §7.11).
 #include "atomic_file.h"
+#include "cell_type.h"
 #include "commands.h"
 #include "diagram_export.h"
 #include "diagram_selection.h"
@@ -180,7 +181,7 @@ void classes_command(const ClassesArguments& args) {
   medusa::StoreReadOptions cells_only;
   cells_only.events = false;
   const medusa::Medusa medusa = medusa::read_store(args.store, cells_only);
-  const int cell_type = args.type == "all" ? persistence::all_types : std::stoi(args.type);
+  const int cell_type = resolve_cell_type(args.type, medusa.input, args.store);
   const auto direction =
       args.filtration == "forward" ? persistence::Direction::forward : persistence::Direction::reverse;
   persistence::RepresentativeOptions options;
@@ -219,8 +220,10 @@ void add_classes_command(CLI::App& app) {
       "classes", "List the persistence classes of one diagram with the CompuCell3D cells that make each one");
   classes->add_option("store", args->store, "HDF5 store written by `medusa run`")->required();
   classes
-      ->add_option("--type", args->type,
-                   "the sub-medusa of this cell type id (docs/MATH.md §7.4), or 'all' for the whole medusa")
+      ->add_option(
+          "--type", args->type,
+          "the sub-medusa of this cell type, by id or name as `medusa info` lists them (docs/MATH.md "
+          "§7.4), or 'all' for the whole medusa")
       ->check(type_validator())
       ->capture_default_str();
   classes->add_option("--dim", args->dim, "only this homology degree (default: 0, 1 and 2)")

@@ -329,10 +329,10 @@ void add_compare_command(CLI::App& app) {
       ->capture_default_str();
   CLI::Option* type =
       compare
-          ->add_option(
-              "--type", args->selection.type,
-              "compare the sub-medusa of this cell type id (docs/MATH.md §7.4), or 'all' for the whole "
-              "medusa (default without --type and --dim: every cell type of the runs, in H0, H1 and H2)")
+          ->add_option("--type", args->selection.type,
+                       "compare the sub-medusa of this cell type, by id or name as `medusa info` lists them "
+                       "(docs/MATH.md §7.4), or 'all' for the whole medusa (default without --type and "
+                       "--dim: every cell type of the runs, in H0, H1 and H2)")
           ->check(type_validator());
   CLI::Option* dim = compare
                          ->add_option("--dim", args->selection.dim,

@@ -1,5 +1,6 @@
 #include "comparison.h"
 
+#include "cell_type.h"
 #include "diagram_selection.h"
 
 #include "medusa/core/error.h"
@@ -52,15 +53,13 @@ std::vector<ComparedDiagram> compared_diagrams(const std::string& store,
   }
   if (one_type)
     wanted.type = selections.front().type;
-  const std::vector<persistence::Diagram> diagrams = selected_diagrams(medusa, wanted);
-  const std::vector<int> types = distinct_types(vertex_types(medusa));
+  const std::vector<persistence::Diagram> diagrams = selected_diagrams(medusa, wanted, store);
   const double t0 = static_cast<double>(medusa.input.frame_times.front());
   const double t_end = static_cast<double>(medusa.input.frame_times.back());
   std::vector<ComparedDiagram> result;
   for (const ComparisonSelection& s : selections) {
-    const int type = s.type == "all" ? persistence::all_types : std::stoi(s.type);
-    if (type != persistence::all_types && std::find(types.begin(), types.end(), type) == types.end())
-      throw InputError("cell type " + s.type + " does not occur in the store " + store);
+    // A type name is resolved in each run: the same name may have another id in another run.
+    const int type = resolve_cell_type(s.type, medusa.input, store);
     const auto d = std::find_if(diagrams.begin(), diagrams.end(),
                                 [&](const persistence::Diagram& x) { return x.cell_type == type; });
     if (d == diagrams.end())

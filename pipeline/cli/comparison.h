@@ -20,14 +20,14 @@ struct ComparedDiagram {
 };
 
 struct ComparisonSelection {
-  std::string type = "all"; // a cell type id or "all" (the whole medusa)
+  std::string type = "all"; // a cell type id or name, or "all" (the whole medusa)
   int dim = 0;
   std::string filtration = "forward";
 };
 
 // Reads `store`, computes its diagrams (docs/MATH.md §7.2-§7.4) and returns the selected one mapped to points
 // (reverse diagrams to -t, docs/MATH.md §7.3) with the time normalisation t -> (t - t0) / (t_end - t0).
-// InputError if the type does not occur in the store.
+// InputError if the type (an id or name, resolved in this store) has no cells in it.
 ComparedDiagram compared_diagram(const std::string& store, const ComparisonSelection& selection);
 
 // The same for several selections of one filtration direction, from one reading of the store and one

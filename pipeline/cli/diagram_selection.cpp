@@ -1,4 +1,5 @@
 #include "diagram_selection.h"
+#include "cell_type.h"
 #include "interrupt.h"
 
 #include "medusa/core/error.h"
@@ -9,17 +10,6 @@
 
 namespace medusa::cli {
 
-namespace {
-
-// A cell type id: the whole string is a decimal int.
-std::optional<int> parse_type(const std::string& value) {
-  if (value.empty() || value.size() > 9 || value.find_first_not_of("0123456789") != std::string::npos)
-    return std::nullopt;
-  return std::stoi(value);
-}
-
-} // namespace
-
 unsigned worker_threads(unsigned requested) {
   return requested > 0 ? requested : std::max(1u, std::thread::hardware_concurrency());
 }
@@ -27,10 +17,13 @@ unsigned worker_threads(unsigned requested) {
 CLI::Validator type_validator(bool all) {
   return CLI::Validator(
       [all](std::string& value) {
-        if ((all && value == "all") || parse_type(value))
-          return std::string();
-        return "'" + value + "' is not a cell type id" + (all ? " or 'all'" : "") +
-               ": types are given by number (1, 2, ...); `medusa info <store>` lists each type's id and name";
+        // A name is checked against the store's types once it is open (resolve_cell_type).
+        if (value.empty())
+          return std::string("a cell type is its id or its name, as `medusa info <store>` lists them") +
+                 (all ? ", or 'all'" : "");
+        if (!all && value == "all")
+          return std::string("'all' is no cell type here: leave out --type for every cell");
+        return std::string();
       },
       "TYPE");
 }
@@ -43,7 +36,8 @@ void add_selection_options(CLI::App& command, DiagramSelection& selection) {
   command
       .add_option(
           "--type", selection.type,
-          "only the sub-medusa of this cell type id (docs/MATH.md §7.4), or 'all' for the whole medusa only")
+          "only the sub-medusa of this cell type, by id or name as `medusa info` lists them (docs/MATH.md "
+          "§7.4), or 'all' for the whole medusa only")
       ->check(type_validator());
   command.add_option("--dim", selection.dim, "only this homology degree")->check(CLI::Range(0, 3));
   command.add_flag("--zero-length", selection.zero_length,
@@ -71,14 +65,13 @@ std::vector<int> distinct_types(const std::vector<int>& vertex_type) {
 }
 
 std::vector<persistence::Diagram> selected_diagrams(const medusa::Medusa& medusa,
-                                                    const DiagramSelection& selection) {
+                                                    const DiagramSelection& selection,
+                                                    const std::string& source) {
   const std::vector<int> vertex_type = vertex_types(medusa);
   std::vector<int> types = distinct_types(vertex_type);
   std::optional<int> wanted; // the one diagram type asked for (all_types: the whole medusa)
   if (selection.type) {
-    wanted = *selection.type == "all" ? persistence::all_types : *parse_type(*selection.type);
-    if (*wanted != persistence::all_types && std::find(types.begin(), types.end(), *wanted) == types.end())
-      throw InputError("cell type " + *selection.type + " does not occur in the store");
+    wanted = resolve_cell_type(*selection.type, medusa.input, source);
     types = *wanted == persistence::all_types ? std::vector<int>{} : std::vector<int>{*wanted};
   }
   persistence::DiagramRunOptions options;

@@ -1,12 +1,14 @@
 // The Python module `medusa`: open a store, read its persistence diagrams as numpy arrays (GUDHI's
 // and giotto-tda's layouts), its classes with the CompuCell3D cells that make them (docs/MATH.md §7.11),
 // the complexes K(t) and the Betti curves; run the pipeline in-process (pipeline/python/README.md).
+#include "cell_type.h"
 #include "interrupt.h"
 #include "python_run.h"
 #include "python_store.h"
 #include "ring_fate.h"
 
 #include "medusa/core/error.h"
+#include "medusa/persistence/filtration.h"
 #include "medusa/persistence/points.h"
 #include "medusa/persistence/summaries.h"
 
@@ -32,19 +34,14 @@ persistence::Direction direction_of(const std::string& filtration) {
   throw InputError("filtration '" + filtration + "' is neither 'forward' nor 'reverse'");
 }
 
-// type=None or "all": the whole medusa; an int (or its decimal text): that cell type.
-int type_of(const py::object& type) {
+// type=None or "all": the whole medusa; an int, or its decimal text, or the type's name: that cell
+// type, as --type reads it (cell_type.h).
+int type_of(const StoreView& store, const py::object& type) {
   if (type.is_none())
     return persistence::all_types;
-  if (py::isinstance<py::str>(type)) {
-    const std::string text = type.cast<std::string>();
-    if (text == "all")
-      return persistence::all_types;
-    if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos || text.size() > 9)
-      throw InputError("type '" + text + "' is not a cell type id or 'all'");
-    return std::stoi(text);
-  }
-  return type.cast<int>();
+  const std::string text =
+      py::isinstance<py::str>(type) ? type.cast<std::string>() : std::to_string(type.cast<int>());
+  return cli::resolve_cell_type(text, store.medusa().input, store.path());
 }
 
 py::array_t<double> rows_array(const std::vector<std::array<double, 3>>& rows, std::size_t columns) {
@@ -68,7 +65,7 @@ std::vector<std::array<double, 3>> points_of(const persistence::Diagram& d, std:
 
 py::object diagrams(StoreView& store, const py::object& type, std::optional<int> dim,
                     const std::string& filtration, bool zero_length, const std::string& layout) {
-  const persistence::Diagram& d = store.diagram(direction_of(filtration), type_of(type));
+  const persistence::Diagram& d = store.diagram(direction_of(filtration), type_of(store, type));
   if (layout == "giotto")
     return rows_array(points_of(d, dim, zero_length), 3);
   if (layout != "gudhi")
@@ -90,7 +87,7 @@ py::list classes(StoreView& store, const py::object& type, std::optional<int> di
                  const std::string& filtration, bool zero_length, bool shorten) {
   std::vector<std::string> wraps;
   const auto records =
-      store.classes(direction_of(filtration), type_of(type), dim, zero_length, shorten, &wraps);
+      store.classes(direction_of(filtration), type_of(store, type), dim, zero_length, shorten, &wraps);
   py::list out;
   for (std::size_t i = 0; i < records.size(); ++i) {
     const persistence::ClassRecord& r = records[i];
@@ -133,7 +130,7 @@ py::list classes(StoreView& store, const py::object& type, std::optional<int> di
 py::tuple betti_curves(StoreView& store, const py::object& type, const std::string& filtration,
                        std::optional<std::vector<double>> times) {
   const persistence::Direction direction = direction_of(filtration);
-  const persistence::Diagram& d = store.diagram(direction, type_of(type));
+  const persistence::Diagram& d = store.diagram(direction, type_of(store, type));
   std::vector<double> at;
   if (times)
     at = *times;
@@ -252,7 +249,8 @@ PYBIND11_MODULE(medusa, m) {
           "the periodic axes of the run (\"x,y\", ...; \"\" for an open run, docs/MATH.md §8)")
       .def("diagrams", &diagrams, py::arg("type") = py::none(), py::arg("dim") = py::none(),
            py::arg("filtration") = "forward", py::arg("zero_length") = false, py::arg("layout") = "gudhi",
-           "Persistence diagram of the whole medusa (type None or 'all') or of one cell type.\n"
+           "Persistence diagram of the whole medusa (type None or 'all') or of one cell type (its id or "
+           "name).\n"
            "layout='gudhi': with dim, an (n, 2) array of (birth, death); without, a dict degree -> such "
            "an array. layout='giotto': an (n, 3) array of (birth, death, degree). Essential classes have "
            "death inf (forward) or -inf (reverse, whose births are >= deaths: docs/MATH.md §7.3).")
@@ -263,12 +261,16 @@ PYBIND11_MODULE(medusa, m) {
            "`medusa classes --shorten` (docs/MATH.md §7.13).")
       .def(
           "K_at",
-          [](const StoreView& s, double t, std::optional<int> type) {
+          [](const StoreView& s, double t, const py::object& type) {
+            const int id = type_of(s, type);
+            const std::optional<int> only =
+                id == medusa::persistence::all_types ? std::nullopt : std::optional<int>(id);
             py::gil_scoped_release release;
-            return s.complex_at(t, type);
+            return s.complex_at(t, only);
           },
           py::arg("t"), py::arg("type") = py::none(),
-          "The alpha complex K(t+) as a list of simplices, each a sorted list of CC3D cell ids")
+          "The alpha complex K(t+) as a list of simplices, each a sorted list of CC3D cell ids; with type "
+          "(an id or name), of that cell type's subcomplex")
       .def("betti_curves", &betti_curves, py::arg("type") = py::none(), py::arg("filtration") = "forward",
            py::arg("times") = py::none(),
            "(times, curves): curves[k][i] = number of degree-k classes alive at times[i] in the filtration "

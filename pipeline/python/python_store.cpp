@@ -1,4 +1,5 @@
 #include "python_store.h"
+#include "cell_type.h"
 
 #include "medusa/core/error.h"
 #include "medusa/medusa/complex_index.h"
@@ -38,19 +39,13 @@ bool has_persistence_group(const std::string& path) {
 
 StoreView::StoreView(std::string path) : path_(std::move(path)), medusa_(medusa::read_store(path_)) {}
 
-std::vector<int> StoreView::types() const {
-  std::vector<int> out;
-  for (const kinetic::Trajectory& t : medusa_.input.cells)
-    out.push_back(t.type);
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
+std::vector<int> StoreView::types() const { return cli::cell_types(medusa_.input); }
 
 void StoreView::check_type(int cell_type) const {
   const std::vector<int> all = types();
   if (cell_type != persistence::all_types && std::find(all.begin(), all.end(), cell_type) == all.end())
-    throw InputError("cell type " + std::to_string(cell_type) + " does not occur in " + path_);
+    throw InputError("cell type " + std::to_string(cell_type) + " has no cells in " + path_ +
+                     "; its cell types are " + cli::cell_type_list(medusa_.input));
 }
 
 const persistence::Diagram& StoreView::diagram(persistence::Direction direction, int cell_type) {

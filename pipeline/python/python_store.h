@@ -24,7 +24,7 @@ public:
   std::vector<int> types() const;
 
   // The diagram of one filtration (direction, cell type or all_types), every point. Throws InputError
-  // for a type that does not occur.
+  // for a type the run has no cells of.
   const persistence::Diagram& diagram(persistence::Direction direction, int cell_type);
 
   // The classes of that diagram in degree `dim` (or 0-2), with their representatives, shortened on

@@ -99,6 +99,12 @@ def check_compare(medusa, work, stores):
     names, values = read_matrix(prefix + ".distances.csv")
     check_matrix(names, values, stores)
     assert all(math.isfinite(v) for row in values for v in row), values
+    # The type by its name, in any case, as `medusa info` lists it: the same matrix as by its id.
+    by_name = os.path.join(work, "cmp_w1_named")
+    result = run([medusa, "compare", *stores, "--type", "condensing", "--metric", "wasserstein:1",
+                  "--ignore-essential", "-o", by_name], work)
+    assert read_matrix(by_name + ".distances.csv") == (names, values)
+    assert "type condensing" in result.stdout, result.stdout
     # Comparing a run with itself: distance 0 everywhere.
     prefix = os.path.join(work, "cmp_self")
     run([medusa, "compare", stores[0], stores[0], "--type", "1", "-o", prefix], work)
@@ -249,6 +255,12 @@ def check_at(medusa, work, store, cells_csv):
     expected = [s for s in read_simplices(all_path) if all(type_of[c] == 1 for c in s)]
     print(f"type-1 subcomplex at MCS {t0}: {len(type1)} simplices, {sum(1 for s in type1 if len(s) == 1)} vertices")
     assert sorted(type1) == sorted(expected)
+    # The type by its name gives the same subcomplex; "all" is no type of `medusa at`.
+    named_path = os.path.join(work, "at_condensing.csv")
+    run([medusa, "at", store, "--time", str(t0), "--type", "Condensing", "-o", named_path], work)
+    assert read_simplices(named_path) == type1
+    refused = run([medusa, "at", store, "--time", str(t0), "--type", "all", "-o", named_path], work, expect=2)
+    assert "leave out --type" in refused.stderr, refused.stderr
     assert sum(1 for s in type1 if len(s) == 1) == sum(1 for t in type_of.values() if t == 1)
 
     # The same complex as VTK, half-way through the first slab: positions are the midpoints of the

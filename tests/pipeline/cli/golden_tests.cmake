@@ -65,6 +65,9 @@ medusa_golden_test(diagrams_forward_h0 ARGS diagrams small.h5 --filtration forwa
 medusa_golden_test(diagrams_reverse_h2 ARGS diagrams small.h5 --filtration reverse --dim 2
                    STDOUT diagrams_reverse_h2.txt ${small})
 medusa_golden_test(diagrams_type2 ARGS diagrams small.h5 --type 2 STDOUT diagrams_type2.txt ${small})
+# A type by its name (as `medusa info` lists it) is the type of that id.
+medusa_golden_test(diagrams_type_by_name ARGS diagrams small.h5 --type NonCondensing STDOUT diagrams_type2.txt
+                   ${small})
 medusa_golden_test(diagrams_type1_h0_zero_length ARGS diagrams small.h5 --type 1 --dim 0 --zero-length
                    STDOUT diagrams_type1_h0_zero_length.txt ${small})
 medusa_golden_test(barcode_pers ARGS barcode small.h5 --format pers STDOUT barcode_all.pers ${small})
@@ -117,6 +120,8 @@ medusa_golden_test(error_dim_out_of_range ARGS diagrams small.h5 --dim 7 CODE 2
                    STDERR error_dim_out_of_range.txt ${small})
 medusa_golden_test(error_unknown_type ARGS diagrams small.h5 --type 9 CODE 3 STDERR error_unknown_type.txt
                    ${small})
+medusa_golden_test(error_unknown_type_name ARGS diagrams small.h5 --type Medium CODE 3
+                   STDERR error_unknown_type_name.txt ${small})
 medusa_golden_test(error_time_outside_run ARGS at small.h5 --time 250 -o late.csv CODE 3
                    STDERR error_time_outside_run.txt ${small})
 medusa_golden_test(error_compare_one_store ARGS compare small.h5 CODE 2 STDERR error_compare_one_store.txt

@@ -17,6 +17,8 @@ import csv
 import io
 import json
 import os
+import re
+import subprocess
 import sys
 
 import gudhi
@@ -98,6 +100,24 @@ def check_betti(s):
     print(f"betti_curves: {curves.shape}")
 
 
+def check_type_names(binary, store, s):
+    # A type by its name, as `medusa info` lists it ("cell types: 1 (Condensing): ..."), is that id's type.
+    info = subprocess.run([binary, "info", store], capture_output=True, text=True, check=True).stdout
+    named = dict((name, int(i)) for i, name in re.findall(r"(\d+) \((\w+)\)", info.split("cell types:")[1].split("\n")[0]))
+    assert named, info
+    t_mid = (s.frame_times[0] + s.frame_times[-1]) / 2
+    for name, i in named.items():
+        assert np.array_equal(s.diagrams(type=name, layout="giotto"), s.diagrams(type=i, layout="giotto")), name
+        assert s.K_at(t_mid, type=name.lower()) == s.K_at(t_mid, type=i), name
+        assert [c["id"] for c in s.classes(type=name)] == [c["id"] for c in s.classes(type=str(i))], name
+    try:
+        s.diagrams(type="NoSuchType")
+        raise AssertionError("an unknown type name did not raise")
+    except medusa.Error as e:
+        assert "its cell types are" in str(e), e
+    print("types by name:", named)
+
+
 def main():
     binary, store, run_input, radius, work = sys.argv[1:6]
     os.makedirs(work, exist_ok=True)
@@ -106,6 +126,7 @@ def main():
     check_classes(binary, store, s)
     check_complex(binary, store, s, work)
     check_betti(s)
+    check_type_names(binary, store, s)
     try:
         s.K_at(-1.0)
         raise AssertionError("K_at before the run did not raise")

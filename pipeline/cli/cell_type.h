@@ -1,0 +1,25 @@
+// A cell type as a user gives it on the command line or in Python: "all" (the whole medusa, where a
+// command allows it), the CompuCell3D type id ("1") or the type's name from the run's CC3DML or CSV
+// ("Condensing"). Shared by every command with --type and by the Python module.
+#pragma once
+
+#include "medusa/kinetic/trajectories.h"
+
+#include <string>
+#include <vector>
+
+namespace medusa::cli {
+
+// The distinct types of the run's cells, increasing.
+std::vector<int> cell_types(const kinetic::Trajectories& input);
+
+// persistence::all_types for "all" (when `allow_all`), else the id of the type `text` names: a decimal
+// id, or a type name matched exactly, or else case-blind when that is unique. Throws InputError naming
+// `source` and listing the run's types when `text` names no type of its cells.
+int resolve_cell_type(const std::string& text, const kinetic::Trajectories& input, const std::string& source,
+                      bool allow_all = true);
+
+// "1 (Condensing), 2 (NonCondensing)": the run's cell types with their names where it has them.
+std::string cell_type_list(const kinetic::Trajectories& input);
+
+} // namespace medusa::cli
