@@ -121,14 +121,18 @@ void sweep_command(const SweepArguments& args) {
   info.software_version = medusa::version;
   const unsigned workers = worker_threads(args.threads);
   if (!args.quiet)
-    std::cerr << "medusa sweep: " << radii.size() << " radii on "
+    std::cerr << "medusa sweep: " << radii.size() << (radii.size() == 1 ? " radius" : " radii") << " on "
               << std::min<std::size_t>(workers, radii.size()) << " thread(s)\n";
-  const std::vector<RadiusResult> results =
-      sweep_radii(data.trajectories, info, domain, radii, workers, true,
-                  [&args](const std::string& radius, std::size_t, std::size_t) {
-                    if (!args.quiet)
-                      std::cerr << "medusa sweep: radius " << radius << " done\n";
-                  });
+  std::vector<RadiusResult> results;
+  try {
+    results = sweep_radii(data.trajectories, info, domain, radii, workers, true,
+                          [&args](const std::string& radius, std::size_t, std::size_t) {
+                            if (!args.quiet)
+                              std::cerr << "medusa sweep: radius " << radius << " done\n";
+                          });
+  } catch (const GeometryError& e) {
+    throw GeometryError(args.input + ": " + e.what()); // collisions name cells and times, not the file
+  }
   const std::vector<CrockerRow> rows = crocker_rows(results, data.trajectories.frame_times);
   std::ostringstream summary;
   summary << "sweep of " << args.input << ": " << data.trajectories.cells.size() << " trajectories, "

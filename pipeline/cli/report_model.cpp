@@ -177,10 +177,10 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
       continue;
     const std::string label = type_label(d.cell_type);
     const std::string tname = type_name(input, d.cell_type);
-    summary << (d.cell_type == persistence::all_types
-                    ? "all cells"
-                    : "type " + label + (tname.empty() ? "" : " (" + tname + ")"))
-            << ":\n";
+    const bool whole = d.cell_type == persistence::all_types;
+    const std::string title =
+        whole ? "all cells" : "type " + label + (tname.empty() ? "" : " (" + tname + ")");
+    summary << title << ":\n";
     describe_forward_diagram(summary, medusa, diagrams, d);
     const auto s =
         std::find_if(slices.begin(), slices.end(), [&](const TypeSlices& x) { return x.label == label; });
@@ -189,7 +189,6 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
       b0.push_back(g.betti[0]);
     const TypeCourse course = type_course(input.frame_times, b0, forward_counts(d).merge_times);
     const auto measures_of = [&](const medusa::SortingSample& sample) {
-      const bool whole = d.cell_type == persistence::all_types;
       const auto m =
           std::find_if(sample.measures.begin(), sample.measures.end(), [&](const medusa::SortingMeasures& x) {
             return whole ? !x.type.has_value() : x.type.has_value() && *x.type == d.cell_type;
@@ -198,18 +197,16 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
         throw InternalError("report: no sorting measures for " + label);
       return *m;
     };
+    const medusa::SortingMeasures first = measures_of(sorting.front()), last = measures_of(sorting.back());
     headlines.push_back({{"label", label},
                          {"name", tname},
                          {"text", course.text},
-                         {"contacts", contact_fractions(measures_of(sorting.front()),
-                                                        measures_of(sorting.back()), " \u2192 ") +
-                                          " (MCS " + format_time(sorting.front().time) + " \u2192 " +
+                         {"contacts", contact_fractions(first, last, " \u2192 ") + " (MCS " +
+                                          format_time(sorting.front().time) + " \u2192 " +
                                           format_time(sorting.back().time) + ")"},
                          {"gathered_at", course.gathered_at ? json(*course.gathered_at) : json(nullptr)}});
-    if (d.cell_type != persistence::all_types)
-      verdict_types.push_back(
-          {"type " + label + (tname.empty() ? "" : " (" + tname + ")"), course,
-           heterotypic_contacts(measures_of(sorting.front()), measures_of(sorting.back()), " \u2192 ")});
+    if (!whole)
+      verdict_types.push_back({title, course, heterotypic_contacts(first, last, " \u2192 ")});
     for (int k = 0; k <= 2; ++k)
       panels.push_back(panel(d, k, max_bars, medusa));
     run.h0_points.emplace_back(
