@@ -1,6 +1,7 @@
 // `medusa compare`: pairwise distances between the diagrams of several runs on the normalised time
 // axis (docs/MATH.md §7.7), average-linkage clustering, and their CSV/SVG exports.
 #include "atomic_file.h"
+#include "cell_type.h"
 #include "commands.h"
 #include "comparison.h"
 #include "diagram_export.h"
@@ -55,6 +56,14 @@ std::string degree_words(int dim) {
   case 2: return "cavities (H2)";
   default: return "classes of degree " + std::to_string(dim) + " (H" + std::to_string(dim) + ")";
   }
+}
+
+// "type 1 (Light)" in a run that names type 1, else "type 1".
+std::string type_title(const std::string& type, const kinetic::Trajectories& input) {
+  const auto id = static_cast<std::size_t>(std::stoi(type));
+  return "type " + type +
+         (id < input.type_names.size() && !input.type_names[id].empty() ? " (" + input.type_names[id] + ")"
+                                                                        : "");
 }
 
 // A comparison for the terminal: "type 1 loops (H1)", "all cells' clusters (H0)".
@@ -177,14 +186,22 @@ void compare_command(const CompareArguments& args) {
   const std::vector<std::string> names = run_names(args.stores);
   const bool single = args.type_given || args.dim_given;
 
+  // Each run's cells and radius first: a type the runs lack is refused before anything is printed.
+  std::vector<RunFacts> runs;
+  for (const std::string& store : args.stores) {
+    check_interrupted();
+    runs.push_back(read_run_facts(store));
+  }
   // What to compare: the one (type, degree) asked for, or every cell type of the runs in H0-H2.
   std::vector<ComparisonSelection> selections;
   if (single) {
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      resolve_cell_type(args.selection.type, runs[i].input, args.stores[i]);
     selections.push_back(args.selection);
   } else {
-    std::vector<int> types = store_types(args.stores.front());
-    for (std::size_t i = 1; i < args.stores.size(); ++i) {
-      const std::vector<int> other = store_types(args.stores[i]);
+    std::vector<int> types = cell_types(runs.front().input);
+    for (std::size_t i = 1; i < runs.size(); ++i) {
+      const std::vector<int> other = cell_types(runs[i].input);
       std::vector<int> common;
       std::set_intersection(types.begin(), types.end(), other.begin(), other.end(),
                             std::back_inserter(common));
@@ -217,11 +234,11 @@ void compare_command(const CompareArguments& args) {
     std::vector<ComparedDiagram> d = compared_diagrams(args.stores[i], selections);
     dimensions.push_back(d.front().dimension);
     std::cout << "  " << names[i] << ": MCS " << short_number(d.front().t0) << " to "
-              << short_number(d.front().t_end);
+              << short_number(d.front().t_end) << ", radius " << runs[i].radius;
     for (std::size_t c = 0; c < d.size(); ++c) {
       if (!single)
-        std::cout << (c % 3 == 0 ? "\n    type " + selections[c].type + ":" : ",") << " "
-                  << degree_words(selections[c].dim);
+        std::cout << (c % 3 == 0 ? "\n    " + type_title(selections[c].type, runs[i].input) + ":" : ",")
+                  << " " << degree_words(selections[c].dim);
       const std::size_t finite = d[c].points.finite.size(), essential = d[c].points.essential.size();
       std::cout << (single ? ", " : " ") << finite << " finite" << (single ? ", " : " + ") << essential
                 << " essential";
@@ -243,7 +260,7 @@ void compare_command(const CompareArguments& args) {
   }
   check_interrupted();
 
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings = comparability_warnings(names, runs, selections);
   if (const std::string mixed = mixed_dimensions_note(names, dimensions); !mixed.empty())
     warnings.push_back(mixed);
   for (const Comparison& c : comparisons)

@@ -1,6 +1,7 @@
 #include "comparison.h"
 
 #include "cell_type.h"
+#include "diagram_export.h"
 #include "diagram_selection.h"
 
 #include "medusa/core/error.h"
@@ -75,10 +76,64 @@ std::vector<ComparedDiagram> compared_diagrams(const std::string& store,
   return result;
 }
 
-std::vector<int> store_types(const std::string& store) {
+RunFacts read_run_facts(const std::string& store) {
   medusa::StoreReadOptions cells_only;
   cells_only.events = false;
-  return distinct_types(vertex_types(medusa::read_store(store, cells_only)));
+  medusa::Medusa m = medusa::read_store(store, cells_only);
+  RunFacts facts;
+  facts.input = std::move(m.input);
+  facts.radius_value = m.run.radius;
+  facts.radius = m.run.radius_text.empty() ? format_time(m.run.radius) : m.run.radius_text;
+  return facts;
+}
+
+std::vector<std::string> comparability_warnings(const std::vector<std::string>& names,
+                                                const std::vector<RunFacts>& runs,
+                                                const std::vector<ComparisonSelection>& selections) {
+  std::vector<std::string> warnings;
+  std::vector<std::string> checked;
+  for (const ComparisonSelection& s : selections) {
+    // Only a type given by id can be matched to types of different names; a name is looked up in
+    // each run (resolve_cell_type).
+    if (s.type.empty() || s.type.find_first_not_of("0123456789") != std::string::npos ||
+        std::find(checked.begin(), checked.end(), s.type) != checked.end())
+      continue;
+    checked.push_back(s.type);
+    const auto id = static_cast<std::size_t>(std::stoi(s.type));
+    std::vector<std::string> named;
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      if (id < runs[i].input.type_names.size() && !runs[i].input.type_names[id].empty())
+        named.push_back(names[i] + " " + runs[i].input.type_names[id]);
+    bool differ = false;
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j) {
+        const auto& a = runs[i].input.type_names;
+        const auto& b = runs[j].input.type_names;
+        differ =
+            differ || (id < a.size() && id < b.size() && !a[id].empty() && !b[id].empty() && a[id] != b[id]);
+      }
+    if (differ) {
+      std::string list;
+      for (const std::string& n : named)
+        list += (list.empty() ? "" : ", ") + n;
+      warnings.push_back("type " + s.type + " has different names in the runs (" + list +
+                         "): types are matched by id; --type NAME matches them by name");
+    }
+  }
+  const auto [lo, hi] =
+      std::minmax_element(runs.begin(), runs.end(), [](const RunFacts& a, const RunFacts& b) {
+        return a.radius_value < b.radius_value;
+      });
+  if (lo->radius_value > 0 && hi->radius_value > 1.05 * lo->radius_value) {
+    std::string list;
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      list += (list.empty() ? "" : ", ") + names[i] + " " + runs[i].radius;
+    warnings.push_back(
+        "the runs were analysed at radii more than 5% apart (" + list +
+        "): their distances measure the radius as well as the sorting; `medusa run --radius R` "
+        "gives every run one radius");
+  }
+  return warnings;
 }
 
 std::vector<std::string> run_names(const std::vector<std::string>& stores) {

@@ -2,6 +2,7 @@
 // filtration direction), as points on the normalised time axis of docs/MATH.md §7.7, and the metric.
 #pragma once
 
+#include "medusa/kinetic/trajectories.h"
 #include "medusa/persistence/distance.h"
 #include "medusa/persistence/distance_matrix.h"
 #include "medusa/persistence/points.h"
@@ -35,8 +36,20 @@ ComparedDiagram compared_diagram(const std::string& store, const ComparisonSelec
 std::vector<ComparedDiagram> compared_diagrams(const std::string& store,
                                                const std::vector<ComparisonSelection>& selections);
 
-// The cell types (ids) that occur in the store.
-std::vector<int> store_types(const std::string& store);
+// What compare reads of each run before it computes anything: its cells (their types and the types'
+// names) and the radius it was analysed at.
+struct RunFacts {
+  kinetic::Trajectories input;
+  std::string radius; // as the store records it (the decimal text given, or the automatic radius)
+  double radius_value = 0;
+};
+RunFacts read_run_facts(const std::string& store);
+
+// Warnings about runs compared as if alike when they may not be: a type id compared by id that the
+// runs name differently (the runs' own names for the selections' ids), and radii more than 5% apart.
+std::vector<std::string> comparability_warnings(const std::vector<std::string>& names,
+                                                const std::vector<RunFacts>& runs,
+                                                const std::vector<ComparisonSelection>& selections);
 
 // Unique run names: file stems, or the paths as given when two stems coincide.
 std::vector<std::string> run_names(const std::vector<std::string>& stores);

@@ -65,7 +65,7 @@ def check_matrix(names, values, stores):
 def essential_counts(stdout):
     """Run name -> number of essential classes, from the per-run lines of `medusa compare`."""
     return {m.group(1): int(m.group(2))
-            for m in re.finditer(r"^  (\S+): MCS \S+ to \S+, \d+ finite, (\d+) essential$", stdout, re.M)}
+            for m in re.finditer(r"^  (\S+): MCS \S+ to \S+, radius \S+, \d+ finite, (\d+) essential$", stdout, re.M)}
 
 
 def check_compare(medusa, work, stores):
@@ -111,6 +111,43 @@ def check_compare(medusa, work, stores):
     names, values = read_matrix(prefix + ".distances.csv")
     assert values == [[0.0, 0.0], [0.0, 0.0]], values
     assert names == [stores[0], stores[0]], names
+
+
+def check_compare_warnings(medusa, work, cells_csv):
+    # The same run with its two type ids swapped (names kept with their cells), and once more at another
+    # radius: by name the swapped run is the same run (distance 0); by id, a warning names the clash.
+    with gzip.open(cells_csv, "rt") as f:
+        rows = list(csv.reader(f))
+    col = rows[0].index("type_id")
+    swap_csv = os.path.join(work, "swapped_types.csv")
+    with open(swap_csv, "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow(rows[0])
+        for r in rows[1:]:
+            r[col] = {"1": "2", "2": "1"}[r[col]]
+            out.writerow(r)
+    stores = {}
+    for name, source, radius in (("original", cells_csv, "3"), ("swapped", swap_csv, "3"), ("wider", cells_csv, "5")):
+        stores[name] = os.path.join(work, name + ".h5")
+        run([medusa, "run", "-q", "--force", source, "-o", stores[name], "--radius", radius], work)
+    by_name = run([medusa, "compare", stores["original"], stores["swapped"], "--type", "Condensing", "-o",
+                   os.path.join(work, "by_name")], work)
+    assert read_matrix(os.path.join(work, "by_name.distances.csv"))[1] == [[0.0, 0.0], [0.0, 0.0]]
+    assert "different names" not in by_name.stderr, by_name.stderr
+    by_id = run([medusa, "compare", stores["original"], stores["swapped"], "--type", "1", "-o",
+                 os.path.join(work, "by_id")], work)
+    assert read_matrix(os.path.join(work, "by_id.distances.csv"))[1][0][1] > 0
+    assert ("type 1 has different names in the runs (original Condensing, swapped NonCondensing): types are "
+            "matched by id; --type NAME matches them by name") in by_id.stderr, by_id.stderr
+    assert "radii" not in by_id.stderr, by_id.stderr
+    every = run([medusa, "compare", stores["original"], stores["swapped"], stores["wider"], "-o",
+                 os.path.join(work, "every")], work)
+    assert "  swapped: MCS 0 to 200, radius 3\n    type 1 (NonCondensing):" in every.stdout, every.stdout
+    assert "  wider: MCS 0 to 200, radius 5\n" in every.stdout, every.stdout
+    assert "radii more than 5% apart (original 3, swapped 3, wider 5)" in every.stderr, every.stderr
+    # A name one run lacks is refused before anything is printed.
+    wrong = run([medusa, "compare", stores["original"], stores["swapped"], "--type", "Light"], work, expect=3)
+    assert wrong.stdout == "" and "no cell type is named 'Light' in" in wrong.stderr, wrong.stderr
 
 
 def check_curves(medusa, work, store, cells):
@@ -377,6 +414,8 @@ def main():
     os.makedirs(work, exist_ok=True)
     if what == "compare":
         check_compare(medusa, work, sys.argv[4:])
+    elif what == "compare_warnings":
+        check_compare_warnings(medusa, work, sys.argv[4])
     elif what == "curves":
         check_curves(medusa, work, sys.argv[4], sys.argv[5])
     elif what == "at":
