@@ -5,8 +5,11 @@
 #include "medusa/core/error.h"
 
 #include <array>
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <unistd.h>
 
@@ -40,13 +43,26 @@ void refuse_to_replace_hdf5(const std::string& path) {
                      " is an HDF5 file (a medusa store?); it is not replaced: choose another name");
 }
 
+void check_output_folder(const std::string& path) {
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  std::error_code ec;
+  if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+    throw StoreError("output " + path + ": the folder " + folder.string() +
+                     (std::filesystem::exists(folder, ec) ? " is not a folder" : " does not exist"));
+}
+
+void check_output_path(const std::string& path) {
+  check_output_folder(path);
+  refuse_to_replace_hdf5(path);
+}
+
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
   refuse_to_replace_hdf5(path);
   const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
   try {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out)
-      throw StoreError("cannot create " + temporary);
+      throw StoreError("cannot create " + path + " (" + std::strerror(errno) + ")");
     write(out);
     out.flush();
     if (!out)

@@ -13,6 +13,12 @@ namespace medusa::cli {
 // write_file_atomically calls it again.
 void refuse_to_replace_hdf5(const std::string& path);
 
+// Before a command's work, what it would otherwise find only when writing: StoreError when the folder
+// `path` is to be written in does not exist (or is not a folder).
+void check_output_folder(const std::string& path);
+// check_output_folder, then refuse_to_replace_hdf5.
+void check_output_path(const std::string& path);
+
 // Calls `write` on a stream to `<path>.tmp-<pid>`, then renames it to `path`. On any failure the
 // temporary file is removed and StoreError names `path`; nothing is written over an HDF5 file
 // (refuse_to_replace_hdf5).

@@ -230,7 +230,7 @@ void at_command(AtArguments& args) {
     throw CLI::ValidationError("--output",
                                "--class draws classes in a .vtk file, not in '" + args.output + "'");
   if (args.times.empty())
-    refuse_to_replace_hdf5(args.output);
+    check_output_path(args.output);
   const medusa::Medusa medusa = medusa::read_store(args.store);
   check_interrupted();
   if (args.type_text)

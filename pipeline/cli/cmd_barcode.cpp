@@ -26,7 +26,7 @@ struct BarcodeArguments {
 void barcode_command(const BarcodeArguments& args) {
   const bool to_stdout = args.output.empty() || args.output == "-";
   if (!to_stdout)
-    refuse_to_replace_hdf5(args.output);
+    check_output_path(args.output);
   const medusa::Medusa medusa = medusa::read_store(args.store);
   check_interrupted();
   const std::vector<persistence::Diagram> diagrams = selected_diagrams(medusa, args.selection, args.store);

@@ -177,7 +177,7 @@ void write_classes_json(std::ostream& out, const medusa::Medusa& medusa,
 void classes_command(const ClassesArguments& args) {
   const bool to_stdout = args.output.empty() || args.output == "-";
   if (!to_stdout)
-    refuse_to_replace_hdf5(args.output);
+    check_output_path(args.output);
   medusa::StoreReadOptions cells_only;
   cells_only.events = false;
   const medusa::Medusa medusa = medusa::read_store(args.store, cells_only);

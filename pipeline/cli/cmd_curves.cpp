@@ -117,6 +117,7 @@ std::string type_heading(const medusa::Medusa& medusa, const std::string& label)
 }
 
 void curves_command(const CurvesArguments& args) {
+  check_output_folder((args.prefix.empty() ? store_stem(args.store) : args.prefix) + ".curves.csv");
   const medusa::Medusa medusa = medusa::read_store(args.store);
   check_interrupted();
   std::vector<TypeCurves> all;

@@ -28,7 +28,8 @@ void add_diagrams_command(CLI::App& app) {
   diagrams->callback([args] {
     const medusa::Medusa medusa = medusa::read_store(args->store);
     check_interrupted();
-    const std::vector<persistence::Diagram> diagrams = selected_diagrams(medusa, args->selection, args->store);
+    const std::vector<persistence::Diagram> diagrams =
+        selected_diagrams(medusa, args->selection, args->store);
     // Nothing on stdout before the last check: an interrupted command prints no partial listing.
     check_interrupted();
     write_pairs_text(std::cout, diagrams);

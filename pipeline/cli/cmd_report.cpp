@@ -79,7 +79,7 @@ std::vector<ReportFigure> comparison_figures(const std::vector<ReportRun>& runs)
 }
 
 void report_command(const ReportArguments& args) {
-  refuse_to_replace_hdf5(args.output);
+  check_output_path(args.output);
   const std::vector<std::string> names = run_names(args.stores);
   const unsigned threads = worker_threads(args.threads);
   std::vector<ReportRun> runs;

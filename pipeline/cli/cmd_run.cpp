@@ -1,5 +1,6 @@
 // `medusa run`: CC3D run -> trajectories -> kinetic alpha complex -> medusa store -> diagrams
 // (docs/MATH.md §1-§7), with a plain-words summary on stdout.
+#include "atomic_file.h"
 #include "commands.h"
 #include "diagram_export.h"
 #include "diagram_selection.h"
@@ -408,6 +409,7 @@ void run_command(const RunArguments& args, const std::string& command_line) {
 
   // Every output is checked and the store's lock taken before anything is read or written.
   const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
+  check_output_folder(output);
   // A store holds a run's whole analysis: replacing one is asked for, never a side effect.
   if (!args.force && fs::exists(output, ec))
     throw CLI::ParseError("store " + output + " exists; pass --force to replace it", 2);

@@ -89,6 +89,7 @@ std::string radius_warning(const RadiusResult& r) {
 }
 
 void sweep_command(const SweepArguments& args) {
+  check_output_folder((args.prefix.empty() ? input_stem(args.input) : args.prefix) + ".crocker.csv");
   const std::vector<std::string> radii = all_radii(args);
   if (radii.empty())
     throw CLI::RequiredError("--radii A:B:STEP or --radius R");
