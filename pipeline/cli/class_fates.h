@@ -21,7 +21,8 @@ struct ClusterFates {
   // Clusters of the first frame already joined in M_{<= t_0} (through cells that left at t_0): at_first
   // minus the forward H0 classes alive after the first frame's batch.
   std::size_t joined_at_first = 0;
-  // Clusters of the end that touched another one earlier and separated again: b0 of K(t_end-) minus
+  // Clusters of the end that were one cluster with another earlier (they joined, or were one from the
+  // start) and split off: b0 of K(t_end-) minus
   // the rank of H0(K(t_end-)) -> H0(M) (reverse essential H0 classes born at t_end).
   std::size_t separated_again = 0;
 };

@@ -47,7 +47,7 @@ void describe_clusters(std::ostream& out, const ClusterFates& c, double t0, doub
         << " already joined to another through cells present at that frame only)\n";
   if (c.separated_again > 0)
     out << "    (" << c.separated_again << " of the clusters at MCS " << mcs(t_end) << " had"
-        << " touched another earlier and separated again)\n";
+        << " been one cluster with another earlier, by a join or from the start, and split off)\n";
 }
 
 void describe_holes(std::ostream& out, const persistence::HoleFates& h, std::size_t open_at_end,
