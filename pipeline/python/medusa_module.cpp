@@ -8,6 +8,8 @@
 #include "ring_fate.h"
 
 #include "medusa/core/error.h"
+#include "medusa/medusa/complex_index.h"
+#include "medusa/medusa/signatures.h"
 #include "medusa/persistence/filtration.h"
 #include "medusa/persistence/points.h"
 #include "medusa/persistence/summaries.h"
@@ -153,6 +155,42 @@ py::tuple betti_curves(StoreView& store, const py::object& type, const std::stri
   return py::make_tuple(py::array_t<double>(at.size(), at.data()), curves);
 }
 
+// The Betti numbers of the time slices K_t at the frames (docs/MATH.md §6.6; K(t_end-) at the last), as
+// `medusa curves --frames-only` gives them: the clusters, loops and cavities a picture of frame k shows.
+// Not the Betti curves of the time filtration (betti_curves), which count classes of M_{<= t}.
+py::tuple slices(StoreView& store, const py::object& type) {
+  const int id = type_of(store, type);
+  const std::optional<int> only = id == persistence::all_types ? std::nullopt : std::optional<int>(id);
+  const medusa::Medusa& m = store.medusa();
+  const std::size_t frames = m.input.frames();
+  std::vector<medusa::Signature> at(frames);
+  {
+    py::gil_scoped_release release;
+    for (std::size_t k = 0; k < frames; ++k)
+      at[k] = medusa::signature_of(m, medusa::cells_at_frame(m, k, only));
+  }
+  constexpr std::size_t degrees = 4;
+  py::array_t<std::int64_t> betti({degrees, frames});
+  auto view = betti.mutable_unchecked<2>();
+  for (std::size_t k = 0; k < degrees; ++k)
+    for (std::size_t i = 0; i < frames; ++i)
+      view(static_cast<py::ssize_t>(k), static_cast<py::ssize_t>(i)) =
+          static_cast<std::int64_t>(at[i].betti[k]);
+  std::vector<double> times;
+  for (std::int64_t t : m.input.frame_times)
+    times.push_back(static_cast<double>(t));
+  return py::make_tuple(py::array_t<double>(times.size(), times.data()), betti);
+}
+
+// The run's cell types with their names ("" where the run names none).
+py::dict type_names(const StoreView& store) {
+  py::dict out;
+  const auto& names = store.medusa().input.type_names;
+  for (int t : store.types())
+    out[py::int_(t)] = static_cast<std::size_t>(t) < names.size() ? names[static_cast<std::size_t>(t)] : "";
+  return out;
+}
+
 std::shared_ptr<StoreView> open_store(const std::string& path) {
   py::gil_scoped_release release;
   return std::make_shared<StoreView>(path);
@@ -241,6 +279,9 @@ PYBIND11_MODULE(medusa, m) {
   py::class_<StoreView, std::shared_ptr<StoreView>>(m, "Store", "A medusa store (run.h5) read into memory")
       .def_property_readonly("path", &StoreView::path)
       .def_property_readonly("types", &StoreView::types, "the cell types of the run")
+      .def_property_readonly("type_names", &type_names,
+                             "the cell types of the run with their names, {1: 'Condensing', ...} (\"\" where "
+                             "the run names none), as `medusa info` lists them")
       .def_property_readonly(
           "frame_times", [](const StoreView& s) { return s.medusa().input.frame_times; },
           "the frame times (MCS)")
@@ -271,10 +312,17 @@ PYBIND11_MODULE(medusa, m) {
           py::arg("t"), py::arg("type") = py::none(),
           "The alpha complex K(t+) as a list of simplices, each a sorted list of CC3D cell ids; with type "
           "(an id or name), of that cell type's subcomplex")
-      .def("betti_curves", &betti_curves, py::arg("type") = py::none(), py::arg("filtration") = "forward",
-           py::arg("times") = py::none(),
-           "(times, curves): curves[k][i] = number of degree-k classes alive at times[i] in the filtration "
-           "(docs/MATH.md §7.8), at the frame times by default");
+      .def(
+          "betti_curves", &betti_curves, py::arg("type") = py::none(), py::arg("filtration") = "forward",
+          py::arg("times") = py::none(),
+          "(times, curves): curves[k][i] = number of degree-k classes alive at times[i] in the filtration "
+          "(docs/MATH.md §7.8), at the frame times by default. These count classes of the time filtration "
+          "M_{<= t} (a cluster that split off later is still one class); the clusters, loops and cavities of "
+          "the complex K_t at each frame, as `medusa curves` counts them, are slices()")
+      .def("slices", &slices, py::arg("type") = py::none(),
+           "(times, betti): betti[k][i] = b_k of the complex K_t at frame i (docs/MATH.md §6.6; K(t_end-) at "
+           "the last frame), the numbers of clusters (k=0), loops (1) and cavities (2) of `medusa curves "
+           "--frames-only`, of the whole complex or of one cell type (id or name)");
 
   m.def("open", &open_store, py::arg("path"), "Open a store written by `medusa run` or medusa.run");
   m.def(

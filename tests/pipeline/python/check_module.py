@@ -105,6 +105,7 @@ def check_type_names(binary, store, s):
     info = subprocess.run([binary, "info", store], capture_output=True, text=True, check=True).stdout
     named = dict((name, int(i)) for i, name in re.findall(r"(\d+) \((\w+)\)", info.split("cell types:")[1].split("\n")[0]))
     assert named, info
+    assert s.type_names == {i: name for name, i in named.items()}, s.type_names
     t_mid = (s.frame_times[0] + s.frame_times[-1]) / 2
     for name, i in named.items():
         assert np.array_equal(s.diagrams(type=name, layout="giotto"), s.diagrams(type=i, layout="giotto")), name
@@ -118,6 +119,27 @@ def check_type_names(binary, store, s):
     print("types by name:", named)
 
 
+def check_slices(binary, store, s, work):
+    # slices(): the Betti numbers of K_t at the frames, as `medusa curves --frames-only` writes them.
+    prefix = os.path.join(work, "frames")
+    subprocess.run([binary, "curves", store, "--frames-only", "-o", prefix], capture_output=True, check=True)
+    with open(prefix + ".curves.csv") as f:
+        rows = list(csv.DictReader(f))
+    checked = 0
+    for t in [None] + list(s.types):
+        times, betti = s.slices(type=t)
+        label = "all" if t is None else str(t)
+        expected = [r for r in rows if r["type"] == label]
+        assert [float(r["time"]) for r in expected] == list(times), (label, times)
+        for k in range(3):
+            assert [int(r["b%d" % k]) for r in expected] == list(betti[k]), (label, k, betti[k])
+        checked += len(expected)
+    assert checked > 0
+    name = s.type_names[s.types[0]]
+    assert np.array_equal(s.slices(type=name)[1], s.slices(type=s.types[0])[1])
+    print(f"slices: {checked} rows of medusa curves --frames-only")
+
+
 def main():
     binary, store, run_input, radius, work = sys.argv[1:6]
     os.makedirs(work, exist_ok=True)
@@ -127,6 +149,7 @@ def main():
     check_complex(binary, store, s, work)
     check_betti(s)
     check_type_names(binary, store, s)
+    check_slices(binary, store, s, work)
     try:
         s.K_at(-1.0)
         raise AssertionError("K_at before the run did not raise")
