@@ -232,7 +232,8 @@ public:
 
 std::shared_ptr<StoreView> run(const std::string& input, const py::object& radius, const std::string& output,
                                const std::string& source, bool snap, unsigned threads, bool force,
-                               bool shorten_representatives, bool periodic_as_open, bool round_csv) {
+                               bool shorten_representatives, bool periodic_as_open, bool round_csv,
+                               bool skip_unreadable_frames) {
   RunRequest request;
   request.input = input;
   request.radius =
@@ -245,6 +246,7 @@ std::shared_ptr<StoreView> run(const std::string& input, const py::object& radiu
   request.shorten_representatives = shorten_representatives;
   request.periodic_as_open = periodic_as_open;
   request.round_csv = round_csv;
+  request.skip_unreadable_frames = skip_unreadable_frames;
   std::string path;
   {
     const SignalHook hook;
@@ -325,14 +327,16 @@ PYBIND11_MODULE(medusa, m) {
            "--frames-only`, of the whole complex or of one cell type (id or name)");
 
   m.def("open", &open_store, py::arg("path"), "Open a store written by `medusa run` or medusa.run");
-  m.def(
-      "run", &run, py::arg("input"), py::arg("radius") = "auto", py::arg("output") = "",
-      py::arg("source") = "", py::arg("snap") = false, py::arg("threads") = 0, py::arg("force") = false,
-      py::arg("shorten_representatives") = false, py::arg("periodic_as_open") = false,
-      py::arg("round_csv") = false,
-      "Run the pipeline of `medusa run` in this process (the GIL is released) on a CC3D output folder "
-      "or cells.csv[.gz], write the store (default <input name>.h5; an existing one only with force=True) "
-      "and return it opened. Ctrl-C stops it with KeyboardInterrupt and leaves no store. A periodic run "
-      "is analysed on the torus (docs/MATH.md §8). shorten_representatives, periodic_as_open, round_csv: as "
-      "`medusa run --shorten-representatives` (docs/MATH.md §7.13) and `--periodic-as-open`.");
+  m.def("run", &run, py::arg("input"), py::arg("radius") = "auto", py::arg("output") = "",
+        py::arg("source") = "", py::arg("snap") = true, py::arg("threads") = 0, py::arg("force") = false,
+        py::arg("shorten_representatives") = false, py::arg("periodic_as_open") = false,
+        py::arg("round_csv") = false, py::arg("skip_unreadable_frames") = false,
+        "Run the pipeline of `medusa run` in this process (the GIL is released) on a CC3D output folder "
+        "or cells.csv[.gz], write the store (default <input name>.h5; an existing one only with force=True) "
+        "and return it opened. Ctrl-C stops it with KeyboardInterrupt and leaves no store. A periodic run "
+        "is analysed on the torus (docs/MATH.md §8). snap=False refuses VTK centroids off the grid, as "
+        "`--exact-vtk` (by default they are snapped and that is recorded, as by `medusa run`); "
+        "shorten_representatives, periodic_as_open, round_csv, skip_unreadable_frames: as `medusa run "
+        "--shorten-representatives` (docs/MATH.md §7.13), `--periodic-as-open`, `--round-csv` and "
+        "`--skip-unreadable-frames`.");
 }

@@ -37,6 +37,9 @@ std::string run_pipeline(const RunRequest& request, const std::string& command_l
   options.source = cli::choose_source(request.input, request.source);
   options.snap = request.snap;
   options.round_csv = request.round_csv;
+  options.skip_unreadable_frames = request.skip_unreadable_frames;
+  options.spellings = {"round_csv=True", "snap=False", "periodic_as_open=True",
+                       "skip_unreadable_frames=True"};
   options.allow_periodic_as_open = request.periodic_as_open;
   options.read_periodic = !request.periodic_as_open;
   io::RunData data = io::read_run(request.input, options);

@@ -8,16 +8,17 @@
 namespace medusa::python {
 
 struct RunRequest {
-  std::string input;                    // CC3D output folder or cells.csv[.gz]
-  std::string radius = "auto";          // decimal, or "auto": the equivalent radius of the median cell volume
-  std::string output;                   // the store to write (default: <input name>.h5 in the working folder)
-  std::string source;                   // "", "csv" or "vtk", as `medusa run --source`
-  bool snap = false;                    // as `medusa run --snap`
-  unsigned threads = 0;                 // 0: one per hardware thread
-  bool force = false;                   // replace an existing store (as `medusa run --force`)
+  std::string input;           // CC3D output folder or cells.csv[.gz]
+  std::string radius = "auto"; // decimal, or "auto": the equivalent radius of the median cell volume
+  std::string output;          // the store to write (default: <input name>.h5 in the working folder)
+  std::string source;          // "", "csv" or "vtk", as `medusa run --source`
+  bool snap = true;            // VTK centroids snapped to the grid, as `medusa run`; false: --exact-vtk
+  unsigned threads = 0;        // 0: one per hardware thread
+  bool force = false;          // replace an existing store (as `medusa run --force`)
   bool shorten_representatives = false; // as `medusa run --shorten-representatives`
   bool periodic_as_open = false;        // as `medusa run --periodic-as-open`
   bool round_csv = false;               // as `medusa run --round-csv`
+  bool skip_unreadable_frames = false;  // as `medusa run --skip-unreadable-frames`
 };
 
 // Runs the pipeline and returns the path of the complete store. A periodic run is analysed on the torus

@@ -120,8 +120,8 @@ CsvContents read_csv(const std::string& path, const CsvOptions& options) {
       const GridDecimal x = read_grid_decimal(f[col_xyz[a]], options.scale, options.round);
       if (x.problem == GridDecimal::Problem::too_many_decimals)
         throw InputError(cell + ": column " + column_names[a] + ": " +
-                         grid_decimal_problem(x, f[col_xyz[a]], options.scale) +
-                         "; --round-csv rounds the centres to the grid (recorded in the store)");
+                         grid_decimal_problem(x, f[col_xyz[a]], options.scale) + "; " + options.round_option +
+                         " rounds the centres to the grid (recorded in the store)");
       if (x.problem != GridDecimal::Problem::none)
         throw InputError(cell + ": column " + column_names[a] + ": " +
                          grid_decimal_problem(x, f[col_xyz[a]], options.scale));

@@ -70,8 +70,8 @@ std::vector<std::string> list_snapshots(const fs::path& folder, const RunOptions
       continue;
     }
     if (!options.skip_unreadable_frames)
-      throw InputError(entry.path().string() + ": snapshot " + problem +
-                       " (rerun with --skip-unreadable-frames to leave it out)");
+      throw InputError(entry.path().string() + ": snapshot " + problem + " (rerun with " +
+                       options.spellings.skip_unreadable_frames + " to leave it out)");
     warnings.push_back(entry.path().string() + ": snapshot " + problem + "; left out");
   }
   return vtks;
@@ -97,8 +97,8 @@ void check_series(const std::vector<std::pair<std::int64_t, std::string>>& by_mc
         " is missing: the series goes from " + fs::path(by_mcs[k - 1].second).filename().string() + " to " +
         fs::path(by_mcs[k].second).filename().string() + ", every " + std::to_string(step) + " MCS elsewhere";
     if (!options.skip_unreadable_frames)
-      throw InputError(fs::path(by_mcs[k].second).parent_path().string() + ": " + what +
-                       " (rerun with --skip-unreadable-frames to go on without it)");
+      throw InputError(fs::path(by_mcs[k].second).parent_path().string() + ": " + what + " (rerun with " +
+                       options.spellings.skip_unreadable_frames + " to go on without it)");
     warnings.push_back(fs::path(by_mcs[k].second).parent_path().string() + ": " + what);
   }
 }
@@ -112,7 +112,8 @@ void check_periodic(const std::optional<Cc3dSimulation>& sim, const RunOptions& 
     return;
   if (!options.allow_periodic_as_open)
     throw InputError(sim->path + ": the run is periodic along " + axes +
-                     "; medusa needs open boundaries (rerun with --periodic-as-open to treat them as open)");
+                     "; medusa needs open boundaries (rerun with " + options.spellings.periodic_as_open +
+                     " to treat them as open)");
   run.warnings.push_back("periodic boundaries along " + axes + " (" + sim->path +
                          ") treated as open: " + consequence);
 }
@@ -272,8 +273,9 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
       } else {
         throw InputError(file + ": cell " + std::to_string(c.id) + ": its voxel centroid (" +
                          std::to_string(c.voxels) + " voxels) is not on the grid of scale " +
-                         std::to_string(options.scale) +
-                         " and exact VTK positions were asked for (--exact-vtk); without it centroids are "
+                         std::to_string(options.scale) + " and exact VTK positions were asked for (" +
+                         options.spellings.exact_vtk +
+                         "); without it centroids are "
                          "snapped to the nearest grid point (docs/MATH.md §1.3)");
       }
       samples.push_back(s);
@@ -301,7 +303,8 @@ RunData read_csv_run(const std::string& path, const RunOptions& options,
   run.simulation = simulation;
   run.position_convention = "csv-centres";
   check_periodic(simulation, options, run, as_open_consequence);
-  CsvContents csv = read_csv(path, CsvOptions{options.csv_columns, options.scale, options.round_csv});
+  CsvContents csv = read_csv(
+      path, CsvOptions{options.csv_columns, options.scale, options.round_csv, options.spellings.round_csv});
   run.sources.push_back(path);
   run.snap = csv.rounding;
   if (options.round_csv)

@@ -140,6 +140,33 @@ def check_slices(binary, store, s, work):
     print(f"slices: {checked} rows of medusa curves --frames-only")
 
 
+def check_run_options(binary, work):
+    # A VTK folder is read as `medusa run` reads it, snapping off-grid centroids: the same diagrams.
+    folder = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data", "cc3d", "nosorting_3d")
+    cli_store = os.path.join(work, "nosorting_cli.h5")
+    subprocess.run([binary, "run", "--force", "-q", "--source", "vtk", "--threads", "1", folder, "-o", cli_store],
+                   check=True)
+    ran = medusa.run(folder, source="vtk", output=os.path.join(work, "nosorting_py.h5"), force=True, threads=1)
+    cli_view = medusa.open(cli_store)
+    for t in [None] + list(cli_view.types):
+        assert np.array_equal(ran.diagrams(type=t, layout="giotto"), cli_view.diagrams(type=t, layout="giotto")), t
+    # A refusal names medusa.run's keyword arguments, not the command line's flags.
+    for kwargs, csv_text, wanted in (
+            ({"source": "vtk", "snap": False}, None, "(snap=False)"),
+            ({"radius": 3}, "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n0,1,1,0.1234567,0,0\n", "round_csv=True rounds")):
+        source = folder
+        if csv_text is not None:
+            source = os.path.join(work, "seven_decimals.csv")
+            with open(source, "w") as f:
+                f.write(csv_text)
+        try:
+            medusa.run(source, output=os.path.join(work, "refused.h5"), force=True, threads=1, **kwargs)
+            raise AssertionError(f"medusa.run{kwargs} was not refused")
+        except medusa.Error as e:
+            assert wanted in str(e) and " --" not in str(e), e
+    print("medusa.run: VTK snapped as by medusa run; refusals name keyword arguments")
+
+
 def main():
     binary, store, run_input, radius, work = sys.argv[1:6]
     os.makedirs(work, exist_ok=True)
@@ -150,6 +177,7 @@ def main():
     check_betti(s)
     check_type_names(binary, store, s)
     check_slices(binary, store, s, work)
+    check_run_options(binary, work)
     try:
         s.K_at(-1.0)
         raise AssertionError("K_at before the run did not raise")

@@ -29,6 +29,7 @@ struct CsvOptions {
   // Centres with more decimals than the grid holds are rounded to it, ties to even (policy R,
   // docs/MATH.md §1.2) and counted in CsvContents::rounding; otherwise they are InputErrors.
   bool round = false;
+  std::string round_option = "--round-csv"; // named where a centre is refused for its decimals
 };
 
 struct CsvContents {

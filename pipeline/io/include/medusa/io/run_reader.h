@@ -38,6 +38,14 @@ struct RunOptions {
   // series, with a warning each (CLI: --skip-unreadable-frames); otherwise each is an InputError.
   bool skip_unreadable_frames = false;
   CsvColumns csv_columns;
+  // How the user turns on what a refusal points to: the command line's flags by default, medusa.run's
+  // keyword arguments from Python.
+  struct Spellings {
+    std::string round_csv = "--round-csv";
+    std::string exact_vtk = "--exact-vtk";
+    std::string periodic_as_open = "--periodic-as-open";
+    std::string skip_unreadable_frames = "--skip-unreadable-frames";
+  } spellings;
   // Lattice z extent if the caller knows it; otherwise taken from Simulation/*.xml or the VTK header.
   // z extent 1 makes the run planar (dimension 2; z kept).
   std::optional<std::int64_t> z_extent;
