@@ -152,7 +152,10 @@ void curves_command(const CurvesArguments& args) {
   std::cout << "; clusters, loops and cavities are its Betti numbers b0, b1, b2 (the columns of the CSV); "
                "first and last:\n";
   for (const TypeCurves& c : all) {
-    std::cout << (c.label == "all" ? std::string("all cells") : type_heading(medusa, c.label)) << ":\n  ";
+    // A type's contacts are those among its own cells (its subcomplex, docs/MATH.md §7.4).
+    std::cout << (c.label == "all" ? std::string("all cells")
+                                   : type_heading(medusa, c.label) + ", among its cells")
+              << ":\n  ";
     describe(std::cout, c.samples.front());
     std::cout << "\n  ";
     describe(std::cout, c.samples.back());
@@ -172,9 +175,10 @@ void curves_command(const CurvesArguments& args) {
          "of its own type; clusters and the largest one's cells; README):\n";
   for (std::size_t g = 0; g < sorting.front().measures.size(); ++g) {
     const medusa::SortingMeasures &a = sorting.front().measures[g], &b = sorting.back().measures[g];
-    std::cout << "  " << (a.type ? "type " + std::to_string(*a.type) : std::string("all cells")) << ": "
-              << contact_fractions(a, b, " -> ") << ", clusters " << a.clusters << " -> " << b.clusters
-              << ", largest cluster " << a.largest_cluster << " -> " << b.largest_cluster << " cells\n";
+    std::cout << "  " << (a.type ? type_heading(medusa, std::to_string(*a.type)) : std::string("all cells"))
+              << ": " << contact_fractions(a, b, " -> ") << ", clusters " << a.clusters << " -> "
+              << b.clusters << ", largest cluster " << a.largest_cluster << " -> " << b.largest_cluster
+              << " cells\n";
   }
   // All four files or none: an interrupt between two writes removes those already written.
   std::vector<std::string> written;

@@ -161,7 +161,7 @@ def check_answer(driver, failures):
         # values checked against counts on `medusa at` exports by check_sorting_measures.py); in a sorting
         # run the condensing type's heterotypic contacts fall.
         printed = {m.group(1): m.group(2) for m in re.finditer(
-            r"^  (?:type (\d+)|all cells): (heterotypic contacts \S+ -> \S+, same-type neighbours \S+ -> \S+),",
+            r"^  (?:type (\d+)(?: \([^)]*\))?|all cells): (heterotypic contacts \S+ -> \S+, same-type neighbours \S+ -> \S+),",
             call("curves", f"{name}.h5", "-o", f"curves_{name}"), re.M) if m.group(1)}
         for label in ("1", "2"):
             shown = driver.find_element(
