@@ -262,6 +262,10 @@ void compare_command(const CompareArguments& args) {
   check_interrupted();
 
   std::vector<std::string> warnings = comparability_warnings(names, runs, selections);
+  for (std::size_t i = 0; i < args.stores.size(); ++i)
+    if (std::find(args.stores.begin(), args.stores.begin() + static_cast<std::ptrdiff_t>(i),
+                  args.stores[i]) != args.stores.begin() + static_cast<std::ptrdiff_t>(i))
+      warnings.push_back(args.stores[i] + " is given twice: its distance to itself is 0");
   if (const std::string mixed = mixed_dimensions_note(names, dimensions); !mixed.empty())
     warnings.push_back(mixed);
   for (const Comparison& c : comparisons)

@@ -11,9 +11,18 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 
 namespace medusa::python {
 namespace {
+
+// The shortest decimal that reads back as t: 1000, not 1000.000000.
+std::string shortest(double t) {
+  std::array<char, 32> buffer{};
+  const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), t).ptr;
+  return std::string(buffer.data(), end);
+}
 
 std::pair<int, int> key_of(persistence::Direction direction, int cell_type) {
   return {static_cast<int>(direction), cell_type};
@@ -97,7 +106,7 @@ std::vector<persistence::ClassRecord> StoreView::classes(persistence::Direction 
 std::vector<std::vector<std::int64_t>> StoreView::complex_at(double t, std::optional<int> type) const {
   const auto& frames = medusa_.input.frame_times;
   if (frames.empty() || t < static_cast<double>(frames.front()) || t > static_cast<double>(frames.back()))
-    throw InputError("time " + std::to_string(t) + " is outside the run " + path_ + " (MCS " +
+    throw InputError("time " + shortest(t) + " is outside the run " + path_ + " (MCS " +
                      (frames.empty()
                           ? std::string("none")
                           : std::to_string(frames.front()) + " to " + std::to_string(frames.back())) +

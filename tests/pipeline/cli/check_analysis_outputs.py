@@ -107,7 +107,8 @@ def check_compare(medusa, work, stores):
     assert "type condensing" in result.stdout, result.stdout
     # Comparing a run with itself: distance 0 everywhere.
     prefix = os.path.join(work, "cmp_self")
-    run([medusa, "compare", stores[0], stores[0], "--type", "1", "-o", prefix], work)
+    itself = run([medusa, "compare", stores[0], stores[0], "--type", "1", "-o", prefix], work)
+    assert f"warning: {stores[0]} is given twice: its distance to itself is 0" in itself.stderr, itself.stderr
     names, values = read_matrix(prefix + ".distances.csv")
     assert values == [[0.0, 0.0], [0.0, 0.0]], values
     assert names == [stores[0], stores[0]], names

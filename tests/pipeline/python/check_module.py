@@ -182,7 +182,7 @@ def main():
         s.K_at(-1.0)
         raise AssertionError("K_at before the run did not raise")
     except medusa.Error as e:
-        assert "outside the run" in str(e), e
+        assert str(e).startswith("time -1 is outside the run"), e
     ran = medusa.run(run_input, radius=radius, output=os.path.join(work, "run.h5"), force=True)
     for direction in ("forward", "reverse"):
         for t in [None] + list(s.types):
