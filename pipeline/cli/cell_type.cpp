@@ -22,11 +22,6 @@ bool same_ignoring_case(const std::string& a, const std::string& b) {
          });
 }
 
-std::string name_of(const kinetic::Trajectories& input, int type) {
-  const auto i = static_cast<std::size_t>(type);
-  return type >= 0 && i < input.type_names.size() ? input.type_names[i] : std::string();
-}
-
 // The id whose name is `text`: an exact match first, then the one case-blind match, if unique.
 std::optional<int> id_named(const std::string& text, const kinetic::Trajectories& input) {
   const auto& names = input.type_names;
@@ -44,6 +39,16 @@ std::optional<int> id_named(const std::string& text, const kinetic::Trajectories
 
 } // namespace
 
+std::string cell_type_name(const kinetic::Trajectories& input, int type) {
+  const auto i = static_cast<std::size_t>(type);
+  return type >= 0 && i < input.type_names.size() ? input.type_names[i] : std::string();
+}
+
+std::string cell_type_title(const kinetic::Trajectories& input, int type) {
+  const std::string name = cell_type_name(input, type);
+  return "type " + std::to_string(type) + (name.empty() ? "" : " (" + name + ")");
+}
+
 std::vector<int> cell_types(const kinetic::Trajectories& input) {
   std::vector<int> types;
   types.reserve(input.cells.size());
@@ -58,7 +63,7 @@ std::string cell_type_list(const kinetic::Trajectories& input) {
   std::string out;
   for (int type : cell_types(input)) {
     out += (out.empty() ? "" : ", ") + std::to_string(type);
-    if (const std::string name = name_of(input, type); !name.empty())
+    if (const std::string name = cell_type_name(input, type); !name.empty())
       out += " (" + name + ")";
   }
   return out.empty() ? "none" : out;
@@ -75,7 +80,7 @@ int resolve_cell_type(const std::string& text, const kinetic::Trajectories& inpu
                      cell_type_list(input));
   const std::vector<int> present = cell_types(input);
   if (!std::binary_search(present.begin(), present.end(), *named)) {
-    const std::string name = name_of(input, *named);
+    const std::string name = cell_type_name(input, *named);
     throw InputError("cell type " + (id ? text : text + " (" + std::to_string(*named) + ")") +
                      (id && !name.empty() ? " (" + name + ")" : "") + " has no cells in " + source +
                      "; its cell types are " + cell_type_list(input));

@@ -19,6 +19,11 @@ std::vector<int> cell_types(const kinetic::Trajectories& input);
 int resolve_cell_type(const std::string& text, const kinetic::Trajectories& input, const std::string& source,
                       bool allow_all = true);
 
+// The run's name for a type ("" where it names none), and the type in words: "type 1 (Condensing)", or
+// "type 4" for a type without a name.
+std::string cell_type_name(const kinetic::Trajectories& input, int type);
+std::string cell_type_title(const kinetic::Trajectories& input, int type);
+
 // "1 (Condensing), 2 (NonCondensing)": the run's cell types with their names where it has them.
 std::string cell_type_list(const kinetic::Trajectories& input);
 

@@ -58,14 +58,6 @@ std::string degree_words(int dim) {
   }
 }
 
-// "type 1 (Light)" in a run that names type 1, else "type 1".
-std::string type_title(const std::string& type, const kinetic::Trajectories& input) {
-  const auto id = static_cast<std::size_t>(std::stoi(type));
-  return "type " + type +
-         (id < input.type_names.size() && !input.type_names[id].empty() ? " (" + input.type_names[id] + ")"
-                                                                        : "");
-}
-
 // A comparison for the terminal: "type 1 loops (H1)", "all cells' clusters (H0)".
 std::string words_of(const ComparisonSelection& s) {
   return (s.type == "all" ? std::string("all cells' ") : "type " + s.type + " ") + degree_words(s.dim);
@@ -238,7 +230,9 @@ void compare_command(const CompareArguments& args) {
               << short_number(d.front().t_end) << ", radius " << runs[i].radius;
     for (std::size_t c = 0; c < d.size(); ++c) {
       if (!single)
-        std::cout << (c % 3 == 0 ? "\n    " + type_title(selections[c].type, runs[i].input) + ":" : ",")
+        std::cout << (c % 3 == 0
+                          ? "\n    " + cell_type_title(runs[i].input, std::stoi(selections[c].type)) + ":"
+                          : ",")
                   << " " << degree_words(selections[c].dim);
       const std::size_t finite = d[c].points.finite.size(), essential = d[c].points.essential.size();
       std::cout << (single ? ", " : " ") << finite << " finite" << (single ? ", " : " + ") << essential
@@ -262,10 +256,6 @@ void compare_command(const CompareArguments& args) {
   check_interrupted();
 
   std::vector<std::string> warnings = comparability_warnings(names, runs, selections);
-  for (std::size_t i = 0; i < args.stores.size(); ++i)
-    if (std::find(args.stores.begin(), args.stores.begin() + static_cast<std::ptrdiff_t>(i),
-                  args.stores[i]) != args.stores.begin() + static_cast<std::ptrdiff_t>(i))
-      warnings.push_back(args.stores[i] + " is given twice: its distance to itself is 0");
   if (const std::string mixed = mixed_dimensions_note(names, dimensions); !mixed.empty())
     warnings.push_back(mixed);
   for (const Comparison& c : comparisons)

@@ -2,6 +2,7 @@
 // (docs/MATH.md §6.6, §6.8), for the whole complex and for each cell type's subcomplex (7.4), and the
 // classical sorting measures of the same slices (§6.9), as CSV and SVG.
 #include "atomic_file.h"
+#include "cell_type.h"
 #include "commands.h"
 #include "curve_plot.h"
 #include "diagram_export.h"
@@ -109,13 +110,6 @@ void describe(std::ostream& out, const medusa::SignatureSample& s) {
       << (g.betti[2] == 1 ? " cavity" : " cavities");
 }
 
-// "type 1 (Condensing)", as the summary of `medusa run` names a type.
-std::string type_heading(const medusa::Medusa& medusa, const std::string& label) {
-  const auto index = static_cast<std::size_t>(std::stoi(label));
-  const std::vector<std::string>& names = medusa.input.type_names;
-  return "type " + label + (index < names.size() && !names[index].empty() ? " (" + names[index] + ")" : "");
-}
-
 void curves_command(const CurvesArguments& args) {
   check_output_folder((args.prefix.empty() ? store_stem(args.store) : args.prefix) + ".curves.csv");
   const medusa::Medusa medusa = medusa::read_store(args.store);
@@ -154,7 +148,7 @@ void curves_command(const CurvesArguments& args) {
   for (const TypeCurves& c : all) {
     // A type's contacts are those among its own cells (its subcomplex, docs/MATH.md §7.4).
     std::cout << (c.label == "all" ? std::string("all cells")
-                                   : type_heading(medusa, c.label) + ", among its cells")
+                                   : cell_type_title(medusa.input, std::stoi(c.label)) + ", among its cells")
               << ":\n  ";
     describe(std::cout, c.samples.front());
     std::cout << "\n  ";
@@ -175,10 +169,9 @@ void curves_command(const CurvesArguments& args) {
          "of its own type; clusters and the largest one's cells; README):\n";
   for (std::size_t g = 0; g < sorting.front().measures.size(); ++g) {
     const medusa::SortingMeasures &a = sorting.front().measures[g], &b = sorting.back().measures[g];
-    std::cout << "  " << (a.type ? type_heading(medusa, std::to_string(*a.type)) : std::string("all cells"))
-              << ": " << contact_fractions(a, b, " -> ") << ", clusters " << a.clusters << " -> "
-              << b.clusters << ", largest cluster " << a.largest_cluster << " -> " << b.largest_cluster
-              << " cells\n";
+    std::cout << "  " << (a.type ? cell_type_title(medusa.input, *a.type) : std::string("all cells")) << ": "
+              << contact_fractions(a, b, " -> ") << ", clusters " << a.clusters << " -> " << b.clusters
+              << ", largest cluster " << a.largest_cluster << " -> " << b.largest_cluster << " cells\n";
   }
   // All four files or none: an interrupt between two writes removes those already written.
   std::vector<std::string> written;

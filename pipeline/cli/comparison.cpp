@@ -91,6 +91,11 @@ std::vector<std::string> comparability_warnings(const std::vector<std::string>& 
                                                 const std::vector<RunFacts>& runs,
                                                 const std::vector<ComparisonSelection>& selections) {
   std::vector<std::string> warnings;
+  // run_names keeps the paths as given when stems coincide, so a name repeats only for a path given twice.
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (std::find(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(i), names[i]) !=
+        names.begin() + static_cast<std::ptrdiff_t>(i))
+      warnings.push_back(names[i] + " is given twice: its distance to itself is 0");
   std::vector<std::string> checked;
   for (const ComparisonSelection& s : selections) {
     // Only a type given by id can be matched to types of different names; a name is looked up in
@@ -99,20 +104,14 @@ std::vector<std::string> comparability_warnings(const std::vector<std::string>& 
         std::find(checked.begin(), checked.end(), s.type) != checked.end())
       continue;
     checked.push_back(s.type);
-    const auto id = static_cast<std::size_t>(std::stoi(s.type));
-    std::vector<std::string> named;
+    std::vector<std::string> distinct, named;
     for (std::size_t i = 0; i < runs.size(); ++i)
-      if (id < runs[i].input.type_names.size() && !runs[i].input.type_names[id].empty())
-        named.push_back(names[i] + " " + runs[i].input.type_names[id]);
-    bool differ = false;
-    for (std::size_t i = 0; i < runs.size(); ++i)
-      for (std::size_t j = 0; j < i; ++j) {
-        const auto& a = runs[i].input.type_names;
-        const auto& b = runs[j].input.type_names;
-        differ =
-            differ || (id < a.size() && id < b.size() && !a[id].empty() && !b[id].empty() && a[id] != b[id]);
+      if (const std::string name = cell_type_name(runs[i].input, std::stoi(s.type)); !name.empty()) {
+        named.push_back(names[i] + " " + name);
+        if (std::find(distinct.begin(), distinct.end(), name) == distinct.end())
+          distinct.push_back(name);
       }
-    if (differ) {
+    if (distinct.size() > 1) {
       std::string list;
       for (const std::string& n : named)
         list += (list.empty() ? "" : ", ") + n;
