@@ -1,5 +1,6 @@
 #include "python_run.h"
 
+#include "atomic_file.h"
 #include "interrupt.h"
 #include "kinetic_stage.h"
 #include "run_input.h"
@@ -28,6 +29,7 @@ std::string run_pipeline(const RunRequest& request, const std::string& command_l
   if (!request.source.empty() && request.source != "csv" && request.source != "vtk")
     throw InputError("source '" + request.source + "' is neither 'csv' nor 'vtk'");
   const std::string output = request.output.empty() ? cli::input_stem(request.input) + ".h5" : request.output;
+  cli::check_output_folder(output);
   if (!request.force && fs::exists(output, ec))
     throw InputError("store " + output + " exists; pass force=True to replace it");
   // As in `medusa run`: the store is written under a temporary name, with a lock beside it, and

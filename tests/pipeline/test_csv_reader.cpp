@@ -58,6 +58,16 @@ TEST_CASE("A CSV without several required columns names them all and lists what 
           Contains("(required: mcs, cell_id, type_id, xCOM, yCOM, zCOM; optional: volume, type_name)"));
 }
 
+TEST_CASE("A planar CSV without a z column is told to add one of zeros", "[io][csv]") {
+  io::test::TempDir dir;
+  std::ofstream(dir.file("flat.csv")) << "mcs,cell_id,type_id,xCOM,yCOM\n0,1,1,1,2\n";
+  CHECK_THAT(io::test::input_error([&] { read_csv(dir.file("flat.csv")); }),
+             Contains("flat.csv:1: missing column 'zCOM'") &&
+                 Contains("for a planar run add a column zCOM of 0 on every row"));
+  std::ofstream(dir.file("two.csv")) << "mcs,cell_id,xCOM,yCOM\n0,1,1,2\n";
+  CHECK_THAT(io::test::input_error([&] { read_csv(dir.file("two.csv")); }), !Contains("planar run"));
+}
+
 TEST_CASE("A non-numeric CSV value names file, line, cell and column", "[io][csv]") {
   CHECK_THAT(csv_error("non_numeric.csv"),
              Contains("non_numeric.csv:3") && Contains("cell 2") && Contains("xCOM") && Contains("'abc'"));

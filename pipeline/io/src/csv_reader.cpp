@@ -76,11 +76,14 @@ CsvContents read_csv(const std::string& path, const CsvOptions& options) {
       missing += (missing.empty() ? "'" : ", '") + *name + "'";
       ++n_missing;
     }
+  // A planar run's export often has no third coordinate: all z equal reads as planar (docs/MATH.md §5.7).
+  const bool only_z = n_missing == 1 && !column(c.z);
   if (n_missing > 0)
     throw InputError(path + ":" + std::to_string(in.line()) + ": missing column" +
                      (n_missing > 1 ? "s " : " ") + missing + " in header '" + excerpt(line) +
                      "' (required: " + c.mcs + ", " + c.cell_id + ", " + c.type + ", " + c.x + ", " + c.y +
-                     ", " + c.z + "; optional: " + c.volume + ", " + c.type_name + ")");
+                     ", " + c.z + "; optional: " + c.volume + ", " + c.type_name + ")" +
+                     (only_z ? "; for a planar run add a column " + c.z + " of 0 on every row" : ""));
   const std::size_t col_mcs = *column(c.mcs), col_id = *column(c.cell_id), col_type = *column(c.type);
   const std::size_t col_xyz[3] = {*column(c.x), *column(c.y), *column(c.z)};
   const std::optional<std::size_t> col_volume = column(c.volume), col_name = column(c.type_name);

@@ -164,7 +164,15 @@ def check_run_options(binary, work):
             raise AssertionError(f"medusa.run{kwargs} was not refused")
         except medusa.Error as e:
             assert wanted in str(e) and " --" not in str(e), e
-    print("medusa.run: VTK snapped as by medusa run; refusals name keyword arguments")
+    # A store in a folder that does not exist is refused before any reading, naming the folder.
+    missing = os.path.join(work, "no_such_folder")
+    try:
+        medusa.run(folder, output=os.path.join(missing, "run.h5"), threads=1)
+        raise AssertionError("medusa.run into a missing folder was not refused")
+    except medusa.Error as e:
+        assert str(e) == f"output {missing}/run.h5: the folder {missing} does not exist", e
+    assert not os.path.exists(missing)
+    print("medusa.run: VTK snapped as by medusa run; refusals name keyword arguments and a missing folder")
 
 
 def main():
