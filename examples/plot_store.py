@@ -57,7 +57,7 @@ def read_store(path):
 
 
 def read_pairs(store, diagrams, medusa, run_id=""):
-    """Rows of the diagrams CSV (birth,death,dimension,type,direction) as dicts with float times.
+    """Rows of the diagrams CSV (birth,death,dimension,type,direction,type_name) as dicts with float times.
 
     The CSV's first line `# medusa run <id>` must name the store's run id (docs/FORMAT.md): a CSV from
     another run is refused (exit 5), as medusa refuses a store error."""

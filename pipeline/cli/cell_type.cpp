@@ -39,14 +39,22 @@ std::optional<int> id_named(const std::string& text, const kinetic::Trajectories
 
 } // namespace
 
-std::string cell_type_name(const kinetic::Trajectories& input, int type) {
+std::string cell_type_name(const TypeNames& names, int type) {
   const auto i = static_cast<std::size_t>(type);
-  return type >= 0 && i < input.type_names.size() ? input.type_names[i] : std::string();
+  return type >= 0 && i < names.size() ? names[i] : std::string();
+}
+
+std::string cell_type_name(const kinetic::Trajectories& input, int type) {
+  return cell_type_name(input.type_names, type);
+}
+
+std::string cell_type_title(const TypeNames& names, int type) {
+  const std::string name = cell_type_name(names, type);
+  return "type " + std::to_string(type) + (name.empty() ? "" : " (" + name + ")");
 }
 
 std::string cell_type_title(const kinetic::Trajectories& input, int type) {
-  const std::string name = cell_type_name(input, type);
-  return "type " + std::to_string(type) + (name.empty() ? "" : " (" + name + ")");
+  return cell_type_title(input.type_names, type);
 }
 
 std::vector<int> cell_types(const kinetic::Trajectories& input) {

@@ -19,9 +19,15 @@ std::vector<int> cell_types(const kinetic::Trajectories& input);
 int resolve_cell_type(const std::string& text, const kinetic::Trajectories& input, const std::string& source,
                       bool allow_all = true);
 
+// A run's type names indexed by type id, "" where it names none (kinetic::Trajectories::type_names):
+// what outputs print beside the ids.
+using TypeNames = std::vector<std::string>;
+
 // The run's name for a type ("" where it names none), and the type in words: "type 1 (Condensing)", or
 // "type 4" for a type without a name.
+std::string cell_type_name(const TypeNames& names, int type);
 std::string cell_type_name(const kinetic::Trajectories& input, int type);
+std::string cell_type_title(const TypeNames& names, int type);
 std::string cell_type_title(const kinetic::Trajectories& input, int type);
 
 // "1 (Condensing), 2 (NonCondensing)": the run's cell types with their names where it has them.

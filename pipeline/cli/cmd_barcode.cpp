@@ -39,13 +39,13 @@ void barcode_command(const BarcodeArguments& args) {
     if (args.format == "pers")
       write_pers(out, diagrams);
     else if (args.format == "csv")
-      write_csv(out, diagrams);
+      write_csv(out, diagrams, medusa.input.type_names);
     else if (args.format == "json")
-      write_json(out, diagrams);
+      write_json(out, diagrams, medusa.input.type_names);
     else if (args.format == "svg")
-      write_barcode_svg(out, diagrams, t0, t_end, args.max_bars);
+      write_barcode_svg(out, diagrams, medusa.input.type_names, t0, t_end, args.max_bars);
     else
-      write_diagram_svg(out, diagrams, t0, t_end, args.max_points);
+      write_diagram_svg(out, diagrams, medusa.input.type_names, t0, t_end, args.max_points);
   };
   if (to_stdout)
     write(std::cout);
@@ -63,7 +63,7 @@ void add_barcode_command(CLI::App& app) {
   barcode->add_option("store", args->store, "HDF5 store written by `medusa run`")->required();
   barcode
       ->add_option("--format", args->format,
-                   "pers (GUDHI: dim birth death), csv (birth,death,dimension,type,direction), json, svg "
+                   "pers (GUDHI: dim birth death), csv (birth,death,dimension,type,direction,type_name), json, svg "
                    "(barcodes: one panel per diagram and degree) or diagram-svg (birth-death scatter plots)")
       ->check(CLI::IsMember({"pers", "csv", "json", "svg", "diagram-svg"}))
       ->capture_default_str();

@@ -32,7 +32,7 @@ void add_diagrams_command(CLI::App& app) {
         selected_diagrams(medusa, args->selection, args->store);
     // Nothing on stdout before the last check: an interrupted command prints no partial listing.
     check_interrupted();
-    write_pairs_text(std::cout, diagrams);
+    write_pairs_text(std::cout, diagrams, medusa.input.type_names);
   });
 }
 

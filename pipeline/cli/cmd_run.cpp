@@ -292,12 +292,13 @@ RunResult compute_diagrams(const RunOutputs& outputs, const std::string& run_id,
   timings.add("exports", share(phases.handed_over) * wall, share(phases.handed_over) * cpu);
   const double t0 = static_cast<double>(medusa.input.frame_times.front());
   const double t_end = static_cast<double>(medusa.input.frame_times.back());
-  write_temporary(outputs.temporary(1), csv, [&](std::ostream& out) { write_csv(out, diagrams, run_id); });
+  write_temporary(outputs.temporary(1), csv,
+                  [&](std::ostream& out) { write_csv(out, diagrams, medusa.input.type_names, run_id); });
   write_temporary(outputs.temporary(2), svg, [&](std::ostream& out) {
-    write_barcode_svg(out, diagrams, t0, t_end, default_max_bars, run_id);
+    write_barcode_svg(out, diagrams, medusa.input.type_names, t0, t_end, default_max_bars, run_id);
   });
   write_temporary(outputs.temporary(3), diagram_svg, [&](std::ostream& out) {
-    write_diagram_svg(out, diagrams, t0, t_end, default_max_points, run_id);
+    write_diagram_svg(out, diagrams, medusa.input.type_names, t0, t_end, default_max_points, run_id);
   });
   check_interrupted();
   timings.add("exports", clock);

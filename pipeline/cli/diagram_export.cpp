@@ -8,6 +8,23 @@
 #include <cstdio>
 
 namespace medusa::cli {
+namespace {
+
+std::string type_name_of(const persistence::Diagram& d, const TypeNames& names) {
+  return d.cell_type == persistence::all_types ? std::string() : cell_type_name(names, d.cell_type);
+}
+
+// A CSV field as RFC 4180 writes it: quoted when it holds a comma, a quote or a line break.
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos)
+    return text;
+  std::string quoted = "\"";
+  for (const char c : text)
+    quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+} // namespace
 
 std::string format_time(double t) {
   if (std::isinf(t))
@@ -17,10 +34,11 @@ std::string format_time(double t) {
   return buffer;
 }
 
-void write_pairs_text(std::ostream& out, const std::vector<persistence::Diagram>& diagrams) {
+void write_pairs_text(std::ostream& out, const std::vector<persistence::Diagram>& diagrams,
+                      const TypeNames& names) {
   for (const persistence::Diagram& d : diagrams) {
-    out << "# type " << type_label(d.cell_type) << ", " << direction_name(d.direction) << ", "
-        << d.pairs.size() << " pairs (birth death dim)\n";
+    out << "# " << (d.cell_type == persistence::all_types ? "type all" : cell_type_title(names, d.cell_type))
+        << ", " << direction_name(d.direction) << ", " << d.pairs.size() << " pairs (birth death dim)\n";
     for (const persistence::PersistencePair& p : d.pairs)
       out << format_time(p.birth) << ' ' << format_time(p.death) << ' ' << p.dim << '\n';
   }
@@ -32,18 +50,21 @@ void write_pers(std::ostream& out, const std::vector<persistence::Diagram>& diag
       out << p.dim << ' ' << format_time(p.birth) << ' ' << format_time(p.death) << '\n';
 }
 
-void write_csv(std::ostream& out, const std::vector<persistence::Diagram>& diagrams,
+void write_csv(std::ostream& out, const std::vector<persistence::Diagram>& diagrams, const TypeNames& names,
                const std::string& run_id) {
   if (!run_id.empty())
     out << "# medusa run " << run_id << "\n";
-  out << "birth,death,dimension,type,direction\n";
-  for (const persistence::Diagram& d : diagrams)
+  out << "birth,death,dimension,type,direction,type_name\n";
+  for (const persistence::Diagram& d : diagrams) {
+    const std::string name = csv_field(type_name_of(d, names));
     for (const persistence::PersistencePair& p : d.pairs)
       out << format_time(p.birth) << ',' << format_time(p.death) << ',' << p.dim << ','
-          << type_label(d.cell_type) << ',' << direction_name(d.direction) << '\n';
+          << type_label(d.cell_type) << ',' << direction_name(d.direction) << ',' << name << '\n';
+  }
 }
 
-void write_json(std::ostream& out, const std::vector<persistence::Diagram>& diagrams) {
+void write_json(std::ostream& out, const std::vector<persistence::Diagram>& diagrams,
+                const TypeNames& names) {
   nlohmann::json list = nlohmann::json::array();
   for (const persistence::Diagram& d : diagrams) {
     nlohmann::json pairs = nlohmann::json::array();
@@ -52,8 +73,10 @@ void write_json(std::ostream& out, const std::vector<persistence::Diagram>& diag
           std::isinf(p.death) ? nlohmann::json(format_time(p.death)) : nlohmann::json(p.death);
       pairs.push_back({{"dimension", p.dim}, {"birth", p.birth}, {"death", death}});
     }
-    list.push_back(
-        {{"type", type_label(d.cell_type)}, {"direction", direction_name(d.direction)}, {"pairs", pairs}});
+    list.push_back({{"type", type_label(d.cell_type)},
+                    {"type_name", type_name_of(d, names)},
+                    {"direction", direction_name(d.direction)},
+                    {"pairs", pairs}});
   }
   out << nlohmann::json{{"diagrams", list}}.dump(1) << '\n';
 }

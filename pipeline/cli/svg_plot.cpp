@@ -1,6 +1,7 @@
 #include "svg_plot.h"
 
 #include "diagram_selection.h"
+#include "matrix_svg.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,6 +41,7 @@ std::vector<double> ticks(double lo, double hi);
 // One panel: a diagram's classes of one degree.
 struct Panel {
   const persistence::Diagram* diagram = nullptr;
+  std::string name; // "type 1 (Condensing), forward": the diagram_name
   int degree = 0;
   std::vector<std::size_t> drawn; // finite pairs drawn, by birth then death
   std::size_t finite = 0, essential = 0;
@@ -97,9 +99,16 @@ std::pair<double, double> panel_range(const Panel& p, double t0, double t_end) {
 
 // Finite positive-length pairs of degree k (max_bars > 0: the max_bars longest, ties by position),
 // sorted by birth, then death; and the counts.
-Panel make_panel(const persistence::Diagram& d, int k, std::size_t max_bars) {
+std::string diagram_name(const persistence::Diagram& d, const TypeNames& names) {
+  return (d.cell_type == persistence::all_types ? std::string("all cells")
+                                                : cell_type_title(names, d.cell_type)) +
+         ", " + direction_name(d.direction);
+}
+
+Panel make_panel(const persistence::Diagram& d, const TypeNames& names, int k, std::size_t max_bars) {
   Panel panel;
   panel.diagram = &d;
+  panel.name = diagram_name(d, names);
   panel.degree = k;
   const auto& pairs = d.pairs;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
@@ -150,12 +159,6 @@ std::vector<double> ticks(double lo, double hi) {
   for (double t = std::ceil(lo / step) * step; t <= hi + step * 1e-9; t += step)
     out.push_back(std::abs(t) < step * 1e-9 ? 0.0 : t);
   return out;
-}
-
-std::string diagram_name(const persistence::Diagram& d) {
-  return (d.cell_type == persistence::all_types ? std::string("all cells")
-                                                : "type " + type_label(d.cell_type)) +
-         ", " + direction_name(d.direction);
 }
 
 // "1469 filled, 566 never filled (counted, not drawn)": forward H0 classes join, H1 and H2 classes are
@@ -233,7 +236,7 @@ void open_panel(std::ostream& out, const Panel& p, double t0, double t_end) {
 void write_title(std::ostream& out, const Panel& p, double x, double y, const std::string& counts) {
   const std::size_t cut = counts.find('\n');
   out << "<text x=\"" << number(x) << "\" y=\"" << number(y + 13) << "\" font-weight=\"bold\">"
-      << diagram_name(*p.diagram) << ", " << degree_names[p.degree] << "</text>\n"
+      << xml_escape(p.name) << ", " << degree_names[p.degree] << "</text>\n"
       << "<text x=\"" << number(x) << "\" y=\"" << number(y + 27) << "\">" << counts.substr(0, cut)
       << "</text>\n"
       << "<text x=\"" << number(x) << "\" y=\"" << number(y + 41) << "\">" << counts.substr(cut + 1)
@@ -285,8 +288,9 @@ void write_density(std::ostream& out, const Panel& p, double x0, double top, dou
 
 } // namespace
 
-void write_barcode_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams, double t0,
-                       double t_end, std::size_t max_bars, const std::string& run_id) {
+void write_barcode_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams,
+                       const TypeNames& names, double t0, double t_end, std::size_t max_bars,
+                       const std::string& run_id) {
   const std::vector<int> degrees = degrees_of(diagrams);
   const auto columns = static_cast<double>(degrees.size());
   const double panel_width = (page_width - 2 * margin - (columns - 1) * column_gap) / columns;
@@ -297,7 +301,7 @@ void write_barcode_svg(std::ostream& out, const std::vector<persistence::Diagram
     rows.emplace_back();
     double tallest = 30;
     for (const int k : degrees) {
-      rows.back().push_back(make_panel(d, k, max_bars));
+      rows.back().push_back(make_panel(d, names, k, max_bars));
       tallest =
           std::max(tallest, std::min(360.0, 2.0 * static_cast<double>(rows.back().back().drawn.size())));
     }
@@ -349,8 +353,9 @@ void write_barcode_svg(std::ostream& out, const std::vector<persistence::Diagram
   out << "</svg>\n";
 }
 
-void write_diagram_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams, double t0,
-                       double t_end, std::size_t max_points, const std::string& run_id) {
+void write_diagram_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams,
+                       const TypeNames& names, double t0, double t_end, std::size_t max_points,
+                       const std::string& run_id) {
   const std::vector<int> degrees = degrees_of(diagrams);
   const auto columns = static_cast<double>(degrees.size());
   const double panel_width = (page_width - 2 * margin - (columns - 1) * column_gap) / columns;
@@ -363,7 +368,7 @@ void write_diagram_svg(std::ostream& out, const std::vector<persistence::Diagram
   for (const persistence::Diagram& d : diagrams) {
     rows.emplace_back();
     for (const int k : degrees) {
-      rows.back().push_back(make_panel(d, k, 0));
+      rows.back().push_back(make_panel(d, names, k, 0));
       any_binned = any_binned || binned(rows.back().back(), max_points);
     }
   }

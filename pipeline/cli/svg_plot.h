@@ -13,6 +13,8 @@
 // Panels and bars carry data-* attributes (type, direction, degree, counts, birth, death) for checks.
 #pragma once
 
+#include "cell_type.h"
+
 #include "medusa/persistence/diagram.h"
 
 #include <cstddef>
@@ -27,11 +29,14 @@ constexpr std::size_t default_max_bars = 200;
 // What `medusa run` draws point by point in a diagram panel, and `medusa barcode --format diagram-svg`.
 constexpr std::size_t default_max_points = 5000;
 
-// With a run id, the root element carries it as data-medusa-run (docs/FORMAT.md).
-void write_barcode_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams, double t0,
-                       double t_end, std::size_t max_bars = 0, const std::string& run_id = "");
+// Panels are titled with the types' names from `names` where the run has them. With a run id, the root
+// element carries it as data-medusa-run (docs/FORMAT.md).
+void write_barcode_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams,
+                       const TypeNames& names, double t0, double t_end, std::size_t max_bars = 0,
+                       const std::string& run_id = "");
 
-void write_diagram_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams, double t0,
-                       double t_end, std::size_t max_points = 0, const std::string& run_id = "");
+void write_diagram_svg(std::ostream& out, const std::vector<persistence::Diagram>& diagrams,
+                       const TypeNames& names, double t0, double t_end, std::size_t max_points = 0,
+                       const std::string& run_id = "");
 
 } // namespace medusa::cli

@@ -90,8 +90,9 @@ def printed_diagrams(medusa, store):
     result, current = {}, None
     for line in out.stdout.splitlines():
         if line.startswith("# type "):
+            # "# type 1 (Condensing), forward, ...": the id, then the direction
             head = line[len("# type "):].split(",")
-            current = (head[0].strip(), head[1].strip())
+            current = (head[0].split()[0], head[1].strip())
             result[current] = Counter()
         elif line.strip():
             b, d, dim = line.split()

@@ -34,14 +34,19 @@ def number(s):
     return float(s)  # float('inf'), float('-inf') and %.17g text all read back exactly
 
 
+type_names = {"all": ""}  # type id -> the name its block headers give (small.csv names its types)
+
+
 def blocks(name):
     """`medusa diagrams` output: {(type, direction): (announced count, [(birth, death, dim)])}."""
     result, key = {}, None
     for line in text(name).splitlines():
-        m = re.match(r"# type (\w+), (forward|reverse), (\d+) pairs \(birth death dim\)$", line)
+        m = re.match(r"# type (\w+)(?: \(([^)]*)\))?, (forward|reverse), (\d+) pairs \(birth death dim\)$", line)
         if m:
-            key = (m.group(1), m.group(2))
-            result[key] = (int(m.group(3)), [])
+            key = (m.group(1), m.group(3))
+            result[key] = (int(m.group(4)), [])
+            named = m.group(2) or ""
+            check(type_names.setdefault(key[0], named) == named, f"{name}: type {key[0]} named twice")
         else:
             b, d, k = line.split()
             result[key][1].append((number(b), number(d), int(k)))
@@ -53,6 +58,8 @@ def blocks(name):
 every = blocks("diagrams_all.txt")
 check(sorted(every) == sorted((t, d) for t in ("all", "1", "2") for d in ("forward", "reverse")),
       "diagrams_all.txt: not the six diagrams (all, 1, 2) x (forward, reverse)")
+check(type_names == {"all": "", "1": "Condensing", "2": "NonCondensing"},
+      f"diagrams_all.txt: the headers do not name small.csv's types: {type_names}")
 
 # barcode_all.pers as GUDHI reads it: per dimension, the multiset of (birth, death) of diagrams_all.
 pers = os.path.join(golden, "barcode_all.pers")
@@ -71,11 +78,13 @@ with open(os.path.join(golden, "run_small.diagrams.csv")) as f, open(os.path.joi
 expected = [(t, d, p) for (t, d), (_, pairs) in every.items() for p in pairs]
 got = [(r["type"], r["direction"], (number(r["birth"]), number(r["death"]), int(r["dimension"]))) for r in rows]
 check(got == expected, "barcode_all.csv differs from diagrams_all.txt")
+check(all(r["type_name"] == type_names[r["type"]] for r in rows), "barcode_all.csv: a type_name is not its type's")
 
 # barcode_type2.json: the type-2 diagrams.
 listed = json.loads(text("barcode_type2.json"))["diagrams"]
-check([(x["type"], x["direction"]) for x in listed] == [("2", "forward"), ("2", "reverse")],
-      "barcode_type2.json: not the two type-2 diagrams")
+check([(x["type"], x["type_name"], x["direction"]) for x in listed] ==
+      [("2", "NonCondensing", "forward"), ("2", "NonCondensing", "reverse")],
+      "barcode_type2.json: not the two type-2 diagrams, named")
 for x in listed:
     pairs = [(number(p["birth"]), number(p["death"]), p["dimension"]) for p in x["pairs"]]
     check(pairs == every[("2", x["direction"])][1], f"barcode_type2.json {x['direction']} differs")
