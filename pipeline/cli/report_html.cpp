@@ -40,6 +40,23 @@ void write_figures(std::ostream& out, const std::vector<ReportFigure>& figures, 
   }
 }
 
+// The verdicts as plain HTML for a viewer without JavaScript (a mail client, a file preview), where
+// report.js draws nothing: the answer must not depend on it.
+void write_static_verdicts(std::ostream& out, const std::vector<ReportRun>& runs) {
+  out << "<noscript>\n<div class=\"cards\">\n";
+  for (const ReportRun& r : runs) {
+    const std::string verdict = r.data.value("verdict", std::string());
+    const std::size_t colon = verdict.find(':');
+    const bool sorts = verdict.rfind("sorts", 0) == 0;
+    out << "<div class=\"run-card\"><p class=\"verdict " << (sorts ? "sorts" : "no-sort") << "\"><b>"
+        << xml_escape(r.name + " " + verdict.substr(0, colon)) << ":</b>"
+        << xml_escape(colon == std::string::npos ? "" : verdict.substr(colon + 1)) << "</p></div>\n";
+  }
+  out << "</div>\n<p class=\"note\">JavaScript is off: the verdicts above and the pictures drawn in "
+         "the page (radius sweeps, distances) show; the charts over time, the lines per type, the "
+         "barcodes and the classes need JavaScript.</p>\n</noscript>\n";
+}
+
 } // namespace
 
 void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
@@ -77,7 +94,9 @@ void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
          "sorting lowers the first and raises the second, whether or not a type ends in one cluster.</p>\n"
       << (mixed.empty() ? ""
                         : "<p class=\"note\" id=\"mixed-dimensions\">Note: " + xml_escape(mixed) + ".</p>\n")
-      << "<div id=\"headlines\" class=\"cards\"></div>\n<div id=\"radius-answer\"></div>\n"
+      << "<div id=\"headlines\" class=\"cards\"></div>\n";
+  write_static_verdicts(out, runs);
+  out << "<div id=\"radius-answer\"></div>\n"
       << "<div id=\"glance-charts\" class=\"charts\"></div>\n";
   const bool explained = scale.contains("notes") && !scale["notes"].empty();
   if (crocker.empty() && explained)

@@ -342,6 +342,7 @@ try:
             failures.append(f"{page}: screenshot looks blank ({colours} colours, {ink:.3f} of pixels drawn)")
         if page == "three.html":
             check_answer(driver, failures)
+            scripted_verdicts = [v.text for v in driver.find_elements("css selector", "#headlines .verdict")]
         if screenshot_copy and page == "three.html":
             Image.open(png).convert("RGB").quantize(colors=128).save(screenshot_copy, optimize=True)
     # The drawings `medusa run` writes next to the store: no text runs past the edge of the page. At
@@ -361,6 +362,22 @@ try:
             }).map((t) => t.textContent);""")
         if outside:
             failures.append(f"{picture}: text past the edge of the page: {outside}")
+finally:
+    driver.quit()
+
+# With JavaScript off (a mail client, a file preview) the page still gives each run's verdict, the
+# same words report.js writes.
+options.add_experimental_option("prefs", {"profile.managed_default_content_settings.javascript": 2})
+driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+try:
+    driver.get("file://" + os.path.abspath("three.html"))
+    time.sleep(0.3)
+    if driver.find_elements("css selector", ".panel"):
+        failures.append("three.html without JavaScript: panels were drawn, so JavaScript ran")
+    plain = [v.text for v in driver.find_elements("css selector", "noscript .verdict")]
+    if len(scripted_verdicts) != len(runs) or plain != scripted_verdicts:
+        failures.append(f"three.html without JavaScript: verdicts {plain}, with it {scripted_verdicts}")
+    print(f"without JavaScript: {len(plain)} verdicts shown, as with it")
 finally:
     driver.quit()
 
