@@ -1,4 +1,5 @@
 // `medusa info`: what a store holds (docs/FORMAT.md).
+#include "cell_type.h"
 #include "commands.h"
 #include "diagram_export.h"
 #include "diagram_selection.h"
@@ -61,8 +62,7 @@ void info_command(const std::string& path) {
     std::size_t count = 0;
     for (int v : types)
       count += v == t ? 1 : 0;
-    const auto index = static_cast<std::size_t>(t);
-    const std::string name = index < input.type_names.size() ? input.type_names[index] : "";
+    const std::string name = cell_type_name(input, t);
     std::cout << " " << t << (name.empty() ? "" : " (" + name + ")") << ": " << count << ";";
   }
   std::cout << "\n";

@@ -1,5 +1,6 @@
 #include "report_classes.h"
 
+#include "cell_type.h"
 #include "complex_export.h"
 #include "diagram_selection.h"
 #include "interrupt.h"
@@ -141,14 +142,12 @@ json report_classes(const std::string& store, const medusa::Medusa& medusa, std:
       json classes = json::array();
       for (std::size_t i : order)
         classes.push_back(class_json(persistence::class_record(medusa, found, i), found, i, medusa));
-      const auto index = static_cast<std::size_t>(type);
-      sections.push_back({{"label", type_label(type)},
-                          {"name", type == persistence::all_types || index >= input.type_names.size()
-                                       ? std::string()
-                                       : input.type_names[index]},
-                          {"dim", k},
-                          {"total", total},
-                          {"classes", std::move(classes)}});
+      sections.push_back(
+          {{"label", type_label(type)},
+           {"name", type == persistence::all_types ? std::string() : cell_type_name(input, type)},
+           {"dim", k},
+           {"total", total},
+           {"classes", std::move(classes)}});
     }
   }
   return {{"top", top},

@@ -1,6 +1,7 @@
 #include "report_model.h"
 
 #include "betti_frames.h"
+#include "cell_type.h"
 #include "comparison.h"
 #include "diagram_export.h"
 #include "diagram_selection.h"
@@ -37,8 +38,7 @@ std::string mcs(double t) {
 std::string type_name(const kinetic::Trajectories& input, int type) {
   if (type == persistence::all_types)
     return "all cells";
-  const auto index = static_cast<std::size_t>(type);
-  return index < input.type_names.size() ? input.type_names[index] : "";
+  return cell_type_name(input, type);
 }
 
 json cc3d_ids(const medusa::CellVertices& vertices, const kinetic::Trajectories& input) {

@@ -1,5 +1,6 @@
 #include "report_scale.h"
 
+#include "cell_type.h"
 #include "diagram_selection.h"
 #include "interrupt.h"
 #include "radius_sweep.h"
@@ -41,8 +42,7 @@ std::string type_title(const std::string& label, const std::string& name) {
 std::string type_name_of(const kinetic::Trajectories& input, const std::string& label) {
   if (label == "all")
     return "";
-  const auto index = static_cast<std::size_t>(std::stoi(label));
-  return index < input.type_names.size() ? input.type_names[index] : "";
+  return cell_type_name(input, std::stoi(label));
 }
 
 // "3.04", "3.04 and 3.42", or "3.04 to 4.56" for radii consecutive in `grid`; else all listed.

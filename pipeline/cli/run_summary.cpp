@@ -1,5 +1,6 @@
 #include "run_summary.h"
 
+#include "cell_type.h"
 #include "class_fates.h"
 #include "diagram_selection.h"
 #include "position_source.h"
@@ -206,9 +207,7 @@ std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medu
     const ClassFates fates = class_fates(medusa, *cells, d, *reverse);
     std::string label = "all cells";
     if (d.cell_type != persistence::all_types) {
-      const auto index = static_cast<std::size_t>(d.cell_type);
-      const std::string name = index < input.type_names.size() ? input.type_names[index] : "";
-      label = "type " + std::to_string(d.cell_type) + (name.empty() ? "" : " (" + name + ")");
+      label = cell_type_title(input, d.cell_type);
       if (fates.clusters.at_first == 1 && fates.clusters.joins == 0 && !medusa.cells_of_dimension(1).empty())
         warnings.push_back(label + " is one cluster from MCS " + mcs(t0) +
                            " on and no cluster joins it: at radius " + radius_text +
