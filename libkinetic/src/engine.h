@@ -420,7 +420,13 @@ private:
   // The state of a face of Del, or nullptr: from the table, or from the faces touched by the change
   // being applied.
   Face* state_in_table(const Simplex& s) { return faces.find(s); }
+  // A flip's faces are found by their bit mask; a larger change (a static rebuild, the first
+  // triangulation: about a million faces for 30,000 cells) looks in the table instead of a binary
+  // search of the touched list, one cache miss instead of twenty. The facets of a touched face are
+  // touched too, and in the table until finish_top_change erases the faces that left.
   Face* state_in_touched(const Simplex& s) {
+    if (touched_scratch.local_count == 0)
+      return s.size() < 2 ? nullptr : faces.find(s);
     TouchedFace* t = touched_scratch.find(s);
     return t == nullptr ? nullptr : t->state;
   }
