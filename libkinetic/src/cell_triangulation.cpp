@@ -119,6 +119,7 @@ void CellTriangulation<D>::plan_gluing(const std::vector<CellIndex>& removed,
       }
   }
   facets_.clear();
+  facets_.reserve(added.size() * top_size); // the first triangulation adds them all: no doubling
   for (std::size_t k = 0; k < added.size(); ++k)
     for (std::size_t i = 0; i < top_size; ++i) {
       Gluing g;
