@@ -59,14 +59,27 @@ std::string short_time(double t) {
   return buffer;
 }
 
-void sort_records(std::vector<persistence::ClassRecord>& records, const std::string& key, bool forward) {
+void sort_records(std::vector<persistence::ClassRecord>& records, const std::string& key, bool forward,
+                  const medusa::Medusa& medusa) {
   // Birth and death in filtration order: increasing time forward, decreasing in reverse; an essential
-  // class's death comes last.
+  // class's death comes last. Essential loops and cavities of the forward filtration, all of infinite
+  // lifetime, by how long their ring stayed whole (ring_whole_for).
   const double sign = forward ? 1.0 : -1.0;
+  std::map<std::size_t, double> whole;
+  if (key == "lifetime" && forward)
+    for (const persistence::ClassRecord& r : records)
+      if (r.essential)
+        whole[r.id] =
+            essential_order(medusa, r.dim, persistence::CellLists::List(r.cycle), r.birth_cell, r.birth);
+  const auto whole_for = [&](const persistence::ClassRecord& r) {
+    const auto it = whole.find(r.id);
+    return it == whole.end() ? 0.0 : it->second;
+  };
   std::stable_sort(records.begin(), records.end(),
                    [&](const persistence::ClassRecord& a, const persistence::ClassRecord& b) {
                      if (key == "lifetime")
-                       return a.lifetime() > b.lifetime();
+                       return a.lifetime() != b.lifetime() ? a.lifetime() > b.lifetime()
+                                                           : whole_for(a) > whole_for(b);
                      if (key == "birth")
                        return sign * a.birth < sign * b.birth;
                      return sign * a.death < sign * b.death;
@@ -194,7 +207,7 @@ void classes_command(const ClassesArguments& args) {
   for (persistence::ClassRecord& r : persistence::class_records(medusa, classes))
     if (!args.dim || r.dim == *args.dim)
       records.push_back(std::move(r));
-  sort_records(records, args.sort, direction == persistence::Direction::forward);
+  sort_records(records, args.sort, direction == persistence::Direction::forward, medusa);
   if (args.top > 0 && records.size() > args.top)
     records.resize(args.top);
   const Wraps wraps = wrapping_axes(medusa, classes, records);
@@ -234,8 +247,10 @@ void add_classes_command(CLI::App& app) {
   classes->add_option("--top", args->top, "only the first N classes in the sort order (0: all)")
       ->capture_default_str();
   classes
-      ->add_option("--sort", args->sort,
-                   "lifetime (longest first, essential classes first), birth or death (in filtration order)")
+      ->add_option(
+          "--sort", args->sort,
+          "lifetime (longest first, essential classes first; among the loops and cavities never filled, "
+          "those whose ring or shell stayed whole longest), birth or death (in filtration order)")
       ->check(CLI::IsMember({"lifetime", "birth", "death"}))
       ->capture_default_str();
   classes

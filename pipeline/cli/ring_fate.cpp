@@ -1,5 +1,7 @@
 #include "ring_fate.h"
 
+#include <limits>
+
 namespace medusa::cli {
 
 const char* ring_state_name(RingFate::State state) {
@@ -9,6 +11,22 @@ const char* ring_state_name(RingFate::State state) {
   case RingFate::State::never_whole: return "never whole";
   }
   return "";
+}
+
+double ring_whole_for(const RingFate& fate, double birth) {
+  switch (fate.state) {
+  case RingFate::State::whole_at_end: return std::numeric_limits<double>::infinity();
+  case RingFate::State::broke: return fate.broke_at - birth;
+  case RingFate::State::never_whole: return -std::numeric_limits<double>::infinity();
+  }
+  return 0;
+}
+
+double essential_order(const medusa::Medusa& medusa, int dim, persistence::CellLists::List cycle,
+                       medusa::CellId birth_cell, double birth) {
+  if (dim == 0)
+    return std::numeric_limits<double>::infinity();
+  return ring_whole_for(ring_fate(medusa, cycle, medusa.cell(birth_cell).birth), birth);
 }
 
 RingFate ring_fate(const medusa::Medusa& medusa, persistence::CellLists::List cycle,

@@ -23,4 +23,17 @@ const char* ring_state_name(RingFate::State state);
 RingFate ring_fate(const medusa::Medusa& medusa, persistence::CellLists::List cycle,
                    const medusa::VirtualTime& born);
 
+// The order of essential loops and cavities, whose lifetimes are all infinite, in a list of the
+// longest-lived: how long the ring or shell stayed whole after the class's `birth` (MCS). +inf when it
+// is whole at the end, broke_at - birth when it broke, -inf when it was never whole. A ring that broke
+// open soon after it formed is not what a reader of "longest-lived" is looking for, though the class
+// lives on in the space-time medusa.
+double ring_whole_for(const RingFate& fate, double birth);
+
+// ring_whole_for of an essential class of the forward filtration in degree `dim`, its representative
+// `cycle` born at `birth` (MCS) in medusa cell `birth_cell`: a cluster that never joins an older one
+// (degree 0) ranks with the rings whole at the end.
+double essential_order(const medusa::Medusa& medusa, int dim, persistence::CellLists::List cycle,
+                       medusa::CellId birth_cell, double birth);
+
 } // namespace medusa::cli

@@ -413,7 +413,8 @@
       const sec = html("div", { class: "classes", id: "classes-" + ri, "data-run": ri }, parent);
       html("h3", {}, sec, "Which cells? The longest-lived classes and the cells that make them (forward filtration)");
       html("p", { class: "note" }, sec, "Per cell type and degree, the " + run.classes.top + " classes that lived longest " +
-        "(the ones never filled or joined first). A class's cells are those of its representative: for a cluster the cells " +
+        "(the ones never filled or joined first; among the loops and cavities never filled, those whose ring or shell stayed " +
+        "whole longest first). A class's cells are those of its representative: for a cluster the cells " +
         "in it just before it joined an older one, for a loop or a cavity the cells on a ring or a shell around it " +
         "when it formed (docs/MATH.md §7.11). A loop or cavity never filled is a class of the space-time medusa to the " +
         "end, so its lifetime reads '≥'; whether the cells it is listed with are still a ring or shell at the end, broke " +

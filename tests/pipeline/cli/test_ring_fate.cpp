@@ -55,3 +55,22 @@ TEST_CASE("A ring with a cell that left before the class was born was never whol
   // Edge 0-1 left at batch 3, before the square closed at batch 4: a loop in space-time.
   CHECK(fate_of({at(3, 30), end_of_run, end_of_run, end_of_run}).state == RingFate::State::never_whole);
 }
+
+TEST_CASE("Essential classes rank by how long their ring stayed whole: whole at the end, then the "
+          "later break, then never whole, with clusters first") {
+  using medusa::cli::essential_order;
+  const medusa::Medusa whole = square({end_of_run, end_of_run, end_of_run, end_of_run});
+  const medusa::Medusa late = square({end_of_run, at(70, 700), at(60, 600), end_of_run});
+  const medusa::Medusa early = square({end_of_run, at(70, 700), at(50, 500), end_of_run});
+  const medusa::Medusa never = square({at(3, 30), end_of_run, end_of_run, end_of_run});
+  const auto order = [](const medusa::Medusa& m, int dim) {
+    // The class is born at time 40 with the square's last edge, cell 3.
+    return essential_order(m, dim, medusa::persistence::CellLists::List(ring), 3, 40);
+  };
+  CHECK(order(late, 1) == 600 - 40);
+  CHECK(order(early, 1) == 500 - 40);
+  CHECK(order(whole, 1) > order(late, 1));
+  CHECK(order(late, 1) > order(early, 1));
+  CHECK(order(early, 1) > order(never, 1));
+  CHECK(order(never, 0) == order(whole, 1)); // a cluster never joined ranks with whole rings, whatever its cells
+}
