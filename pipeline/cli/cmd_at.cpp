@@ -64,7 +64,7 @@ bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-// The cells of the requested classes' representatives: the cycle, and for H0 the cluster's vertices.
+// The cells of the requested classes' representatives: the cycle, and for H0 the cluster's vertices only.
 struct ClassCells {
   std::vector<std::pair<medusa::CellId, std::int64_t>> cells; // (medusa cell, class id)
   double first_birth = 0;
@@ -102,8 +102,11 @@ ClassCells class_cells(const std::string& path, const medusa::Medusa& medusa, co
     const auto i = static_cast<std::size_t>(at - rows.begin());
     if (k == 0)
       out.first_birth = found.diagram.pairs[id].birth;
-    for (medusa::CellId c : found.classes.cycles[i])
-      out.cells.emplace_back(c, static_cast<std::int64_t>(id));
+    // A cluster's 0-cycle joins one of its vertices to the older cluster's (docs/MATH.md §7.11): the
+    // class's cells are the cluster's alone, as `medusa classes` and the report list them.
+    if (found.diagram.pairs[id].dim != 0)
+      for (medusa::CellId c : found.classes.cycles[i])
+        out.cells.emplace_back(c, static_cast<std::int64_t>(id));
     for (medusa::CellId c : found.classes.clusters[i])
       out.cells.emplace_back(c, static_cast<std::int64_t>(id));
   }
