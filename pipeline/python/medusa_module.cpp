@@ -55,6 +55,12 @@ py::array_t<double> rows_array(const std::vector<std::array<double, 3>>& rows, s
   return out;
 }
 
+// As the command line's --dim: a degree of the diagrams, 0 to 3 (a 3D medusa has H3).
+void check_dim(std::optional<int> dim) {
+  if (dim && (*dim < 0 || *dim > 3))
+    throw InputError("dim=" + std::to_string(*dim) + " is not in range 0 to 3");
+}
+
 // Points in the stored order (degree, then birth filtration index): (birth, death, degree).
 std::vector<std::array<double, 3>> points_of(const persistence::Diagram& d, std::optional<int> dim,
                                              bool zero_length) {
@@ -67,6 +73,7 @@ std::vector<std::array<double, 3>> points_of(const persistence::Diagram& d, std:
 
 py::object diagrams(StoreView& store, const py::object& type, std::optional<int> dim,
                     const std::string& filtration, bool zero_length, const std::string& layout) {
+  check_dim(dim);
   const persistence::Diagram& d = store.diagram(direction_of(filtration), type_of(store, type));
   if (layout == "giotto")
     return rows_array(points_of(d, dim, zero_length), 3);
@@ -87,6 +94,7 @@ py::object time_value(double t) { return py::float_(t); }
 
 py::list classes(StoreView& store, const py::object& type, std::optional<int> dim,
                  const std::string& filtration, bool zero_length, bool shorten) {
+  check_dim(dim);
   std::vector<std::string> wraps;
   const auto records =
       store.classes(direction_of(filtration), type_of(store, type), dim, zero_length, shorten, &wraps);
@@ -139,6 +147,9 @@ py::tuple betti_curves(StoreView& store, const py::object& type, const std::stri
   else
     for (std::int64_t t : store.medusa().input.frame_times)
       at.push_back(static_cast<double>(t));
+  for (double t : at)
+    if (std::isnan(t))
+      throw InputError("times holds nan: a Betti number is counted at a time");
   std::vector<double> axis = at;
   if (direction == persistence::Direction::reverse)
     for (double& s : axis)

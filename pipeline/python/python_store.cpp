@@ -105,7 +105,9 @@ std::vector<persistence::ClassRecord> StoreView::classes(persistence::Direction 
 
 std::vector<std::vector<std::int64_t>> StoreView::complex_at(double t, std::optional<int> type) const {
   const auto& frames = medusa_.input.frame_times;
-  if (frames.empty() || t < static_cast<double>(frames.front()) || t > static_cast<double>(frames.back()))
+  // Written so that nan, which compares false with everything, is outside too.
+  if (frames.empty() ||
+      !(t >= static_cast<double>(frames.front()) && t <= static_cast<double>(frames.back())))
     throw InputError("time " + shortest(t) + " is outside the run " + path_ + " (MCS " +
                      (frames.empty()
                           ? std::string("none")

@@ -191,6 +191,16 @@ def main():
         raise AssertionError("K_at before the run did not raise")
     except medusa.Error as e:
         assert str(e).startswith("time -1 is outside the run"), e
+    # Values the command line refuses are refused here too, not answered with an empty or final result.
+    for call, wanted in ((lambda: s.K_at(float("nan")), "time nan is outside the run"),
+                         (lambda: s.betti_curves(times=[float("nan"), 50.0]), "times holds nan"),
+                         (lambda: s.diagrams(dim=5), "dim=5 is not in range 0 to 3"),
+                         (lambda: s.classes(dim=-1), "dim=-1 is not in range 0 to 3")):
+        try:
+            call()
+            raise AssertionError(f"not refused: {wanted}")
+        except medusa.Error as e:
+            assert str(e).startswith(wanted), e
     ran = medusa.run(run_input, radius=radius, output=os.path.join(work, "run.h5"), force=True)
     for direction in ("forward", "reverse"):
         for t in [None] + list(s.types):
