@@ -131,6 +131,15 @@ TEST_CASE("A periodic run is refused unless periodic-as-open is allowed", "[io][
   CHECK(has_warning(r, "periodic boundaries along x,z"));
 }
 
+TEST_CASE("A run of one frame is read with a warning that nothing moves in it", "[io][run]") {
+  io::test::TempDir dir;
+  write(dir.file("one.csv"), "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n40,1,1,1,2,3\n40,2,1,4,5,6\n");
+  const RunData one = read_run(dir.file("one.csv"));
+  CHECK(has_warning(one, "one.csv has one frame (MCS 40): no cell moves"));
+  write(dir.file("two.csv"), "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n40,1,1,1,2,3\n50,1,1,4,5,6\n");
+  CHECK_FALSE(has_warning(read_run(dir.file("two.csv")), "one frame"));
+}
+
 TEST_CASE("A run with lattice z extent 1 is planar", "[io][run]") {
   io::test::TempDir dir;
   write(dir.file("cells.csv"),

@@ -385,6 +385,12 @@ RunData read_run(const std::string& path, const RunOptions& options) {
     throw InputError(path + ": no such file or folder");
   }
   run.warnings.insert(run.warnings.begin(), warnings.begin(), warnings.end());
+  // Not an error (a frame's complex is still a complex), but no sorting can show in it.
+  if (run.trajectories.frames() == 1)
+    run.warnings.push_back(path + " has one frame (MCS " +
+                           std::to_string(run.trajectories.frame_times.front()) +
+                           "): no cell moves, so nothing joins or fills; the diagrams are those of that "
+                           "frame's complex");
   return run;
 }
 
