@@ -57,6 +57,14 @@ std::string cell_type_title(const kinetic::Trajectories& input, int type) {
   return cell_type_title(input.type_names, type);
 }
 
+std::string type_label_title(const TypeNames& names, const std::string& label) {
+  return label == "all" ? std::string("all cells") : cell_type_title(names, std::stoi(label));
+}
+
+std::string type_label_name(const TypeNames& names, const std::string& label) {
+  return label == "all" ? std::string() : cell_type_name(names, std::stoi(label));
+}
+
 std::vector<int> cell_types(const kinetic::Trajectories& input) {
   std::vector<int> types;
   types.reserve(input.cells.size());

@@ -30,6 +30,11 @@ std::string cell_type_name(const kinetic::Trajectories& input, int type);
 std::string cell_type_title(const TypeNames& names, int type);
 std::string cell_type_title(const kinetic::Trajectories& input, int type);
 
+// For a type label of the outputs ("all" or a decimal id): "all cells" or cell_type_title, and the
+// type's name ("" for all and for a type without one).
+std::string type_label_title(const TypeNames& names, const std::string& label);
+std::string type_label_name(const TypeNames& names, const std::string& label);
+
 // "1 (Condensing), 2 (NonCondensing)": the run's cell types with their names where it has them.
 std::string cell_type_list(const kinetic::Trajectories& input);
 

@@ -57,14 +57,15 @@ std::vector<Sample> frame_samples(const std::vector<Sample>& samples, const kine
   return by_frame;
 }
 
-void write_curves_csv(std::ostream& out, const std::vector<TypeCurves>& all) {
-  out << "time,type,f0,f1,f2,f3,euler,b0,b1,b2\n";
+void write_curves_csv(std::ostream& out, const std::vector<TypeCurves>& all, const TypeNames& names) {
+  out << "time,type,f0,f1,f2,f3,euler,b0,b1,b2,type_name\n";
   // Every type has the same sample times: format them once.
   std::vector<std::string> times;
   if (!all.empty())
     for (const medusa::SignatureSample& s : all.front().samples)
       times.push_back(format_time(s.time));
-  for (const TypeCurves& c : all)
+  for (const TypeCurves& c : all) {
+    const std::string name = csv_field(type_label_name(names, c.label));
     for (std::size_t i = 0; i < c.samples.size(); ++i) {
       if (i % 4096 == 0)
         check_interrupted();
@@ -72,15 +73,17 @@ void write_curves_csv(std::ostream& out, const std::vector<TypeCurves>& all) {
       const medusa::Signature& g = s.signature;
       out << (i < times.size() && s.time == all.front().samples[i].time ? times[i] : format_time(s.time))
           << ',' << c.label << ',' << g.f[0] << ',' << g.f[1] << ',' << g.f[2] << ',' << g.f[3] << ','
-          << g.euler << ',' << g.betti[0] << ',' << g.betti[1] << ',' << g.betti[2] << '\n';
+          << g.euler << ',' << g.betti[0] << ',' << g.betti[1] << ',' << g.betti[2] << ',' << name << '\n';
     }
+  }
 }
 
-std::vector<CurvePanel> panels_of(const std::vector<TypeCurves>& all) {
+std::vector<CurvePanel> panels_of(const std::vector<TypeCurves>& all, const TypeNames& names) {
   std::vector<CurvePanel> panels;
   for (const TypeCurves& c : all) {
-    CurvePanel betti{"type " + c.label + ": Betti numbers of K_t", {}};
-    CurvePanel counts{"type " + c.label + ": simplices of K_t", {}};
+    const std::string title = type_label_title(names, c.label);
+    CurvePanel betti{title + ": Betti numbers of K_t", {}};
+    CurvePanel counts{title + ": simplices of K_t", {}};
     for (int k = 0; k <= 3; ++k) {
       Curve b{"b" + std::to_string(k), {}, {}}, f{"f" + std::to_string(k), {}, {}};
       for (const medusa::SignatureSample& s : c.samples) {
@@ -147,9 +150,8 @@ void curves_command(const CurvesArguments& args) {
                "first and last:\n";
   for (const TypeCurves& c : all) {
     // A type's contacts are those among its own cells (its subcomplex, docs/MATH.md §7.4).
-    std::cout << (c.label == "all" ? std::string("all cells")
-                                   : cell_type_title(medusa.input, std::stoi(c.label)) + ", among its cells")
-              << ":\n  ";
+    std::cout << type_label_title(medusa.input.type_names, c.label)
+              << (c.label == "all" ? "" : ", among its cells") << ":\n  ";
     describe(std::cout, c.samples.front());
     std::cout << "\n  ";
     describe(std::cout, c.samples.back());
@@ -176,15 +178,19 @@ void curves_command(const CurvesArguments& args) {
   // All four files or none: an interrupt between two writes removes those already written.
   std::vector<std::string> written;
   try {
-    write_file_atomically(csv, [&](std::ostream& out) { write_curves_csv(out, all); });
+    write_file_atomically(csv,
+                          [&](std::ostream& out) { write_curves_csv(out, all, medusa.input.type_names); });
     written.push_back(csv);
-    write_file_atomically(svg, [&](std::ostream& out) { write_curves_svg(out, panels_of(all), t0, t_end); });
+    write_file_atomically(svg, [&](std::ostream& out) {
+      write_curves_svg(out, panels_of(all, medusa.input.type_names), t0, t_end);
+    });
     written.push_back(svg);
     check_interrupted();
-    write_file_atomically(sorting_csv, [&](std::ostream& out) { write_sorting_csv(out, sorting); });
+    write_file_atomically(
+        sorting_csv, [&](std::ostream& out) { write_sorting_csv(out, sorting, medusa.input.type_names); });
     written.push_back(sorting_csv);
     write_file_atomically(sorting_svg, [&](std::ostream& out) {
-      write_curves_svg(out, sorting_panels(sorting, t0, t_end), t0, t_end);
+      write_curves_svg(out, sorting_panels(sorting, t0, t_end, medusa.input.type_names), t0, t_end);
     });
     written.push_back(sorting_svg);
     check_interrupted();
@@ -204,11 +210,12 @@ void add_curves_command(CLI::App& app) {
       "curves", "Simplex counts, Euler characteristic, Betti numbers and sorting measures of K_t over time "
                 "(CSV and SVG)");
   curves->add_option("store", args->store, "HDF5 store written by `medusa run`")->required();
-  curves->add_option("-o,--output", args->prefix,
-                     "output prefix: writes <prefix>.curves.csv (time,type,f0,f1,f2,f3,euler,b0,b1,b2), "
-                     "<prefix>.curves.svg, <prefix>.sorting.csv (heterotypic contacts, same-type neighbour "
-                     "fractions and clusters per type; README) and <prefix>.sorting.svg (default: the store "
-                     "name without .h5)");
+  curves->add_option(
+      "-o,--output", args->prefix,
+      "output prefix: writes <prefix>.curves.csv (time,type,f0,f1,f2,f3,euler,b0,b1,b2,type_name), "
+      "<prefix>.curves.svg, <prefix>.sorting.csv (heterotypic contacts, same-type neighbour "
+      "fractions and clusters per type; README) and <prefix>.sorting.svg (default: the store "
+      "name without .h5)");
   curves->add_flag(
       "--frames-only", args->frames_only,
       "one row per input frame (the state reported at the frame, docs/MATH.md §6.6) instead of one per "

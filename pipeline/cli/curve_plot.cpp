@@ -84,7 +84,7 @@ void write_curves_svg(std::ostream& out, const std::vector<CurvePanel>& panels, 
       const Curve& c = panel.curves[k];
       const char* colour = colours[k % (sizeof colours / sizeof colours[0])];
       const double x0 = margin + static_cast<double>(k) * (cell + gap) + left, x1 = x0 + plot;
-      const double plot_top = y0 + 38, bottom = y0 + panel_height;
+      const double plot_top = y0 + 50, bottom = y0 + panel_height;
       double lo = 0, hi = 0;
       for (double v : c.values)
         hi = std::max(hi, v);
@@ -95,12 +95,13 @@ void write_curves_svg(std::ostream& out, const std::vector<CurvePanel>& panels, 
       out << "<g class=\"curve\" data-name=\"" << xml_escape(c.name) << "\" data-max=\"" << tick(hi)
           << "\">\n"
           << "<text x=\"" << number(x0) << "\" y=\"" << number(y0 + 28) << "\" fill=\"" << colour << "\">"
-          << xml_escape(curve_label(c.name))
-          << (c.values.empty() ? std::string()
-                               : ": " + tick(c.values.front()) + " at MCS " + tick(t0) + ", " +
-                                     tick(c.values.back()) + " at MCS " + tick(t_end))
-          << "</text>\n"
-          << "<rect x=\"" << number(x0) << "\" y=\"" << number(plot_top) << "\" width=\"" << number(plot)
+          << xml_escape(curve_label(c.name)) << (c.values.empty() ? "" : ":") << "</text>\n";
+      // The values on a line of their own: a type's name beside them ran past a third of the page.
+      if (!c.values.empty())
+        out << "<text x=\"" << number(x0) << "\" y=\"" << number(y0 + 41) << "\" fill=\"" << colour << "\">"
+            << tick(c.values.front()) << " at MCS " << tick(t0) << ", " << tick(c.values.back()) << " at MCS "
+            << tick(t_end) << "</text>\n";
+      out << "<rect x=\"" << number(x0) << "\" y=\"" << number(plot_top) << "\" width=\"" << number(plot)
           << "\" height=\"" << number(bottom - plot_top) << "\" fill=\"none\" stroke=\"#ddd\"/>\n";
       for (double v : marks)
         out << "<line x1=\"" << number(x0 - 3) << "\" y1=\"" << number(y_of(v)) << "\" x2=\"" << number(x0)

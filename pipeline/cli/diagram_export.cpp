@@ -14,7 +14,8 @@ std::string type_name_of(const persistence::Diagram& d, const TypeNames& names) 
   return d.cell_type == persistence::all_types ? std::string() : cell_type_name(names, d.cell_type);
 }
 
-// A CSV field as RFC 4180 writes it: quoted when it holds a comma, a quote or a line break.
+} // namespace
+
 std::string csv_field(const std::string& text) {
   if (text.find_first_of(",\"\r\n") == std::string::npos)
     return text;
@@ -23,8 +24,6 @@ std::string csv_field(const std::string& text) {
     quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
   return quoted + "\"";
 }
-
-} // namespace
 
 std::string format_time(double t) {
   if (std::isinf(t))

@@ -14,6 +14,9 @@ namespace medusa::cli {
 // A time as text: round-trip precision, "inf" / "-inf" for essential classes.
 std::string format_time(double t);
 
+// A CSV field as RFC 4180 writes it: quoted when it holds a comma, a quote or a line break.
+std::string csv_field(const std::string& text);
+
 // `birth death dim` per pair, with a comment line naming each diagram ("# type 1 (Condensing), forward,
 // ...": the type's name from `names` where the run has one).
 void write_pairs_text(std::ostream& out, const std::vector<persistence::Diagram>& diagrams,

@@ -51,9 +51,10 @@ std::string heterotypic_contacts(const medusa::SortingMeasures& first, const med
          share(last.heterotypic_fraction());
 }
 
-void write_sorting_csv(std::ostream& out, const std::vector<medusa::SortingSample>& samples) {
+void write_sorting_csv(std::ostream& out, const std::vector<medusa::SortingSample>& samples,
+                       const TypeNames& names) {
   out << "time,type,cells,edges,heterotypic_edges,heterotypic_fraction,cells_with_neighbours,"
-         "same_type_fraction,clusters,largest_cluster,mean_cluster_size\n";
+         "same_type_fraction,clusters,largest_cluster,mean_cluster_size,type_name\n";
   if (samples.empty())
     return;
   std::vector<std::string> times;
@@ -62,6 +63,7 @@ void write_sorting_csv(std::ostream& out, const std::vector<medusa::SortingSampl
     times.push_back(format_time(s.time));
   for (std::size_t g = 0; g < samples.front().measures.size(); ++g) {
     const std::string label = label_of(samples.front().measures[g]);
+    const std::string name = csv_field(type_label_name(names, label));
     for (std::size_t i = 0; i < samples.size(); ++i) {
       if (i % 4096 == 0)
         check_interrupted();
@@ -73,13 +75,13 @@ void write_sorting_csv(std::ostream& out, const std::vector<medusa::SortingSampl
       put_fraction(out, m.same_type_fraction);
       out << ',' << m.clusters << ',' << m.largest_cluster << ',';
       put_fraction(out, m.mean_cluster_size());
-      out << '\n';
+      out << ',' << name << '\n';
     }
   }
 }
 
 std::vector<CurvePanel> sorting_panels(const std::vector<medusa::SortingSample>& samples, double t0,
-                                       double t_end) {
+                                       double t_end, const TypeNames& names) {
   using Quantity = std::function<double(const medusa::SortingMeasures&)>;
   const std::vector<std::pair<std::string, Quantity>> quantities{
       {"heterotypic contacts: fraction of the edges of K_t (touching the type) that join two types",
@@ -98,7 +100,7 @@ std::vector<CurvePanel> sorting_panels(const std::vector<medusa::SortingSample>&
   for (const auto& [title, value] : quantities) {
     CurvePanel panel{title, {}};
     for (std::size_t g = 0; g < samples.front().measures.size(); ++g) {
-      Curve c{"type " + label_of(samples.front().measures[g]), {}, {}};
+      Curve c{type_label_title(names, label_of(samples.front().measures[g])), {}, {}};
       double last_bucket = -1;
       for (const medusa::SortingSample& s : samples) {
         const double v = value(s.measures.at(g));

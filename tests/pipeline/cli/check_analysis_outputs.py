@@ -161,9 +161,19 @@ def check_curves(medusa, work, store, cells):
         expected_f0[str(t)] = sum(1 for v in first.values() if v[0] == t)
     with open(prefix + ".curves.csv", newline="") as f:
         reader = csv.DictReader(f)
-        assert reader.fieldnames == ["time", "type", "f0", "f1", "f2", "f3", "euler", "b0", "b1", "b2"], reader.fieldnames
+        assert reader.fieldnames == ["time", "type", "f0", "f1", "f2", "f3", "euler", "b0", "b1", "b2",
+                                     "type_name"], reader.fieldnames
         rows = list(reader)
     assert rows, "no rows"
+    # Each type's name as the input CSV gives it, on every row of the type (none for all cells).
+    with gzip.open(cells, "rt") as f:
+        names = {row["type_id"]: row["type_name"] for row in csv.DictReader(f)}
+    names["all"] = ""
+    assert len(names) > 2 and all(names[k] for k in names if k != "all"), names
+    for path in (prefix + ".curves.csv", prefix + ".sorting.csv"):
+        with open(path, newline="") as f:
+            named = list(csv.DictReader(f))
+        assert named and all(r["type_name"] == names[r["type"]] for r in named), (path, names)
     first_rows = {}
     for r in rows:
         f = [int(r[f"f{k}"]) for k in range(4)]
