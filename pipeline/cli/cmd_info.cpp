@@ -4,6 +4,7 @@
 #include "diagram_export.h"
 #include "diagram_selection.h"
 #include "position_source.h"
+#include "recorded_domain.h"
 #include "side_outputs.h"
 
 #include "medusa/medusa/store_reader.h"
@@ -16,19 +17,11 @@ namespace {
 
 // Open, or periodic along which axes with which periods (docs/MATH.md §8).
 std::string describe_domain(const medusa::Medusa& medusa) {
-  std::string axes, periods;
-  for (std::size_t a = 0; a < 3; ++a) {
-    const std::int64_t length = medusa.run.periodic_lengths[a];
-    if (length <= 0)
-      continue;
-    axes += (axes.empty() ? "" : ", ") + std::string(1, static_cast<char>('x' + a));
-    periods += (periods.empty() ? "" : " x ") +
-               format_time(static_cast<double>(length) / static_cast<double>(medusa.input.scale));
-  }
-  if (axes.empty())
+  std::string periodic = periodic_domain_text(medusa.run, medusa.input.scale);
+  if (periodic.empty())
     return "open (no periodic boundary)";
-  return "periodic along " + axes + " (period " + periods +
-         " lattice units; loops that close through the boundary: column 'wraps' of `medusa classes --dim 1`)";
+  periodic.pop_back(); // the closing parenthesis, to go on inside it
+  return periodic + "; loops that close through the boundary: column 'wraps' of `medusa classes --dim 1`)";
 }
 
 void info_command(const std::string& path) {

@@ -7,6 +7,7 @@
 #include "diagram_selection.h"
 #include "forward_counts.h"
 #include "interrupt.h"
+#include "recorded_domain.h"
 #include "report_answer.h"
 #include "report_classes.h"
 #include "run_summary.h"
@@ -110,6 +111,7 @@ json facts(const medusa::Medusa& medusa, const std::string& store) {
           {"t0", input.frame_times.front()},
           {"t_end", input.frame_times.back()},
           {"dimension", input.dimension},
+          {"domain", periodic_domain_text(medusa.run, input.scale)},
           {"radius", medusa.run.radius_text.empty() ? mcs(medusa.run.radius) : medusa.run.radius_text},
           {"source_files", medusa.run.source_files},
           {"software_version", medusa.run.software_version},

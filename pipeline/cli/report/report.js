@@ -198,7 +198,8 @@
       const card = html("div", { class: "run-card", "data-run": ri }, cards);
       const h = html("h3", {}, card, run.name + " ");
       html("span", { class: "muted" }, h, "radius " + run.facts.radius + " · " + run.facts.cc3d_cells + " cells · " +
-        run.facts.frames + " frames, MCS " + run.facts.t0 + "–" + run.facts.t_end);
+        run.facts.frames + " frames, MCS " + run.facts.t0 + "–" + run.facts.t_end +
+        (run.facts.domain ? " · " + run.facts.domain : ""));
       const sorts = run.verdict.startsWith("sorts");
       const v = html("p", { class: "verdict " + (sorts ? "sorts" : "no-sort"), "data-run": ri }, card);
       html("b", {}, v, run.name + " " + run.verdict.split(":")[0] + ":");

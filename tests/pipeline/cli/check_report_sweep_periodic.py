@@ -82,6 +82,10 @@ if "radius 13" not in result.stderr:
 if data["scale"]["computed_radii"] != ["3", "3.5", "13"]:
     failures.append(f"real run: computed radii {data['scale']['computed_radii']}, expected 3, 3.5 and 13")
 print(f"real run: medusa sweep --radius 13 refused: {refused.stderr.strip()}")
+# The page says the run is periodic, with the periods of its CC3DML (50 x 50 lattice units along x, y).
+domain = data["runs"][0]["facts"]["domain"]
+if domain != "periodic along x, y (period 50 x 50 lattice units)":
+    failures.append(f"real run: the page's domain is {domain!r}")
 
 # 2. Hand-built: a ring of 5 cells of two types along x (period 10), the last one moving towards the
 # seam, so that contacts across it appear at the larger radii.
