@@ -60,7 +60,7 @@ python)
     { echo "/usr/bin/python3 does not look in <prefix>/$pythondir" >&2; exit 1; }
   # The installed module (not the build tree's) reads the store of the installed medusa; its diagrams
   # have as many points as `medusa barcode` lists.
-  expected=$("$prefix/bin/medusa" barcode "$work/x.h5" --format csv | grep -c ',all,forward$' || true)
+  expected=$("$prefix/bin/medusa" barcode "$work/x.h5" --format csv | grep -c ',all,forward,' || true)
   cd "$work"
   PYTHONPATH=$prefix/$pythondir /usr/bin/python3 - "$prefix" "$work/x.h5" "$expected" <<'PY'
 import sys
