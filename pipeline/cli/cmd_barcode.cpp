@@ -62,9 +62,10 @@ void add_barcode_command(CLI::App& app) {
                  "persistence diagrams)");
   barcode->add_option("store", args->store, "HDF5 store written by `medusa run`")->required();
   barcode
-      ->add_option("--format", args->format,
-                   "pers (GUDHI: dim birth death), csv (birth,death,dimension,type,direction,type_name), json, svg "
-                   "(barcodes: one panel per diagram and degree) or diagram-svg (birth-death scatter plots)")
+      ->add_option(
+          "--format", args->format,
+          "pers (GUDHI: dim birth death), csv (birth,death,dimension,type,direction,type_name), json, svg "
+          "(barcodes: one panel per diagram and degree) or diagram-svg (birth-death scatter plots)")
       ->check(CLI::IsMember({"pers", "csv", "json", "svg", "diagram-svg"}))
       ->capture_default_str();
   barcode->add_option("-o,--output", args->output, "output file (default: stdout)");

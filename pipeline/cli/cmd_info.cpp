@@ -17,11 +17,10 @@ namespace {
 
 // Open, or periodic along which axes with which periods (docs/MATH.md §8).
 std::string describe_domain(const medusa::Medusa& medusa) {
-  std::string periodic = periodic_domain_text(medusa.run, medusa.input.scale);
-  if (periodic.empty())
-    return "open (no periodic boundary)";
-  periodic.pop_back(); // the closing parenthesis, to go on inside it
-  return periodic + "; loops that close through the boundary: column 'wraps' of `medusa classes --dim 1`)";
+  const std::string periodic = periodic_domain_text(
+      medusa.run, medusa.input.scale,
+      "; loops that close through the boundary: column 'wraps' of `medusa classes --dim 1`");
+  return periodic.empty() ? "open (no periodic boundary)" : periodic;
 }
 
 void info_command(const std::string& path) {

@@ -8,13 +8,6 @@
 #include <cstdio>
 
 namespace medusa::cli {
-namespace {
-
-std::string type_name_of(const persistence::Diagram& d, const TypeNames& names) {
-  return d.cell_type == persistence::all_types ? std::string() : cell_type_name(names, d.cell_type);
-}
-
-} // namespace
 
 std::string csv_field(const std::string& text) {
   if (text.find_first_of(",\"\r\n") == std::string::npos)
@@ -55,7 +48,7 @@ void write_csv(std::ostream& out, const std::vector<persistence::Diagram>& diagr
     out << "# medusa run " << run_id << "\n";
   out << "birth,death,dimension,type,direction,type_name\n";
   for (const persistence::Diagram& d : diagrams) {
-    const std::string name = csv_field(type_name_of(d, names));
+    const std::string name = csv_field(type_label_name(names, type_label(d.cell_type)));
     for (const persistence::PersistencePair& p : d.pairs)
       out << format_time(p.birth) << ',' << format_time(p.death) << ',' << p.dim << ','
           << type_label(d.cell_type) << ',' << direction_name(d.direction) << ',' << name << '\n';
@@ -73,7 +66,7 @@ void write_json(std::ostream& out, const std::vector<persistence::Diagram>& diag
       pairs.push_back({{"dimension", p.dim}, {"birth", p.birth}, {"death", death}});
     }
     list.push_back({{"type", type_label(d.cell_type)},
-                    {"type_name", type_name_of(d, names)},
+                    {"type_name", type_label_name(names, type_label(d.cell_type))},
                     {"direction", direction_name(d.direction)},
                     {"pairs", pairs}});
   }

@@ -6,7 +6,7 @@
 
 namespace medusa::cli {
 
-std::string periodic_domain_text(const medusa::RunInfo& run, std::int64_t scale) {
+std::string periodic_domain_text(const medusa::RunInfo& run, std::int64_t scale, const std::string& aside) {
   std::string axes, periods;
   for (std::size_t a = 0; a < 3; ++a) {
     const std::int64_t length = run.periodic_lengths[a];
@@ -17,7 +17,8 @@ std::string periodic_domain_text(const medusa::RunInfo& run, std::int64_t scale)
     axes += (axes.empty() ? "" : ", ") + std::string(1, static_cast<char>('x' + a));
     periods += (periods.empty() ? "" : " x ") + std::string(period);
   }
-  return axes.empty() ? std::string() : "periodic along " + axes + " (period " + periods + " lattice units)";
+  return axes.empty() ? std::string()
+                      : "periodic along " + axes + " (period " + periods + " lattice units" + aside + ")";
 }
 
 io::PeriodicDomain recorded_domain(const medusa::RunInfo& run, std::int64_t scale, const std::string& store) {

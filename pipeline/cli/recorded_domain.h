@@ -19,7 +19,8 @@ namespace medusa::cli {
 io::PeriodicDomain recorded_domain(const medusa::RunInfo& run, std::int64_t scale, const std::string& store);
 
 // "periodic along x, y (period 50 x 50 lattice units)", or "" for an open run: what `medusa info` and
-// the report say of the domain.
-std::string periodic_domain_text(const medusa::RunInfo& run, std::int64_t scale);
+// the report say of the domain; `aside` goes inside the parentheses, after the periods.
+std::string periodic_domain_text(const medusa::RunInfo& run, std::int64_t scale,
+                                 const std::string& aside = "");
 
 } // namespace medusa::cli

@@ -97,14 +97,12 @@ std::pair<double, double> panel_range(const Panel& p, double t0, double t_end) {
           std::min(t_end, std::ceil(hi / s) * s > lo ? std::ceil(hi / s) * s : lo + s)};
 }
 
-// Finite positive-length pairs of degree k (max_bars > 0: the max_bars longest, ties by position),
-// sorted by birth, then death; and the counts.
 std::string diagram_name(const persistence::Diagram& d, const TypeNames& names) {
-  return (d.cell_type == persistence::all_types ? std::string("all cells")
-                                                : cell_type_title(names, d.cell_type)) +
-         ", " + direction_name(d.direction);
+  return type_label_title(names, type_label(d.cell_type)) + ", " + direction_name(d.direction);
 }
 
+// Finite positive-length pairs of degree k (max_bars > 0: the max_bars longest, ties by position),
+// sorted by birth, then death; and the counts.
 Panel make_panel(const persistence::Diagram& d, const TypeNames& names, int k, std::size_t max_bars) {
   Panel panel;
   panel.diagram = &d;

@@ -72,5 +72,6 @@ TEST_CASE("Essential classes rank by how long their ring stayed whole: whole at 
   CHECK(order(whole, 1) > order(late, 1));
   CHECK(order(late, 1) > order(early, 1));
   CHECK(order(early, 1) > order(never, 1));
-  CHECK(order(never, 0) == order(whole, 1)); // a cluster never joined ranks with whole rings, whatever its cells
+  CHECK(order(never, 0) ==
+        order(whole, 1)); // a cluster never joined ranks with whole rings, whatever its cells
 }
