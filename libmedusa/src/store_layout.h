@@ -14,6 +14,7 @@ inline constexpr const char* radius_text = "radius_text";
 inline constexpr const char* grid_scale = "grid_scale";
 inline constexpr const char* dimension = "dimension";
 inline constexpr const char* source_files = "source_files";
+inline constexpr const char* input_warnings = "input_warnings";
 inline constexpr const char* command_line = "command_line";
 inline constexpr const char* periodic_axes = "periodic_axes";
 inline constexpr const char* periodic_length[3] = {"periodic_length_x", "periodic_length_y",

@@ -311,6 +311,8 @@ Medusa read_store(const std::string& path, const StoreReadOptions& options) {
   m.run.radius = h5::read_double_attribute(f, L::radius, path);
   m.run.radius_text = h5::read_string_attribute(f, L::radius_text, path);
   m.run.source_files = h5::read_strings_attribute(f, L::source_files, path);
+  if (has_attribute(f, L::input_warnings, path)) // absent from stores written before it existed
+    m.run.input_warnings = h5::read_strings_attribute(f, L::input_warnings, path);
   m.run.command_line = h5::read_string_attribute(f, L::command_line, path);
   m.run.software_version = h5::read_string_attribute(f, L::software_version, path);
   // Absent from stores written before periodic runs were supported: those are open runs.

@@ -178,6 +178,7 @@ void StoreWriter::run(const RunInfo& info, const kinetic::Trajectories& input) {
     h5::write_attribute(f, L::grid_scale, static_cast<std::int64_t>(input.scale), w.path);
     h5::write_attribute(f, L::dimension, static_cast<std::int64_t>(input.dimension), w.path);
     h5::write_attribute(f, L::source_files, info.source_files, w.path);
+    h5::write_attribute(f, L::input_warnings, info.input_warnings, w.path);
     h5::write_attribute(f, L::command_line, info.command_line, w.path);
     h5::write_attribute(f, L::software_version, info.software_version, w.path);
     h5::write_attribute(f, L::periodic_axes, info.periodic_axes, w.path);

@@ -35,6 +35,10 @@ void info_command(const std::string& path) {
             << "source files: " << medusa.run.source_files.size() << "\n";
   for (const std::string& f : medusa.run.source_files)
     std::cout << "  " << f << "\n";
+  // What reading the input warned of: the results hold for what was read (docs/FORMAT.md).
+  std::cout << "input warnings: " << medusa.run.input_warnings.size() << "\n";
+  for (const std::string& w : medusa.run.input_warnings)
+    std::cout << "  " << w << "\n";
   std::cout << "dimension: " << input.dimension << "\n"
             << "grid scale: " << input.scale << "\n"
             << "positions: " << describe_positions(medusa.run) << "\n"

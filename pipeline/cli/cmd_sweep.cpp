@@ -119,6 +119,7 @@ void sweep_command(const SweepArguments& args) {
   const io::PeriodicDomain domain = args.periodic_as_open ? io::PeriodicDomain{} : data.domain;
   medusa::RunInfo info;
   info.source_files = data.sources;
+  info.input_warnings = data.warnings;
   info.software_version = medusa::version;
   const unsigned workers = worker_threads(args.threads);
   if (!args.quiet)

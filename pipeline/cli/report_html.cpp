@@ -50,7 +50,10 @@ void write_static_verdicts(std::ostream& out, const std::vector<ReportRun>& runs
     const bool sorts = verdict.rfind("sorts", 0) == 0;
     out << "<div class=\"run-card\"><p class=\"verdict " << (sorts ? "sorts" : "no-sort") << "\"><b>"
         << xml_escape(r.name + " " + verdict.substr(0, colon)) << ":</b>"
-        << xml_escape(colon == std::string::npos ? "" : verdict.substr(colon + 1)) << "</p></div>\n";
+        << xml_escape(colon == std::string::npos ? "" : verdict.substr(colon + 1)) << "</p>";
+    for (const std::string& w : r.data.at("facts").value("input_warnings", std::vector<std::string>()))
+      out << "<p class=\"input-warning\"><b>Input warning: </b>" << xml_escape(w) << "</p>";
+    out << "</div>\n";
   }
   out << "</div>\n<p class=\"note\">JavaScript is off: the verdicts above and the pictures drawn in "
          "the page (radius sweeps, distances) show; the charts over time, the lines per type, the "

@@ -114,6 +114,7 @@ json facts(const medusa::Medusa& medusa, const std::string& store) {
           {"domain", periodic_domain_text(medusa.run, input.scale)},
           {"radius", medusa.run.radius_text.empty() ? mcs(medusa.run.radius) : medusa.run.radius_text},
           {"source_files", medusa.run.source_files},
+          {"input_warnings", medusa.run.input_warnings},
           {"software_version", medusa.run.software_version},
           {"command_line", medusa.run.command_line},
           {"medusa_cells_per_dimension", std::move(cells_per_dim)}};

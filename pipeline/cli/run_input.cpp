@@ -74,6 +74,7 @@ medusa::RunInfo run_info(const io::RunData& data, const std::string& radius,
   info.radius = std::stod(radius);
   info.radius_text = radius;
   info.source_files = data.sources;
+  info.input_warnings = data.warnings;
   info.command_line = command_line;
   info.software_version = medusa::version;
   info.position_source = data.position_convention;

@@ -258,13 +258,20 @@ std::shared_ptr<StoreView> run(const std::string& input, const py::object& radiu
   request.periodic_as_open = periodic_as_open;
   request.round_csv = round_csv;
   request.skip_unreadable_frames = skip_unreadable_frames;
-  std::string path;
+  std::shared_ptr<StoreView> store;
   {
     const SignalHook hook;
     py::gil_scoped_release release;
-    path = run_pipeline(request, "medusa.run(" + input + ", radius=" + request.radius + ") [python]");
-    return std::make_shared<StoreView>(path);
+    const std::string path =
+        run_pipeline(request, "medusa.run(" + input + ", radius=" + request.radius + ") [python]");
+    store = std::make_shared<StoreView>(path);
   }
+  // What `medusa run` prints on stderr as warnings (later frames missing, snapshots left out), as
+  // Python warnings; the store records them too (Store.input_warnings).
+  for (const std::string& w : store->medusa().run.input_warnings)
+    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) < 0)
+      throw py::error_already_set();
+  return store;
 }
 
 } // namespace
@@ -298,6 +305,10 @@ PYBIND11_MODULE(medusa, m) {
       .def_property_readonly(
           "frame_times", [](const StoreView& s) { return s.medusa().input.frame_times; },
           "the frame times (MCS)")
+      .def_property_readonly(
+          "input_warnings", [](const StoreView& s) { return s.medusa().run.input_warnings; },
+          "what reading the input warned of, one line each as `medusa run` printed it (later frames "
+          "missing, snapshots left out, ...; [] if nothing, and for stores written before it was recorded)")
       .def_property_readonly(
           "periodic_axes", [](const StoreView& s) { return s.medusa().run.periodic_axes; },
           "the periodic axes of the run (\"x,y\", ...; \"\" for an open run, docs/MATH.md §8)")

@@ -21,6 +21,8 @@ inline medusa::RunInfo test_run_info() {
   info.radius = 1.05;
   info.radius_text = "1.05";
   info.source_files = {"run/Step_0000.vtk.gz", "run/Step_0010.vtk.gz"};
+  info.input_warnings = {"run: the last frame read is MCS 10, but run.xml runs to MCS 100",
+                         "run/Step_0005.vtk.gz: snapshot truncated; left out"};
   info.command_line = "medusa run --radius 1.05 run";
   info.software_version = "0.1.0-test";
   info.position_source = "vtk-centroids-voxel-corner";
@@ -77,9 +79,10 @@ inline bool same_medusa(const medusa::Medusa& a, const medusa::Medusa& b) {
   if (a.end != b.end || a.end.time != b.end.time)
     return false;
   if (a.run.radius != b.run.radius || a.run.radius_text != b.run.radius_text ||
-      a.run.source_files != b.run.source_files || a.run.command_line != b.run.command_line ||
-      a.run.software_version != b.run.software_version || a.run.position_source != b.run.position_source ||
-      a.run.snap_policy != b.run.snap_policy || a.run.snapped_positions != b.run.snapped_positions ||
+      a.run.source_files != b.run.source_files || a.run.input_warnings != b.run.input_warnings ||
+      a.run.command_line != b.run.command_line || a.run.software_version != b.run.software_version ||
+      a.run.position_source != b.run.position_source || a.run.snap_policy != b.run.snap_policy ||
+      a.run.snapped_positions != b.run.snapped_positions ||
       a.run.snap_max_displacement != b.run.snap_max_displacement)
     return false;
   if (a.input.scale != b.input.scale || a.input.dimension != b.input.dimension ||

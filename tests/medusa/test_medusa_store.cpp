@@ -91,6 +91,9 @@ assert float(a["radius"]) == 1.05
 assert a["radius_text"] == b"1.05"
 assert int(a["grid_scale"]) == 1000 and int(a["dimension"]) == 3
 assert [s.decode() for s in a["source_files"]] == ["run/Step_0000.vtk.gz", "run/Step_0010.vtk.gz"]
+assert [s.decode() for s in a["input_warnings"]] == [
+    "run: the last frame read is MCS 10, but run.xml runs to MCS 100",
+    "run/Step_0005.vtk.gz: snapshot truncated; left out"]
 assert int(a["cell_count"]) == 31 and int(a["end_batch"]) == 2
 c = f["cells"]
 for name in c:
@@ -237,6 +240,22 @@ TEST_CASE("a writer killed mid-write leaves no file at the final name and an unr
   RemoveFiles cleanup{{temporary}};
   REQUIRE(fs::exists(temporary));
   CHECK_THROWS_AS(read_store(temporary), medusa::StoreError);
+}
+
+TEST_CASE("a store written before input warnings were recorded reads as one without any",
+          "[medusa][store][python]") {
+  const std::string path = temp_path("no_warnings.h5");
+  RemoveFiles cleanup{{path}};
+  write_stream(appendix_b_stream(), path, 5, 2);
+  REQUIRE(read_store(path).run.input_warnings.size() == 2);
+  const std::string python = MEDUSA_PYTHON;
+  REQUIRE(run_command(
+              python +
+              " -c 'import sys, h5py; del h5py.File(sys.argv[1], \"r+\").attrs[\"input_warnings\"]' " + path)
+              .status == 0);
+  const Medusa read = read_store(path);
+  CHECK(read.run.input_warnings.empty());
+  CHECK(read.run.source_files.size() == 2);
 }
 
 TEST_CASE("stores of another format version or without the complete flag are rejected",

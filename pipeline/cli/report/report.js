@@ -204,6 +204,13 @@
       const v = html("p", { class: "verdict " + (sorts ? "sorts" : "no-sort"), "data-run": ri }, card);
       html("b", {}, v, run.name + " " + run.verdict.split(":")[0] + ":");
       v.appendChild(document.createTextNode(run.verdict.slice(run.verdict.indexOf(":") + 1)));
+      // What reading the input warned of (later frames missing, snapshots left out): the verdict
+      // holds for what was read, so it is said beside it.
+      for (const w of run.facts.input_warnings || []) {
+        const p = html("p", { class: "input-warning", "data-run": ri }, card);
+        html("b", {}, p, "Input warning: ");
+        p.appendChild(document.createTextNode(w));
+      }
       const ul = html("ul", {}, card);
       for (const x of typesFirst(run.headlines)) {
         const li = html("li", { class: "headline" + (x.label === "all" ? " muted" : ""), "data-type": x.label }, ul);
@@ -253,6 +260,8 @@
     row("radius", f.radius + " lattice units");
     row("medusa cells", f.medusa_cells_per_dimension.map((n, k) => "dim " + k + ": " + n).join(", "));
     row("source", f.source_files.length ? f.source_files.join(", ") : "(not recorded)");
+    const warnings = f.input_warnings || [];
+    row("input warnings", warnings.length ? warnings.join("; ") : "none");
     row("made by", (f.software_version ? "medusa " + f.software_version : "medusa") + (f.command_line ? ": " + f.command_line : ""));
   }
 

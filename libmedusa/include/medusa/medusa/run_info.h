@@ -14,6 +14,10 @@ struct RunInfo {
   double radius = 0.0;                   // rho, as a double (for output)
   std::string radius_text;               // rho exactly as the user gave it (decimal text)
   std::vector<std::string> source_files; // the CompuCell3D files read
+  // What reading the input warned of, one line each as `medusa run` printed it (later frames missing,
+  // snapshots left out, a cell split into several trajectories, ...): the results hold for what was
+  // read, and a reader of the store must be able to tell so. Empty in stores written before it existed.
+  std::vector<std::string> input_warnings;
   std::string command_line;
   std::string software_version;
   // Periodic lattice axes ("x,y"; empty for an open run) and their periods in grid units (0 on open
