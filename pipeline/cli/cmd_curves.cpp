@@ -2,6 +2,7 @@
 // (docs/MATH.md §6.6, §6.8), for the whole complex and for each cell type's subcomplex (7.4), and the
 // classical sorting measures of the same slices (§6.9), as CSV and SVG.
 #include "atomic_file.h"
+#include "betti_frames.h"
 #include "cell_type.h"
 #include "commands.h"
 #include "curve_plot.h"
@@ -41,20 +42,6 @@ std::string store_stem(const std::string& store) {
   if (store.size() > suffix.size() && store.compare(store.size() - suffix.size(), suffix.size(), suffix) == 0)
     return store.substr(0, store.size() - suffix.size());
   return store;
-}
-
-// One sample per frame, at the frame's time: the signature reported at frame k (docs/MATH.md §6.6), which
-// is that after the last batch at or before t_k (K(t_end-) for the last frame).
-template <class Sample>
-std::vector<Sample> frame_samples(const std::vector<Sample>& samples, const kinetic::Trajectories& input) {
-  std::vector<Sample> by_frame(input.frames());
-  for (const Sample& s : samples)
-    for (std::size_t k : s.frames) {
-      by_frame.at(k) = s;
-      by_frame[k].time = static_cast<double>(input.frame_times[k]);
-      by_frame[k].frames = {k};
-    }
-  return by_frame;
 }
 
 void write_curves_csv(std::ostream& out, const std::vector<TypeCurves>& all, const TypeNames& names) {

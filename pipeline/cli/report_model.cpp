@@ -141,9 +141,11 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
       persistence::compute_medusa_diagrams(medusa.cells, vertex_type, types, options);
   check_interrupted();
   const std::vector<TypeSlices> slices = slices_at_frames(medusa);
-  // The classical measures (docs/MATH.md §6.9) at the first and the last slice, as `medusa curves`
-  // prints them: what a biologist compares the clusters with.
-  const std::vector<medusa::SortingSample> sorting = medusa::sorting_over_time(medusa, check_interrupted);
+  // The classical measures (docs/MATH.md §6.9) at the first and the last frame, as `medusa curves
+  // --frames-only` prints them and as the clusters beside them are counted (the first frame's without
+  // the cells present at t_0 alone): what a biologist compares the clusters with.
+  const std::vector<medusa::SortingSample> sorting =
+      frame_samples(medusa::sorting_over_time(medusa, check_interrupted), input);
   if (sorting.empty())
     throw InternalError("report: no time slice in " + store);
   const double t0 = static_cast<double>(input.frame_times.front());

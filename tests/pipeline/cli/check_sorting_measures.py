@@ -9,9 +9,11 @@ pruned at (rho * grid_scale)^2 (GUDHI filtrations are squared radii). From it, i
 the simplex counts and Betti numbers over Z/2 of K and of every type's full subcomplex (curves.csv),
 and the sorting measures (sorting.csv): edges, heterotypic edges, same-type neighbour fractions,
 clusters (union-find), largest and mean cluster size. Counts must be equal, fractions within 1e-12.
+The contacts `medusa report` gives under each type's headline are those of the first and last frames.
 """
 import csv
 import os
+import re
 import subprocess
 import sys
 from fractions import Fraction
@@ -19,6 +21,9 @@ from fractions import Fraction
 import gudhi
 import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from report_sweep_data import page_data  # noqa: E402
 
 if not __debug__:
     sys.exit("these checks are assert statements: run without -O and without PYTHONOPTIMIZE")
@@ -143,6 +148,9 @@ def main():
         compared = 0
         for k, t in enumerate(times):
             expected = expected_at_frame(f, k)
+            if k == 0:
+                oracle_first = expected
+            oracle_last = expected
             for label, e in expected.items():
                 srow = [r for r in sorting if r["type"] == label and float(r["time"]) == t]
                 crow = [r for r in curves if r["type"] == label and float(r["time"]) == t]
@@ -163,6 +171,28 @@ def main():
                                               for l, e in expected.items()})
     assert compared >= 3, f"only {compared} frame rows compared"
     print(f"{compared} frame rows equal to GUDHI's exact alpha complexes")
+    check_report(medusa, work, store, prefix, oracle_first, oracle_last)
+
+
+def check_report(medusa, work, store, prefix, first, last):
+    """The report's contacts under each type's headline: the same first and last frames, to its three
+    decimals."""
+    page = prefix + ".report.html"
+    result = subprocess.run([medusa, "report", store, "-o", page, "--no-sweep", "-q"], cwd=work)
+    assert result.returncode == 0, result.returncode
+    checked = 0
+    for h in page_data(page)["runs"][0]["headlines"]:
+        m = re.match(r"heterotypic contacts (\S+) → (\S+), same-type neighbours (\S+) → (\S+) ",
+                     h["contacts"])
+        assert m, h["contacts"]
+        shown = [float(x) for x in m.groups()]
+        wanted = [first[h["label"]]["heterotypic_fraction"], last[h["label"]]["heterotypic_fraction"],
+                  first[h["label"]]["same_type_fraction"], last[h["label"]]["same_type_fraction"]]
+        for a, b in zip(shown, wanted):
+            assert b is not None and abs(a - b) <= 0.0005 + 1e-12, (h["label"], h["contacts"], wanted)
+        checked += 1
+    assert checked >= 2, f"only {checked} headlines checked"
+    print(f"the report's contacts of {checked} headlines equal GUDHI's at the first and last frames")
 
 
 if __name__ == "__main__":
