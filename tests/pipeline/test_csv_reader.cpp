@@ -68,13 +68,13 @@ TEST_CASE("A planar CSV without a z column is told to add one of zeros", "[io][c
   CHECK_THAT(io::test::input_error([&] { read_csv(dir.file("two.csv")); }), !Contains("planar run"));
 }
 
-TEST_CASE("A non-numeric CSV value names file, line, cell and column", "[io][csv]") {
+TEST_CASE("A non-numeric CSV value names file, line, MCS, cell and column", "[io][csv]") {
   CHECK_THAT(csv_error("non_numeric.csv"),
-             Contains("non_numeric.csv:3") && Contains("cell 2") && Contains("xCOM") && Contains("'abc'"));
+             Contains("non_numeric.csv:3: MCS 0, cell 2: column xCOM") && Contains("'abc'"));
 }
 
-TEST_CASE("A NaN CSV value names file, line and cell", "[io][csv]") {
-  CHECK_THAT(csv_error("nan.csv"), Contains("nan.csv:4") && Contains("cell 3") && Contains("yCOM") &&
+TEST_CASE("A NaN CSV value names file, line, MCS and cell", "[io][csv]") {
+  CHECK_THAT(csv_error("nan.csv"), Contains("nan.csv:4: MCS ") && Contains("cell 3") && Contains("yCOM") &&
                                        Contains("not a finite number"));
 }
 
@@ -126,9 +126,9 @@ TEST_CASE("A cell that changes type in a CSV is refused", "[io][csv]") {
                                                Contains("type changes from 2 (line 3) to 1"));
 }
 
-TEST_CASE("A CSV row with the wrong number of fields names file and line", "[io][csv]") {
+TEST_CASE("A CSV row with the wrong number of fields names file, line, MCS and cell", "[io][csv]") {
   CHECK_THAT(csv_error("wrong_fields.csv"),
-             Contains("wrong_fields.csv:3 (cell 2)") && Contains("expected 9 fields") && Contains("found 8"));
+             Contains("wrong_fields.csv:3: MCS 0, cell 2: expected 9 fields") && Contains("found 8"));
 }
 
 TEST_CASE("A truncated gzip CSV is refused naming the file", "[io][csv]") {

@@ -264,3 +264,91 @@ TEST_CASE("A series that stops a frame spacing or more before the simulation's l
   write(dir.file("Simulation/run.xml"), cc3d_xml("x=\"10\" y=\"10\" z=\"10\"", "    <Steps>200</Steps>\n"));
   CHECK_FALSE(has_warning(read_run(dir.path().string()), "the last frame read"));
 }
+
+namespace {
+
+const std::string csv_header = "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n";
+
+// The rows of `cells` cells at each MCS of `frames`, cell i at x = i.
+std::string csv_rows(const std::vector<std::int64_t>& frames, int cells) {
+  std::string text;
+  for (const std::int64_t mcs : frames)
+    for (int i = 1; i <= cells; ++i)
+      text += std::to_string(mcs) + "," + std::to_string(i) + "," + std::to_string(1 + i % 2) + "," +
+              std::to_string(i) + "," + std::to_string(i * i % 7) + "," + std::to_string(i * i * i % 5) +
+              "\n";
+  return text;
+}
+
+std::string csv_frames(const std::vector<std::int64_t>& frames, int cells) {
+  return csv_header + csv_rows(frames, cells);
+}
+
+} // namespace
+
+TEST_CASE("A CSV whose last frame holds fewer than half the cells of the one before is refused as incomplete",
+          "[io][run]") {
+  io::test::TempDir dir;
+  // A run still writing its CSV: MCS 200 has 3 of its 8 rows (lines 18 to 20).
+  std::string text = csv_frames({0, 100}, 8);
+  for (int i = 1; i <= 3; ++i)
+    text += "200," + std::to_string(i) + "," + std::to_string(1 + i % 2) + "," + std::to_string(i) + ",1,1\n";
+  write(dir.file("cells.csv"), text);
+  CHECK_THAT(
+      io::test::input_error([&] { read_run(dir.file("cells.csv")); }),
+      Contains("cells.csv: MCS 200 has 3 rows (lines 18 to 20) where MCS 100 has 8: an incomplete frame") &&
+          Contains("--skip-unreadable-frames"));
+  RunOptions skip;
+  skip.skip_unreadable_frames = true;
+  const RunData r = read_run(dir.file("cells.csv"), skip);
+  CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 100});
+  CHECK(has_warning(r, "MCS 200 has 3 rows (lines 18 to 20) where MCS 100 has 8: an incomplete frame"));
+  CHECK(has_warning(r, "; left out"));
+}
+
+TEST_CASE("A CSV row with a mistyped MCS is refused naming its MCS and line", "[io][run]") {
+  io::test::TempDir dir;
+  // Cell 3's row of MCS 100 says 150: a frame of one row between two of eight, and MCS 100 one short.
+  std::string text = csv_frames({0}, 8);
+  for (int i = 1; i <= 8; ++i)
+    text += (i == 3 ? "150," : "100,") + std::to_string(i) + "," + std::to_string(1 + i % 2) + "," +
+            std::to_string(i) + ",1,1\n";
+  text += csv_rows({200}, 8);
+  write(dir.file("cells.csv"), text);
+  CHECK_THAT(io::test::input_error([&] { read_run(dir.file("cells.csv")); }),
+             Contains("cells.csv: MCS 150 has 1 row (line 12) where MCS ") &&
+                 Contains("an incomplete frame"));
+  RunOptions skip;
+  skip.skip_unreadable_frames = true;
+  const RunData r = read_run(dir.file("cells.csv"), skip);
+  CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 100, 200});
+  CHECK(has_warning(r, "MCS 150 has 1 row (line 12)"));
+  CHECK(has_warning(r, "cell 3 is missing from MCS 100"));
+}
+
+TEST_CASE("A CSV frame missing from the middle of an evenly saved series is refused naming its MCS",
+          "[io][run]") {
+  io::test::TempDir dir;
+  write(dir.file("cells.csv"), csv_frames({0, 100, 300, 400}, 6));
+  CHECK_THAT(io::test::input_error([&] { read_run(dir.file("cells.csv")); }),
+             Contains("cells.csv: no row has MCS 200: the frames go from MCS 100 to MCS 300, every 100 MCS "
+                      "elsewhere") &&
+                 Contains("--skip-unreadable-frames"));
+  RunOptions skip;
+  skip.skip_unreadable_frames = true;
+  const RunData r = read_run(dir.file("cells.csv"), skip);
+  CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 100, 300, 400});
+  CHECK(has_warning(r, "no row has MCS 200"));
+}
+
+TEST_CASE("CSV frames whose cells double by division, or that are saved unevenly, are read without a word",
+          "[io][run]") {
+  io::test::TempDir dir;
+  // 4 cells, then 8 (each divided), saved at MCS 0, 10, 100 and 1000.
+  std::string text = csv_frames({0, 10}, 4);
+  text += csv_rows({100, 1000}, 8);
+  write(dir.file("cells.csv"), text);
+  const RunData r = read_run(dir.file("cells.csv"));
+  CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 10, 100, 1000});
+  CHECK(r.warnings.empty());
+}

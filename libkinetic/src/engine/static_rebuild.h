@@ -41,15 +41,20 @@ template <class K> void Engine<K>::rebuild_static(OldMembership* old_k) {
       now.is_rational() ? detail::delaunay_just_after(dim, static_input(ids), now.rational(), dimension)
                         : delaunay_after_algebraic_now(ids, dimension);
   if (dimension < dim) {
-    // docs/MATH.md §5.7: degenerate input is reported, in either dimension.
+    // docs/MATH.md §5.7: degenerate input is reported, in either dimension, at the MCS the input names.
+    const std::string at =
+        now.is_rational() && now.rational() == 0
+            ? "frame " + std::to_string(slab) + " (MCS " + std::to_string(traj.frame_times[slab]) + ")"
+            : "a time between MCS " + std::to_string(traj.frame_times[slab]) + " and " +
+                  std::to_string(traj.frame_times[slab + 1]);
     if (ids.size() < top_size())
-      throw GeometryError("fewer than " + std::to_string(top_size()) + " cells are present at frame " +
-                          std::to_string(slab) + ": the " + std::to_string(dim) +
-                          "D alpha complex needs at least " + std::to_string(top_size()));
+      throw GeometryError("fewer than " + std::to_string(top_size()) + " cells are present at " + at +
+                          ": the " + std::to_string(dim) + "D alpha complex needs at least " +
+                          std::to_string(top_size()));
     if constexpr (dim == 2)
-      throw GeometryError("all cells lie on one line at frame " + std::to_string(slab) +
+      throw GeometryError("all cells lie on one line at " + at +
                           ": the 2D method needs cells spanning the plane");
-    throw GeometryError("all cells lie in one plane at frame " + std::to_string(slab) +
+    throw GeometryError("all cells lie in one plane at " + at +
                         " (a 2D run given as 3D data?): the 3D method needs cells spanning space");
   }
   // CGAL lists the simplices in an order that follows its insertion order, which its spatial sort

@@ -100,17 +100,20 @@ CsvContents read_csv(const std::string& path, const CsvOptions& options) {
       continue;
     const std::string at = path + ":" + std::to_string(in.line());
     const std::vector<std::string_view> f = split_commas(line);
-    if (f.size() != n_fields) {
-      std::int64_t id = 0;
-      const std::string which =
-          f.size() > col_id && try_parse_integer(f[col_id], id) ? " (cell " + std::to_string(id) + ")" : "";
-      throw InputError(at + which + ": expected " + std::to_string(n_fields) +
-                       " fields as in the header, found " + std::to_string(f.size()));
-    }
+    // A row's errors name its line, and its MCS and cell where they read: the frame and the cell a user
+    // looks for in the simulation.
+    std::int64_t row_mcs = 0, row_id = 0;
+    const bool has_mcs = f.size() > col_mcs && try_parse_integer(f[col_mcs], row_mcs);
+    const bool has_id = f.size() > col_id && try_parse_integer(f[col_id], row_id);
+    const std::string cell = at + (has_mcs || has_id ? ": " : "") +
+                             (has_mcs ? "MCS " + std::to_string(row_mcs) + (has_id ? ", " : "") : "") +
+                             (has_id ? "cell " + std::to_string(row_id) : "");
+    if (f.size() != n_fields)
+      throw InputError(cell + ": expected " + std::to_string(n_fields) + " fields as in the header, found " +
+                       std::to_string(f.size()));
     CellSample s;
     s.line = in.line();
-    s.cell_id = parse_integer(f[col_id], at + ": column " + c.cell_id);
-    const std::string cell = at + ": cell " + std::to_string(s.cell_id);
+    s.cell_id = parse_integer(f[col_id], cell + ": column " + c.cell_id);
     if (s.cell_id <= 0)
       throw InputError(cell + ": cell ids must be positive (medium has no row)");
     s.mcs = parse_integer(f[col_mcs], cell + ": column " + c.mcs);

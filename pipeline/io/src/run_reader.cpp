@@ -1,5 +1,6 @@
 #include "medusa/io/run_reader.h"
 
+#include "frame_series.h"
 #include "medusa/core/error.h"
 #include "medusa/io/periodic_unwrap.h"
 #include "medusa/io/trajectory_assembly.h"
@@ -81,17 +82,12 @@ std::vector<std::string> list_snapshots(const fs::path& folder, const RunOptions
 // usual step) is an error, or with skip_unreadable_frames a warning.
 void check_series(const std::vector<std::pair<std::int64_t, std::string>>& by_mcs, const RunOptions& options,
                   std::vector<std::string>& warnings) {
-  if (by_mcs.size() < 3)
-    return;
-  std::int64_t step = by_mcs[1].first - by_mcs[0].first;
-  for (std::size_t k = 1; k < by_mcs.size(); ++k)
-    step = std::min(step, by_mcs[k].first - by_mcs[k - 1].first);
-  if (step <= 0)
-    return;
-  for (std::size_t k = 1; k < by_mcs.size(); ++k) {
-    const std::int64_t gap = by_mcs[k].first - by_mcs[k - 1].first;
-    if (gap == step || gap % step != 0)
-      continue;
+  std::vector<std::int64_t> mcs;
+  for (const auto& snapshot : by_mcs)
+    mcs.push_back(snapshot.first);
+  for (const internal::SeriesGap& g : internal::series_gaps(mcs)) {
+    const std::size_t k = g.k;
+    const std::int64_t step = g.step;
     const std::string what =
         "the snapshot of MCS " + std::to_string(by_mcs[k - 1].first + step) +
         " is missing: the series goes from " + fs::path(by_mcs[k - 1].second).filename().string() + " to " +
@@ -306,6 +302,7 @@ RunData read_csv_run(const std::string& path, const RunOptions& options,
   CsvContents csv = read_csv(
       path, CsvOptions{options.csv_columns, options.scale, options.round_csv, options.spellings.round_csv});
   run.sources.push_back(path);
+  internal::check_csv_frames(csv.samples, path, options, run.warnings);
   run.snap = csv.rounding;
   if (options.round_csv)
     run.notes.push_back(rounding_note(run.snap, options.scale));

@@ -90,7 +90,7 @@ def main(medusa, source, work):
     assert refused.returncode == 3, refused.returncode
     errors = refused.stderr.splitlines()
     assert len(errors) == 1, errors
-    assert re.match(r"medusa: .*noisy\.csv:2: cell \d+: column xCOM: '\d+\.\d{10}' has 10 decimals, more than the "
+    assert re.match(r"medusa: .*noisy\.csv:2: MCS \d+, cell \d+: column xCOM: '\d+\.\d{10}' has 10 decimals, more than the "
                     r"6 that the grid \(10\^-6 lattice units\) holds exactly; --round-csv rounds", errors[0]), errors
     assert not os.path.exists(os.path.join(work, "refused.h5"))
 
