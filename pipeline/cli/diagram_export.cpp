@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -21,9 +22,10 @@ std::string csv_field(const std::string& text) {
 std::string format_time(double t) {
   if (std::isinf(t))
     return t > 0 ? "inf" : "-inf";
+  // The shortest text that reads back as t: 349.9, not 349.89999999999998.
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.17g", t);
-  return buffer;
+  const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer, t);
+  return std::string(buffer, r.ptr);
 }
 
 void write_pairs_text(std::ostream& out, const std::vector<persistence::Diagram>& diagrams,
