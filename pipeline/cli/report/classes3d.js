@@ -415,7 +415,8 @@
       html("p", { class: "note" }, sec, "Per cell type and degree, the " + run.classes.top + " classes that lived longest " +
         "(the ones never filled or joined first; among the loops and cavities never filled, those whose ring or shell stayed " +
         "whole longest first). A class's cells are those of its representative: for a cluster the cells " +
-        "in it just before it joined an older one, for a loop or a cavity the cells on a ring or a shell around it " +
+        "in it just before it joined an older one (for a cluster that never joined one, every cell that was part of it " +
+        "at some time up to the end: cells born later by division and cells that died are listed too), for a loop or a cavity the cells on a ring or a shell around it " +
         "when it formed (docs/MATH.md §7.11). A loop or cavity never filled is a class of the space-time medusa to the " +
         "end, so its lifetime reads '≥'; whether the cells it is listed with are still a ring or shell at the end, broke " +
         "open at some time, or were never all present at once is said beside it. 'Formed by' and 'killed by' are the cells whose contact created and " +
