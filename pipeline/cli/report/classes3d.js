@@ -388,7 +388,7 @@
       html("td", {}, tr, String(cls.id));
       html("td", {}, tr, fmt(cls.birth));
       html("td", { class: "fate", "data-broke-at": cls.ring && cls.ring.broke_at !== null ? String(cls.ring.broke_at) : "" }, tr, cls.death === null ? "never " + deathWord(section.dim) + ringWords(cls.ring, section.dim) : fmt(cls.death));
-      html("td", {}, tr, cls.death === null ? "≥ " + fmt(run.facts.t_end - cls.birth) : fmt(cls.death - cls.birth));
+      html("td", { class: "lifetime" }, tr, cls.death === null ? "≥ " + fmt(run.facts.t_end - cls.birth) + wholeFor(cls, section.dim) : fmt(cls.death - cls.birth));
       html("td", {}, tr, cls.birth_cells.join(" "));
       html("td", {}, tr, cls.death === null ? "–" : cls.death_cells.join(" "));
       html("td", { class: "cells", title: cls.cells.join(" ") }, tr, cls.cells.length + ": " + list(cls.cells, 12));
@@ -398,6 +398,13 @@
 
   // An essential loop or cavity is never filled; its cells' ring or shell can still have broken open
   // (pipeline/cli/ring_fate.h).
+  // How long a ring or shell that broke open stayed whole: its class lives on in space-time, but the
+  // cells were a ring only that long.
+  function wholeFor(cls, dim) {
+    if (!cls.ring || cls.ring.state !== "broke") return "";
+    return " (a " + (dim === 2 ? "shell" : "ring") + " for " + fmt(cls.ring.broke_at - cls.birth) + ")";
+  }
+
   function ringWords(ring, dim) {
     if (!ring) return "";
     const what = dim === 2 ? "shell" : "ring";

@@ -4,6 +4,7 @@
 exactly the CC3D cells `medusa classes --format json` gives for it are drawn highlighted (read back
 through window.medusaReport and seen in the canvas as the type's colour); the positions the view
 interpolates at a time between frames are those `medusa at --time T` writes."""
+import re
 import json
 import os
 import time
@@ -73,11 +74,17 @@ def check_ring_fates(driver, call, page, name, ri, expected, t_end, failures):
         listed = (want.get("ring") or {}).get("state")
         if listed != ("whole at the end" if "whole at the end" in text else "broke"):
             failures.append(f"{what}: `medusa classes --format json` says ring {want.get('ring')}")
+        life = row.find_element("css selector", "td.lifetime").text
+        m_whole = re.search(r"\(a (?:ring|shell) for (\S+)\)$", life)
         if "whole at the end" in text:
+            if m_whole:
+                failures.append(f"{what}: lifetime {life!r} gives a time whole to a ring whole at the end")
             if not ring <= simplices_at(call, store, label, t_end, f"ring_{ri}.csv"):
                 failures.append(f"{what}: not every simplex of it is in K(t_end-)")
         else:
             x = float(cell.get_attribute("data-broke-at"))
+            if not m_whole or abs(float(m_whole.group(1)) - (x - want["birth"])) > 1e-3 * max(1.0, x):
+                failures.append(f"{what}: lifetime {life!r}, but the ring was whole for {x - want['birth']} MCS")
             if want.get("ring", {}).get("broke_at") != x:
                 failures.append(f"{what}: broke open at MCS {x} on the page, {want.get('ring')} in `medusa classes`")
             after = simplices_at(call, store, label, x * (1 + 1e-9) + 1e-9, f"ring_{ri}.csv")
