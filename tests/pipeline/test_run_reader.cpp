@@ -352,3 +352,22 @@ TEST_CASE("CSV frames whose cells double by division, or that are saved unevenly
   CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 10, 100, 1000});
   CHECK(r.warnings.empty());
 }
+
+TEST_CASE("A CSV centre off the lattice of the run's CC3DML is refused naming file, line, MCS and cell",
+          "[io][run]") {
+  io::test::TempDir dir;
+  // Cells at x = 1..8 on a lattice 10 wide; cell 5's row of MCS 100 (line 14) says x = 27.5.
+  std::string text = csv_frames({0}, 8);
+  for (int i = 1; i <= 8; ++i)
+    text += "100," + std::to_string(i) + "," + std::to_string(1 + i % 2) + "," +
+            (i == 5 ? "27.5" : std::to_string(i)) + ",1,1\n";
+  write(dir.file("cells.csv"), text);
+  write(dir.file("Simulation/run.xml"), cc3d_xml("x=\"10\" y=\"10\" z=\"10\""));
+  CHECK_THAT(
+      io::test::input_error([&] { read_run(dir.path().string()); }),
+      Contains("cells.csv:14: MCS 100, cell 5: xCOM 27.5 lies outside [0, 10], the lattice along x of ") &&
+          Contains("run.xml"));
+  // Without the CC3DML nothing says how large the lattice is: read as given.
+  fs::remove_all(dir.path() / "Simulation");
+  CHECK(read_run(dir.file("cells.csv")).trajectories.frames() == 2);
+}

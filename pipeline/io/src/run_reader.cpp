@@ -2,6 +2,7 @@
 
 #include "frame_series.h"
 #include "medusa/core/error.h"
+#include "medusa/core/grid_text.h"
 #include "medusa/io/periodic_unwrap.h"
 #include "medusa/io/trajectory_assembly.h"
 #include "medusa/io/vtk_reader.h"
@@ -133,6 +134,25 @@ void wrap_csv_centres(std::vector<CellSample>& samples, const PeriodicDomain& do
                          std::to_string(domain.lattice[a]) + "], the periodic lattice along " +
                          char('x' + a));
       s.position[a] = wrap_coordinate(x, lo, domain.period[a]);
+    }
+}
+
+// A centre off the lattice along an open axis (a typo, or a CSV of another run) is refused: it would be
+// read as a cell that jumps there and back.
+void check_inside_lattice(const std::vector<CellSample>& samples, const Cc3dSimulation& simulation,
+                          const PeriodicDomain& domain, std::int64_t scale, const std::string& path,
+                          const CsvColumns& columns) {
+  const std::string* names[3] = {&columns.x, &columns.y, &columns.z};
+  for (const CellSample& s : samples)
+    for (std::size_t a = 0; a < 3; ++a) {
+      const std::int64_t hi = simulation.dimensions[a] * scale;
+      if (domain.periodic[a] || (s.position[a] >= 0 && s.position[a] <= hi))
+        continue;
+      throw InputError(path + ":" + std::to_string(s.line) + ": MCS " + std::to_string(s.mcs) + ", cell " +
+                       std::to_string(s.cell_id) + ": " + *names[a] + " " +
+                       grid_coordinate_text(s.position[a], scale) + " lies outside [0, " +
+                       std::to_string(simulation.dimensions[a]) + "], the lattice along " + char('x' + a) +
+                       " of " + simulation.path);
     }
 }
 
@@ -309,6 +329,7 @@ RunData read_csv_run(const std::string& path, const RunOptions& options,
   if (simulation) {
     run.domain = periodic_domain(*simulation, {0, 0, 0}, {options.scale, options.scale, options.scale});
     wrap_csv_centres(csv.samples, run.domain, path, options.csv_columns);
+    check_inside_lattice(csv.samples, *simulation, run.domain, options.scale, path, options.csv_columns);
   }
 
   std::optional<std::int64_t> z_extent = options.z_extent;
