@@ -289,27 +289,38 @@ void compare_command(const CompareArguments& args) {
       const auto [lo, hi] = off_diagonal_range(comparisons[c].distances);
       return hi == 0 ? 0.0 : lo == 0 ? std::numeric_limits<double>::infinity() : hi / lo;
     };
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return spread(a) > spread(b); });
-    std::cout
-        << "distances: " << metric.reading() << "\n"
-        << "which comparisons separate the runs (distances between different runs: smallest, largest, and "
-           "their ratio; highest ratio first, then the runs grouped by distance):\n";
-    for (std::size_t c : order) {
-      const Comparison& x = comparisons[c];
-      const auto [lo, hi] = off_diagonal_range(x.distances);
-      std::cout << "  " << words_of(x.selection) << ": " << short_number(lo) << " to " << short_number(hi)
-                << ", ratio " << (hi == 0 ? std::string("-") : short_number(spread(c)));
-      if (hi > 0 && !x.dendrogram.merges.empty()) {
-        std::cout << "; grouped:";
-        std::string sep = " ";
-        for (const persistence::Merge& m : x.dendrogram.merges) {
-          std::cout << sep << cluster_name(m.first, x.dendrogram, names) << " + "
-                    << cluster_name(m.second, x.dendrogram, names) << " at " << short_number(m.height);
-          sep = "; ";
+    // Two runs have one distance per comparison, which has no spread and no grouping: the largest first.
+    const bool pair = names.size() == 2;
+    const auto largest = [&](std::size_t c) { return off_diagonal_range(comparisons[c].distances).second; };
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return pair ? largest(a) > largest(b) : spread(a) > spread(b);
+    });
+    std::cout << "distances: " << metric.reading() << "\n";
+    if (pair) {
+      std::cout << "the distance between the two runs, largest first (the comparisons that separate them "
+                   "most):\n";
+      for (std::size_t c : order)
+        std::cout << "  " << words_of(comparisons[c].selection) << ": " << short_number(largest(c)) << "\n";
+    } else {
+      std::cout
+          << "which comparisons separate the runs (distances between different runs: smallest, largest, "
+             "and their ratio; highest ratio first, then the runs grouped by distance):\n";
+      for (std::size_t c : order) {
+        const Comparison& x = comparisons[c];
+        const auto [lo, hi] = off_diagonal_range(x.distances);
+        std::cout << "  " << words_of(x.selection) << ": " << short_number(lo) << " to " << short_number(hi)
+                  << ", ratio " << (hi == 0 ? std::string("-") : short_number(spread(c)));
+        if (hi > 0 && !x.dendrogram.merges.empty()) {
+          std::cout << "; grouped:";
+          std::string sep = " ";
+          for (const persistence::Merge& m : x.dendrogram.merges) {
+            std::cout << sep << cluster_name(m.first, x.dendrogram, names) << " + "
+                      << cluster_name(m.second, x.dendrogram, names) << " at " << short_number(m.height);
+            sep = "; ";
+          }
         }
+        std::cout << "\n";
       }
-      std::cout << "\n";
     }
     std::string written;
     for (const Comparison& c : comparisons) {
@@ -320,6 +331,11 @@ void compare_command(const CompareArguments& args) {
     }
     std::cout << "wrote " << written << " (distances.csv, heatmap.svg, dendrogram.svg each)\n";
   }
+  // A distance says how far apart two runs' classes are, not which run sorted.
+  std::cout << "whether and when each run sorts: medusa report";
+  for (const std::string& store : args.stores)
+    std::cout << " " << store;
+  std::cout << "\n";
   for (const std::string& w : warnings)
     std::cerr << "medusa: warning: " << w << "\n";
 }

@@ -113,6 +113,22 @@ def check_compare(medusa, work, stores):
     assert values == [[0.0, 0.0], [0.0, 0.0]], values
     assert names == [stores[0], stores[0]], names
 
+    # Two runs, every type and degree: one distance per comparison, largest first, each that of its
+    # distances.csv, and where the verdicts are.
+    prefix = os.path.join(work, "cmp_pair")
+    pair = run([medusa, "compare", stores[0], stores[1], "-o", prefix], work)
+    lines = re.findall(r"^  (type \S+ \w+ \(H(\d)\)): (\S+)$", pair.stdout, re.M)
+    assert "the distance between the two runs, largest first" in pair.stdout, pair.stdout
+    assert "grouped:" not in pair.stdout and ", ratio " not in pair.stdout, pair.stdout
+    assert len(lines) >= 4, lines
+    shown = [float(d) for _, _, d in lines]
+    assert shown == sorted(shown, reverse=True), shown
+    for words, dim, d in lines:
+        label = words.split()[1]
+        _, matrix = read_matrix(f"{prefix}.type{label}.h{dim}.distances.csv")
+        assert abs(matrix[0][1] - float(d)) <= 1e-5 * max(1.0, abs(matrix[0][1])), (words, d, matrix)
+    assert f"whether and when each run sorts: medusa report {stores[0]} {stores[1]}" in pair.stdout
+
 
 def check_compare_warnings(medusa, work, cells_csv):
     # The same run with its two type ids swapped (names kept with their cells), and once more at another
