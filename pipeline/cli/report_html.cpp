@@ -94,7 +94,9 @@ void write_report_html(std::ostream& out, const std::vector<ReportRun>& runs,
          "complexes (docs/MATH.md §6.9): "
          "<b>heterotypic contacts</b>, the fraction of its links that join cells of different types, and "
          "<b>same-type neighbours</b>, the mean fraction of a cell's linked neighbours of its own type; "
-         "sorting lowers the first and raises the second, whether or not a type ends in one cluster.</p>\n"
+         "sorting lowers the first and raises the second, whether or not a type ends in one cluster. "
+         "The <b>largest cluster</b> says how many of the type's cells it holds: a type nearly one cluster "
+         "at the first frame gathers with little sorting.</p>\n"
       << (mixed.empty() ? ""
                         : "<p class=\"note\" id=\"mixed-dimensions\">Note: " + xml_escape(mixed) + ".</p>\n")
       << "<div id=\"headlines\" class=\"cards\"></div>\n";

@@ -206,7 +206,8 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
     headlines.push_back({{"label", label},
                          {"name", tname},
                          {"text", course.text},
-                         {"contacts", contact_fractions(first, last, " \u2192 ") + " (MCS " +
+                         {"contacts", contact_fractions(first, last, " \u2192 ") + ", " +
+                                          largest_cluster_share(first, last, " \u2192 ") + " (MCS " +
                                           format_time(sorting.front().time) + " \u2192 " +
                                           format_time(sorting.back().time) + ")"},
                          {"gathered_at", course.gathered_at ? json(*course.gathered_at) : json(nullptr)}});

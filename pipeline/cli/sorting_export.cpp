@@ -45,6 +45,12 @@ std::string contact_fractions(const medusa::SortingMeasures& first, const medusa
          share(first.same_type_fraction) + arrow + share(last.same_type_fraction);
 }
 
+std::string largest_cluster_share(const medusa::SortingMeasures& first, const medusa::SortingMeasures& last,
+                                  const std::string& arrow) {
+  return "largest cluster " + std::to_string(first.largest_cluster) + " of " + std::to_string(first.cells) +
+         arrow + std::to_string(last.largest_cluster) + " of " + std::to_string(last.cells) + " cells";
+}
+
 std::string heterotypic_contacts(const medusa::SortingMeasures& first, const medusa::SortingMeasures& last,
                                  const std::string& arrow) {
   return "heterotypic contacts " + share(first.heterotypic_fraction()) + arrow +

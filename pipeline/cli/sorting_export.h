@@ -28,6 +28,11 @@ std::vector<CurvePanel> sorting_panels(const std::vector<medusa::SortingSample>&
 std::string contact_fractions(const medusa::SortingMeasures& first, const medusa::SortingMeasures& last,
                               const std::string& arrow);
 
+// "largest cluster 44 of 48 -> 93 of 93 cells": how much of the type (the tissue) its largest cluster
+// holds, from `first` to `last`; a type nearly one cluster from the start gathers with little sorting.
+std::string largest_cluster_share(const medusa::SortingMeasures& first, const medusa::SortingMeasures& last,
+                                  const std::string& arrow);
+
 // Its first half: "heterotypic contacts 0.670 -> 0.537".
 std::string heterotypic_contacts(const medusa::SortingMeasures& first, const medusa::SortingMeasures& last,
                                  const std::string& arrow);

@@ -175,17 +175,20 @@ def main():
 
 
 def check_report(medusa, work, store, prefix, first, last):
-    """The report's contacts under each type's headline: the same first and last frames, to its three
-    decimals."""
+    """The report's contacts and largest clusters under each type's headline: the same first and last
+    frames, to its three decimals."""
     page = prefix + ".report.html"
     result = subprocess.run([medusa, "report", store, "-o", page, "--no-sweep", "-q"], cwd=work)
     assert result.returncode == 0, result.returncode
     checked = 0
     for h in page_data(page)["runs"][0]["headlines"]:
-        m = re.match(r"heterotypic contacts (\S+) → (\S+), same-type neighbours (\S+) → (\S+) ",
-                     h["contacts"])
+        m = re.match(r"heterotypic contacts (\S+) → (\S+), same-type neighbours (\S+) → (\S+), "
+                     r"largest cluster (\d+) of (\d+) → (\d+) of (\d+) cells \(MCS ", h["contacts"])
         assert m, h["contacts"]
-        shown = [float(x) for x in m.groups()]
+        sizes = [int(x) for x in m.groups()[4:]]
+        f, l = first[h["label"]], last[h["label"]]
+        assert sizes == [f["largest_cluster"], f["cells"], l["largest_cluster"], l["cells"]], (h["contacts"], f, l)
+        shown = [float(x) for x in m.groups()[:4]]
         wanted = [first[h["label"]]["heterotypic_fraction"], last[h["label"]]["heterotypic_fraction"],
                   first[h["label"]]["same_type_fraction"], last[h["label"]]["same_type_fraction"]]
         for a, b in zip(shown, wanted):
