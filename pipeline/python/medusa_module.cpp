@@ -22,6 +22,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <set>
 
 namespace py = pybind11;
 
@@ -202,6 +203,27 @@ py::dict type_names(const StoreView& store) {
   return out;
 }
 
+// <medusa.Store 'run.h5': 251 cells of types 1 (Condensing), 2 (NonCondensing), 21 frames, MCS 0 to 2000>
+std::string store_repr(const StoreView& store) {
+  const auto& input = store.medusa().input;
+  std::string types;
+  for (int t : store.types()) {
+    const std::string name = static_cast<std::size_t>(t) < input.type_names.size()
+                                 ? input.type_names[static_cast<std::size_t>(t)]
+                                 : "";
+    types += (types.empty() ? "" : ", ") + std::to_string(t) + (name.empty() ? "" : " (" + name + ")");
+  }
+  std::set<std::int64_t> cells;
+  for (const auto& c : input.cells)
+    cells.insert(c.cell_id);
+  return "<medusa.Store '" + store.path() + "': " + std::to_string(cells.size()) + " cells of types " +
+         types + ", " + std::to_string(input.frames()) + " frames" +
+         (input.frame_times.empty() ? std::string()
+                                    : ", MCS " + std::to_string(input.frame_times.front()) + " to " +
+                                          std::to_string(input.frame_times.back())) +
+         ">";
+}
+
 std::shared_ptr<StoreView> open_store(const std::string& path) {
   py::gil_scoped_release release;
   return std::make_shared<StoreView>(path);
@@ -282,7 +304,9 @@ PYBIND11_MODULE(medusa, m) {
   m.doc() =
       "medusa: exact topology of CompuCell3D cell-sorting runs (docs/MATH.md); see pipeline/python/README.md";
   auto error = py::register_exception<medusa::Error>(m, "Error", PyExc_RuntimeError);
-  (void)error;
+  error.attr("__doc__") =
+      "What medusa refuses or cannot do (bad input, a corrupt store, geometry outside the "
+      "method), as one line: the message `medusa` prints before its exit code";
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p)
@@ -297,8 +321,9 @@ PYBIND11_MODULE(medusa, m) {
   });
 
   py::class_<StoreView, std::shared_ptr<StoreView>>(m, "Store", "A medusa store (run.h5) read into memory")
-      .def_property_readonly("path", &StoreView::path)
-      .def_property_readonly("types", &StoreView::types, "the cell types of the run")
+      .def_property_readonly("path", &StoreView::path, "the store's path, as opened")
+      .def_property_readonly("types", &StoreView::types, "the cell types of the run (CompuCell3D type ids)")
+      .def("__repr__", &store_repr)
       .def_property_readonly("type_names", &type_names,
                              "the cell types of the run with their names, {1: 'Condensing', ...} (\"\" where "
                              "the run names none), as `medusa info` lists them")

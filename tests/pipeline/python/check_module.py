@@ -106,6 +106,12 @@ def check_type_names(binary, store, s):
     named = dict((name, int(i)) for i, name in re.findall(r"(\d+) \((\w+)\)", info.split("cell types:")[1].split("\n")[0]))
     assert named, info
     assert s.type_names == {i: name for name, i in named.items()}, s.type_names
+    # repr names the store, its types with their names, its frames and MCS, as `medusa info` does.
+    frames = int(re.search(r"^frames: (\d+)$", info, re.M).group(1))
+    text = repr(s)
+    assert text.startswith(f"<medusa.Store '{s.path}': ") and " cells of types " in text, text
+    assert text.endswith(f", {frames} frames, MCS {s.frame_times[0]} to {s.frame_times[-1]}>"), text
+    assert all(f"{i} ({name})" in text for name, i in named.items()), text
     t_mid = (s.frame_times[0] + s.frame_times[-1]) / 2
     for name, i in named.items():
         assert np.array_equal(s.diagrams(type=name, layout="giotto"), s.diagrams(type=i, layout="giotto")), name
