@@ -261,7 +261,8 @@ void at_command(AtArguments& args) {
     std::size_t drawn = 0;
     for (std::int64_t c : marks.cell_class)
       drawn += c >= 0;
-    std::cout << "classes: " << drawn << " cells of their representatives drawn, on "
+    std::cout << "classes: " << drawn << (drawn == 1 ? " simplex" : " simplices")
+              << " of their representatives drawn (contacts, triangles, tetrahedra), on "
               << marks.vertex_class.size() << " CC3D cells\n";
   }
   if (ends_with(args.output, ".vtk"))
