@@ -286,29 +286,28 @@ std::string csv_frames(const std::vector<std::int64_t>& frames, int cells) {
 
 } // namespace
 
-TEST_CASE("A CSV whose last frame holds fewer than half the cells of the one before is refused as incomplete",
+TEST_CASE("A CSV whose last frame stops part of the way through the one before is refused as still being "
+          "written",
           "[io][run]") {
   io::test::TempDir dir;
-  // A run still writing its CSV: MCS 200 has 3 of its 8 rows (lines 18 to 20).
-  std::string text = csv_frames({0, 100}, 8);
-  for (int i = 1; i <= 3; ++i)
-    text += "200," + std::to_string(i) + "," + std::to_string(1 + i % 2) + "," + std::to_string(i) + ",1,1\n";
-  write(dir.file("cells.csv"), text);
+  // A run still writing its CSV: MCS 200 has the first 3 of the 8 rows of MCS 100 (lines 18 to 20).
+  write(dir.file("cells.csv"), csv_frames({0, 100}, 8) + csv_rows({200}, 3));
   CHECK_THAT(
       io::test::input_error([&] { read_run(dir.file("cells.csv")); }),
-      Contains("cells.csv: MCS 200 has 3 rows (lines 18 to 20) where MCS 100 has 8: an incomplete frame") &&
+      Contains("cells.csv: the last frame, MCS 200, stops after 3 rows (lines 18 to 20) where MCS 100 has "
+               "8 in the same order: a file still being written") &&
           Contains("--skip-unreadable-frames"));
   RunOptions skip;
   skip.skip_unreadable_frames = true;
   const RunData r = read_run(dir.file("cells.csv"), skip);
   CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 100});
-  CHECK(has_warning(r, "MCS 200 has 3 rows (lines 18 to 20) where MCS 100 has 8: an incomplete frame"));
+  CHECK(has_warning(r, "the last frame, MCS 200, stops after 3 rows"));
   CHECK(has_warning(r, "; left out"));
 }
 
-TEST_CASE("A CSV row with a mistyped MCS is refused naming its MCS and line", "[io][run]") {
+TEST_CASE("A CSV row with a mistyped MCS is refused naming the frame it makes", "[io][run]") {
   io::test::TempDir dir;
-  // Cell 3's row of MCS 100 says 150: a frame of one row between two of eight, and MCS 100 one short.
+  // Cell 3's row of MCS 100 says 150 (line 12): a frame of one row lacking the 7 cells around it.
   std::string text = csv_frames({0}, 8);
   for (int i = 1; i <= 8; ++i)
     text += (i == 3 ? "150," : "100,") + std::to_string(i) + "," + std::to_string(1 + i % 2) + "," +
@@ -316,14 +315,15 @@ TEST_CASE("A CSV row with a mistyped MCS is refused naming its MCS and line", "[
   text += csv_rows({200}, 8);
   write(dir.file("cells.csv"), text);
   CHECK_THAT(io::test::input_error([&] { read_run(dir.file("cells.csv")); }),
-             Contains("cells.csv: MCS 150 has 1 row (line 12) where MCS ") &&
-                 Contains("an incomplete frame"));
+             Contains("cells.csv: MCS 150 lacks 7 of the 7 cells present at MCS 100 and MCS 200, with 1 row "
+                      "(line 12): an incomplete frame"));
   RunOptions skip;
   skip.skip_unreadable_frames = true;
   const RunData r = read_run(dir.file("cells.csv"), skip);
   CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 100, 200});
-  CHECK(has_warning(r, "MCS 150 has 1 row (line 12)"));
+  CHECK(has_warning(r, "MCS 150 lacks 7 of the 7 cells"));
   CHECK(has_warning(r, "cell 3 is missing from MCS 100"));
+  CHECK_FALSE(has_warning(r, "no row has MCS"));
 }
 
 TEST_CASE("A CSV frame missing from the middle of an evenly saved series is refused naming its MCS",
@@ -341,16 +341,27 @@ TEST_CASE("A CSV frame missing from the middle of an evenly saved series is refu
   CHECK(has_warning(r, "no row has MCS 200"));
 }
 
-TEST_CASE("CSV frames whose cells double by division, or that are saved unevenly, are read without a word",
+TEST_CASE("CSV frames of cells dividing, dying or seeded, or saved unevenly, are read without a word",
           "[io][run]") {
   io::test::TempDir dir;
-  // 4 cells, then 8 (each divided), saved at MCS 0, 10, 100 and 1000.
-  std::string text = csv_frames({0, 10}, 4);
-  text += csv_rows({100, 1000}, 8);
-  write(dir.file("cells.csv"), text);
-  const RunData r = read_run(dir.file("cells.csv"));
-  CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 10, 100, 1000});
-  CHECK(r.warnings.empty());
+  const auto read_quietly = [&](const std::string& text, const std::vector<std::int64_t>& frames) {
+    write(dir.file("cells.csv"), text);
+    const RunData r = read_run(dir.file("cells.csv"));
+    CHECK(r.trajectories.frame_times == frames);
+    CAPTURE(r.warnings);
+    CHECK(r.warnings.empty());
+  };
+  // 5 cells, then 12 (more than doubled by division between two saved frames).
+  read_quietly(csv_frames({0, 100}, 5) + csv_rows({200, 300}, 12), {0, 100, 200, 300});
+  // 20 cells, then 8 (12 died between two frames).
+  read_quietly(csv_frames({0, 100}, 20) + csv_rows({200, 300}, 8), {0, 100, 200, 300});
+  // Seeded over time: 4, 9, 19, 40 cells, then 40 again (cells new at the last frame are warned of).
+  read_quietly(csv_frames({0}, 4) + csv_rows({100}, 9) + csv_rows({200}, 19) + csv_rows({300, 400}, 40),
+               {0, 100, 200, 300, 400});
+  // Saved at MCS 0, 10, 100, 1000; every 100 and then every 50 or every 10.
+  read_quietly(csv_frames({0, 10, 100, 1000}, 6), {0, 10, 100, 1000});
+  read_quietly(csv_frames({0, 100, 200, 250, 300}, 6), {0, 100, 200, 250, 300});
+  read_quietly(csv_frames({0, 100, 200, 300, 310, 320, 330}, 6), {0, 100, 200, 300, 310, 320, 330});
 }
 
 TEST_CASE("A CSV centre off the lattice of the run's CC3DML is refused naming file, line, MCS and cell",
@@ -370,4 +381,29 @@ TEST_CASE("A CSV centre off the lattice of the run's CC3DML is refused naming fi
   // Without the CC3DML nothing says how large the lattice is: read as given.
   fs::remove_all(dir.path() / "Simulation");
   CHECK(read_run(dir.file("cells.csv")).trajectories.frames() == 2);
+}
+
+TEST_CASE(
+    "A CSV centre off a periodic lattice, or off the plane of a planar one, is refused naming line, MCS "
+    "and cell",
+    "[io][run]") {
+  io::test::TempDir dir;
+  write(dir.file("cells.csv"),
+        csv_frames({0}, 8) + "100,1,2,50.5,1,1\n" + csv_rows({100}, 8).substr(csv_rows({100}, 1).size()));
+  write(dir.file("Simulation/run.xml"),
+        cc3d_xml("x=\"50\" y=\"50\" z=\"50\"", "    <Boundary_x>Periodic</Boundary_x>\n"));
+  RunOptions periodic;
+  periodic.read_periodic = true;
+  CHECK_THAT(
+      io::test::input_error([&] { read_run(dir.path().string(), periodic); }),
+      Contains("cells.csv:10: MCS 100, cell 1: xCOM 50.5 lies outside [0, 50], the periodic lattice along "
+               "x of ") &&
+          Contains("run.xml"));
+  write(dir.file("cells.csv"), "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n0,1,1,1.5,2,0\n0,2,2,3,4,0\n0,3,1,5,1,0\n"
+                               "10,1,1,1,2,0\n10,2,2,3,4.25,0.5\n10,3,1,5,1,0\n");
+  write(dir.file("Simulation/run.xml"), cc3d_xml("x=\"10\" y=\"10\" z=\"1\""));
+  CHECK_THAT(
+      io::test::input_error([&] { read_run(dir.path().string()); }),
+      Contains("cells.csv:6: MCS 10, cell 2: zCOM 0.5 differs from 0 at line 2, but the lattice's z extent "
+               "is 1"));
 }

@@ -120,7 +120,8 @@ const char* const as_open_consequence =
 
 // CC3D's centres along a periodic axis lie in [0, L] (L itself after rounding): anything outside is a
 // corrupt row; L is the same point as 0 (docs/MATH.md §8.1).
-void wrap_csv_centres(std::vector<CellSample>& samples, const PeriodicDomain& domain, const std::string& path,
+void wrap_csv_centres(std::vector<CellSample>& samples, const PeriodicDomain& domain, std::int64_t scale,
+                      const std::string& path, const std::string& simulation_path,
                       const CsvColumns& columns) {
   const std::string* names[3] = {&columns.x, &columns.y, &columns.z};
   for (CellSample& s : samples)
@@ -129,10 +130,10 @@ void wrap_csv_centres(std::vector<CellSample>& samples, const PeriodicDomain& do
         continue;
       const std::int64_t x = s.position[a], lo = domain.origin[a], hi = lo + domain.period[a];
       if (x < lo || x > hi)
-        throw InputError(path + ":" + std::to_string(s.line) + ": cell " + std::to_string(s.cell_id) +
-                         " at MCS " + std::to_string(s.mcs) + ": " + *names[a] + " lies outside [0, " +
-                         std::to_string(domain.lattice[a]) + "], the periodic lattice along " +
-                         char('x' + a));
+        throw InputError(path + ":" + std::to_string(s.line) + ": MCS " + std::to_string(s.mcs) + ", cell " +
+                         std::to_string(s.cell_id) + ": " + *names[a] + " " + grid_coordinate_text(x, scale) +
+                         " lies outside [0, " + std::to_string(domain.lattice[a]) +
+                         "], the periodic lattice along " + char('x' + a) + " of " + simulation_path);
       s.position[a] = wrap_coordinate(x, lo, domain.period[a]);
     }
 }
@@ -328,7 +329,7 @@ RunData read_csv_run(const std::string& path, const RunOptions& options,
     run.notes.push_back(rounding_note(run.snap, options.scale));
   if (simulation) {
     run.domain = periodic_domain(*simulation, {0, 0, 0}, {options.scale, options.scale, options.scale});
-    wrap_csv_centres(csv.samples, run.domain, path, options.csv_columns);
+    wrap_csv_centres(csv.samples, run.domain, options.scale, path, simulation->path, options.csv_columns);
     check_inside_lattice(csv.samples, *simulation, run.domain, options.scale, path, options.csv_columns);
   }
 
@@ -342,9 +343,12 @@ RunData read_csv_run(const std::string& path, const RunOptions& options,
   int dimension = 3;
   if (z_extent && *z_extent == 1) {
     if (differing != csv.samples.end())
-      throw InputError(path + ":" + std::to_string(differing->line) + ": cell " +
-                       std::to_string(differing->cell_id) + ": z differs from line " +
-                       std::to_string(first.line) + " in a run with lattice z extent 1");
+      throw InputError(
+          path + ":" + std::to_string(differing->line) + ": MCS " + std::to_string(differing->mcs) +
+          ", cell " + std::to_string(differing->cell_id) + ": " + options.csv_columns.z + " " +
+          grid_coordinate_text(differing->position[2], options.scale) + " differs from " +
+          grid_coordinate_text(first.position[2], options.scale) + " at line " + std::to_string(first.line) +
+          ", but the lattice's z extent is 1: a planar run has one z on every row");
     dimension = 2;
   } else if (differing == csv.samples.end()) {
     // Every centre in one plane z = const is a planar run whatever the lattice says (a 3D alpha
