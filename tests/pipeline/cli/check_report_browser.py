@@ -160,14 +160,19 @@ def check_answer(driver, failures):
         # The contact fractions under each type are those `medusa curves` prints for the same store (their
         # values checked against counts on `medusa at` exports by check_sorting_measures.py); in a sorting
         # run the condensing type's heterotypic contacts fall.
+        curves_text = call("curves", f"{name}.h5", "-o", f"curves_{name}")
         printed = {m.group(1): m.group(2) for m in re.finditer(
             r"^  (?:type (\d+)(?: \([^)]*\))?|all cells): (heterotypic contacts \S+ -> \S+, same-type neighbours \S+ -> \S+),",
-            call("curves", f"{name}.h5", "-o", f"curves_{name}"), re.M) if m.group(1)}
+            curves_text, re.M) if m.group(1)}
+        largest = {m.group(1): m.groups()[1:] for m in re.finditer(
+            r"^  type (\d+)(?: \([^)]*\))?: .*, largest cluster (\d+) -> (\d+) cells$", curves_text, re.M)}
         for label in ("1", "2"):
             shown = driver.find_element(
                 "css selector", f".run-card[data-run='{ri}'] .headline[data-type='{label}'] .contacts").text
+            a, b = largest.get(label, ("?", "?"))
             expected = printed.get(label, "?").replace(" -> ", " \u2192 ")
-            if not shown.startswith(expected + " (MCS "):
+            if not re.fullmatch(re.escape(f"{expected}, largest cluster {a} of ") + r"\d+" +
+                                re.escape(f" \u2192 {b} of ") + r"\d+ cells \(MCS .*\)", shown):
                 failures.append(f"three.html {name} type {label}: contacts {shown!r}, `medusa curves` says {expected!r}")
         if SORTING[name]:
             first, last = (float(x) for x in re.search(r"heterotypic contacts (\S+) -> (\S+),", printed["1"]).groups())
