@@ -164,13 +164,14 @@ TEST_CASE("A run with lattice z extent 1 is planar", "[io][run]") {
   CHECK(has_warning(lone, "the lattice z extent is unknown; read as a planar (2D) run"));
 }
 
-TEST_CASE("A planar run with differing z is refused naming the line and cell", "[io][run]") {
+TEST_CASE("A planar run with differing z is refused naming the line, MCS, cell and values", "[io][run]") {
   io::test::TempDir dir;
   write(dir.file("cells.csv"), "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n0,1,1,1.5,2,0\n0,2,2,3,4,0.5\n");
   RunOptions o;
   o.z_extent = 1;
   CHECK_THAT(io::test::input_error([&] { read_run(dir.file("cells.csv"), o); }),
-             Contains("cells.csv:3") && Contains("cell 2") && Contains("z extent 1"));
+             Contains("cells.csv:3: MCS 0, cell 2: zCOM 0.5 differs from 0 at line 2, but the lattice's z "
+                      "extent is 1"));
 }
 
 TEST_CASE("The source option chooses between VTK snapshots and the CSV", "[io][run]") {
@@ -383,10 +384,8 @@ TEST_CASE("A CSV centre off the lattice of the run's CC3DML is refused naming fi
   CHECK(read_run(dir.file("cells.csv")).trajectories.frames() == 2);
 }
 
-TEST_CASE(
-    "A CSV centre off a periodic lattice, or off the plane of a planar one, is refused naming line, MCS "
-    "and cell",
-    "[io][run]") {
+TEST_CASE("A CSV centre off a periodic lattice is refused naming line, MCS, cell, value and CC3DML",
+          "[io][run]") {
   io::test::TempDir dir;
   write(dir.file("cells.csv"),
         csv_frames({0}, 8) + "100,1,2,50.5,1,1\n" + csv_rows({100}, 8).substr(csv_rows({100}, 1).size()));
@@ -399,11 +398,4 @@ TEST_CASE(
       Contains("cells.csv:10: MCS 100, cell 1: xCOM 50.5 lies outside [0, 50], the periodic lattice along "
                "x of ") &&
           Contains("run.xml"));
-  write(dir.file("cells.csv"), "mcs,cell_id,type_id,xCOM,yCOM,zCOM\n0,1,1,1.5,2,0\n0,2,2,3,4,0\n0,3,1,5,1,0\n"
-                               "10,1,1,1,2,0\n10,2,2,3,4.25,0.5\n10,3,1,5,1,0\n");
-  write(dir.file("Simulation/run.xml"), cc3d_xml("x=\"10\" y=\"10\" z=\"1\""));
-  CHECK_THAT(
-      io::test::input_error([&] { read_run(dir.path().string()); }),
-      Contains("cells.csv:6: MCS 10, cell 2: zCOM 0.5 differs from 0 at line 2, but the lattice's z extent "
-               "is 1"));
 }
