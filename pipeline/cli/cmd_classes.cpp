@@ -272,7 +272,8 @@ void add_classes_command(CLI::App& app) {
       "A class's representative is a cycle of medusa cells born with it (docs/MATH.md §7.11): "
       "for degree 0 the cells of the cluster that merged (for the cluster that never merges, every "
       "cell that was part of it up to the end, those born later and those that died included), for "
-      "degrees 1 and 2 the cells on the loop or the shell. Stored by `medusa run` for the forward diagrams (degrees 0-2); "
+      "degrees 1 and 2 the cells on the loop or the shell. Stored by `medusa run` for the forward diagrams "
+      "(degrees 0-2); "
       "computed on demand for the others. A store written with `medusa run --shorten-representatives` holds "
       "shortened cycles and lists them with or without --shorten.");
   classes->callback([args] { classes_command(*args); });

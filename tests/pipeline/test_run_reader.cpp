@@ -285,6 +285,13 @@ std::string csv_frames(const std::vector<std::int64_t>& frames, int cells) {
   return csv_header + csv_rows(frames, cells);
 }
 
+// The run read with --skip-unreadable-frames.
+RunData read_skipping(const std::string& path) {
+  RunOptions skip;
+  skip.skip_unreadable_frames = true;
+  return read_run(path, skip);
+}
+
 } // namespace
 
 TEST_CASE("A CSV whose last frame stops part of the way through the one before is refused as still being "
@@ -298,9 +305,7 @@ TEST_CASE("A CSV whose last frame stops part of the way through the one before i
       Contains("cells.csv: the last frame, MCS 200, stops after 3 rows (lines 18 to 20) where MCS 100 has "
                "8 in the same order: a file still being written") &&
           Contains("--skip-unreadable-frames"));
-  RunOptions skip;
-  skip.skip_unreadable_frames = true;
-  const RunData r = read_run(dir.file("cells.csv"), skip);
+  const RunData r = read_skipping(dir.file("cells.csv"));
   CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 100});
   CHECK(has_warning(r, "the last frame, MCS 200, stops after 3 rows"));
   CHECK(has_warning(r, "; left out"));
@@ -318,9 +323,7 @@ TEST_CASE("A CSV row with a mistyped MCS is refused naming the frame it makes", 
   CHECK_THAT(io::test::input_error([&] { read_run(dir.file("cells.csv")); }),
              Contains("cells.csv: MCS 150 lacks 7 of the 7 cells present at MCS 100 and MCS 200, with 1 row "
                       "(line 12): an incomplete frame"));
-  RunOptions skip;
-  skip.skip_unreadable_frames = true;
-  const RunData r = read_run(dir.file("cells.csv"), skip);
+  const RunData r = read_skipping(dir.file("cells.csv"));
   CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 100, 200});
   CHECK(has_warning(r, "MCS 150 lacks 7 of the 7 cells"));
   CHECK(has_warning(r, "cell 3 is missing from MCS 100"));
@@ -335,9 +338,7 @@ TEST_CASE("A CSV frame missing from the middle of an evenly saved series is refu
              Contains("cells.csv: no row has MCS 200: the frames go from MCS 100 to MCS 300, every 100 MCS "
                       "elsewhere") &&
                  Contains("--skip-unreadable-frames"));
-  RunOptions skip;
-  skip.skip_unreadable_frames = true;
-  const RunData r = read_run(dir.file("cells.csv"), skip);
+  const RunData r = read_skipping(dir.file("cells.csv"));
   CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 100, 300, 400});
   CHECK(has_warning(r, "no row has MCS 200"));
 }

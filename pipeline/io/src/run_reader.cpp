@@ -118,42 +118,27 @@ void check_periodic(const std::optional<Cc3dSimulation>& sim, const RunOptions& 
 const char* const as_open_consequence =
     "each cell is followed across the boundaries (docs/MATH.md §8.2) but contacts across them are not seen";
 
-// CC3D's centres along a periodic axis lie in [0, L] (L itself after rounding): anything outside is a
-// corrupt row; L is the same point as 0 (docs/MATH.md §8.1).
-void wrap_csv_centres(std::vector<CellSample>& samples, const PeriodicDomain& domain, std::int64_t scale,
-                      const std::string& path, const std::string& simulation_path,
-                      const CsvColumns& columns) {
+// CC3D's centres lie on the lattice of its CC3DML: anything outside is a corrupt row (a typo, or a CSV of
+// another run), which would read as a cell jumping there and back. Along a periodic axis they lie in
+// [0, L] (L itself after rounding), L the same point as 0, and are wrapped into [0, L) (docs/MATH.md §8.1).
+void place_csv_centres(std::vector<CellSample>& samples, const Cc3dSimulation& simulation,
+                       const PeriodicDomain& domain, std::int64_t scale, const std::string& path,
+                       const CsvColumns& columns) {
   const std::string* names[3] = {&columns.x, &columns.y, &columns.z};
   for (CellSample& s : samples)
     for (std::size_t a = 0; a < 3; ++a) {
-      if (!domain.periodic[a])
-        continue;
-      const std::int64_t x = s.position[a], lo = domain.origin[a], hi = lo + domain.period[a];
+      const bool periodic = domain.periodic[a];
+      const std::int64_t x = s.position[a], lo = periodic ? domain.origin[a] : 0;
+      const std::int64_t hi = periodic ? lo + domain.period[a] : simulation.dimensions[a] * scale;
       if (x < lo || x > hi)
         throw InputError(path + ":" + std::to_string(s.line) + ": MCS " + std::to_string(s.mcs) + ", cell " +
                          std::to_string(s.cell_id) + ": " + *names[a] + " " + grid_coordinate_text(x, scale) +
-                         " lies outside [0, " + std::to_string(domain.lattice[a]) +
-                         "], the periodic lattice along " + char('x' + a) + " of " + simulation_path);
-      s.position[a] = wrap_coordinate(x, lo, domain.period[a]);
-    }
-}
-
-// A centre off the lattice along an open axis (a typo, or a CSV of another run) is refused: it would be
-// read as a cell that jumps there and back.
-void check_inside_lattice(const std::vector<CellSample>& samples, const Cc3dSimulation& simulation,
-                          const PeriodicDomain& domain, std::int64_t scale, const std::string& path,
-                          const CsvColumns& columns) {
-  const std::string* names[3] = {&columns.x, &columns.y, &columns.z};
-  for (const CellSample& s : samples)
-    for (std::size_t a = 0; a < 3; ++a) {
-      const std::int64_t hi = simulation.dimensions[a] * scale;
-      if (domain.periodic[a] || (s.position[a] >= 0 && s.position[a] <= hi))
-        continue;
-      throw InputError(path + ":" + std::to_string(s.line) + ": MCS " + std::to_string(s.mcs) + ", cell " +
-                       std::to_string(s.cell_id) + ": " + *names[a] + " " +
-                       grid_coordinate_text(s.position[a], scale) + " lies outside [0, " +
-                       std::to_string(simulation.dimensions[a]) + "], the lattice along " + char('x' + a) +
-                       " of " + simulation.path);
+                         " lies outside [0, " +
+                         std::to_string(periodic ? domain.lattice[a] : simulation.dimensions[a]) + "], the " +
+                         (periodic ? "periodic " : "") + "lattice along " + char('x' + a) + " of " +
+                         simulation.path);
+      if (periodic)
+        s.position[a] = wrap_coordinate(x, lo, domain.period[a]);
     }
 }
 
@@ -329,8 +314,7 @@ RunData read_csv_run(const std::string& path, const RunOptions& options,
     run.notes.push_back(rounding_note(run.snap, options.scale));
   if (simulation) {
     run.domain = periodic_domain(*simulation, {0, 0, 0}, {options.scale, options.scale, options.scale});
-    wrap_csv_centres(csv.samples, run.domain, options.scale, path, simulation->path, options.csv_columns);
-    check_inside_lattice(csv.samples, *simulation, run.domain, options.scale, path, options.csv_columns);
+    place_csv_centres(csv.samples, *simulation, run.domain, options.scale, path, options.csv_columns);
   }
 
   std::optional<std::int64_t> z_extent = options.z_extent;
