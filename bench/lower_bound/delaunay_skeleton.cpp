@@ -699,7 +699,7 @@ private:
       if (dt_.is_infinite(x))
         continue;
       const int s = kinetic::certified_sign(kinetic::certificate::gabriel_edge<Interval>(
-          p, q, kinetic::certificate::PointAtTime{&pt(x), Interval(u)})[0]);
+          p, q, kinetic::certificate::PointAtTime{&pt(x), Interval(u)}));
       if (s == 0)
         throw Degenerate{"a point on an edge's diametral circle at an event"};
       if (s < 0)

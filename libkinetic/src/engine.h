@@ -200,7 +200,7 @@ private:
   // `at` gives the points: moving (pt) for the polynomial, at now's enclosure (points_at_now) for its
   // value at now.
   template <class NT, class At>
-  Poly<NT> fold_poly(const Simplex& ridge, VertexId p, VertexId q, const At& at) const {
+  auto fold_poly(const Simplex& ridge, VertexId p, VertexId q, const At& at) const {
     return K::template fold<NT>(ridge, p, q, at);
   }
   template <class NT> Poly<NT> fold_poly(const Simplex& ridge, VertexId p, VertexId q) const {
@@ -214,7 +214,7 @@ private:
 
   // The orientation polynomial of a finite top simplex (a tetrahedron, a triangle in 2D); `at` gives
   // the moving points (pt: this slab's motion).
-  template <class NT, class At> Poly<NT> orientation_poly(const Simplex& t, const At& at) const {
+  template <class NT, class At> auto orientation_poly(const Simplex& t, const At& at) const {
     return K::template orientation<NT>(K::join(t), at);
   }
   template <class NT> Poly<NT> orientation_poly(const Simplex& t) const {

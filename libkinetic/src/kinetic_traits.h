@@ -52,13 +52,13 @@ template <int D> struct KineticTraitsBase {
 
 template <> struct KineticTraits<3> : KineticTraitsBase<3> {
   // O(v0, v1, v2, v3), the sign of CGAL::orientation.
-  template <class NT, class At> static Poly<NT> orientation(const Vertices& v, const At& at) {
+  template <class NT, class At> static auto orientation(const Vertices& v, const At& at) {
     return certificate::orientation<NT>(at(v[0]), at(v[1]), at(v[2]), at(v[3]));
   }
   // InS(v; y): of sign `outside_sign` times the orientation of v iff y is strictly outside the
   // circumsphere of v, 0 iff on it.
   static constexpr int outside_sign = 1;
-  template <class NT, class At> static Poly<NT> in_sphere(const Vertices& v, VertexId y, const At& at) {
+  template <class NT, class At> static auto in_sphere(const Vertices& v, VertexId y, const At& at) {
     return certificate::in_sphere<NT>(at(v[0]), at(v[1]), at(v[2]), at(v[3]), at(y));
   }
   // in_sphere<Interval> enclosed from one pass in plain doubles (certificate_enclosure.h).
@@ -68,8 +68,7 @@ template <> struct KineticTraits<3> : KineticTraitsBase<3> {
   // Facets a b p and a b q at the ridge a b: dot((b - a) x (p - a), (b - a) x (q - a)). When the
   // four points are coplanar it is positive iff the facets are folded onto each other, negative iff
   // they lie side by side.
-  template <class NT, class At>
-  static Poly<NT> fold(const Simplex& ridge, VertexId p, VertexId q, const At& at) {
+  template <class NT, class At> static auto fold(const Simplex& ridge, VertexId p, VertexId q, const At& at) {
     const auto ab = certificate::difference<NT>(at(ridge[0]), at(ridge[1]));
     return certificate::dot<NT>(certificate::cross<NT>(ab, certificate::difference<NT>(at(ridge[0]), at(p))),
                                 certificate::cross<NT>(ab, certificate::difference<NT>(at(ridge[0]), at(q))));
@@ -109,13 +108,13 @@ template <> struct KineticTraits<3> : KineticTraitsBase<3> {
 
 template <> struct KineticTraits<2> : KineticTraitsBase<2> {
   // O2(v0, v1, v2) over (x, y), positive counterclockwise.
-  template <class NT, class At> static Poly<NT> orientation(const Vertices& v, const At& at) {
+  template <class NT, class At> static auto orientation(const Vertices& v, const At& at) {
     return certificate::orientation_2<NT>(at(v[0]), at(v[1]), at(v[2]));
   }
   // InC(v; y) is positive iff y is strictly inside the circumcircle of a counterclockwise v: the
   // opposite convention to InS (certificate_polynomials.h).
   static constexpr int outside_sign = -1;
-  template <class NT, class At> static Poly<NT> in_sphere(const Vertices& v, VertexId y, const At& at) {
+  template <class NT, class At> static auto in_sphere(const Vertices& v, VertexId y, const At& at) {
     return certificate::in_circle<NT>(at(v[0]), at(v[1]), at(v[2]), at(y));
   }
   template <class At> static IntervalPoly in_sphere_enclosure(const Vertices& v, VertexId y, const At& at) {
@@ -123,8 +122,7 @@ template <> struct KineticTraits<2> : KineticTraitsBase<2> {
   }
   // Edges a p and a q at the ridge vertex a: dot(p - a, q - a), positive iff folded onto each other
   // when the three points are collinear.
-  template <class NT, class At>
-  static Poly<NT> fold(const Simplex& ridge, VertexId p, VertexId q, const At& at) {
+  template <class NT, class At> static auto fold(const Simplex& ridge, VertexId p, VertexId q, const At& at) {
     return certificate::dot<NT>(certificate::difference<NT>(at(ridge[0]), at(p)),
                                 certificate::difference<NT>(at(ridge[0]), at(q)));
   }

@@ -178,9 +178,9 @@ TEST_CASE("certificates of points at a time enclose their polynomials' exact val
         certificate::PointAtTime q[5];
         for (int i = 0; i < 5; ++i)
           q[i] = {&p[i], u};
-        g_edge = certificate::gabriel_edge<Interval>(q[0], q[1], q[2])[0];
-        g_triangle = certificate::gabriel_triangle<Interval>(q[0], q[1], q[2], q[3])[0];
-        o = certificate::orientation<Interval>(q[0], q[1], q[2], q[3])[0];
+        g_edge = certificate::gabriel_edge<Interval>(q[0], q[1], q[2]);
+        g_triangle = certificate::gabriel_triangle<Interval>(q[0], q[1], q[2], q[3]);
+        o = certificate::orientation<Interval>(q[0], q[1], q[2], q[3]);
       }
       const Poly<mpz_class> exact[3] = {certificate::gabriel_edge<mpz_class>(p[0], p[1], p[2]),
                                         certificate::gabriel_triangle<mpz_class>(p[0], p[1], p[2], p[3]),

@@ -231,7 +231,7 @@ template <class K> void Engine<K>::audit_supporting(const Rational& q, const Sim
       CGAL::Protect_FPU_rounding<true> guard;
       const Interval u = CGAL::to_interval(q);
       const auto at = [&](VertexId v) { return certificate::PointAtTime{&pt(v), u}; };
-      const Interval o = K::template orientation<Interval>(K::join(f, p), at)[0];
+      const Interval o = K::template orientation<Interval>(K::join(f, p), at);
       if (o.inf() > 0 || o.sup() < 0)
         return o.inf() > 0 ? 1 : -1;
     }

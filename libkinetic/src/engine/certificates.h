@@ -52,7 +52,7 @@ int Engine<K>::orientation_of(const VertexId* seq, std::size_t n, const Apices& 
 template <class K> int Engine<K>::orientation_enclosure_sign(const Simplex& t) {
   CGAL::Protect_FPU_rounding<true> guard;
   const auto at = points_at_now();
-  const Interval o = K::template orientation<Interval>(K::join(t), at)[0];
+  const Interval o = K::template orientation<Interval>(K::join(t), at);
   if (o.inf() > 0 || o.sup() < 0) {
     ++stats.sign_evaluations;
     return o.inf() > 0 ? 1 : -1;
@@ -216,8 +216,8 @@ template <class K> bool Engine<K>::hull_ridge_folded_at_now(const Simplex& facet
     const auto at = points_at_now();
     const Apices ap = cells.apices(c, i);
     const VertexId p = ap.v[0], q = ap.v[1];
-    const Interval o = K::template orientation<Interval>(K::join(ridge, p, q), at)[0];
-    if (o.inf() > 0 || o.sup() < 0 || fold_poly<Interval>(ridge, p, q, at)[0].sup() < 0)
+    const Interval o = K::template orientation<Interval>(K::join(ridge, p, q), at);
+    if (o.inf() > 0 || o.sup() < 0 || fold_poly<Interval>(ridge, p, q, at).sup() < 0)
       return false;
   }
   if (sign_at_now([&](auto tag) { return delaunay_poly<decltype(tag)>(facet, c, i); }) != 0)

@@ -153,7 +153,7 @@ template <class K> bool Engine<K>::flippable(int cert, FlipChange& change) {
           // At now's enclosure first: in generic motion no four of the group are coplanar at now.
           CGAL::Protect_FPU_rounding<true> guard;
           const auto at = points_at_now();
-          const Interval o = certificate::orientation<Interval>(at(a), at(b), at(u), at(v))[0];
+          const Interval o = certificate::orientation<Interval>(at(a), at(b), at(u), at(v));
           if (o.inf() > 0 || o.sup() < 0) {
             ++stats.sign_evaluations;
             return o.inf() > 0 ? 1 : -1;

@@ -300,9 +300,9 @@ template <class K> bool Engine<K>::gabriel_now(const Simplex& s, Face& f) {
     CGAL::Protect_FPU_rounding<true> guard;
     const auto at = points_at_now();
     for (VertexId x : link) {
-      const Interval g =
-          s.size() == 2 ? certificate::gabriel_edge<Interval>(at(s[0]), at(s[1]), at(x))[0]
-                        : certificate::gabriel_triangle<Interval>(at(s[0]), at(s[1]), at(s[2]), at(x))[0];
+      const Interval g = s.size() == 2
+                             ? certificate::gabriel_edge<Interval>(at(s[0]), at(s[1]), at(x))
+                             : certificate::gabriel_triangle<Interval>(at(s[0]), at(s[1]), at(s[2]), at(x));
       if (g.sup() < 0 || g.inf() > 0)
         ++stats.sign_evaluations;
       if (g.sup() < 0)
