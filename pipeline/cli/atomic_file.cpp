@@ -53,10 +53,11 @@ void check_output_folder(const std::string& path) {
 
 void check_output_path(const std::string& path) {
   check_output_folder(path);
-  refuse_to_replace_hdf5(path);
+  refuse_to_replace_hdf5(regular_output_name(path));
 }
 
-void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
+void write_file_atomically(const std::string& output, const std::function<void(std::ostream&)>& write) {
+  const std::string path = regular_output_name(output);
   refuse_to_replace_hdf5(path);
   const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
   try {

@@ -16,12 +16,14 @@ void refuse_to_replace_hdf5(const std::string& path);
 // Before a command's work, what it would otherwise find only when writing: StoreError when the folder
 // `path` is to be written in does not exist (or is not a folder).
 void check_output_folder(const std::string& path);
-// check_output_folder, then refuse_to_replace_hdf5.
+// check_output_folder, then regular_output_name (a device, FIFO, socket, folder or a link to one is a
+// UsageError), then refuse_to_replace_hdf5.
 void check_output_path(const std::string& path);
 
-// Calls `write` on a stream to `<path>.tmp-<pid>`, then renames it to `path`. On any failure the
-// temporary file is removed and StoreError names `path`; nothing is written over an HDF5 file
-// (refuse_to_replace_hdf5).
+// Calls `write` on a stream to `<path>.tmp-<pid>`, then renames it to `path` (or to the regular file a
+// link at `path` leads to). On any failure the temporary file is removed and StoreError names `path`;
+// nothing is written over an HDF5 file (refuse_to_replace_hdf5) or in place of anything but a regular
+// file (regular_output_name).
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 } // namespace medusa::cli

@@ -55,6 +55,15 @@ FatesFromCells fates_from_cells(const medusa::Medusa& medusa, int cell_type) {
   return result;
 }
 
+std::size_t clusters_after_first_batch(const persistence::Diagram& forward, std::uint64_t first_batch) {
+  std::size_t alive = 0;
+  for (const persistence::PersistencePair& p : forward.pairs)
+    if (!p.zero_length && p.dim == 0 && p.birth_time.batch <= first_batch &&
+        (p.essential || p.death_time.batch > first_batch))
+      ++alive;
+  return alive;
+}
+
 ClassFates class_fates(const medusa::Medusa& medusa, const FatesFromCells& cells,
                        const persistence::Diagram& forward, const persistence::Diagram& reverse) {
   if (forward.direction != persistence::Direction::forward ||
@@ -70,15 +79,10 @@ ClassFates class_fates(const medusa::Medusa& medusa, const FatesFromCells& cells
   fates.cells_leaving_at_first = cells.cells_leaving_at_first;
 
   std::vector<double> joins;
-  std::size_t alive_after_first = 0;
-  for (const persistence::PersistencePair& p : forward.pairs) {
-    if (p.zero_length || p.dim != 0)
-      continue;
-    if (!p.essential)
+  for (const persistence::PersistencePair& p : forward.pairs)
+    if (!p.zero_length && p.dim == 0 && !p.essential)
       joins.push_back(p.death);
-    if (p.birth_time.batch <= first_batch && (p.essential || p.death_time.batch > first_batch))
-      ++alive_after_first;
-  }
+  const std::size_t alive_after_first = clusters_after_first_batch(forward, first_batch);
   std::sort(joins.begin(), joins.end());
   fates.clusters.joins = joins.size();
   if (!joins.empty()) {
@@ -97,8 +101,10 @@ ClassFates class_fates(const medusa::Medusa& medusa, const FatesFromCells& cells
   fates.clusters.separated_again = fates.clusters.at_end - carried;
   fates.holes =
       persistence::hole_fates(forward, reverse, first_batch, medusa.end.batch, cells.end_beyond_first);
-  for (std::size_t k = 1; k <= 2; ++k)
+  for (std::size_t k = 1; k <= 2; ++k) {
     fates.open_at_end[k] = cells.betti_end[k];
+    fates.open_at_first[k] = cells.betti_first[k];
+  }
   return fates;
 }
 

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 namespace medusa::cli {
 
@@ -34,6 +35,9 @@ struct ClassFates {
   std::array<persistence::HoleFates, 3> holes;
   // b_k of K(t_end-) (>= still open: an end loop can bound in space-time).
   std::array<std::size_t, 3> open_at_end{};
+  // b_k of K at the first frame, just after it: it differs from the classes present at the first frame
+  // when cells present at that frame only leave then.
+  std::array<std::size_t, 3> open_at_first{};
   // Cells present at the first frame only: they leave the complex at that instant (docs/MATH.md §2.4),
   // so the first frame's complex (the state just after it, §0) no longer has them.
   std::size_t cells_leaving_at_first = 0;
@@ -57,6 +61,10 @@ FatesFromCells fates_from_cells(const medusa::Medusa& medusa, int cell_type);
 // whole medusa), zero-length pairs dropped or not; InternalError if their types differ from it.
 ClassFates class_fates(const medusa::Medusa& medusa, const FatesFromCells& cells,
                        const persistence::Diagram& forward, const persistence::Diagram& reverse);
+
+// The forward H0 classes alive after the batch `first_batch` (the first frame's, medusa::frame_batch):
+// the clusters of the first frame not already joined in M_{<= t_0} to another.
+std::size_t clusters_after_first_batch(const persistence::Diagram& forward, std::uint64_t first_batch);
 
 // Both steps at once.
 ClassFates class_fates(const medusa::Medusa& medusa, const persistence::Diagram& forward,

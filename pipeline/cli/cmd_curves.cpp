@@ -100,6 +100,16 @@ void describe(std::ostream& out, const medusa::SignatureSample& s) {
       << (g.betti[2] == 1 ? " cavity" : " cavities");
 }
 
+// The first slice a user compares: just after the first frame, the last sample at its time (cells
+// present at t_0 alone leave in a batch of that same time, docs/MATH.md §2.4), as `--frames-only`,
+// `medusa run` and the report count it.
+template <class Sample> const Sample& just_after_first(const std::vector<Sample>& samples) {
+  std::size_t k = 0;
+  while (k + 1 < samples.size() && samples[k + 1].time == samples.front().time)
+    ++k;
+  return samples[k];
+}
+
 void curves_command(const CurvesArguments& args) {
   check_output_folder((args.prefix.empty() ? store_stem(args.store) : args.prefix) + ".curves.csv");
   const medusa::Medusa medusa = medusa::read_store(args.store);
@@ -139,7 +149,7 @@ void curves_command(const CurvesArguments& args) {
     // A type's contacts are those among its own cells (its subcomplex, docs/MATH.md §7.4).
     std::cout << type_label_title(medusa.input.type_names, c.label)
               << (c.label == "all" ? "" : ", among its cells") << ":\n  ";
-    describe(std::cout, c.samples.front());
+    describe(std::cout, just_after_first(c.samples));
     std::cout << "\n  ";
     describe(std::cout, c.samples.back());
     std::cout << "\n";
@@ -156,8 +166,9 @@ void curves_command(const CurvesArguments& args) {
       << format_time(sorting.back().time)
       << " (fraction of contacts between cells of different types; mean fraction of a cell's neighbours "
          "of its own type; clusters and the largest one's cells; README):\n";
-  for (std::size_t g = 0; g < sorting.front().measures.size(); ++g) {
-    const medusa::SortingMeasures &a = sorting.front().measures[g], &b = sorting.back().measures[g];
+  const medusa::SortingSample& first = just_after_first(sorting);
+  for (std::size_t g = 0; g < first.measures.size(); ++g) {
+    const medusa::SortingMeasures &a = first.measures[g], &b = sorting.back().measures[g];
     std::cout << "  " << (a.type ? cell_type_title(medusa.input, *a.type) : std::string("all cells")) << ": "
               << contact_fractions(a, b, " -> ") << ", clusters " << a.clusters << " -> " << b.clusters
               << ", largest cluster " << a.largest_cluster << " -> " << b.largest_cluster << " cells\n";

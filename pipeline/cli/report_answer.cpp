@@ -28,7 +28,7 @@ std::string joins_text(const std::vector<double>& joins) {
 } // namespace
 
 TypeCourse type_course(const std::vector<std::int64_t>& times, const std::vector<std::size_t>& b0,
-                       const std::vector<double>& joins) {
+                       const std::vector<double>& joins, std::size_t joined_at_first) {
   TypeCourse course;
   const std::size_t n = b0.size();
   if (n == 0 || times.size() != n)
@@ -72,6 +72,11 @@ TypeCourse type_course(const std::vector<std::int64_t>& times, const std::vector
                 (joins.empty() && split_later ? "no join: the pieces that split off later were part of one "
                                                 "cluster before"
                                               : joins_text(joins)) +
+                (joined_at_first == 0 ? std::string()
+                                      : "; " + std::to_string(joined_at_first) + " of the clusters at " +
+                                            at_mcs(t0) + (joined_at_first == 1 ? " was" : " were") +
+                                            " already joined to another through cells present at that "
+                                            "frame only") +
                 ")";
   return course;
 }

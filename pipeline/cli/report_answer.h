@@ -22,9 +22,12 @@ struct TypeCourse {
   std::size_t last_clusters = 0;     // clusters at the last frame
 };
 
-// `times` the frame times, `b0` the clusters at each frame, `joins` the join times (increasing).
+// `times` the frame times, `b0` the clusters at each frame, `joins` the join times (increasing),
+// `joined_at_first` the clusters of the first frame already joined to another in space-time through
+// cells present at that frame only (ClusterFates::joined_at_first): their merges in the frames after
+// it are no joins, and the text says so.
 TypeCourse type_course(const std::vector<std::int64_t>& times, const std::vector<std::size_t>& b0,
-                       const std::vector<double>& joins);
+                       const std::vector<double>& joins, std::size_t joined_at_first = 0);
 
 struct TypeVerdictInput {
   std::string title; // "type 1 (Condensing)"

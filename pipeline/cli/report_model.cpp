@@ -2,6 +2,7 @@
 
 #include "betti_frames.h"
 #include "cell_type.h"
+#include "class_fates.h"
 #include "comparison.h"
 #include "diagram_export.h"
 #include "diagram_selection.h"
@@ -14,6 +15,7 @@
 #include "sorting_export.h"
 
 #include "medusa/core/error.h"
+#include "medusa/medusa/complex_index.h"
 #include "medusa/medusa/sorting_measures.h"
 #include "medusa/medusa/store_reader.h"
 #include "medusa/persistence/medusa_diagrams.h"
@@ -192,7 +194,9 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
     std::vector<std::size_t> b0;
     for (const Signature& g : s->at_frame)
       b0.push_back(g.betti[0]);
-    const TypeCourse course = type_course(input.frame_times, b0, forward_counts(d).merge_times);
+    const std::size_t after_first = clusters_after_first_batch(d, medusa::frame_batch(medusa, 0));
+    const TypeCourse course = type_course(input.frame_times, b0, forward_counts(d).merge_times,
+                                          b0.front() > after_first ? b0.front() - after_first : 0);
     const auto measures_of = [&](const medusa::SortingSample& sample) {
       const auto m =
           std::find_if(sample.measures.begin(), sample.measures.end(), [&](const medusa::SortingMeasures& x) {

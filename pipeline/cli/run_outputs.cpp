@@ -30,29 +30,6 @@ std::string kind_of(mode_t mode) {
   return "not a regular file";
 }
 
-// The name to write `path` under: itself, or the regular file a symbolic link leads to.
-std::string checked_output(const std::string& path) {
-  struct stat st {};
-  if (::lstat(path.c_str(), &st) != 0)
-    return path; // a new file
-  if (S_ISLNK(st.st_mode)) {
-    struct stat target {};
-    if (::stat(path.c_str(), &target) != 0)
-      throw UsageError("output " + path + " is a symbolic link to nothing; medusa writes regular files only");
-    if (!S_ISREG(target.st_mode))
-      throw UsageError("output " + path + " is a symbolic link to " + kind_of(target.st_mode) +
-                       "; medusa writes regular files only");
-    std::error_code ec;
-    const fs::path resolved = fs::canonical(path, ec);
-    if (ec)
-      throw UsageError("output " + path + ": cannot resolve the symbolic link (" + ec.message() + ")");
-    return resolved.string();
-  }
-  if (!S_ISREG(st.st_mode))
-    throw UsageError("output " + path + " is " + kind_of(st.st_mode) + "; medusa writes regular files only");
-  return path;
-}
-
 bool same_file(const std::string& a, const std::string& b) {
   struct stat sa {
   }, sb{};
@@ -93,6 +70,28 @@ void check_input_folder(const std::string& output, const std::string& input) {
 
 } // namespace
 
+std::string regular_output_name(const std::string& path) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) != 0)
+    return path; // a new file
+  if (S_ISLNK(st.st_mode)) {
+    struct stat target {};
+    if (::stat(path.c_str(), &target) != 0)
+      throw UsageError("output " + path + " is a symbolic link to nothing; medusa writes regular files only");
+    if (!S_ISREG(target.st_mode))
+      throw UsageError("output " + path + " is a symbolic link to " + kind_of(target.st_mode) +
+                       "; medusa writes regular files only");
+    std::error_code ec;
+    const fs::path resolved = fs::canonical(path, ec);
+    if (ec)
+      throw UsageError("output " + path + ": cannot resolve the symbolic link (" + ec.message() + ")");
+    return resolved.string();
+  }
+  if (!S_ISREG(st.st_mode))
+    throw UsageError("output " + path + " is " + kind_of(st.st_mode) + "; medusa writes regular files only");
+  return path;
+}
+
 std::string new_run_id() {
   std::random_device device;
   std::string id;
@@ -111,7 +110,7 @@ RunOutputs::RunOutputs(const std::string& store, const std::vector<std::string>&
   given.insert(given.end(), side_outputs.begin(), side_outputs.end());
   const std::string pid = std::to_string(static_cast<long long>(::getpid()));
   for (const std::string& path : given) {
-    const std::string name = checked_output(path);
+    const std::string name = regular_output_name(path);
     if (same_file(name, input))
       throw UsageError("output " + path + " is the input " + input + "; write it elsewhere");
     check_input_folder(name, input);

@@ -18,6 +18,12 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+// The name to write the output `path` under: itself when new or a regular file, or the regular file
+// a symbolic link there leads to. A device, FIFO, socket, folder or dangling link (or a link to one of
+// them) is a UsageError: renaming over it would replace a device node such as /dev/stdout, and opening
+// a FIFO waits for a reader.
+std::string regular_output_name(const std::string& path);
+
 // 128 random bits as 32 lowercase hex digits.
 std::string new_run_id();
 

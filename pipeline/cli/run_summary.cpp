@@ -51,10 +51,15 @@ void describe_clusters(std::ostream& out, const ClusterFates& c, double t0, doub
         << " been one cluster with another earlier, by a join or from the start, and split off)\n";
 }
 
-void describe_holes(std::ostream& out, const persistence::HoleFates& h, std::size_t open_at_end,
-                    const char* one, const char* many, double t0, double t_end) {
+void describe_holes(std::ostream& out, const persistence::HoleFates& h, std::size_t open_at_first,
+                    std::size_t open_at_end, const char* one, const char* many, double t0, double t_end) {
   out << "  " << many << ": " << h.initial() << " present at MCS " << mcs(t0) << ", " << h.formed()
       << " formed during the run\n";
+  // Present at t_0 counts the space-time classes up to t_0, cells present at t_0 alone included; the
+  // complex just after t_0 (b_k of `medusa curves --frames-only`) no longer has those cells.
+  if (open_at_first != h.initial())
+    out << "    (the complex just after MCS " << mcs(t0)
+        << ", without the cells present at that frame only, has " << count(open_at_first, one, many) << ")\n";
   if (h.initial() + h.formed() == 0)
     return;
   out << "    filled by cells: " << h.filled_initial << " of those at MCS " << mcs(t0) << ", "
@@ -96,11 +101,13 @@ void describe_planar_bubbles(std::ostream& out, const persistence::Diagram& forw
 void describe_fates(std::ostream& out, const ClassFates& fates, const persistence::Diagram& forward,
                     int dimension, double t0, double t_end) {
   describe_clusters(out, fates.clusters, t0, t_end);
-  describe_holes(out, fates.holes[1], fates.open_at_end[1], "loop", "loops", t0, t_end);
+  describe_holes(out, fates.holes[1], fates.open_at_first[1], fates.open_at_end[1], "loop", "loops", t0,
+                 t_end);
   if (dimension == 2)
     describe_planar_bubbles(out, forward);
   else
-    describe_holes(out, fates.holes[2], fates.open_at_end[2], "cavity", "cavities", t0, t_end);
+    describe_holes(out, fates.holes[2], fates.open_at_first[2], fates.open_at_end[2], "cavity", "cavities",
+                   t0, t_end);
 }
 
 // A path as a shell word: quoted unless it is made of characters no shell treats specially.

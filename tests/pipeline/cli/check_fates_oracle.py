@@ -123,7 +123,7 @@ for group in groups[1:]:
         dim_ab = dim_a + dim_b - dim_a_plus_b
         lines = group.splitlines()
         start = next(i for i, line in enumerate(lines) if line.startswith(f"  {word}: "))
-        never = next((line for line in lines[start + 1:start + 3] if line.startswith("    never filled: ")), None)
+        never = next((line for line in lines[start + 1:start + 4] if line.startswith("    never filled: ")), None)
         label = f"{name} {header.rstrip(':')} {word}"
         if never is None:
             assert h_m == 0, f"{label}: no never-filled line, but H_{k}(M) has dimension {h_m}"

@@ -2,11 +2,15 @@
 "One result per run").
 
 usage: check_run_outputs.py unsafe <medusa> <small run csv> <workdir>
+       check_run_outputs.py written <medusa> <small run csv> <workdir>
        check_run_outputs.py mixed <medusa> <small run csv> <plot_store.py> <workdir>
 
 unsafe: -o naming the input file, a file the input folder's reader reads, a device, a FIFO, a folder,
         a dangling link or a link to a device is refused with exit 2 and one line, and nothing is
         changed or created; -o through a link to a regular file writes that file and keeps the link.
+written: the -o of every other command that writes one file (classes, barcode, at, report) likewise:
+        a device, a FIFO (at once, not waiting for a reader) or a link to a device is refused with
+        exit 2 and left as it was; through a link to a regular file the file is written.
 mixed:  a diagrams CSV or barcode SVG beside a store from another run makes `medusa info` and
         examples/plot_store.py exit 5.
 Run with /usr/bin/python3.
@@ -15,6 +19,7 @@ import hashlib
 import os
 import shutil
 import stat
+import subprocess
 import sys
 
 from cli_checks import run_logged
@@ -89,6 +94,50 @@ def check_unsafe(medusa, csv, work):
     print(f"{len(cases)} unsafe outputs refused")
 
 
+def check_written(medusa, csv, work):
+    assert run([medusa, "run", csv, "-o", "s.h5", "--radius", "3", "-q"], work).returncode == 0
+    # Each command and the ending its -o needs.
+    commands = {
+        "classes": (["classes", "s.h5", "--type", "all", "--dim", "1", "--format", "csv"], ".csv"),
+        "barcode": (["barcode", "s.h5"], ".txt"),
+        "at": (["at", "s.h5", "--time", "100"], ".vtk"),
+        "report": (["report", "s.h5", "-q"], ".html"),
+    }
+    for ext in {e for _, e in commands.values()}:
+        os.mkfifo(os.path.join(work, "fifo" + ext))
+        os.symlink("/dev/null", os.path.join(work, "null_link" + ext))
+    names = listing(work)
+    checked = 0
+    for name, (args, ext) in commands.items():
+        cases = [("fifo" + ext, "is a FIFO"), ("null_link" + ext, "symbolic link to a device")]
+        if name != "at":  # at's -o must end in .vtk or .csv, which /dev/null does not
+            cases.append(("/dev/null", "is a device"))
+        for output, fragment in cases:
+            # A FIFO opened for writing waits for a reader: the timeout turns a hang into a failure.
+            result = subprocess.run([medusa, *args, "-o", output], cwd=work, capture_output=True, text=True,
+                                    timeout=120)
+            print("$", name, output, "->", result.returncode, result.stderr.strip()[-300:])
+            refused(result, fragment)
+            assert listing(work) == names, f"files changed: {listing(work)} (was {names})"
+            assert stat.S_ISFIFO(os.lstat(os.path.join(work, "fifo" + ext)).st_mode)
+            assert os.path.islink(os.path.join(work, "null_link" + ext))
+            assert stat.S_ISCHR(os.stat("/dev/null").st_mode)
+            checked += 1
+        # Through a link to a regular file: the file is written, the link stays a link.
+        target, link = f"{name}.target", f"{name}.link{ext}"
+        with open(os.path.join(work, target), "w") as f:
+            f.write("old\n")
+        os.symlink(target, os.path.join(work, link))
+        result = run([medusa, *args, "-o", link], work)
+        assert result.returncode == 0, result.stderr
+        assert os.path.islink(os.path.join(work, link))
+        with open(os.path.join(work, target)) as f:
+            assert f.read() != "old\n", f"{name} did not write through {link}"
+        names = listing(work)
+    assert checked == 3 * len(commands) - 1
+    print(f"{checked} unsafe outputs refused")
+
+
 def check_mixed(medusa, csv, plot_store, work):
     for name, radius in [("a.h5", "3"), ("b.h5", "2.5")]:
         assert run([medusa, "run", csv, "-o", name, "--radius", radius, "-q"], work).returncode == 0
@@ -118,6 +167,8 @@ def main():
     os.makedirs(work)
     if mode == "unsafe":
         check_unsafe(medusa, csv, work)
+    elif mode == "written":
+        check_written(medusa, csv, work)
     else:
         check_mixed(medusa, csv, sys.argv[4], work)
     print("ok")

@@ -42,6 +42,20 @@ TEST_CASE("A type that is one cluster at the first frame does not gather, even i
                   "(1 join, at MCS 150)");
 }
 
+TEST_CASE("Clusters of the first frame already joined through cells present at that frame only are said "
+          "beside the joins") {
+  // Four clusters at MCS 0, two of them bridged in space-time by cells that leave at MCS 0: their
+  // merges in the frames after it are no joins, so one join takes 4 clusters to one.
+  const auto c = type_course(five_frames, {4, 2, 1, 1, 1}, {18}, 2);
+  CHECK(c.text == "4 clusters at MCS 0, one cluster from MCS 200 to the end (MCS 400) "
+                  "(1 join, at MCS 18; 2 of the clusters at MCS 0 were already joined to another through "
+                  "cells present at that frame only)");
+  const auto one = type_course(five_frames, {3, 3, 2, 2, 2}, {50}, 1);
+  CHECK(one.text == "3 clusters at MCS 0, 2 at MCS 400, never one cluster after MCS 0 (1 join, at MCS 50; 1 "
+                    "of the clusters at MCS 0 was already joined to another through cells present at that "
+                    "frame only)");
+}
+
 TEST_CASE("The verdict names the types that gather, or says why it cannot tell") {
   const auto gathers = type_course(five_frames, {7, 3, 1, 1, 1}, {59});
   const auto split = type_course(five_frames, {12, 8, 4, 2, 2}, {265});
