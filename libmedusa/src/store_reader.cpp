@@ -278,7 +278,8 @@ void check_is_file(const std::string& path) {
   if (::stat(path.c_str(), &st) != 0)
     corrupt(path, errno == ENOENT ? "no such file" : "cannot be read");
   if (S_ISDIR(st.st_mode))
-    corrupt(path, "is a folder, not a store file");
+    corrupt(path, "is a folder, not a store file (a CC3D run folder is read by `medusa run " + path +
+                      " -o run.h5`, which writes the store the other commands read)");
   if (!S_ISREG(st.st_mode))
     corrupt(path, "is not a regular file");
 }

@@ -21,6 +21,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <regex>
 #include <set>
 
 namespace medusa::cli {
@@ -286,10 +287,10 @@ void add_at_command(CLI::App& app) {
                  "the birth of the first class)")
       ->check(CLI::Validator(
           [](std::string& value) {
-            // CLI11 reads "" as 0; a time must be written out.
-            return value.find_first_not_of(" \t") == std::string::npos
-                       ? std::string("an empty time is not a number")
-                       : std::string();
+            // CLI11 reads "" as 0, "0x10" as 16 and "nan" as a number: a time is a decimal MCS.
+            static const std::regex decimal(R"(\s*[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?\s*)");
+            return std::regex_match(value, decimal) ? std::string()
+                                                    : "'" + value + "' is not a decimal time in MCS";
           },
           "TIME"));
   at->add_option("--times", args->times,

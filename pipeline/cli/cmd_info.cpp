@@ -31,7 +31,8 @@ void info_command(const std::string& path) {
             << "run id: " << (medusa.run.run_id.empty() ? "none" : medusa.run.run_id) << "\n"
             << "software version: " << medusa.run.software_version << "\n"
             << "command line: " << medusa.run.command_line << "\n"
-            << "radius: " << medusa.run.radius_text << "\n"
+            << "radius: " << medusa.run.radius_text
+            << " lattice units (two cells touch when their centres are closer than twice that)\n"
             << "source files: " << medusa.run.source_files.size() << "\n";
   for (const std::string& f : medusa.run.source_files)
     std::cout << "  " << f << "\n";

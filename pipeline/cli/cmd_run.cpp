@@ -412,9 +412,17 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   const std::string output = args.output.empty() ? input_stem(input) + ".h5" : args.output;
   check_output_folder(output);
   // A store holds a run's whole analysis: replacing one is asked for, never a side effect.
-  if (!args.force && fs::exists(output, ec))
+  const bool replacing = fs::exists(output, ec);
+  if (!args.force && replacing)
     throw CLI::ParseError("store " + output + " exists; pass --force to replace it", 2);
   const std::string stem = output_stem(output);
+  // What the other commands wrote from the store being replaced, under their default names: left as
+  // they are (they may be kept on purpose), but said, since they no longer describe the store.
+  std::vector<std::string> stale;
+  if (replacing)
+    for (const char* suffix : {".curves.csv", ".curves.svg", ".sorting.csv", ".sorting.svg", ".report.html"})
+      if (fs::exists(stem + suffix, ec))
+        stale.push_back(stem + suffix);
   std::vector<std::string> side = {stem + ".diagrams.csv", stem + ".barcode.svg", stem + ".diagram.svg"};
   if (!args.timings.empty())
     side.push_back(args.timings);
@@ -551,9 +559,16 @@ void run_command(const RunArguments& args, const std::string& command_line) {
   check_interrupted();
   outputs.publish();
   std::cout << summary.str();
-  if (!args.quiet)
+  if (!args.quiet) {
     for (const std::string& w : warnings)
       std::cerr << "medusa: warning: " << w << "\n";
+    if (!stale.empty()) {
+      std::cerr << "medusa: warning: written from the store this run replaced, and left as they were: ";
+      for (std::size_t i = 0; i < stale.size(); ++i)
+        std::cerr << (i == 0 ? "" : ", ") << stale[i];
+      std::cerr << " (rerun the commands that wrote them)\n";
+    }
+  }
   std::cout << "wrote " << outputs.final_name(0) << ", " << outputs.final_name(1) << ", "
             << outputs.final_name(2) << ", " << outputs.final_name(3) << "\n";
 }

@@ -81,6 +81,19 @@ TypeCourse type_course(const std::vector<std::int64_t>& times, const std::vector
   return course;
 }
 
+std::string clusters_apart_text(const ClustersApart& c, std::size_t named) {
+  if (c.cells == 0 || c.largest == c.cells)
+    return "";
+  std::string text =
+      "the largest holds " + std::to_string(c.largest) + " of its " + std::to_string(c.cells) + " cells";
+  if (c.tied || c.apart.empty() || c.apart.size() > named)
+    return text;
+  text += c.apart.size() == 1 ? "; cell " : "; cells ";
+  for (std::size_t i = 0; i < c.apart.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == c.apart.size() ? " and " : ", ") + std::to_string(c.apart[i]);
+  return text + (c.apart.size() == 1 ? " is apart" : " are apart");
+}
+
 std::string run_verdict(const std::vector<TypeVerdictInput>& types, const std::string& radius) {
   std::string gathered, at_start;
   std::size_t started_one = 0;
@@ -109,6 +122,8 @@ std::string run_verdict(const std::vector<TypeVerdictInput>& types, const std::s
     else
       how_far += " goes from " + clusters(c.first_clusters) + " to " +
                  (c.last_clusters == 1 ? "one" : std::to_string(c.last_clusters));
+    if (!t.apart.empty() && !c.one_from_start)
+      how_far += " (" + t.apart + ")";
     if (!t.contacts.empty())
       how_far += ", " + t.contacts;
   }

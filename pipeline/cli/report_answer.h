@@ -29,10 +29,23 @@ struct TypeCourse {
 TypeCourse type_course(const std::vector<std::int64_t>& times, const std::vector<std::size_t>& b0,
                        const std::vector<double>& joins, std::size_t joined_at_first = 0);
 
+// A type's cells at the last frame against its largest cluster there (clusters_apart.h computes it).
+struct ClustersApart {
+  std::size_t cells = 0;           // cells of the type in K at the frame
+  std::size_t largest = 0;         // cells in its largest cluster
+  bool tied = false;               // two clusters share the largest size: no cell is "apart"
+  std::vector<std::int64_t> apart; // CC3D ids of the cells outside the largest cluster, increasing
+};
+
+// "the largest holds 98 of its 99 cells; cell 166 is apart", naming at most `named` cells (beyond
+// them, or when the largest is tied, only the share); empty for a type in one cluster or without cells.
+std::string clusters_apart_text(const ClustersApart& c, std::size_t named = 5);
+
 struct TypeVerdictInput {
   std::string title; // "type 1 (Condensing)"
   TypeCourse course;
   std::string contacts; // "heterotypic contacts 0.667 → 0.268", from the first slice to the last
+  std::string apart;    // clusters_apart_text at the last frame: said when the type does not gather
 };
 
 // "sorts: type 1 (Condensing) gathers into one cluster by MCS 100 and stays one to the end", or why

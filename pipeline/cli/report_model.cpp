@@ -3,6 +3,7 @@
 #include "betti_frames.h"
 #include "cell_type.h"
 #include "class_fates.h"
+#include "clusters_apart.h"
 #include "comparison.h"
 #include "diagram_export.h"
 #include "diagram_selection.h"
@@ -216,7 +217,8 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
                                           format_time(sorting.back().time) + ")"},
                          {"gathered_at", course.gathered_at ? json(*course.gathered_at) : json(nullptr)}});
     if (!whole)
-      verdict_types.push_back({title, course, heterotypic_contacts(first, last, " \u2192 ")});
+      verdict_types.push_back({title, course, heterotypic_contacts(first, last, " \u2192 "),
+                               clusters_apart_text(clusters_apart(medusa, input.frames() - 1, d.cell_type))});
     for (int k = 0; k <= 2; ++k)
       panels.push_back(panel(d, k, max_bars, medusa));
     run.h0_points.emplace_back(

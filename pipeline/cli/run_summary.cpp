@@ -177,6 +177,12 @@ std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medu
       << "radius: " << radius_text << " lattice units"
       << (radius_note.empty() ? "" : " (" + radius_note + ")")
       << "; two cells touch when their centres are closer than twice that\n";
+  // Which of a folder's inputs was read: a folder can hold both snapshots and a CSV.
+  const std::vector<std::string>& files = medusa.run.source_files;
+  if (files.size() == 1)
+    out << "read: " << files.front() << "\n";
+  else if (files.size() > 1)
+    out << "read: " << files.size() << " snapshots, " << files.front() << " to " << files.back() << "\n";
   if (positions_from_vtk(medusa.run))
     out << "positions: " << describe_positions(medusa.run) << "\n";
   out << "events: " << stats.flips() << " flips (";

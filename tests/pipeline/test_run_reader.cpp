@@ -231,6 +231,39 @@ TEST_CASE("A LatticeData snapshot that cannot be read is an error naming it unle
   }
 }
 
+TEST_CASE("A LatticeData snapshot cut short is an error naming it unless skipping is asked for",
+          "[io][run]") {
+  io::test::TempDir dir;
+  const fs::path lattice = dir.path() / "LatticeData";
+  fs::create_directories(lattice);
+  for (const char* name : {"Step_0.vtk", "Step_10.vtk", "Step_20.vtk"})
+    fs::copy_file(io::test::data("io/vtk_split_cell_exact.vtk"), lattice / name);
+  // A copy interrupted part of the way: the file ends inside its cell data.
+  fs::resize_file(lattice / "Step_10.vtk", fs::file_size(lattice / "Step_10.vtk") * 2 / 3);
+  CHECK_THAT(io::test::input_error([&] { read_run(dir.path().string()); }),
+             Contains("Step_10.vtk") && Contains("--skip-unreadable-frames"));
+  RunOptions skip;
+  skip.skip_unreadable_frames = true;
+  const RunData r = read_run(dir.path().string(), skip);
+  CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 20});
+  CHECK(r.sources.size() == 2);
+  CHECK(has_warning(r, "Step_10.vtk"));
+  CHECK(has_warning(r, "snapshot left out"));
+}
+
+TEST_CASE("A LatticeData folder or one of its snapshots given as the run says to give the folder holding it",
+          "[io][run]") {
+  io::test::TempDir dir;
+  const fs::path lattice = dir.path() / "LatticeData";
+  fs::create_directories(lattice);
+  fs::copy_file(io::test::data("io/vtk_split_cell_exact.vtk"), lattice / "Step_0.vtk");
+  for (const std::string& path : {lattice.string(), lattice.string() + "/"})
+    CHECK_THAT(io::test::input_error([&] { read_run(path); }),
+               Contains("this is a LatticeData folder: give the CC3D output folder that holds it"));
+  CHECK_THAT(io::test::input_error([&] { read_run((lattice / "Step_0.vtk").string()); }),
+             Contains("give the folder that holds LatticeData/ (" + dir.path().string() + ")"));
+}
+
 TEST_CASE("A snapshot missing from the middle of an evenly saved series is an error naming its MCS",
           "[io][run]") {
   io::test::TempDir dir;

@@ -214,6 +214,13 @@ void warn_if_cut_short(RunData& run, const std::optional<Cc3dSimulation>& simula
                            std::to_string(times.front()) + " to " + std::to_string(last) + " only");
 }
 
+// A user pointing at the snapshots' own folder instead of the run's (`run/LatticeData/` for `run/`).
+bool is_lattice_data_folder(const fs::path& p) {
+  std::error_code ec;
+  const fs::path normal = fs::absolute(p, ec).lexically_normal();
+  return (normal.filename().empty() ? normal.parent_path() : normal).filename() == "LatticeData";
+}
+
 } // namespace
 
 RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& options,
@@ -244,8 +251,20 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
   std::array<std::int64_t, 3> dims{};
   for (std::size_t k = 0; k < by_mcs.size(); ++k) {
     const auto& [mcs, file] = by_mcs[k];
-    const VtkSnapshot snap = read_vtk_snapshot(file, options.scale, periodic);
-    if (k == 0) {
+    VtkSnapshot snap;
+    try {
+      snap = read_vtk_snapshot(file, options.scale, periodic);
+    } catch (const InputError& e) {
+      // A snapshot cut short or corrupt (a copy interrupted, a disk full) is unreadable like a
+      // missing one: left out with a warning when asked, named otherwise.
+      if (!options.skip_unreadable_frames)
+        throw InputError(std::string(e.what()) + " (rerun with " + options.spellings.skip_unreadable_frames +
+                         " to leave this snapshot out)");
+      run.warnings.push_back(std::string(e.what()) + "; snapshot left out");
+      continue;
+    }
+    const std::size_t source = run.sources.size();
+    if (source == 0) {
       dims = snap.dimensions;
       if (simulation)
         run.domain = periodic_domain(*simulation, snap.origin, snap.spacing);
@@ -253,7 +272,7 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
         throw InputError(file + ": DIMENSIONS " + std::to_string(dims[0]) + " " + std::to_string(dims[1]) +
                          " " + std::to_string(dims[2]) + " differ from the lattice of " + simulation->path);
     } else if (snap.dimensions != dims) {
-      throw InputError(file + ": DIMENSIONS differ from those of " + by_mcs[0].second);
+      throw InputError(file + ": DIMENSIONS differ from those of " + run.sources.front());
     }
     run.sources.push_back(file);
     frame_times.push_back(mcs);
@@ -265,7 +284,7 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
       s.cell_id = c.id;
       s.type = c.type;
       s.volume = c.voxels;
-      s.source = k;
+      s.source = source;
       ++run.snap.positions;
       if (centroid_on_grid(c.scaled_sum, c.voxels)) {
         for (int a = 0; a < 3; ++a)
@@ -283,9 +302,11 @@ RunData read_vtk_run(const std::vector<std::string>& files, const RunOptions& op
       samples.push_back(s);
     }
   }
+  if (run.sources.empty())
+    throw InputError(by_mcs.front().second + ": no snapshot of the run could be read");
   const std::int64_t z_extent = options.z_extent.value_or(dims[2]);
   if (z_extent != dims[2])
-    throw InputError(by_mcs[0].second + ": z extent " + std::to_string(dims[2]) + " but the caller says " +
+    throw InputError(run.sources.front() + ": z extent " + std::to_string(dims[2]) + " but the caller says " +
                      std::to_string(z_extent));
   take_assembly(run, assemble_trajectories(std::move(samples), run.sources, options.scale,
                                            dims[2] == 1 ? 2 : 3, frame_times));
@@ -357,7 +378,11 @@ RunData read_run(const std::string& path, const RunOptions& options) {
   RunData run;
   if (fs::is_regular_file(p, ec)) {
     if (!is_csv_name(p.filename().string()))
-      throw InputError(path + ": expected a CC3D output folder or a .csv/.csv.gz file of cell centres");
+      throw InputError(path + ": expected a CC3D output folder or a .csv/.csv.gz file of cell centres" +
+                       (p.parent_path().filename() == "LatticeData"
+                            ? "; for the run's snapshots give the folder that holds LatticeData/ (" +
+                                  p.parent_path().parent_path().string() + ")"
+                            : std::string()));
     if (options.source == RunSource::vtk)
       throw InputError(path + ": VTK snapshots requested but the input is a CSV file");
     std::optional<Cc3dSimulation> sim;
@@ -384,7 +409,10 @@ RunData read_run(const std::string& path, const RunOptions& options) {
         throw InputError(path +
                          (options.source == RunSource::csv
                               ? ": no cells.csv.gz or cells.csv"
-                              : ": neither LatticeData/Step_<MCS>.vtk(.gz) snapshots nor cells.csv(.gz)"));
+                              : ": neither LatticeData/Step_<MCS>.vtk(.gz) snapshots nor cells.csv(.gz)") +
+                         (is_lattice_data_folder(p)
+                              ? "; this is a LatticeData folder: give the CC3D output folder that holds it"
+                              : ""));
       run = read_csv_run(csv, options, sim);
     }
   } else {

@@ -3,6 +3,7 @@
 
 usage: check_run_outputs.py unsafe <medusa> <small run csv> <workdir>
        check_run_outputs.py written <medusa> <small run csv> <workdir>
+       check_run_outputs.py stale <medusa> <small run csv> <workdir>
        check_run_outputs.py mixed <medusa> <small run csv> <plot_store.py> <workdir>
 
 unsafe: -o naming the input file, a file the input folder's reader reads, a device, a FIFO, a folder,
@@ -11,6 +12,8 @@ unsafe: -o naming the input file, a file the input folder's reader reads, a devi
 written: the -o of every other command that writes one file (classes, barcode, at, report) likewise:
         a device, a FIFO (at once, not waiting for a reader) or a link to a device is refused with
         exit 2 and left as it was; through a link to a regular file the file is written.
+stale:  `medusa run --force` over a store names the files other commands wrote from it under their
+        default names (curves, sorting measures, report), which it leaves as they were.
 mixed:  a diagrams CSV or barcode SVG beside a store from another run makes `medusa info` and
         examples/plot_store.py exit 5.
 Run with /usr/bin/python3.
@@ -138,6 +141,24 @@ def check_written(medusa, csv, work):
     print(f"{checked} unsafe outputs refused")
 
 
+def check_stale(medusa, csv, work):
+    assert run([medusa, "run", csv, "-o", "s.h5", "--radius", "3", "-q"], work).returncode == 0
+    first = run([medusa, "run", csv, "-o", "t.h5", "--radius", "3"], work)
+    assert first.returncode == 0 and "left as they were" not in first.stderr, first.stderr
+    assert run([medusa, "curves", "s.h5"], work).returncode == 0
+    assert run([medusa, "report", "s.h5", "-o", "s.report.html", "--no-sweep", "-q"], work).returncode == 0
+    before = {p: digest(os.path.join(work, p)) for p in ["s.curves.csv", "s.report.html"]}
+    again = run([medusa, "run", csv, "-o", "s.h5", "--radius", "2.5", "--force"], work)
+    assert again.returncode == 0, again.stderr
+    wanted = ("medusa: warning: written from the store this run replaced, and left as they were: s.curves.csv, "
+              "s.curves.svg, s.sorting.csv, s.sorting.svg, s.report.html (rerun the commands that wrote them)")
+    assert wanted in again.stderr.splitlines(), again.stderr
+    assert {p: digest(os.path.join(work, p)) for p in before} == before, "a stale output was changed"
+    quiet = run([medusa, "run", csv, "-o", "s.h5", "--radius", "2.5", "--force", "-q"], work)
+    assert quiet.returncode == 0 and quiet.stderr == "", quiet.stderr
+    print("the stale outputs are named")
+
+
 def check_mixed(medusa, csv, plot_store, work):
     for name, radius in [("a.h5", "3"), ("b.h5", "2.5")]:
         assert run([medusa, "run", csv, "-o", name, "--radius", radius, "-q"], work).returncode == 0
@@ -169,6 +190,8 @@ def main():
         check_unsafe(medusa, csv, work)
     elif mode == "written":
         check_written(medusa, csv, work)
+    elif mode == "stale":
+        check_stale(medusa, csv, work)
     else:
         check_mixed(medusa, csv, sys.argv[4], work)
     print("ok")

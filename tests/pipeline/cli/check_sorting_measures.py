@@ -9,7 +9,9 @@ pruned at (rho * grid_scale)^2 (GUDHI filtrations are squared radii). From it, i
 the simplex counts and Betti numbers over Z/2 of K and of every type's full subcomplex (curves.csv),
 and the sorting measures (sorting.csv): edges, heterotypic edges, same-type neighbour fractions,
 clusters (union-find), largest and mean cluster size. Counts must be equal, fractions within 1e-12.
-The contacts `medusa report` gives under each type's headline are those of the first and last frames.
+The contacts `medusa report` gives under each type's headline are those of the first and last frames,
+and a verdict in which no type gathers names the cells outside each type's largest cluster at the last
+frame as GUDHI's components do.
 """
 import csv
 import os
@@ -54,6 +56,27 @@ def components(vertices, edges):
     return list(sizes.values())
 
 
+def outside_largest(vertices, edges):
+    """The vertices outside the largest component, or None when two components share the largest size."""
+    parent = {v: v for v in vertices}
+
+    def find(x):
+        while parent[x] != x:
+            x = parent[x]
+        return x
+
+    for a, b in edges:
+        parent[find(a)] = find(b)
+    members = {}
+    for v in vertices:
+        members.setdefault(find(v), []).append(v)
+    sizes = sorted((len(m) for m in members.values()), reverse=True)
+    if len(sizes) > 1 and sizes[0] == sizes[1]:
+        return None
+    largest = max(members.values(), key=len) if members else []
+    return [v for v in vertices if v not in set(largest)]
+
+
 def betti(simplices, dimension):
     st = gudhi.SimplexTree()
     for s in simplices:
@@ -75,6 +98,7 @@ def expected_at_frame(f, k):
     first = [int(x) for x in inp["first_frame"][:]]
     offset = [int(x) for x in inp["position_offset"][:]]
     types = inp["cell_type"][:]
+    ids = inp["cell_id"][:]
     positions = inp["positions"][:]
     last_frame = len(inp["frame_times"]) - 1
     present, points = [], []
@@ -115,6 +139,7 @@ def expected_at_frame(f, k):
         fractions = [sum(1 for w in ns if types[w] == types[v]) / len(ns) for v, ns in neighbours.items() if ns]
         own = [s for s in simplices if all(mine(v) for v in s)]
         sizes = components(verts, [e for e in own if len(e) == 2])
+        apart = outside_largest(verts, [e for e in own if len(e) == 2])
         f_counts = [sum(1 for s in own if len(s) == d + 1) for d in range(4)]
         out[label] = {
             "cells": len(verts), "edges": len(touching), "heterotypic_edges": len(hetero),
@@ -124,6 +149,7 @@ def expected_at_frame(f, k):
             "clusters": len(sizes), "largest_cluster": max(sizes) if sizes else 0,
             "mean_cluster_size": len(verts) / len(sizes) if sizes else None,
             "f": f_counts, "betti": betti(own, dimension),
+            "apart": None if apart is None else sorted(set(int(ids[v]) for v in apart)),
         }
     return out
 
@@ -196,6 +222,32 @@ def check_report(medusa, work, store, prefix, first, last):
         checked += 1
     assert checked >= 2, f"only {checked} headlines checked"
     print(f"the report's contacts of {checked} headlines equal GUDHI's at the first and last frames")
+    check_verdict_apart(page_data(page)["runs"][0], last)
+
+
+def check_verdict_apart(run, last):
+    """A verdict in which no type gathers says, for each type in several clusters at the last frame, how
+    many cells its largest cluster holds and names the cells outside it (up to five): GUDHI's."""
+    verdict = run["verdict"]
+    if not verdict.startswith("has no type in one cluster"):
+        print("the run sorts or cannot tell: no cells apart in its verdict")
+        return
+    named = 0
+    for label, e in last.items():
+        if label == "all" or e["clusters"] <= 1:
+            continue
+        m = re.search(rf"type {label}(?: \([^)]*\))? (?:goes from|has) [^;]*?\(the largest holds (\d+) of its (\d+) "
+                      rf"cells(?:; cells? ([\d, and]+) (?:is|are) apart)?\)", verdict)
+        assert m, (label, verdict)
+        assert [int(m.group(1)), int(m.group(2))] == [e["largest_cluster"], e["cells"]], (label, verdict, e)
+        wanted = e["apart"]
+        if wanted is not None and len(wanted) <= 5:
+            assert m.group(3) is not None, (label, verdict, wanted)
+            assert [int(x) for x in re.findall(r"\d+", m.group(3))] == wanted, (label, verdict, wanted)
+            named += 1
+        else:
+            assert m.group(3) is None, (label, verdict, wanted)
+    print(f"the verdict's largest clusters equal GUDHI's; {named} types' cells apart named as GUDHI finds them")
 
 
 if __name__ == "__main__":

@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+using medusa::cli::clusters_apart_text;
 using medusa::cli::run_verdict;
 using medusa::cli::type_course;
 
@@ -61,12 +62,12 @@ TEST_CASE("The verdict names the types that gather, or says why it cannot tell")
   const auto split = type_course(five_frames, {12, 8, 4, 2, 2}, {265});
   const auto one = type_course(five_frames, {1, 1, 1, 1, 1}, {});
   CHECK(
-      run_verdict({{"type 1 (Condensing)", gathers, ""}, {"type 2", split, ""}}, "3") ==
+      run_verdict({{"type 1 (Condensing)", gathers, "", ""}, {"type 2", split, "", ""}}, "3") ==
       "sorts at radius 3: type 1 (Condensing) gathers into one cluster by MCS 200 and stays one to the end");
-  CHECK(run_verdict({{"type 1", split, ""}, {"type 2", split, ""}}, "3") ==
+  CHECK(run_verdict({{"type 1", split, "", ""}, {"type 2", split, "", ""}}, "3") ==
         "has no type in one cluster to the end at radius 3: type 1 goes from 12 clusters "
         "to 2; type 2 goes from 12 clusters to 2");
-  CHECK(run_verdict({{"type 1", one, ""}, {"type 2", one, ""}}, "4.5")
+  CHECK(run_verdict({{"type 1", one, "", ""}, {"type 2", one, "", ""}}, "4.5")
             .rfind("cannot tell at radius 4.5: every type is one "
                    "cluster from the first frame on",
                    0) == 0);
@@ -76,14 +77,37 @@ TEST_CASE("A verdict without a gathering type says how far each type got, with i
   const auto most_of_the_way = type_course(five_frames, {22, 9, 4, 2, 2}, {10, 20, 30});
   const auto one = type_course(five_frames, {1, 1, 1, 1, 1}, {});
   const auto ends_in_one_again = type_course({0, 100, 200}, {1, 3, 1}, {150});
-  CHECK(run_verdict({{"type 1 (Condensing)", most_of_the_way, "heterotypic contacts 0.667 \u2192 0.268"},
-                     {"type 2 (NonCondensing)", one, "heterotypic contacts 0.310 \u2192 0.110"},
-                     {"type 3", ends_in_one_again, ""}},
+  CHECK(run_verdict({{"type 1 (Condensing)", most_of_the_way, "heterotypic contacts 0.667 \u2192 0.268", ""},
+                     {"type 2 (NonCondensing)", one, "heterotypic contacts 0.310 \u2192 0.110", ""},
+                     {"type 3", ends_in_one_again, "", ""}},
                     "2.7") ==
         "has no type in one cluster to the end at radius 2.7: type 1 (Condensing) goes from "
         "22 clusters to 2, heterotypic contacts 0.667 \u2192 0.268; type 2 (NonCondensing) is one cluster "
         "throughout, heterotypic contacts 0.310 \u2192 0.110; type 3 has one cluster at the first and at the "
         "last frame");
+}
+
+TEST_CASE("A verdict without a gathering type names the few cells outside each type's largest cluster") {
+  const auto most_of_the_way = type_course(five_frames, {22, 9, 4, 2, 2}, {10, 20, 30});
+  const auto control = type_course(five_frames, {12, 8, 4, 3, 3}, {10});
+  CHECK(run_verdict({{"type 1 (Condensing)", most_of_the_way, "heterotypic contacts 0.667 \u2192 0.268",
+                      clusters_apart_text({99, 98, false, {166}})},
+                     {"type 2", control, "heterotypic contacts 0.698 \u2192 0.680",
+                      clusters_apart_text({125, 122, false, {17, 30, 230}})}},
+                    "2.7") ==
+        "has no type in one cluster to the end at radius 2.7: type 1 (Condensing) goes from 22 clusters to 2 "
+        "(the largest holds 98 of its 99 cells; cell 166 is apart), heterotypic contacts 0.667 \u2192 0.268; "
+        "type 2 goes from 12 clusters to 3 (the largest holds 122 of its 125 cells; cells 17, 30 and 230 are "
+        "apart), heterotypic contacts 0.698 \u2192 0.680");
+}
+
+TEST_CASE("Cells apart are named only when few and the largest cluster is not tied") {
+  CHECK(clusters_apart_text({10, 10, false, {}}).empty());
+  CHECK(clusters_apart_text({0, 0, false, {}}).empty());
+  CHECK(clusters_apart_text({10, 8, false, {4, 9}}) ==
+        "the largest holds 8 of its 10 cells; cells 4 and 9 are apart");
+  CHECK(clusters_apart_text({94, 33, false, {1, 2, 3, 4, 5, 6}}) == "the largest holds 33 of its 94 cells");
+  CHECK(clusters_apart_text({10, 5, true, {}}) == "the largest holds 5 of its 10 cells");
 }
 
 TEST_CASE("A type that splits after the first frame without any join says why there is no join") {
