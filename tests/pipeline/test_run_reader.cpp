@@ -205,9 +205,10 @@ TEST_CASE("A CSV run whose CC3DML is cut off is refused, not read as open", "[io
              Contains("run.xml") && Contains("boundary conditions cannot be read"));
 }
 
-TEST_CASE("A LatticeData snapshot that cannot be read is an error naming it unless skipping is asked for",
+TEST_CASE("A LatticeData snapshot that cannot be read or is cut short is an error naming it unless skipping "
+          "is asked for",
           "[io][run]") {
-  for (const std::string kind : {"dangling link", "FIFO", "folder"}) {
+  for (const std::string kind : {"dangling link", "FIFO", "folder", "cut short"}) {
     CAPTURE(kind);
     io::test::TempDir dir;
     const fs::path lattice = dir.path() / "LatticeData";
@@ -219,36 +220,21 @@ TEST_CASE("A LatticeData snapshot that cannot be read is an error naming it unle
       fs::create_symlink(dir.path() / "nowhere.vtk", bad);
     else if (kind == "FIFO")
       REQUIRE(::mkfifo(bad.c_str(), 0644) == 0);
-    else
+    else if (kind == "folder")
       fs::create_directories(bad);
+    else { // a copy interrupted part of the way: the file ends inside its cell data
+      fs::copy_file(io::test::data("io/vtk_split_cell_exact.vtk"), bad);
+      fs::resize_file(bad, fs::file_size(bad) * 2 / 3);
+    }
     CHECK_THAT(io::test::input_error([&] { read_run(dir.path().string()); }),
                Contains("Step_10.vtk") && Contains("--skip-unreadable-frames"));
     RunOptions skip;
     skip.skip_unreadable_frames = true;
     const RunData r = read_run(dir.path().string(), skip);
     CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 20});
+    CHECK(r.sources.size() == 2);
     CHECK(has_warning(r, "Step_10.vtk"));
   }
-}
-
-TEST_CASE("A LatticeData snapshot cut short is an error naming it unless skipping is asked for",
-          "[io][run]") {
-  io::test::TempDir dir;
-  const fs::path lattice = dir.path() / "LatticeData";
-  fs::create_directories(lattice);
-  for (const char* name : {"Step_0.vtk", "Step_10.vtk", "Step_20.vtk"})
-    fs::copy_file(io::test::data("io/vtk_split_cell_exact.vtk"), lattice / name);
-  // A copy interrupted part of the way: the file ends inside its cell data.
-  fs::resize_file(lattice / "Step_10.vtk", fs::file_size(lattice / "Step_10.vtk") * 2 / 3);
-  CHECK_THAT(io::test::input_error([&] { read_run(dir.path().string()); }),
-             Contains("Step_10.vtk") && Contains("--skip-unreadable-frames"));
-  RunOptions skip;
-  skip.skip_unreadable_frames = true;
-  const RunData r = read_run(dir.path().string(), skip);
-  CHECK(r.trajectories.frame_times == std::vector<std::int64_t>{0, 20});
-  CHECK(r.sources.size() == 2);
-  CHECK(has_warning(r, "Step_10.vtk"));
-  CHECK(has_warning(r, "snapshot left out"));
 }
 
 TEST_CASE("A LatticeData folder or one of its snapshots given as the run says to give the folder holding it",
