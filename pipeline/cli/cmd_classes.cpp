@@ -66,7 +66,7 @@ void sort_records(std::vector<persistence::ClassRecord>& records, const std::str
   // lifetime, by how long their ring stayed whole (ring_whole_for).
   const double sign = forward ? 1.0 : -1.0;
   std::map<std::size_t, double> whole;
-  if (key == "lifetime" && forward)
+  if ((key == "lifetime" || key == "seen") && forward)
     for (const persistence::ClassRecord& r : records)
       if (r.essential)
         whole[r.id] =
@@ -75,8 +75,16 @@ void sort_records(std::vector<persistence::ClassRecord>& records, const std::str
     const auto it = whole.find(r.id);
     return it == whole.end() ? 0.0 : it->second;
   };
+  const double t_end =
+      medusa.input.frame_times.empty() ? 0.0 : static_cast<double>(medusa.input.frame_times.back());
+  // A class's time seen in the tissue (time_seen); of the reverse filtration, its lifetime.
+  const auto seen = [&](const persistence::ClassRecord& r) {
+    return forward ? time_seen(r.essential, r.lifetime(), whole_for(r), r.birth, t_end) : r.lifetime();
+  };
   std::stable_sort(records.begin(), records.end(),
                    [&](const persistence::ClassRecord& a, const persistence::ClassRecord& b) {
+                     if (key == "seen")
+                       return seen(a) != seen(b) ? seen(a) > seen(b) : a.lifetime() > b.lifetime();
                      if (key == "lifetime")
                        return a.lifetime() != b.lifetime() ? a.lifetime() > b.lifetime()
                                                            : whole_for(a) > whole_for(b);
@@ -250,8 +258,11 @@ void add_classes_command(CLI::App& app) {
       ->add_option(
           "--sort", args->sort,
           "lifetime (longest first, essential classes first; among the loops and cavities never filled, "
-          "those whose ring or shell stayed whole longest), birth or death (in filtration order)")
-      ->check(CLI::IsMember({"lifetime", "birth", "death"}))
+          "those whose ring or shell stayed whole longest), seen (how long each was seen in the tissue, "
+          "longest first: a filled one's lifetime, a never-filled loop's or cavity's time until its ring or "
+          "shell broke open or the run ended; the order of the report's tables), birth or death (in "
+          "filtration order)")
+      ->check(CLI::IsMember({"lifetime", "seen", "birth", "death"}))
       ->capture_default_str();
   classes
       ->add_option(

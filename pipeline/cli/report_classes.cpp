@@ -125,22 +125,25 @@ json report_classes(const std::string& store, const medusa::Medusa& medusa, std:
         store, medusa, persistence::Direction::forward, type, persistence::RepresentativeOptions{});
     // Records are built for the classes shown only: a record holds its representative's cells, and a
     // large run has millions of classes.
-    std::vector<double> lifetime(found.classes.size()), whole(found.classes.size(), 0.0);
+    const double t_end = static_cast<double>(input.frame_times.back());
+    std::vector<double> lifetime(found.classes.size()), seen(found.classes.size());
     for (std::size_t i = 0; i < lifetime.size(); ++i) {
       lifetime[i] = persistence::class_lifetime(found, i);
       const persistence::PersistencePair& p = found.diagram.pairs[found.classes.rows[i]];
-      if (p.essential)
-        whole[i] = essential_order(medusa, p.dim, found.classes.cycles[i], p.birth_cell, p.birth);
+      const double whole =
+          p.essential ? essential_order(medusa, p.dim, found.classes.cycles[i], p.birth_cell, p.birth) : 0.0;
+      seen[i] = time_seen(p.essential, lifetime[i], whole, p.birth, t_end);
     }
     for (int k = 0; k <= 2; ++k) {
-      // Represented classes, longest-lived first as `medusa classes --sort lifetime` lists them: among
-      // the never filled, those whose ring stayed whole longest first.
+      // Represented classes, those seen longest in the tissue first, as `medusa classes --sort seen`
+      // lists them: a ring that broke open soon after it formed is not what a reader of the table
+      // looks for, though its class lives on in the space-time medusa.
       std::vector<std::size_t> order;
       for (std::size_t i = 0; i < found.classes.size(); ++i)
         if (found.diagram.pairs[found.classes.rows[i]].dim == k)
           order.push_back(i);
       std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return lifetime[a] != lifetime[b] ? lifetime[a] > lifetime[b] : whole[a] > whole[b];
+        return seen[a] != seen[b] ? seen[a] > seen[b] : lifetime[a] > lifetime[b];
       });
       const std::size_t total = order.size();
       if (top > 0 && order.size() > top)

@@ -1,5 +1,6 @@
 #include "ring_fate.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace medusa::cli {
@@ -20,6 +21,10 @@ double ring_whole_for(const RingFate& fate, double birth) {
   case RingFate::State::never_whole: return -std::numeric_limits<double>::infinity();
   }
   return 0;
+}
+
+double time_seen(bool essential, double lifetime, double essential_order, double birth, double t_end) {
+  return essential ? std::min(essential_order, t_end - birth) : lifetime;
 }
 
 double essential_order(const medusa::Medusa& medusa, int dim, persistence::CellLists::List cycle,

@@ -36,4 +36,10 @@ double ring_whole_for(const RingFate& fate, double birth);
 double essential_order(const medusa::Medusa& medusa, int dim, persistence::CellLists::List cycle,
                        medusa::CellId birth_cell, double birth);
 
+// How long a class of the forward filtration was seen in the tissue, the order of the report's tables
+// and of `medusa classes --sort seen`: a filled cluster, loop or cavity its lifetime; a never-filled one
+// the time after its birth until its ring or shell broke open (essential_order), or until the end of the
+// run `t_end`; -inf for one never whole at one time (a loop of space-time only).
+double time_seen(bool essential, double lifetime, double essential_order, double birth, double t_end);
+
 } // namespace medusa::cli

@@ -1,4 +1,4 @@
-// The classes section of the report: per run, the longest-lived classes of each cell type and degree
+// The classes section of the report: per run, the classes of each cell type and degree seen longest in the tissue
 // with the CC3D cells of their representatives (docs/MATH.md §7.11), and a 3D view (three.js) of the
 // cells at a chosen time with the selected class's cells, edges and triangles highlighted. Positions
 // between the embedded frames are interpolated as `medusa at` does (linear between the frames around
@@ -376,7 +376,7 @@
     }
     html("div", { class: "count" }, div, section.classes.length === section.total
       ? section.total + " " + (section.total === 1 ? nm[0] : nm[1])
-      : "the " + section.classes.length + " longest-lived of " + section.total + " " + nm[1] + " (the other " +
+      : "the " + section.classes.length + " seen longest of " + section.total + " " + nm[1] + " (the other " +
         (section.total - section.classes.length) + ": medusa classes --type " + section.label + " --dim " + section.dim + ")");
     const t = html("table", {}, div), head = html("tr", {}, html("thead", {}, t));
     for (const h of ["id", "born (MCS)", deathWord(section.dim) + " (MCS)", "lifetime (MCS)", "formed by cells", "killed by cells", "CC3D cells of the " + nm[0]])
@@ -418,10 +418,10 @@
       if (!run.classes) return;
       const parent = document.querySelector("section.run[data-run='" + ri + "']") || document.getElementById("details");
       const sec = html("div", { class: "classes", id: "classes-" + ri, "data-run": ri }, parent);
-      html("h3", {}, sec, "Which cells? The longest-lived classes and the cells that make them (forward filtration)");
-      html("p", { class: "note" }, sec, "Per cell type and degree, the " + run.classes.top + " classes that lived longest " +
-        "(the ones never filled or joined first; among the loops and cavities never filled, those whose ring or shell stayed " +
-        "whole longest first). A class's cells are those of its representative: for a cluster the cells " +
+      html("h3", {}, sec, "Which cells? The classes seen longest in the tissue and the cells that make them (forward filtration)");
+      html("p", { class: "note" }, sec, "Per cell type and degree, the " + run.classes.top + " classes seen longest in the tissue " +
+        "(medusa classes --sort seen): a cluster, loop or cavity that joined another or was filled for its lifetime, one never " +
+        "filled for as long as the ring or shell of cells it is listed with stayed whole, up to the end of the run. A class's cells are those of its representative: for a cluster the cells " +
         "in it just before it joined an older one (for a cluster that never joined one, every cell that was part of it " +
         "at some time up to the end: cells born later by division and cells that died are listed too), for a loop or a cavity the cells on a ring or a shell around it " +
         "when it formed (docs/MATH.md §7.11). A loop or cavity never filled is a class of the space-time medusa to the " +
@@ -437,7 +437,7 @@
       const sections = run.classes.sections.filter((s) => s.label !== "all").concat(run.classes.sections.filter((s) => s.label === "all"));
       for (const s of sections) table(tables, view, s);
       if (view.resize) view.resize();
-      // First shown: the longest-lived loop of the first cell type, or else any class.
+      // First shown: the loop of the first cell type seen longest, or else any class.
       const first = sections.find((s) => s.dim === 1 && s.classes.length) || sections.find((s) => s.classes.length);
       if (first) select(view, first, first.classes[0]);
       else draw(view, true);

@@ -271,7 +271,7 @@
       const sec = html("section", { class: "run", id: "run-" + ri, "data-run": ri }, root);
       html("h2", {}, sec, "Run " + run.name);
       factsTable(sec, run);
-      html("h3", {}, sec, "Summary of the forward diagrams (the counts of medusa run's summary; its longest-lived classes are in the tables below)");
+      html("h3", {}, sec, "Summary of the forward diagrams (the counts of medusa run's summary; the classes seen longest are in the tables below)");
       html("pre", { class: "summary" }, sec, run.summary);
       html("h3", {}, sec, "Betti numbers of K_t at the frames");
       html("p", { class: "note" }, sec, "K_t is the alpha complex of the cell centres at time t: b0 counts its clusters, " +

@@ -43,7 +43,7 @@ class_screenshot = os.path.abspath(sys.argv[5]) if len(sys.argv) > 5 else None
 MAX_BARS = 300
 # The class of sorting_3d selected last on one.html, whose 3D view is saved as the class screenshot:
 # (type, degree, class id as `medusa classes` lists it).
-CLASS_SHOWN = ("1", 1, 155)
+CLASS_SHOWN = ("1", 1, 884)
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 os.chdir(work)

@@ -1,6 +1,6 @@
 """The classes section of a `medusa report` page, checked in the browser against `medusa classes` and
-`medusa at`: each table lists the longest-lived classes of its type and degree in the order of
-`medusa classes --sort lifetime` and says how many there are; clicking a row selects the class, and
+`medusa at`: each table lists the classes of its type and degree seen longest in the tissue, in the
+order of `medusa classes --sort seen`, and says how many there are; clicking a row selects the class, and
 exactly the CC3D cells `medusa classes --format json` gives for it are drawn highlighted (read back
 through window.medusaReport and seen in the canvas as the type's colour); the positions the view
 interpolates at a time between frames are those `medusa at --time T` writes."""
@@ -29,7 +29,7 @@ TYPE_COLOURS = {1: orange, 2: blue}
 
 
 def classes_json(call, store, label, dim):
-    text = call("classes", store, "--type", label, "--dim", str(dim), "--format", "json")
+    text = call("classes", store, "--type", label, "--dim", str(dim), "--format", "json", "--sort", "seen")
     return json.loads(text)["classes"]
 
 
