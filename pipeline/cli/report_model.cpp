@@ -14,6 +14,7 @@
 #include "report_classes.h"
 #include "run_summary.h"
 #include "sorting_export.h"
+#include "wrapping_summary.h"
 
 #include "medusa/core/error.h"
 #include "medusa/medusa/complex_index.h"
@@ -225,6 +226,7 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
         label, persistence::normalise_time(persistence::to_points(d, 0), d.direction, t0, t_end));
     check_interrupted();
   }
+  write_wrapping_loops(summary, medusa, store);
   j["summary"] = summary.str();
   j["headlines"] = std::move(headlines);
   j["verdict"] = run_verdict(verdict_types, j["facts"]["radius"].get<std::string>());

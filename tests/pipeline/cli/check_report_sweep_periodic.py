@@ -3,7 +3,8 @@
 (docs/MATH.md §8): every Betti number at every frame, radius and type equals that of `medusa sweep` on
 the CC3D run at the same radii. Radii with 4 x radius not below the shortest period (docs/MATH.md §8.3),
 which `medusa sweep` refuses (exit 4), are left out of the report's sweep with one note on the page
-naming them, and the rest of the report is written.
+naming them, and the rest of the report is written. The page's summary says, as `medusa run`'s does,
+how many loops wrap around the domain.
 
   real: the first 3 frames of the bundled periodic run (50 x 50 x 40, periodic in x and y), store at
         radius 3, --sweep-radii 3, 3.5 and 13 (4 x 13 >= 50).
@@ -70,7 +71,7 @@ def check_note(label, data, left_out, period):
 # 1. The real run, cut to its first 3 frames (CC3D's own centres) beside its CC3DML.
 folder = "periodic_3frames"
 cut_run(run, folder, 3)
-call("run", folder, "--radius", "3", "-o", "real.h5", "--quiet")
+summary = call("run", folder, "--radius", "3", "-o", "real.h5").stdout
 result = call("report", "real.h5", "-o", "real.html", "--sweep-radii", "3:3.5:0.5", "--sweep-radii", "13:13:1")
 call("sweep", folder, "--radii", "3:3.5:0.5", "-o", "real_oracle", "--quiet")
 refused = call("sweep", folder, "--radius", "13", "-o", "real_refused", "--quiet", code=4)
@@ -86,6 +87,10 @@ print(f"real run: medusa sweep --radius 13 refused: {refused.stderr.strip()}")
 domain = data["runs"][0]["facts"]["domain"]
 if domain != "periodic along x, y (period 50 x 50 lattice units)":
     failures.append(f"real run: the page's domain is {domain!r}")
+# The page's summary says, as `medusa run` does, how many loops wrap around the domain.
+wrapping = [line for line in summary.splitlines() if line.startswith("periodic domain (x,y): ")]
+if len(wrapping) != 1 or wrapping[0] not in data["runs"][0]["summary"].splitlines():
+    failures.append(f"real run: the page's summary lacks medusa run's line on wrapping loops {wrapping}")
 
 # 2. Hand-built: a ring of 5 cells of two types along x (period 10), the last one moving towards the
 # seam, so that contacts across it appear at the larger radii.
