@@ -50,6 +50,7 @@ ClustersApart clusters_apart(const medusa::Medusa& medusa, std::size_t k, int ty
     }
   if (result.tied)
     return result;
+  result.others = size.size() - 1;
   for (std::size_t i = 0; i < vertices.size(); ++i)
     if (find(i) != root)
       result.apart.push_back(medusa.input.cells.at(static_cast<std::size_t>(vertices[i])).cell_id);

@@ -27,13 +27,16 @@ void info_command(const std::string& path) {
   const medusa::Medusa medusa = medusa::read_store(path);
   check_side_outputs(path, medusa.run.run_id);
   const kinetic::Trajectories& input = medusa.input;
-  std::cout << "store: " << path << "\n"
-            << "run id: " << (medusa.run.run_id.empty() ? "none" : medusa.run.run_id) << "\n"
-            << "software version: " << medusa.run.software_version << "\n"
-            << "command line: " << medusa.run.command_line << "\n"
-            << "radius: " << medusa.run.radius_text
-            << " lattice units (two cells touch when their centres are closer than twice that)\n"
-            << "source files: " << medusa.run.source_files.size() << "\n";
+  std::cout
+      << "store: " << path << "\n"
+      << "run id: " << (medusa.run.run_id.empty() ? "none" : medusa.run.run_id) << "\n"
+      << "software version: " << medusa.run.software_version << "\n"
+      << "command line: " << medusa.run.command_line << "\n"
+      << "radius: " << medusa.run.radius_text << "\n"
+      << "contacts: two cells touch when their balls of radius " << medusa.run.radius_text
+      << " lattice units overlap inside their Voronoi regions (about: centres at most twice that apart; "
+         "docs/MATH.md §4.1)\n"
+      << "source files: " << medusa.run.source_files.size() << "\n";
   for (const std::string& f : medusa.run.source_files)
     std::cout << "  " << f << "\n";
   // What reading the input warned of: the results hold for what was read (docs/FORMAT.md).

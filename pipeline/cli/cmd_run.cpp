@@ -608,11 +608,13 @@ void add_run_command(CLI::App& app, const std::string& command_line) {
                 "snap VTK centroids to the 10^-6 grid (the default; accepted for older scripts)");
   run->add_flag("--periodic-as-open", args->periodic_as_open,
                 "read a periodic run as if its boundaries were open");
-  run->add_flag("--skip-unreadable-frames", args->skip_unreadable_frames,
-                "go on, with a warning naming each, past LatticeData snapshots that cannot be read (dangling "
-                "link, FIFO, folder, no permission) or are missing from the series, and past CSV frames "
-                "missing from the series or incomplete (lacking most of the cells around them, or a last "
-                "frame stopping partway: left out), instead of stopping");
+  run->add_flag(
+      "--skip-unreadable-frames", args->skip_unreadable_frames,
+      "go on, with a warning naming each, past LatticeData snapshots that cannot be read (dangling "
+      "link, FIFO, folder, no permission, cut short or corrupt) or are missing from the series, and "
+      "past CSV frames "
+      "missing from the series or incomplete (lacking most of the cells around them, or a last "
+      "frame stopping partway: left out), instead of stopping");
   run->add_flag("--shorten-representatives", args->shorten_representatives,
                 "store shortened class representatives (degrees 1 and 2: each cycle greedily reduced by "
                 "boundaries of cells entered before the class dies; the same class, not necessarily the "

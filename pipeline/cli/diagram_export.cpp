@@ -22,9 +22,10 @@ std::string csv_field(const std::string& text) {
 std::string format_time(double t) {
   if (std::isinf(t))
     return t > 0 ? "inf" : "-inf";
-  // The shortest text that reads back as t: 349.9, not 349.89999999999998.
+  // The shortest text that reads back as t: 349.9, not 349.89999999999998; -0 (a time typed as "-0")
+  // is MCS 0.
   char buffer[64];
-  const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer, t);
+  const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof buffer, t == 0 ? 0.0 : t);
   return std::string(buffer, r.ptr);
 }
 

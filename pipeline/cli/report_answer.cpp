@@ -91,7 +91,13 @@ std::string clusters_apart_text(const ClustersApart& c, std::size_t named) {
   text += c.apart.size() == 1 ? "; cell " : "; cells ";
   for (std::size_t i = 0; i < c.apart.size(); ++i)
     text += (i == 0 ? "" : i + 1 == c.apart.size() ? " and " : ", ") + std::to_string(c.apart[i]);
-  return text + (c.apart.size() == 1 ? " is apart" : " are apart");
+  if (c.apart.size() == 1)
+    return text + " is outside it";
+  text += " are outside it, ";
+  if (c.others == c.apart.size())
+    return text + "each alone";
+  return text +
+         (c.others == 1 ? "in one other cluster" : "in " + std::to_string(c.others) + " other clusters");
 }
 
 std::string run_verdict(const std::vector<TypeVerdictInput>& types, const std::string& radius) {

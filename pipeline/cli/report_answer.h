@@ -35,9 +35,11 @@ struct ClustersApart {
   std::size_t largest = 0;         // cells in its largest cluster
   bool tied = false;               // two clusters share the largest size: no cell is "apart"
   std::vector<std::int64_t> apart; // CC3D ids of the cells outside the largest cluster, increasing
+  std::size_t others = 0;          // the clusters they are in (clusters at the frame, less the largest)
 };
 
-// "the largest holds 98 of its 99 cells; cell 166 is apart", naming at most `named` cells (beyond
+// "the largest holds 98 of its 99 cells; cell 166 is outside it", or "...; cells 44, 122, 174 and 215
+// are outside it, in 3 other clusters", naming at most `named` cells (beyond
 // them, or when the largest is tied, only the share); empty for a type in one cluster or without cells.
 std::string clusters_apart_text(const ClustersApart& c, std::size_t named = 5);
 

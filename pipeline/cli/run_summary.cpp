@@ -250,8 +250,10 @@ std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medu
          "(docs/MATH.md §2.2).\n";
   if (leaving > 0)
     out << count(leaving, "cell", "cells") << " present at MCS " << mcs(t0)
-        << " only left the complex at that instant: the counts at MCS " << mcs(t0)
-        << " are those just after (docs/MATH.md §0, §2.4).\n";
+        << " only left the complex at that instant: the clusters at MCS " << mcs(t0)
+        << " are those just after; the loops and cavities present at MCS " << mcs(t0)
+        << " are classes of the space-time medusa, which holds those cells, and the count just after is "
+           "given beside them where it differs (docs/MATH.md §0, §2.4).\n";
   return warnings;
 }
 

@@ -245,7 +245,8 @@ TEST_CASE("A LatticeData folder or one of its snapshots given as the run says to
   fs::copy_file(io::test::data("io/vtk_split_cell_exact.vtk"), lattice / "Step_0.vtk");
   for (const std::string& path : {lattice.string(), lattice.string() + "/"})
     CHECK_THAT(io::test::input_error([&] { read_run(path); }),
-               Contains("this is a LatticeData folder: give the CC3D output folder that holds it"));
+               Contains("this is a LatticeData folder: give the CC3D output folder that holds it (" +
+                        fs::absolute(dir.path()).lexically_normal().string() + ")"));
   CHECK_THAT(io::test::input_error([&] { read_run((lattice / "Step_0.vtk").string()); }),
              Contains("give the folder that holds LatticeData/ (" + dir.path().string() + ")"));
 }

@@ -401,7 +401,9 @@
   // How long a ring or shell that broke open stayed whole: its class lives on in space-time, but the
   // cells were a ring only that long.
   function wholeFor(cls, dim) {
-    if (!cls.ring || cls.ring.state !== "broke") return "";
+    if (!cls.ring) return "";
+    if (cls.ring.state === "never whole") return " in space-time; never a " + (dim === 2 ? "shell" : "ring") + " at one time";
+    if (cls.ring.state !== "broke") return "";
     return " (a " + (dim === 2 ? "shell" : "ring") + " for " + fmt(cls.ring.broke_at - cls.birth) + ")";
   }
 

@@ -214,11 +214,16 @@ void warn_if_cut_short(RunData& run, const std::optional<Cc3dSimulation>& simula
                            std::to_string(times.front()) + " to " + std::to_string(last) + " only");
 }
 
-// A user pointing at the snapshots' own folder instead of the run's (`run/LatticeData/` for `run/`).
-bool is_lattice_data_folder(const fs::path& p) {
+// A user pointing at the snapshots' own folder instead of the run's (`run/LatticeData/` for `run/`):
+// the folder to give instead, or nothing.
+std::optional<fs::path> run_folder_of_lattice_data(const fs::path& p) {
   std::error_code ec;
-  const fs::path normal = fs::absolute(p, ec).lexically_normal();
-  return (normal.filename().empty() ? normal.parent_path() : normal).filename() == "LatticeData";
+  fs::path normal = fs::absolute(p, ec).lexically_normal();
+  if (normal.filename().empty())
+    normal = normal.parent_path();
+  if (normal.filename() != "LatticeData")
+    return std::nullopt;
+  return normal.parent_path();
 }
 
 } // namespace
@@ -406,13 +411,15 @@ RunData read_run(const std::string& path, const RunOptions& options) {
       run = read_vtk_run(vtks, options, sim);
     } else {
       if (csv.empty())
-        throw InputError(path +
-                         (options.source == RunSource::csv
-                              ? ": no cells.csv.gz or cells.csv"
-                              : ": neither LatticeData/Step_<MCS>.vtk(.gz) snapshots nor cells.csv(.gz)") +
-                         (is_lattice_data_folder(p)
-                              ? "; this is a LatticeData folder: give the CC3D output folder that holds it"
-                              : ""));
+        throw InputError(
+            path +
+            (options.source == RunSource::csv
+                 ? ": no cells.csv.gz or cells.csv"
+                 : ": neither LatticeData/Step_<MCS>.vtk(.gz) snapshots nor cells.csv(.gz)") +
+            (run_folder_of_lattice_data(p)
+                 ? "; this is a LatticeData folder: give the CC3D output folder that holds it (" +
+                       run_folder_of_lattice_data(p)->string() + ")"
+                 : std::string()));
       run = read_csv_run(csv, options, sim);
     }
   } else {

@@ -71,7 +71,7 @@ call("report", *[f"{n}.h5" for n in runs], "-o", "three.html", "--max-bars", str
 
 
 def store_radius(store):
-    return re.search(r"^radius: (\S+) lattice units ", call("info", store), re.M).group(1)
+    return re.search(r"^radius: (\S+)$", call("info", store), re.M).group(1)
 
 
 def b0_table(crocker_csv):

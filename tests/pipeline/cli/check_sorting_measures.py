@@ -237,13 +237,18 @@ def check_verdict_apart(run, last):
         if label == "all" or e["clusters"] <= 1:
             continue
         m = re.search(rf"type {label}(?: \([^)]*\))? (?:goes from|has) [^;]*?\(the largest holds (\d+) of its (\d+) "
-                      rf"cells(?:; cells? ([\d, and]+) (?:is|are) apart)?\)", verdict)
+                      rf"cells(?:; cells? ([\d, and]+) (?:is|are) outside it(?:, (each alone|in one other cluster|"
+                      rf"in (\d+) other clusters))?)?\)", verdict)
         assert m, (label, verdict)
         assert [int(m.group(1)), int(m.group(2))] == [e["largest_cluster"], e["cells"]], (label, verdict, e)
         wanted = e["apart"]
         if wanted is not None and len(wanted) <= 5:
             assert m.group(3) is not None, (label, verdict, wanted)
             assert [int(x) for x in re.findall(r"\d+", m.group(3))] == wanted, (label, verdict, wanted)
+            # The clusters they are in: GUDHI's components less the largest.
+            others = e["clusters"] - 1
+            said = {None: 1, "each alone": len(wanted), "in one other cluster": 1}.get(m.group(4))
+            assert (int(m.group(5)) if m.group(5) else said) == others, (label, verdict, others)
             named += 1
         else:
             assert m.group(3) is None, (label, verdict, wanted)

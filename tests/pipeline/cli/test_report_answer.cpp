@@ -91,23 +91,27 @@ TEST_CASE("A verdict without a gathering type names the few cells outside each t
   const auto most_of_the_way = type_course(five_frames, {22, 9, 4, 2, 2}, {10, 20, 30});
   const auto control = type_course(five_frames, {12, 8, 4, 3, 3}, {10});
   CHECK(run_verdict({{"type 1 (Condensing)", most_of_the_way, "heterotypic contacts 0.667 \u2192 0.268",
-                      clusters_apart_text({99, 98, false, {166}})},
+                      clusters_apart_text({99, 98, false, {166}, 1})},
                      {"type 2", control, "heterotypic contacts 0.698 \u2192 0.680",
-                      clusters_apart_text({125, 122, false, {17, 30, 230}})}},
+                      clusters_apart_text({125, 122, false, {17, 30, 230}, 2})}},
                     "2.7") ==
         "has no type in one cluster to the end at radius 2.7: type 1 (Condensing) goes from 22 clusters to 2 "
-        "(the largest holds 98 of its 99 cells; cell 166 is apart), heterotypic contacts 0.667 \u2192 0.268; "
+        "(the largest holds 98 of its 99 cells; cell 166 is outside it), heterotypic contacts 0.667 \u2192 "
+        "0.268; "
         "type 2 goes from 12 clusters to 3 (the largest holds 122 of its 125 cells; cells 17, 30 and 230 are "
-        "apart), heterotypic contacts 0.698 \u2192 0.680");
+        "outside it, in 2 other clusters), heterotypic contacts 0.698 \u2192 0.680");
 }
 
-TEST_CASE("Cells apart are named only when few and the largest cluster is not tied") {
-  CHECK(clusters_apart_text({10, 10, false, {}}).empty());
-  CHECK(clusters_apart_text({0, 0, false, {}}).empty());
-  CHECK(clusters_apart_text({10, 8, false, {4, 9}}) ==
-        "the largest holds 8 of its 10 cells; cells 4 and 9 are apart");
-  CHECK(clusters_apart_text({94, 33, false, {1, 2, 3, 4, 5, 6}}) == "the largest holds 33 of its 94 cells");
-  CHECK(clusters_apart_text({10, 5, true, {}}) == "the largest holds 5 of its 10 cells");
+TEST_CASE("Cells outside the largest cluster are named only when few and the largest is not tied") {
+  CHECK(clusters_apart_text({10, 10, false, {}, 0}).empty());
+  CHECK(clusters_apart_text({0, 0, false, {}, 0}).empty());
+  CHECK(clusters_apart_text({10, 8, false, {4, 9}, 2}) ==
+        "the largest holds 8 of its 10 cells; cells 4 and 9 are outside it, each alone");
+  CHECK(clusters_apart_text({10, 8, false, {4, 9}, 1}) ==
+        "the largest holds 8 of its 10 cells; cells 4 and 9 are outside it, in one other cluster");
+  CHECK(clusters_apart_text({94, 33, false, {1, 2, 3, 4, 5, 6}, 3}) ==
+        "the largest holds 33 of its 94 cells");
+  CHECK(clusters_apart_text({10, 5, true, {}, 0}) == "the largest holds 5 of its 10 cells");
 }
 
 TEST_CASE("A type that splits after the first frame without any join says why there is no join") {
