@@ -5,7 +5,8 @@ the command line and input paths, the software version). Two stores with equal d
 same event stream, complex, filtrations and diagrams.
 
 Text outputs beside the store (the diagrams CSV, the printed summary) are digested too, with their
-'#' lines (the run id) left out and the store's folder written as WORK.
+'#' lines (the run id) and the summary's 'read:' line (the input's path) left out and the store's
+folder written as WORK.
 
 Usage: store_digest.py STORE.h5 [TEXT ...]                   print the digest lines
        store_digest.py STORE.h5 [TEXT ...] --check RECORDED  compare with a recorded file: exit 1 with
@@ -58,7 +59,8 @@ def digest_lines(path):
 
 def text_line(path, folder):
     with open(path) as f:
-        text = "".join(l for l in f if not l.startswith("#")).replace(folder, "WORK")
+        # "read: <input>" names a path of the machine it ran on, as source_files does.
+        text = "".join(l for l in f if not l.startswith("#") and not l.startswith("read: ")).replace(folder, "WORK")
     return f"text {os.path.basename(path)} {hashlib.sha256(text.encode()).hexdigest()[:16]}"
 
 
