@@ -55,13 +55,16 @@ FatesFromCells fates_from_cells(const medusa::Medusa& medusa, int cell_type) {
   return result;
 }
 
-std::size_t clusters_after_first_batch(const persistence::Diagram& forward, std::uint64_t first_batch) {
+std::size_t clusters_joined_at_first(const persistence::Diagram& forward, std::uint64_t first_batch,
+                                     std::size_t at_first) {
   std::size_t alive = 0;
   for (const persistence::PersistencePair& p : forward.pairs)
     if (!p.zero_length && p.dim == 0 && p.birth_time.batch <= first_batch &&
         (p.essential || p.death_time.batch > first_batch))
       ++alive;
-  return alive;
+  if (alive > at_first)
+    throw InternalError("class_fates: more H0 classes than clusters just after the first frame");
+  return at_first - alive;
 }
 
 ClassFates class_fates(const medusa::Medusa& medusa, const FatesFromCells& cells,
@@ -82,7 +85,6 @@ ClassFates class_fates(const medusa::Medusa& medusa, const FatesFromCells& cells
   for (const persistence::PersistencePair& p : forward.pairs)
     if (!p.zero_length && p.dim == 0 && !p.essential)
       joins.push_back(p.death);
-  const std::size_t alive_after_first = clusters_after_first_batch(forward, first_batch);
   std::sort(joins.begin(), joins.end());
   fates.clusters.joins = joins.size();
   if (!joins.empty()) {
@@ -95,9 +97,9 @@ ClassFates class_fates(const medusa::Medusa& medusa, const FatesFromCells& cells
   for (const persistence::PersistencePair& p : reverse.pairs)
     if (p.essential && p.dim == 0 && p.birth_time.batch == medusa.end.batch)
       ++carried;
-  if (alive_after_first > fates.clusters.at_first || carried > fates.clusters.at_end)
-    throw InternalError("class_fates: more H0 classes than clusters at the first or the last frame");
-  fates.clusters.joined_at_first = fates.clusters.at_first - alive_after_first;
+  if (carried > fates.clusters.at_end)
+    throw InternalError("class_fates: more H0 classes than clusters at the last frame");
+  fates.clusters.joined_at_first = clusters_joined_at_first(forward, first_batch, fates.clusters.at_first);
   fates.clusters.separated_again = fates.clusters.at_end - carried;
   fates.holes =
       persistence::hole_fates(forward, reverse, first_batch, medusa.end.batch, cells.end_beyond_first);

@@ -62,9 +62,11 @@ FatesFromCells fates_from_cells(const medusa::Medusa& medusa, int cell_type);
 ClassFates class_fates(const medusa::Medusa& medusa, const FatesFromCells& cells,
                        const persistence::Diagram& forward, const persistence::Diagram& reverse);
 
-// The forward H0 classes alive after the batch `first_batch` (the first frame's, medusa::frame_batch):
-// the clusters of the first frame not already joined in M_{<= t_0} to another.
-std::size_t clusters_after_first_batch(const persistence::Diagram& forward, std::uint64_t first_batch);
+// The clusters of the first frame (`at_first` of them) already joined in M_{<= t_0} to another, through
+// cells that left at t_0: at_first minus the forward H0 classes alive after the first frame's batch
+// `first_batch` (medusa::frame_batch). InternalError if more classes than clusters are alive.
+std::size_t clusters_joined_at_first(const persistence::Diagram& forward, std::uint64_t first_batch,
+                                     std::size_t at_first);
 
 // Both steps at once.
 ClassFates class_fates(const medusa::Medusa& medusa, const persistence::Diagram& forward,

@@ -39,18 +39,14 @@ ClustersApart clusters_apart(const medusa::Medusa& medusa, std::size_t k, int ty
     ++size[find(i)];
   ClustersApart result;
   result.cells = vertices.size();
-  std::size_t root = 0;
-  for (const auto& [r, n] : size)
-    if (n > result.largest || (n == result.largest && r < root)) {
-      result.tied = n == result.largest;
-      result.largest = n;
-      root = r;
-    } else if (n == result.largest) {
-      result.tied = true;
-    }
+  for (const auto& entry : size)
+    result.largest = std::max(result.largest, entry.second);
+  const auto holds_largest = [&](const auto& entry) { return entry.second == result.largest; };
+  result.tied = std::count_if(size.begin(), size.end(), holds_largest) > 1;
   if (result.tied)
     return result;
   result.others = size.size() - 1;
+  const std::size_t root = std::find_if(size.begin(), size.end(), holds_largest)->first;
   for (std::size_t i = 0; i < vertices.size(); ++i)
     if (find(i) != root)
       result.apart.push_back(medusa.input.cells.at(static_cast<std::size_t>(vertices[i])).cell_id);

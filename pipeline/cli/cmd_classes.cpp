@@ -59,14 +59,16 @@ std::string short_time(double t) {
   return buffer;
 }
 
-void sort_records(std::vector<persistence::ClassRecord>& records, const std::string& key, bool forward,
-                  const medusa::Medusa& medusa) {
+// Sorts the records by `key` and returns, of the forward filtration, each sorted record's time seen in
+// the tissue (time_seen); of the reverse filtration, nothing (there it is the lifetime).
+std::vector<double> sort_records(std::vector<persistence::ClassRecord>& records, const std::string& key,
+                                 bool forward, const medusa::Medusa& medusa) {
   // Birth and death in filtration order: increasing time forward, decreasing in reverse; an essential
   // class's death comes last. Essential loops and cavities of the forward filtration, all of infinite
   // lifetime, by how long their ring stayed whole (ring_whole_for).
   const double sign = forward ? 1.0 : -1.0;
   std::map<std::size_t, double> whole;
-  if ((key == "lifetime" || key == "seen") && forward)
+  if (forward)
     for (const persistence::ClassRecord& r : records)
       if (r.essential)
         whole[r.id] =
@@ -92,7 +94,16 @@ void sort_records(std::vector<persistence::ClassRecord>& records, const std::str
                        return sign * a.birth < sign * b.birth;
                      return sign * a.death < sign * b.death;
                    });
+  std::vector<double> seen_times;
+  if (forward)
+    for (const persistence::ClassRecord& r : records)
+      seen_times.push_back(seen(r));
+  return seen_times;
 }
+
+// A time seen in the tissue as the table and the CSV write it: a never-filled loop or cavity whose
+// cells were never a ring or shell at one time was not seen.
+std::string seen_text(double seen) { return std::isinf(seen) && seen < 0 ? "never whole" : short_time(seen); }
 
 // On a periodic run, per record: the axes its loop wraps around ("x", "x,y"; "-" for none), else empty.
 using Wraps = std::vector<std::string>;
@@ -114,24 +125,25 @@ Wraps wrapping_axes(const medusa::Medusa& medusa, const persistence::DiagramWith
 }
 
 void write_table(std::ostream& out, const std::vector<persistence::ClassRecord>& records,
-                 const Wraps& wraps) {
-  out << "id\tdim\tbirth\tdeath\tlifetime\tbirth cells\tdeath cells\tsimplices\tcells\trepresentative"
-      << (wraps.empty() ? "" : "\twraps") << "\n";
+                 const std::vector<double>& seen, const Wraps& wraps) {
+  out << "id\tdim\tbirth\tdeath\tlifetime\t" << (seen.empty() ? "" : "seen\t")
+      << "birth cells\tdeath cells\tsimplices\tcells\trepresentative" << (wraps.empty() ? "" : "\twraps")
+      << "\n";
   for (std::size_t i = 0; i < records.size(); ++i) {
     const persistence::ClassRecord& r = records[i];
     out << r.id << '\t' << r.dim << '\t' << short_time(r.birth) << '\t' << short_time(r.death) << '\t'
-        << short_time(r.lifetime()) << '\t' << joined(r.birth_cells, " ") << '\t'
-        << (r.essential ? "-" : joined(r.death_cells, " ")) << '\t' << r.simplices.size() << '\t'
-        << r.cells.size() << '\t' << joined(r.cells, " ", table_list_limit)
+        << short_time(r.lifetime()) << '\t' << (seen.empty() ? "" : seen_text(seen[i]) + '\t')
+        << joined(r.birth_cells, " ") << '\t' << (r.essential ? "-" : joined(r.death_cells, " ")) << '\t'
+        << r.simplices.size() << '\t' << r.cells.size() << '\t' << joined(r.cells, " ", table_list_limit)
         << (wraps.empty() ? "" : "\t" + wraps[i]) << '\n';
   }
 }
 
 void write_classes_csv(std::ostream& out, const std::vector<persistence::ClassRecord>& records,
-                       const Wraps& wraps) {
+                       const std::vector<double>& seen, const Wraps& wraps) {
   out << "id,dimension,birth,death,lifetime,birth_kind,death_kind,birth_cells,death_cells,cell_count,cells,"
          "simplex_count,simplices"
-      << (wraps.empty() ? "" : ",wraps") << "\n";
+      << (seen.empty() ? "" : ",seen") << (wraps.empty() ? "" : ",wraps") << "\n";
   for (std::size_t i = 0; i < records.size(); ++i) {
     const persistence::ClassRecord& r = records[i];
     std::string simplices;
@@ -142,6 +154,8 @@ void write_classes_csv(std::ostream& out, const std::vector<persistence::ClassRe
         << (r.essential ? "" : persistence::cell_kind_name(r.death_kind)) << ',' << joined(r.birth_cells, " ")
         << ',' << joined(r.death_cells, " ") << ',' << r.cells.size() << ',' << joined(r.cells, " ") << ','
         << r.simplices.size() << ',' << simplices;
+    if (!seen.empty())
+      out << ',' << (std::isinf(seen[i]) && seen[i] < 0 ? "" : format_time(seen[i]));
     if (!wraps.empty())
       out << ",\"" << (wraps[i] == "-" ? "" : wraps[i]) << '"';
     out << '\n';
@@ -153,8 +167,8 @@ nlohmann::json time_json(double t) {
 }
 
 void write_classes_json(std::ostream& out, const medusa::Medusa& medusa,
-                        const std::vector<persistence::ClassRecord>& records, const Wraps& wraps,
-                        int cell_type, persistence::Direction direction, bool shortened) {
+                        const std::vector<persistence::ClassRecord>& records, const std::vector<double>& seen,
+                        const Wraps& wraps, int cell_type, persistence::Direction direction, bool shortened) {
   nlohmann::json list = nlohmann::json::array();
   for (std::size_t i = 0; i < records.size(); ++i) {
     const persistence::ClassRecord& r = records[i];
@@ -184,6 +198,8 @@ void write_classes_json(std::ostream& out, const medusa::Medusa& medusa,
                              {"broke_at", fate.state == RingFate::State::broke ? nlohmann::json(fate.broke_at)
                                                                                : nlohmann::json(nullptr)}};
     }
+    if (!seen.empty()) // null: never a ring or shell at one time
+      list.back()["seen"] = std::isinf(seen[i]) && seen[i] < 0 ? nlohmann::json(nullptr) : time_json(seen[i]);
     if (!wraps.empty()) // the axes the loop wraps around, on a periodic run (docs/MATH.md §8.8)
       list.back()["wraps"] = wraps[i] == "-" ? "" : wraps[i];
   }
@@ -215,17 +231,21 @@ void classes_command(const ClassesArguments& args) {
   for (persistence::ClassRecord& r : persistence::class_records(medusa, classes))
     if (!args.dim || r.dim == *args.dim)
       records.push_back(std::move(r));
-  sort_records(records, args.sort, direction == persistence::Direction::forward, medusa);
-  if (args.top > 0 && records.size() > args.top)
+  std::vector<double> seen =
+      sort_records(records, args.sort, direction == persistence::Direction::forward, medusa);
+  if (args.top > 0 && records.size() > args.top) {
     records.resize(args.top);
+    seen.resize(std::min(seen.size(), args.top));
+  }
   const Wraps wraps = wrapping_axes(medusa, classes, records);
   auto write = [&](std::ostream& out) {
     if (args.format == "csv")
-      write_classes_csv(out, records, wraps);
+      write_classes_csv(out, records, seen, wraps);
     else if (args.format == "json")
-      write_classes_json(out, medusa, records, wraps, cell_type, direction, classes.classes.options.shorten);
+      write_classes_json(out, medusa, records, seen, wraps, cell_type, direction,
+                         classes.classes.options.shorten);
     else
-      write_table(out, records, wraps);
+      write_table(out, records, seen, wraps);
   };
   if (to_stdout)
     write(std::cout);
@@ -268,7 +288,8 @@ void add_classes_command(CLI::App& app) {
       ->add_option(
           "--format", args->format,
           "table (tab-separated: the counts of simplices and of CC3D cells of the representative, long lists "
-          "cut), csv or json (with every cell and the "
+          "cut; of the forward filtration, the time each class was seen in the tissue as --sort seen "
+          "orders them), csv or json (with every cell and the "
           "representative's simplices as CompuCell3D cell ids)")
       ->check(CLI::IsMember({"table", "csv", "json"}))
       ->capture_default_str();

@@ -196,9 +196,9 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
     std::vector<std::size_t> b0;
     for (const Signature& g : s->at_frame)
       b0.push_back(g.betti[0]);
-    const std::size_t after_first = clusters_after_first_batch(d, medusa::frame_batch(medusa, 0));
-    const TypeCourse course = type_course(input.frame_times, b0, forward_counts(d).merge_times,
-                                          b0.front() > after_first ? b0.front() - after_first : 0);
+    const TypeCourse course =
+        type_course(input.frame_times, b0, forward_counts(d).merge_times,
+                    clusters_joined_at_first(d, medusa::frame_batch(medusa, 0), b0.front()));
     const auto measures_of = [&](const medusa::SortingSample& sample) {
       const auto m =
           std::find_if(sample.measures.begin(), sample.measures.end(), [&](const medusa::SortingMeasures& x) {

@@ -27,6 +27,15 @@ double time_seen(bool essential, double lifetime, double essential_order, double
   return essential ? std::min(essential_order, t_end - birth) : lifetime;
 }
 
+double time_seen(const medusa::Medusa& medusa, const persistence::ClassRecord& r) {
+  const double t_end =
+      medusa.input.frame_times.empty() ? 0.0 : static_cast<double>(medusa.input.frame_times.back());
+  const double order = r.essential ? essential_order(medusa, r.dim, persistence::CellLists::List(r.cycle),
+                                                     r.birth_cell, r.birth)
+                                   : 0.0;
+  return time_seen(r.essential, r.lifetime(), order, r.birth, t_end);
+}
+
 double essential_order(const medusa::Medusa& medusa, int dim, persistence::CellLists::List cycle,
                        medusa::CellId birth_cell, double birth) {
   if (dim == 0)

@@ -7,6 +7,7 @@
 
 #include "medusa/medusa/medusa.h"
 #include "medusa/persistence/cell_lists.h"
+#include "medusa/persistence/class_records.h"
 
 namespace medusa::cli {
 
@@ -41,5 +42,8 @@ double essential_order(const medusa::Medusa& medusa, int dim, persistence::CellL
 // the time after its birth until its ring or shell broke open (essential_order), or until the end of the
 // run `t_end`; -inf for one never whole at one time (a loop of space-time only).
 double time_seen(bool essential, double lifetime, double essential_order, double birth, double t_end);
+
+// time_seen of a class of the forward filtration.
+double time_seen(const medusa::Medusa& medusa, const persistence::ClassRecord& record);
 
 } // namespace medusa::cli

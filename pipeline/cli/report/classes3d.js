@@ -377,7 +377,7 @@
     html("div", { class: "count" }, div, section.classes.length === section.total
       ? section.total + " " + (section.total === 1 ? nm[0] : nm[1])
       : "the " + section.classes.length + " seen longest of " + section.total + " " + nm[1] + " (the other " +
-        (section.total - section.classes.length) + ": medusa classes --type " + section.label + " --dim " + section.dim + ")");
+        (section.total - section.classes.length) + ": medusa classes --type " + section.label + " --dim " + section.dim + " --sort seen)");
     const t = html("table", {}, div), head = html("tr", {}, html("thead", {}, t));
     for (const h of ["id", "born (MCS)", deathWord(section.dim) + " (MCS)", "lifetime (MCS)", "formed by cells", "killed by cells", "CC3D cells of the " + nm[0]])
       html("th", {}, head, h);
@@ -411,7 +411,7 @@
     if (!ring) return "";
     const what = dim === 2 ? "shell" : "ring";
     if (ring.state === "broke") return "; this " + what + " broke open at MCS " + fmt(ring.broke_at);
-    if (ring.state === "never whole") return "; a loop in space-time (its cells never all at once)";
+    if (ring.state === "never whole") return "; a " + (dim === 2 ? "cavity" : "loop") + " of space-time only (its contacts never all at once)";
     return "; this " + what + " is whole at the end";
   }
 
@@ -428,10 +428,10 @@
         "at some time up to the end: cells born later by division and cells that died are listed too), for a loop or a cavity the cells on a ring or a shell around it " +
         "when it formed (docs/MATH.md §7.11). A loop or cavity never filled is a class of the space-time medusa to the " +
         "end, so its lifetime reads '≥'; whether the cells it is listed with are still a ring or shell at the end, broke " +
-        "open at some time, or were never all present at once is said beside it. 'Formed by' and 'killed by' are the cells whose contact created and " +
+        "open at some time, or never were a ring or shell at one time (their contacts never all present at once) is said beside it. 'Formed by' and 'killed by' are the cells whose contact created and " +
         "ended it: the last edge or triangle that closed it, the triangle or tetrahedron that filled it. Click a row " +
         "to see the class in 3D at the time it formed; move the time to watch it close and fill. The full lists: " +
-        "medusa classes STORE --type T --dim K (ids as in the first column).");
+        "medusa classes STORE --type T --dim K --sort seen (ids as in the first column).");
       const layout = html("div", { class: "classes-layout" }, sec);
       const view = makeView(ri, run, layout);
       views.push(view);

@@ -410,16 +410,17 @@ RunData read_run(const std::string& path, const RunOptions& options) {
         throw InputError(path + ": no LatticeData/Step_<MCS>.vtk(.gz) snapshots");
       run = read_vtk_run(vtks, options, sim);
     } else {
-      if (csv.empty())
+      if (csv.empty()) {
+        const std::optional<fs::path> run_folder = run_folder_of_lattice_data(p);
         throw InputError(
             path +
             (options.source == RunSource::csv
                  ? ": no cells.csv.gz or cells.csv"
                  : ": neither LatticeData/Step_<MCS>.vtk(.gz) snapshots nor cells.csv(.gz)") +
-            (run_folder_of_lattice_data(p)
-                 ? "; this is a LatticeData folder: give the CC3D output folder that holds it (" +
-                       run_folder_of_lattice_data(p)->string() + ")"
-                 : std::string()));
+            (run_folder ? "; this is a LatticeData folder: give the CC3D output folder that holds it (" +
+                              run_folder->string() + ")"
+                        : std::string()));
+      }
       run = read_csv_run(csv, options, sim);
     }
   } else {

@@ -7,7 +7,8 @@ Runs the input, then lists the forward classes of every type and degree sorted b
 seen. Requires: the same classes either way; the seen order non-increasing in the time seen worked out
 from each class's fields (a filled class: death - birth; a never-filled one: `ring.broke_at` - birth if
 its ring broke open, t_end - birth if whole at the end, -inf if never whole; a cluster that never joins:
-t_end - birth), ties by lifetime; and, so that the check is not empty, a ring that broke open ranked
+t_end - birth), ties by lifetime; each class's `seen` field that time (null for -inf), and the table's
+`seen` column the same, row by row ("never whole" for null); and, so that the check is not empty, a ring that broke open ranked
 below a filled class that outlived it in the tissue, though above it by lifetime.
 """
 import json
@@ -60,6 +61,16 @@ for label in ["all"] + [str(t) for t in types]:
         by_seen = json.loads(call(*args, "--sort", "seen"))["classes"]
         by_life = json.loads(call(*args, "--sort", "lifetime"))["classes"]
         assert sorted(c["id"] for c in by_seen) == sorted(c["id"] for c in by_life), (label, dim)
+        for c in by_seen:
+            expected = seen(c)
+            assert (c["seen"] is None) if expected == -math.inf else math.isclose(c["seen"], expected, rel_tol=1e-12, abs_tol=1e-9), (label, dim, c["id"], c["seen"], expected)
+        table = call("classes", "seen.h5", "--type", label, "--dim", str(dim), "--sort", "seen").splitlines()
+        column = table[0].split("\t").index("seen")
+        rows = [line.split("\t") for line in table[1:]]
+        assert [int(r[0]) for r in rows] == [c["id"] for c in by_seen], (label, dim)
+        for r, c in zip(rows, by_seen):
+            shown = "never whole" if c["seen"] is None else "%.6g" % c["seen"]
+            assert r[column] == shown, (label, dim, c["id"], r[column], shown)
         keys = [(seen(c), lifetime(c)) for c in by_seen]
         assert keys == sorted(keys, reverse=True), (label, dim, keys[:10])
         checked += len(keys)
