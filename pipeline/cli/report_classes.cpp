@@ -107,7 +107,8 @@ json class_json(const persistence::ClassRecord& r, const persistence::DiagramWit
 
 } // namespace
 
-json report_classes(const std::string& store, const medusa::Medusa& medusa, std::size_t top) {
+json report_classes(const std::string& store, const medusa::Medusa& medusa, std::size_t top,
+                    TimesSeen& times_seen) {
   const kinetic::Trajectories& input = medusa.input;
   json cells = {{"cc3d", json::array()}, {"type", json::array()}};
   for (const kinetic::Trajectory& c : input.cells) {
@@ -133,6 +134,7 @@ json report_classes(const std::string& store, const medusa::Medusa& medusa, std:
       const double whole =
           p.essential ? essential_order(medusa, p.dim, found.classes.cycles[i], p.birth_cell, p.birth) : 0.0;
       seen[i] = time_seen(p.essential, lifetime[i], whole, p.birth, t_end);
+      times_seen[type][p.birth_cell] = seen[i];
     }
     for (int k = 0; k <= 2; ++k) {
       // Represented classes, those seen longest in the tissue first, as `medusa classes --sort seen`

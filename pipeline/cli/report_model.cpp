@@ -54,20 +54,32 @@ json cc3d_ids(const medusa::CellVertices& vertices, const kinetic::Trajectories&
 }
 
 // One panel: the pairs of degree k of a forward diagram, each
-// [birth, death or null, birth cell, death cell or null, birth CC3D ids, death CC3D ids].
-json panel(const persistence::Diagram& d, int k, std::size_t max_bars, const medusa::Medusa& medusa) {
+// [birth, death or null, birth cell, death cell or null, birth CC3D ids, death CC3D ids], and for an
+// essential loop or cavity (not a planar run's space-time bubble) a seventh: the time until which the ring or
+// shell of cells it is listed with was whole (t_end when it still is), or null when it never was at one time.
+// `seen`: per birth cell the time seen in the tissue (time_seen); a panel cut to max_bars keeps those seen
+// longest, as the tables.
+json panel(const persistence::Diagram& d, int k, std::size_t max_bars, const medusa::Medusa& medusa,
+           const std::map<medusa::CellId, double>& seen) {
   std::vector<const persistence::PersistencePair*> pairs;
   for (const persistence::PersistencePair& p : d.pairs)
     if (p.dim == k && !p.zero_length)
       pairs.push_back(&p);
+  const auto seen_of = [&](const persistence::PersistencePair* p) {
+    const auto it = seen.find(p->birth_cell);
+    if (it == seen.end())
+      throw InternalError("report: no class for the pair born in medusa cell " +
+                          std::to_string(p->birth_cell));
+    return it->second;
+  };
   const std::size_t total = pairs.size();
   if (max_bars > 0 && pairs.size() > max_bars) {
-    auto longer = [](const persistence::PersistencePair* a, const persistence::PersistencePair* b) {
-      if (a->essential != b->essential)
-        return a->essential;
-      return a->death - a->birth > b->death - b->birth;
+    const auto lifetime = [](const persistence::PersistencePair* p) {
+      return p->essential ? INFINITY : p->death - p->birth;
     };
-    std::stable_sort(pairs.begin(), pairs.end(), longer);
+    std::stable_sort(pairs.begin(), pairs.end(), [&](const auto* a, const auto* b) {
+      return seen_of(a) != seen_of(b) ? seen_of(a) > seen_of(b) : lifetime(a) > lifetime(b);
+    });
     pairs.resize(max_bars);
   }
   std::stable_sort(pairs.begin(), pairs.end(), [](const auto* a, const auto* b) {
@@ -84,6 +96,11 @@ json panel(const persistence::Diagram& d, int k, std::size_t max_bars, const med
     row.push_back(cc3d_ids(persistence::birth_vertices(*p, medusa.cells), medusa.input));
     row.push_back(p->essential ? json::array()
                                : cc3d_ids(persistence::death_vertices(*p, medusa.cells), medusa.input));
+    // A planar run's H2 classes are bubbles of space-time (docs/MATH.md §7.6), never a shell at one time.
+    if (p->essential && k >= 1 && k < medusa.input.dimension) {
+      const double s = seen_of(p);
+      row.push_back(std::isinf(s) && s < 0 ? json(nullptr) : json(p->birth + s));
+    }
     rows.push_back(std::move(row));
   }
   return {{"label", type_label(d.cell_type)},
@@ -177,6 +194,10 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
   }
   j["slices"] = std::move(slice_rows);
 
+  // A handful per type and degree: the page's tables stay short, the rest is in `medusa classes`.
+  TimesSeen seen;
+  j["classes"] = report_classes(store, medusa, 5, seen);
+
   std::ostringstream summary;
   json headlines = json::array();
   std::vector<TypeVerdictInput> verdict_types;
@@ -221,7 +242,7 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
       verdict_types.push_back({title, course, heterotypic_contacts(first, last, " \u2192 "),
                                clusters_apart_text(clusters_apart(medusa, input.frames() - 1, d.cell_type))});
     for (int k = 0; k <= 2; ++k)
-      panels.push_back(panel(d, k, max_bars, medusa));
+      panels.push_back(panel(d, k, max_bars, medusa, seen[d.cell_type]));
     run.h0_points.emplace_back(
         label, persistence::normalise_time(persistence::to_points(d, 0), d.direction, t0, t_end));
     check_interrupted();
@@ -231,8 +252,6 @@ ReportRun report_run(const std::string& store, const std::string& name, std::siz
   j["headlines"] = std::move(headlines);
   j["verdict"] = run_verdict(verdict_types, j["facts"]["radius"].get<std::string>());
   j["panels"] = std::move(panels);
-  // A handful per type and degree: the page's tables stay short, the rest is in `medusa classes`.
-  j["classes"] = report_classes(store, medusa, 5);
   return run;
 }
 

@@ -132,6 +132,12 @@
       lines.push(panel.dim === 0 ? "death: never (an essential class: this cluster never joined an older one)"
         : "death: never (an essential class: never filled by cells; it may have broken open instead)");
       lines.push("lifetime: " + fmt(run.facts.t_end - birth) + " MCS or more (to the end of the run)");
+      if (p.length > 6) {
+        const what = panel.dim === 2 ? "shell" : "ring";
+        lines.push(p[6] === null ? "the contacts of the cells it is listed with were never all present at once: a " + names[0] + " of space-time only"
+          : p[6] >= run.facts.t_end ? "the " + what + " of cells it is listed with is whole at the end"
+          : "the " + what + " of cells it is listed with broke open at MCS " + fmt(p[6]) + " (solid until then)");
+      }
     } else {
       lines.push("death: MCS " + fmt(death) + " (medusa cell " + dcell + ", " + cellWords(dids) + ")");
       lines.push("lifetime: " + fmt(death - birth) + " MCS");
@@ -164,10 +170,15 @@
     const rowH = (height - 46) / Math.max(1, n), colour = degreeColours[panel.dim];
     panel.pairs.forEach((p, j) => {
       const x0 = sx(p[0]), x1 = p[1] === null ? sx(t1) : sx(p[1]);
-      const r = el("rect", { class: "bar", x: x0, y: 8 + j * rowH, width: Math.max(1, x1 - x0), height: Math.max(0.8, rowH * 0.8),
-        fill: colour, "fill-opacity": p[1] === null ? 0.3 : 1, "data-run": ri, "data-panel": pi, "data-pair": j,
+      // At least 2 px wide, so that a class living a moment can be pointed at.
+      const r = el("rect", { class: "bar", x: x0, y: 8 + j * rowH, width: Math.max(2, x1 - x0), height: Math.max(0.8, rowH * 0.8),
+        fill: colour, "fill-opacity": p[1] !== null ? 1 : p.length > 6 && p[6] === null ? 0.12 : 0.3, "data-run": ri, "data-panel": pi, "data-pair": j,
         "data-birth-cell": p[2], "data-death-cell": p[3] === null ? "" : p[3] }, svg);
       hover(r, pairText(run, panel, p));
+      // A never-filled loop or cavity is solid for as long as its ring or shell stayed whole.
+      if (p.length > 6 && p[6] !== null && p[6] > p[0])
+        el("rect", { class: "bar-whole", x: x0, y: 8 + j * rowH, width: Math.max(1, Math.min(sx(p[6]), x1) - x0),
+          height: Math.max(0.8, rowH * 0.8), fill: colour, "pointer-events": "none", "data-pair": j }, svg);
     });
     return svg;
   }
@@ -284,7 +295,10 @@
       }
       html("h3", {}, sec, "Barcodes and persistence diagrams (forward filtration)");
       html("p", { class: "note" }, sec, "One bar per class: it starts when the cluster, loop or cavity appears and ends when it " +
-        "joins an older cluster or is filled; pale bars never end (essential classes, drawn to the end of the run). The H0 (clusters) panels " +
+        "joins an older cluster or is filled; pale bars never end (essential classes, drawn to the end of the run). A loop or cavity never " +
+        "filled is solid for as long as the ring or shell of cells it is listed with stayed whole (as in the tables below), pale after it " +
+        "broke open, and paler throughout when its contacts were never all present at once. Where a panel has more classes than it draws, " +
+        "it draws those seen longest in the tissue. The H0 (clusters) panels " +
         "show the time up to the last join only, labelled under the axis. Hover a bar or a point for its " +
         "times and the CC3D cells that formed and killed it. Zero-length classes are not drawn.");
       const grid = html("div", { class: "panels" }, sec);
@@ -295,7 +309,7 @@
         const names = degreeName(run, panel.dim);
         html("div", { class: "caption" }, div, typeTitle(panel.label, panel.name) + " · H" + panel.dim + " " + names[1]);
         html("div", { class: "count" }, div, panel.pairs.length === panel.total ? panel.total + " " + (panel.total === 1 ? names[0] : names[1])
-          : "the " + panel.pairs.length + " longest of " + panel.total + " " + names[1]);
+          : "the " + panel.pairs.length + " seen longest of " + panel.total + " " + names[1]);
         if (panel.pairs.length === 0) return;
         barcode(div, run, panel, ri, pi);
         diagram(div, run, panel, ri, pi);

@@ -4,7 +4,9 @@ no SEVERE console message; one panel per type and degree; in each panel as many 
 `medusa barcode --format csv --filtration forward` has pairs of that type and degree (capped by
 --max-bars); hovering bars shows the birth and death times and the CC3D ids of the cells that formed
 and killed the class, checked against the store itself (h5py: /persistence, /cells, /input); the
-CROCKER plot of a sweep next to the store is shown; the page renders (a non-blank screenshot); the
+CROCKER plot of a sweep next to the store is shown; a panel with more classes than --max-bars draws those
+seen longest in the tissue, and a never-filled loop or cavity is solid until its ring or shell broke
+open, as `medusa classes` gives it (`seen`); the page renders (a non-blank screenshot); the
 classes section agrees with `medusa classes` and `medusa at` (report_classes_check.py).
 
 The answer on top, for the sorting runs and the control at the default radius, `medusa run` +
@@ -18,6 +20,8 @@ documented default radii; the page says the sweep was computed at report time; "
 Usage: check_report_browser.py <medusa> <source dir> <workdir> [screenshot.png [class.png]]"""
 import csv
 import io
+import json
+import math
 import os
 import re
 import shutil
@@ -130,6 +134,54 @@ class Store:
 
 def close(a, b):
     return abs(a - b) <= 1e-5 * max(1.0, abs(b))
+
+
+_classes = {}
+
+
+def seen_key(c):
+    """The order of `medusa classes --sort seen`: time seen in the tissue, then lifetime."""
+    return (-math.inf if c["seen"] is None else c["seen"], math.inf if c["essential"] else c["lifetime"])
+
+
+def check_seen_bars(driver, panel, ri, store, key, failures, where):
+    """A panel cut to --max-bars draws the classes seen longest (the `seen` of `medusa classes`, ties
+    either way); each essential loop's or cavity's row carries birth + seen (null: never whole), and
+    one solid overlay is drawn on each such bar whole for a positive time. Returns (overlays, cut)."""
+    if (store, key) not in _classes:
+        text = call("classes", store, "--type", key[0], "--dim", str(key[1]), "--format", "json")
+        _classes[(store, key)] = {c["medusa_birth_cell"]: c for c in json.loads(text)["classes"]}
+    by_cell = _classes[(store, key)]
+    pi = int(panel.find_element("css selector", ".bar").get_attribute("data-panel"))
+    run = driver.execute_script(
+        "const r = JSON.parse(document.getElementById('report-data').textContent).runs[arguments[0]];"
+        "return {pairs: r.panels[arguments[1]].pairs, dimension: r.facts.dimension};", ri, pi)
+    pairs, bubbles = run["pairs"], key[1] >= run["dimension"]
+    drawn = {p[2] for p in pairs}
+    if not drawn <= set(by_cell):
+        failures.append(f"{where}: bars of classes `medusa classes` does not list: {sorted(drawn - set(by_cell))[:5]}")
+        return 0, False
+    left = [seen_key(c) for cell, c in by_cell.items() if cell not in drawn]
+    if left and max(left) > min(seen_key(by_cell[cell]) for cell in drawn):
+        failures.append(f"{where}: a class seen {max(left)} is left out while one seen "
+                        f"{min(seen_key(by_cell[cell]) for cell in drawn)} is drawn")
+    overlays = 0
+    for p in pairs:
+        c = by_cell[p[2]]
+        if not c["essential"] or bubbles:
+            if len(p) > 6:
+                failures.append(f"{where}: class {c['id']} (filled, or a planar run's bubble) has a time whole {p[6]}")
+            continue
+        expected = None if c["seen"] is None else c["birth"] + c["seen"]
+        got = p[6] if len(p) > 6 else "absent"
+        if got == "absent" or (expected is None) != (got is None) or (expected is not None and not close(got, expected)):
+            failures.append(f"{where}: class {c['id']} whole until {got}, `medusa classes` gives {expected}")
+        if expected is not None and expected > c["birth"]:
+            overlays += 1
+    shown = len(panel.find_elements("css selector", ".bar-whole"))
+    if shown != overlays:
+        failures.append(f"{where}: {shown} solid overlays on never-filled classes, expected {overlays}")
+    return overlays, bool(left)
 
 
 def check_answer(driver, failures):
@@ -257,6 +309,7 @@ driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opti
 failures = []
 hovered = 0
 class_clicks = 0
+seen_overlays, seen_cuts = 0, 0
 try:
     for page, stores in [("one.html", ["filed/sorting_3d"]), ("three.html", list(runs))]:
         driver.get("file://" + os.path.abspath(page))
@@ -298,6 +351,10 @@ try:
                 if len(bars) != want or int(panel.get_attribute("data-total")) != expected[key]:
                     failures.append(f"{page} {name} {key}: {len(bars)} bars of {panel.get_attribute('data-total')}, "
                                     f"expected {want} of {expected[key]}")
+                if key[1] >= 1 and bars:
+                    overlays, cut = check_seen_bars(driver, panel, ri, f"{name}.h5", key, failures, f"{page} {name} {key}")
+                    seen_overlays += overlays
+                    seen_cuts += cut
                 # Hover the first, middle and last bar of each panel; check the tooltip against the store.
                 for bar in {0: bars[0], 1: bars[len(bars) // 2], 2: bars[-1]}.values() if bars else []:
                     ActionChains(driver).move_to_element(bar).perform()
@@ -391,7 +448,10 @@ try:
 finally:
     driver.quit()
 
-print(f"{hovered} hovers checked against the store, {class_clicks} classes selected")
+print(f"{hovered} hovers checked against the store, {class_clicks} classes selected; {seen_overlays} never-filled "
+      f"classes drawn solid while whole, {seen_cuts} panels cut to those seen longest")
+if seen_overlays == 0 or seen_cuts == 0:
+    failures.append("no never-filled class drawn solid, or no panel cut to the classes seen longest: nothing checked")
 if hovered == 0:
     failures.append("no bar hovered")
 if class_clicks == 0:
