@@ -51,8 +51,24 @@ void describe_clusters(std::ostream& out, const ClusterFates& c, double t0, doub
         << " been one cluster with another earlier, by a join or from the start, and split off)\n";
 }
 
+// A path as a shell word: quoted unless it is made of characters no shell treats specially.
+std::string shell_word(const std::string& path) {
+  bool plain = !path.empty();
+  for (char c : path)
+    plain = plain && (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' ||
+                      c == '/' || c == '+' || c == ',' || c == ':');
+  if (plain)
+    return path;
+  std::string quoted = "'";
+  for (char c : path)
+    quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// `listing`: the `medusa classes` command of this sub-medusa and degree (empty: none said).
 void describe_holes(std::ostream& out, const persistence::HoleFates& h, std::size_t open_at_first,
-                    std::size_t open_at_end, const char* one, const char* many, double t0, double t_end) {
+                    std::size_t open_at_end, const char* one, const char* many, double t0, double t_end,
+                    const std::string& listing) {
   out << "  " << many << ": " << h.initial() << " present at MCS " << mcs(t0) << ", " << h.formed()
       << " formed during the run\n";
   // Present at t_0 counts the space-time classes up to t_0, cells present at t_0 alone included; the
@@ -79,6 +95,13 @@ void describe_holes(std::ostream& out, const persistence::HoleFates& h, std::siz
   out << ", " << h.never_filled_formed << " formed later";
   split(h.still_open_formed, h.broken_open_formed);
   out << "\n";
+  // The classes of the end complex that stay classes of M are the reverse filtration's essential ones
+  // born at t_end (docs/MATH.md §7.12), and their representatives are cycles of K(t_end-): rings and
+  // shells of cells at the end, where the forward representatives can be cycles of space-time.
+  if (h.still_open() > 0 && !listing.empty())
+    out << "    the " << h.still_open() << " still open, each with the cells around it at MCS " << mcs(t_end)
+        << ": `" << listing << " --filtration reverse`, the rows born at " << mcs(t_end)
+        << " with death -inf\n";
   if (open_at_end > h.still_open())
     out << "    (the complex at MCS " << mcs(t_end) << " has " << count(open_at_end, one, many) << "; "
         << open_at_end - h.still_open()
@@ -98,30 +121,24 @@ void describe_planar_bubbles(std::ostream& out, const persistence::Diagram& forw
       << " (holes that opened inside the tissue and closed again)\n";
 }
 
+// `store`: the store's path as the user gave it, for the commands named (empty: none named).
 void describe_fates(std::ostream& out, const ClassFates& fates, const persistence::Diagram& forward,
-                    int dimension, double t0, double t_end) {
+                    int dimension, double t0, double t_end, const std::string& store) {
+  const auto listing = [&](int k) {
+    if (store.empty())
+      return std::string();
+    const std::string type =
+        forward.cell_type == persistence::all_types ? "all" : std::to_string(forward.cell_type);
+    return "medusa classes " + shell_word(store) + " --type " + type + " --dim " + std::to_string(k);
+  };
   describe_clusters(out, fates.clusters, t0, t_end);
   describe_holes(out, fates.holes[1], fates.open_at_first[1], fates.open_at_end[1], "loop", "loops", t0,
-                 t_end);
+                 t_end, listing(1));
   if (dimension == 2)
     describe_planar_bubbles(out, forward);
   else
     describe_holes(out, fates.holes[2], fates.open_at_first[2], fates.open_at_end[2], "cavity", "cavities",
-                   t0, t_end);
-}
-
-// A path as a shell word: quoted unless it is made of characters no shell treats specially.
-std::string shell_word(const std::string& path) {
-  bool plain = !path.empty();
-  for (char c : path)
-    plain = plain && (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' ||
-                      c == '/' || c == '+' || c == ',' || c == ':');
-  if (plain)
-    return path;
-  std::string quoted = "'";
-  for (char c : path)
-    quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
+                   t0, t_end, listing(2));
 }
 
 // Cells shown before "and N more".
@@ -159,7 +176,7 @@ void describe_forward_diagram(std::ostream& out, const medusa::Medusa& medusa,
     throw InternalError("run summary: no reverse diagram for type " + type_label(forward.cell_type));
   describe_fates(out, class_fates(medusa, forward, *reverse), forward, input.dimension,
                  static_cast<double>(input.frame_times.front()),
-                 static_cast<double>(input.frame_times.back()));
+                 static_cast<double>(input.frame_times.back()), std::string());
 }
 
 std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medusa& medusa,
@@ -230,7 +247,7 @@ std::vector<std::string> write_run_summary(std::ostream& out, const medusa::Medu
       leaving = fates.cells_leaving_at_first;
     }
     out << label << ":\n";
-    describe_fates(out, fates, d, input.dimension, t0, t_end);
+    describe_fates(out, fates, d, input.dimension, t0, t_end, store);
     // A planar run's H2 classes are space-time bubbles, none of which is filled (docs/MATH.md §7.6).
     for (const LongestFilled& c : longest)
       if (c.cell_type == d.cell_type && (c.dim == 1 || input.dimension == 3))

@@ -11,9 +11,14 @@ or before the batch that reaches the first frame and L_end those dying at the fi
 dim(Z_k(L) + B_k(M)) - dim B_k(M), and dim(A + B) likewise; then requires the summary's "never
 filled" line to say: dim A of those at the first frame, of them dim(A ∩ B) still open and the rest
 broke open; dim H_k(M) - dim A formed later, of them dim(A + B) - dim A still open and dim H_k(M) -
-dim(A + B) broke open (docs/MATH.md §7.12). Fails if it compares nothing.
+dim(A + B) broke open (docs/MATH.md §7.12). Where some are still open, the command the summary names
+for them must list, as the rows born at t_end with death -inf, dim B classes whose representatives
+lie in L_end (rings and shells of cells at the end) and are independent in H_k(M): a basis of B.
+Fails if it compares nothing.
 """
+import json
 import re
+import shlex
 import subprocess
 import sys
 
@@ -42,6 +47,7 @@ with h5py.File(f"{work}/{name}.h5", "r") as f:
     frames = len(f["input"]["frame_times"][:])
     slab, at_frame, index = ev["batch_slab"][:], ev["batch_at_frame"][:], ev["batch_index"][:]
     end_batch = int(max(db))
+    t_end = float(f["input"]["frame_times"][-1])
 row_of = np.empty(len(ids), dtype=np.int64)
 row_of[ids] = np.arange(len(ids))
 # The batch that reaches the first frame: the last frame batch of slab 0 (docs/FORMAT.md, /events);
@@ -93,7 +99,7 @@ def cycles(rows, index_k, index_km1, k):
     return basis
 
 
-compared = 0
+compared, pointers = 0, 0
 groups = re.split(r"\n(?=all cells:|type \d+)", summary)
 for group in groups[1:]:
     header = group.splitlines()[0]
@@ -137,5 +143,29 @@ for group in groups[1:]:
         assert got == expected, f"{label}: summary {got}, brute force {expected} (dim A {dim_a}, dim B {dim_b})"
         print(f"{label}: {got} agrees (dim A {dim_a}, dim B {dim_b}, dim A+B {dim_a_plus_b}, H {h_m})")
         compared += 1
+        if dim_b > 0:
+            pointer = lines[lines.index(never) + 1]
+            m = re.match(r"    the (\d+) still open, each with the cells around it at MCS \S+: `medusa (.*)`, the rows "
+                         r"born at \S+ with death -inf$", pointer)
+            assert m and int(m.group(1)) == dim_b, f"{label}: no pointer to the {dim_b} still open: {pointer!r}"
+            listed = subprocess.run([medusa, *shlex.split(m.group(2)), "--format", "json"], cwd=work,
+                                    capture_output=True, text=True)
+            assert listed.returncode == 0, f"{label}: {m.group(2)}: {listed.stderr}"
+            open_now = [c for c in json.loads(listed.stdout)["classes"] if c["essential"] and c["birth"] == t_end]
+            assert len(open_now) == dim_b, f"{label}: {len(open_now)} rows born at the end, dim B {dim_b}"
+            add3, _ = rank_and_reducer()
+            for r in cells_kp1:
+                add3(boundary(r, index_k))
+            for c in open_now:
+                rows = [int(row_of[x]) for x in c["medusa_cycle"]]
+                assert all(r in index_k and db[r] >= end_batch for r in rows), \
+                    f"{label}: class {c['id']} has a cell not in the end complex"
+                cycle = 0
+                for r in rows:
+                    cycle ^= 1 << index_k[r]
+                assert add3(cycle), f"{label}: class {c['id']} depends on the others"
+            print(f"{label}: the {dim_b} still open are listed as cycles of the end complex, a basis of B")
+            pointers += 1
 assert compared > 0, "nothing compared"
+print(f"{pointers} lists of the classes still open at the end checked")
 print(f"{compared} never-filled splits of the summary equal the brute-force ones")

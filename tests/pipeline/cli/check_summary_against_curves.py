@@ -65,7 +65,7 @@ for group in groups[1:]:
         at_first = int(after.group(1)) if after else present
         assert at_first == int(b_first[f"b{k}"]), f"{label}: {word} at first frame {at_first} vs b{k} {b_first[f'b{k}']}"
         compared += 1
-        still = sum(int(n) for n in re.findall(r"(\d+) still open", part))
+        still = sum(int(n) for n in re.findall(r"\((\d+) still open", part))
         whole = re.search(r"the complex at MCS \S+ has (\d+)", part)
         at_end = int(whole.group(1)) if whole else still
         assert at_end == int(b_last[f"b{k}"]), f"{label}: {word} open at the end {at_end} vs b{k} {b_last[f'b{k}']}"
