@@ -58,7 +58,8 @@ json cc3d_ids(const medusa::CellVertices& vertices, const kinetic::Trajectories&
 // essential loop or cavity (not a planar run's space-time bubble) a seventh: the time until which the ring or
 // shell of cells it is listed with was whole (t_end when it still is), or null when it never was at one time.
 // `seen`: per birth cell the time seen in the tissue (time_seen); a panel cut to max_bars keeps those seen
-// longest, as the tables.
+// longest, as the tables, and leaves out all its loops or cavities never whole at one time
+// (never_whole_left) rather than some.
 json panel(const persistence::Diagram& d, int k, std::size_t max_bars, const medusa::Medusa& medusa,
            const std::map<medusa::CellId, double>& seen) {
   std::vector<const persistence::PersistencePair*> pairs;
@@ -73,6 +74,7 @@ json panel(const persistence::Diagram& d, int k, std::size_t max_bars, const med
     return it->second;
   };
   const std::size_t total = pairs.size();
+  std::size_t never_whole_left = 0;
   if (max_bars > 0 && pairs.size() > max_bars) {
     const auto lifetime = [](const persistence::PersistencePair* p) {
       return p->essential ? INFINITY : p->death - p->birth;
@@ -80,7 +82,19 @@ json panel(const persistence::Diagram& d, int k, std::size_t max_bars, const med
     std::stable_sort(pairs.begin(), pairs.end(), [&](const auto* a, const auto* b) {
       return seen_of(a) != seen_of(b) ? seen_of(a) > seen_of(b) : lifetime(a) > lifetime(b);
     });
-    pairs.resize(max_bars);
+    // Loops and cavities never whole at one time all tie last; a few of them, the earliest born, would
+    // draw a trend that is not there, so they are drawn all or none (a planar run's bubbles aside).
+    const auto whole_at_some_time = [&](const auto* p) {
+      return !(std::isinf(seen_of(p)) && seen_of(p) < 0);
+    };
+    const auto never_whole = std::find_if_not(pairs.begin(), pairs.end(), whole_at_some_time);
+    const auto kept = static_cast<std::size_t>(never_whole - pairs.begin());
+    if (k >= 1 && k < medusa.input.dimension && kept < max_bars) {
+      never_whole_left = pairs.size() - kept;
+      pairs.resize(kept);
+    } else {
+      pairs.resize(max_bars);
+    }
   }
   std::stable_sort(pairs.begin(), pairs.end(), [](const auto* a, const auto* b) {
     return std::make_pair(a->birth, a->essential ? INFINITY : a->death) <
@@ -107,6 +121,7 @@ json panel(const persistence::Diagram& d, int k, std::size_t max_bars, const med
           {"name", type_name(medusa.input, d.cell_type)},
           {"dim", k},
           {"total", total},
+          {"never_whole_left", never_whole_left},
           {"pairs", std::move(rows)}};
 }
 

@@ -233,7 +233,7 @@
       const sec = view.section, nm = names(view.run, sec.dim);
       view.caption.textContent = typeTitle(sec.label, sec.name) + " · H" + sec.dim + " " + nm[0] + " " + cls.id +
         " at MCS " + fmt(view.time) + ": born at MCS " + fmt(cls.birth) + ", " +
-        (cls.death === null ? "never " + deathWord(sec.dim) + ringWords(cls.ring, sec.dim) : deathWord(sec.dim) + " at MCS " + fmt(cls.death)) +
+        (cls.death === null ? "never " + deathWord(sec.dim) + ringWords(cls.ring, sec.dim, view.run) : deathWord(sec.dim) + " at MCS " + fmt(cls.death)) +
         "; " + view.drawn.length + " cells: " + list(view.drawn, 40) +
         (view.absent.length ? " (not present at this time: " + view.absent.join(" ") + ")" : "");
     }
@@ -387,8 +387,8 @@
         "data-class": cls.id, title: "show this " + nm[0] + " in the 3D view" }, body);
       html("td", {}, tr, String(cls.id));
       html("td", {}, tr, fmt(cls.birth));
-      html("td", { class: "fate", "data-broke-at": cls.ring && cls.ring.broke_at !== null ? String(cls.ring.broke_at) : "" }, tr, cls.death === null ? "never " + deathWord(section.dim) + ringWords(cls.ring, section.dim) : fmt(cls.death));
-      html("td", { class: "lifetime" }, tr, cls.death === null ? "≥ " + fmt(run.facts.t_end - cls.birth) + wholeFor(cls, section.dim) : fmt(cls.death - cls.birth));
+      html("td", { class: "fate", "data-broke-at": cls.ring && cls.ring.broke_at !== null ? String(cls.ring.broke_at) : "" }, tr, cls.death === null ? "never " + deathWord(section.dim) + ringWords(cls.ring, section.dim, run) : fmt(cls.death));
+      html("td", { class: "lifetime" }, tr, cls.death === null ? "≥ " + fmt(run.facts.t_end - cls.birth) + wholeFor(cls, section.dim, run) : fmt(cls.death - cls.birth));
       html("td", {}, tr, cls.birth_cells.join(" "));
       html("td", {}, tr, cls.death === null ? "–" : cls.death_cells.join(" "));
       html("td", { class: "cells", title: cls.cells.join(" ") }, tr, cls.cells.length + ": " + list(cls.cells, 12));
@@ -400,15 +400,21 @@
   // (pipeline/cli/ring_fate.h).
   // How long a ring or shell that broke open stayed whole: its class lives on in space-time, but the
   // cells were a ring only that long.
-  function wholeFor(cls, dim) {
+  function wholeFor(cls, dim, run) {
     if (!cls.ring) return "";
+    if (bubble(dim, run)) return " in space-time";
     if (cls.ring.state === "never whole") return " in space-time; never a " + (dim === 2 ? "shell" : "ring") + " at one time";
     if (cls.ring.state !== "broke") return "";
     return " (a " + (dim === 2 ? "shell" : "ring") + " for " + fmt(cls.ring.broke_at - cls.birth) + ")";
   }
 
-  function ringWords(ring, dim) {
+  // A planar run's H2 classes: holes inside the tissue that closed again, never a shell at one time
+  // (docs/MATH.md §7.6).
+  function bubble(dim, run) { return dim === 2 && run.facts.dimension === 2; }
+
+  function ringWords(ring, dim, run) {
     if (!ring) return "";
+    if (bubble(dim, run)) return "; a bubble of space-time (a hole inside the tissue that closed again, born when it closed)";
     const what = dim === 2 ? "shell" : "ring";
     if (ring.state === "broke") return "; this " + what + " broke open at MCS " + fmt(ring.broke_at);
     if (ring.state === "never whole") return "; a " + (dim === 2 ? "cavity" : "loop") + " of space-time only (its contacts never all at once)";

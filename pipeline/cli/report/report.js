@@ -130,7 +130,9 @@
     if (death === null) {
       // An essential loop or cavity was never filled; it need not be open at the end (README, Reading the summary).
       lines.push(panel.dim === 0 ? "death: never (an essential class: this cluster never joined an older one)"
-        : "death: never (an essential class: never filled by cells; it may have broken open instead)");
+        : panel.dim === 2 && run.facts.dimension === 2
+          ? "death: never (a bubble of space-time: a hole inside the tissue that closed again, born when it closed; never a cavity at one time)"
+          : "death: never (an essential class: never filled by cells; it may have broken open instead)");
       lines.push("lifetime: " + fmt(run.facts.t_end - birth) + " MCS or more (to the end of the run)");
       if (p.length > 6) {
         const what = panel.dim === 2 ? "shell" : "ring";
@@ -298,7 +300,7 @@
         "joins an older cluster or is filled; pale bars never end (essential classes, drawn to the end of the run). A loop or cavity never " +
         "filled is solid for as long as the ring or shell of cells it is listed with stayed whole (as in the tables below), pale after it " +
         "broke open, and paler throughout when its contacts were never all present at once. Where a panel has more classes than it draws, " +
-        "it draws those seen longest in the tissue. The H0 (clusters) panels " +
+        "it draws those seen longest in the tissue, and leaves out those never whole at one time unless all of them fit. The H0 (clusters) panels " +
         "show the time up to the last join only, labelled under the axis. Hover a bar or a point for its " +
         "times and the CC3D cells that formed and killed it. Zero-length classes are not drawn.");
       const grid = html("div", { class: "panels" }, sec);
@@ -309,7 +311,8 @@
         const names = degreeName(run, panel.dim);
         html("div", { class: "caption" }, div, typeTitle(panel.label, panel.name) + " · H" + panel.dim + " " + names[1]);
         html("div", { class: "count" }, div, panel.pairs.length === panel.total ? panel.total + " " + (panel.total === 1 ? names[0] : names[1])
-          : "the " + panel.pairs.length + " seen longest of " + panel.total + " " + names[1]);
+          : "the " + panel.pairs.length + " seen longest of " + panel.total + " " + names[1] +
+            (panel.never_whole_left ? " (the other " + panel.never_whole_left + ", never whole at one time, are not drawn)" : ""));
         if (panel.pairs.length === 0) return;
         barcode(div, run, panel, ri, pi);
         diagram(div, run, panel, ri, pi);
