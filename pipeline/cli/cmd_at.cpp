@@ -257,14 +257,34 @@ void at_command(AtArguments& args) {
       std::string(args.type ? "type " + std::to_string(*args.type) + " subcomplex of " : "") +
       (time == static_cast<double>(medusa.input.frame_times.back()) ? "K(t_end-)" : "K(t+)") + " at MCS " +
       format_time(time);
+  const std::size_t in_complex = index.at_time(time).size();
   std::cout << what << ": " << counts_line(medusa, index.at_time(time)) << "\n";
   if (classes) {
     std::size_t drawn = 0;
     for (std::int64_t c : marks.cell_class)
       drawn += c >= 0;
+    // cells_at appends the class cells K(T+) lacks: contacts of a cycle of space-time, present at
+    // other times (docs/MATH.md §7.11), drawn with it and said to be so. A contact of K(T+) between
+    // the same CC3D cells, made again later, is drawn all the same and is not counted.
+    const auto vertices = [&](medusa::CellId id) {
+      const auto& v = medusa.cell(id).vertices;
+      return std::vector<kinetic::VertexId>(v.begin(), v.end());
+    };
+    std::set<std::vector<kinetic::VertexId>> now;
+    for (std::size_t i = 0; i < in_complex; ++i)
+      if (medusa.cell(cells[i]).dim() >= 1)
+        now.insert(vertices(cells[i]));
+    std::size_t elsewhen = 0;
+    for (std::size_t i = in_complex; i < cells.size(); ++i)
+      elsewhen += medusa.cell(cells[i]).dim() >= 1 && now.count(vertices(cells[i])) == 0;
     std::cout << "classes: " << drawn << (drawn == 1 ? " simplex" : " simplices")
               << " of their representatives drawn (contacts, triangles, tetrahedra), on "
-              << marks.vertex_class.size() << " CC3D cells\n";
+              << marks.vertex_class.size() << " CC3D cells";
+    if (elsewhen > 0)
+      std::cout << "; " << elsewhen << " of them " << (elsewhen == 1 ? "is" : "are")
+                << " not in the complex at MCS " << format_time(time)
+                << " but present at other times (a cycle of space-time: its contacts never all at once)";
+    std::cout << "\n";
   }
   if (ends_with(args.output, ".vtk"))
     write_file_atomically(args.output, [&](std::ostream& out) {

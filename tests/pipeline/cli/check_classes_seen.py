@@ -79,6 +79,27 @@ for label in ["all"] + [str(t) for t in types]:
             if c["essential"] and (c.get("ring") or {}).get("state") == "broke":
                 overtaken += sum(1 for d in by_seen[:i] if not d["essential"] and rank[d["id"]] > rank[c["id"]])
 assert checked > 0, "no class listed"
+
+# `medusa at --class` on a loop never whole at one time and on one whole from its birth until it broke open: it says how many of
+# the representative's contacts are not in the complex at that time, counted here from `medusa at --time`.
+import re
+loops = json.loads(call("classes", "seen.h5", "--type", "1", "--dim", "1", "--format", "json", "--sort", "seen"))["classes"]
+said = {}
+whole_at_birth = next(c for c in loops if c.get("ring") and c["ring"]["state"] == "broke" and c["ring"]["broke_at"] > c["birth"])
+never_whole = [c for c in loops if c["seen"] is None]
+# The first and the ten with the most contacts (some of them made again later between the same cells).
+for c in [whole_at_birth] + never_whole[:1] + sorted(never_whole, key=lambda c: -len(c["simplices"]))[:10]:
+    out = call("at", "seen.h5", "--type", "1", "--class", str(c["id"]), "-o", "class.vtk")
+    call("at", "seen.h5", "--type", "1", "--time", repr(c["birth"]), "-o", "at.csv")
+    with open(os.path.join(work, "at.csv")) as f:
+        next(f)
+        present = {tuple(sorted(int(v) for v in line.strip().split(",")[1:] if v)) for line in f}
+    missing = sum(1 for s in c["simplices"] if len(s) >= 2 and tuple(sorted(s)) not in present)
+    m = re.search(r"; (\d+) of them (?:is|are) not in the complex at MCS", out)
+    assert (int(m.group(1)) if m else 0) == missing, (c["id"], out, missing)
+    said[c["id"]] = missing
+assert said[whole_at_birth["id"]] == 0 and all(said[c["id"]] > 0 for c in never_whole[:1]), said
+print(f"medusa at --class: contacts not in the complex at the class's birth, as counted here: {said}")
 assert overtaken > 0, "no broken ring ranked below a filled class it outranks by lifetime: nothing was checked"
 print(f"{checked} classes in the order of their time seen; {overtaken} broken rings below filled classes that "
       f"outlived them in the tissue")
