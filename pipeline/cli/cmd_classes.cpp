@@ -101,9 +101,9 @@ std::vector<double> sort_records(std::vector<persistence::ClassRecord>& records,
   return seen_times;
 }
 
-// A time seen in the tissue as the table and the CSV write it: a never-filled loop or cavity whose
-// cells were never a ring or shell at one time was not seen.
-std::string seen_text(double seen) { return std::isinf(seen) && seen < 0 ? "never whole" : short_time(seen); }
+// A time seen in the tissue as the table writes it: a never-filled loop or cavity whose contacts were
+// never all present at once was not seen.
+std::string seen_text(double seen) { return never_whole(seen) ? "never whole" : short_time(seen); }
 
 // On a periodic run, per record: the axes its loop wraps around ("x", "x,y"; "-" for none), else empty.
 using Wraps = std::vector<std::string>;
@@ -155,7 +155,7 @@ void write_classes_csv(std::ostream& out, const std::vector<persistence::ClassRe
         << ',' << joined(r.death_cells, " ") << ',' << r.cells.size() << ',' << joined(r.cells, " ") << ','
         << r.simplices.size() << ',' << simplices;
     if (!seen.empty())
-      out << ',' << (std::isinf(seen[i]) && seen[i] < 0 ? "" : format_time(seen[i]));
+      out << ',' << (never_whole(seen[i]) ? "" : format_time(seen[i]));
     if (!wraps.empty())
       out << ",\"" << (wraps[i] == "-" ? "" : wraps[i]) << '"';
     out << '\n';
@@ -199,7 +199,7 @@ void write_classes_json(std::ostream& out, const medusa::Medusa& medusa,
                                                                                : nlohmann::json(nullptr)}};
     }
     if (!seen.empty()) // null: never a ring or shell at one time
-      list.back()["seen"] = std::isinf(seen[i]) && seen[i] < 0 ? nlohmann::json(nullptr) : time_json(seen[i]);
+      list.back()["seen"] = never_whole(seen[i]) ? nlohmann::json(nullptr) : time_json(seen[i]);
     if (!wraps.empty()) // the axes the loop wraps around, on a periodic run (docs/MATH.md §8.8)
       list.back()["wraps"] = wraps[i] == "-" ? "" : wraps[i];
   }

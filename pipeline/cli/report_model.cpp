@@ -12,6 +12,7 @@
 #include "recorded_domain.h"
 #include "report_answer.h"
 #include "report_classes.h"
+#include "ring_fate.h"
 #include "run_summary.h"
 #include "sorting_export.h"
 #include "wrapping_summary.h"
@@ -84,11 +85,9 @@ json panel(const persistence::Diagram& d, int k, std::size_t max_bars, const med
     });
     // Loops and cavities never whole at one time all tie last; a few of them, the earliest born, would
     // draw a trend that is not there, so they are drawn all or none (a planar run's bubbles aside).
-    const auto whole_at_some_time = [&](const auto* p) {
-      return !(std::isinf(seen_of(p)) && seen_of(p) < 0);
-    };
-    const auto never_whole = std::find_if_not(pairs.begin(), pairs.end(), whole_at_some_time);
-    const auto kept = static_cast<std::size_t>(never_whole - pairs.begin());
+    const auto whole_at_some_time = [&](const auto* p) { return !never_whole(seen_of(p)); };
+    const auto first_never_whole = std::find_if_not(pairs.begin(), pairs.end(), whole_at_some_time);
+    const auto kept = static_cast<std::size_t>(first_never_whole - pairs.begin());
     if (k >= 1 && k < medusa.input.dimension && kept < max_bars) {
       never_whole_left = pairs.size() - kept;
       pairs.resize(kept);
@@ -113,7 +112,7 @@ json panel(const persistence::Diagram& d, int k, std::size_t max_bars, const med
     // A planar run's H2 classes are bubbles of space-time (docs/MATH.md §7.6), never a shell at one time.
     if (p->essential && k >= 1 && k < medusa.input.dimension) {
       const double s = seen_of(p);
-      row.push_back(std::isinf(s) && s < 0 ? json(nullptr) : json(p->birth + s));
+      row.push_back(never_whole(s) ? json(nullptr) : json(p->birth + s));
     }
     rows.push_back(std::move(row));
   }

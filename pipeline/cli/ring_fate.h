@@ -9,6 +9,8 @@
 #include "medusa/persistence/cell_lists.h"
 #include "medusa/persistence/class_records.h"
 
+#include <limits>
+
 namespace medusa::cli {
 
 struct RingFate {
@@ -42,6 +44,10 @@ double essential_order(const medusa::Medusa& medusa, int dim, persistence::CellL
 // the time after its birth until its ring or shell broke open (essential_order), or until the end of the
 // run `t_end`; -inf for one never whole at one time (a loop of space-time only).
 double time_seen(bool essential, double lifetime, double essential_order, double birth, double t_end);
+
+// Was a class with this time_seen never whole at one time (seen -inf)? The outputs write it so
+// ("never whole", an empty CSV field, null), not as a time.
+inline bool never_whole(double seen) { return seen == -std::numeric_limits<double>::infinity(); }
 
 // time_seen of a class of the forward filtration.
 double time_seen(const medusa::Medusa& medusa, const persistence::ClassRecord& record);

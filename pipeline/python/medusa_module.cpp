@@ -132,7 +132,7 @@ py::list classes(StoreView& store, const py::object& type, std::optional<int> di
     if (direction_of(filtration) == persistence::Direction::forward) {
       // As `medusa classes --format json`: the time seen in the tissue, null when never whole.
       const double seen = cli::time_seen(store.medusa(), r);
-      c["seen"] = std::isinf(seen) && seen < 0 ? py::object(py::none()) : py::object(py::float_(seen));
+      c["seen"] = cli::never_whole(seen) ? py::object(py::none()) : py::object(py::float_(seen));
     }
     if (!wraps.empty()) // on a periodic run, as `medusa classes --format json` (docs/MATH.md §8.8)
       c["wraps"] = wraps[i];
