@@ -145,7 +145,8 @@ void describe_fates(std::ostream& out, const ClassFates& fates, const persistenc
 constexpr std::size_t cells_shown = 8;
 
 // One line: the class, its first cells, its times, and the commands that list it and draw it
-// (docs/MATH.md §7.11).
+// (docs/MATH.md §7.11). The listing sorts by time seen, where the class is the first filled row; by
+// lifetime every never-filled class would come first, thousands of rows on a planar run.
 void describe_longest(std::ostream& out, const LongestFilled& c, const std::string& store) {
   out << "  longest-lived filled " << (c.dim == 1 ? "loop" : "cavity") << ": class " << c.id << ", cells ";
   for (std::size_t i = 0; i < std::min(cells_shown, c.cells.size()); ++i)
@@ -160,8 +161,8 @@ void describe_longest(std::ostream& out, const LongestFilled& c, const std::stri
   const std::string type = c.cell_type == persistence::all_types ? "all" : std::to_string(c.cell_type);
   const std::string at_type = c.cell_type == persistence::all_types ? "" : " --type " + type;
   out << " (`medusa classes " << shell_word(store) << " --type " << type << " --dim " << c.dim
-      << "`, `medusa at " << shell_word(store) << at_type << " --class " << c.id << " -o class" << c.id
-      << ".vtk`)\n";
+      << " --sort seen`, `medusa at " << shell_word(store) << at_type << " --class " << c.id << " -o class"
+      << c.id << ".vtk`)\n";
 }
 
 } // namespace

@@ -7,7 +7,8 @@ Runs `medusa run` on the input into <workdir>/<name>.h5 and requires, for every 
 line of the summary: its class id, cells (the first ones, and how many more), birth and death are those
 of the first finite class of `medusa classes <store> --type T --dim k --format json` (sorted by
 lifetime, longest first); every type and degree whose classes include a finite one has such a line;
-and the two commands the line prints run and succeed (`medusa at` writes its VTK file). Fails unless
+and the two commands the line prints run and succeed: the listing sorts by time seen and its first
+filled row (death not inf) is the class, and `medusa at` writes its VTK file. Fails unless
 it checks exactly <expected lines> lines.
 """
 import json
@@ -65,10 +66,15 @@ for group in groups[1:]:
         assert (m.group(5), m.group(6)) == (mcs(top["birth"]), mcs(top["death"])), \
             f"{label} H{k}: MCS {m.group(5)} to {m.group(6)}, medusa classes {top['birth']} to {top['death']}"
         listing = run([medusa] + shlex.split(m.group(7))[1:])
-        assert f"\n{top['id']}\t{k}\t" in listing, f"{label} H{k}: `{m.group(7)}` does not list class {top['id']}"
+        assert "--sort seen" in m.group(7), f"{label} H{k}: `{m.group(7)}` does not sort by time seen"
+        rows = [r.split("\t") for r in listing.splitlines()[1:]]
+        first_filled = next(i for i, r in enumerate(rows) if r[3] != "inf")
+        assert int(rows[first_filled][0]) == top["id"], \
+            f"{label} H{k}: the first filled row of `{m.group(7)}` is class {rows[first_filled][0]}, not {top['id']}"
         at = shlex.split(m.group(8))
         run([medusa] + at[1:])
         assert os.path.getsize(os.path.join(work, at[-1])) > 0, f"{label} H{k}: `{m.group(8)}` wrote nothing"
         checked += 1
-        print(f"{label} H{k}: class {top['id']} with {len(top['cells'])} cells agrees with medusa classes")
+        print(f"{label} H{k}: class {top['id']} with {len(top['cells'])} cells agrees with medusa classes; "
+              f"row {first_filled + 1} of {len(rows)} of `{m.group(7)}`")
 assert checked == int(expected_lines), f"checked {checked} lines, expected {expected_lines}"
