@@ -161,27 +161,51 @@
     return end < t0 + 0.7 * (t1 - t0) ? end : t1;
   }
 
+  // Each bar has a row of its own, at least a pixel tall, so a panel of many bars grows taller: the
+  // pointer names the bar of the row it is in, when it is within a few pixels of the bar's ends.
+  // Hit-testing the bars themselves named whichever overlapping bar was drawn last.
   function barcode(parent, run, panel, ri, pi) {
     const n = panel.pairs.length, width = 400, barH = n > 150 ? 1 : n > 60 ? 2 : 4;
-    const height = Math.max(90, Math.min(420, n * barH + 56));
-    const svg = el("svg", { class: "barcode", width: width, height: height, viewBox: "0 0 " + width + " " + height }, parent);
+    const height = Math.max(90, n * barH + 56);
+    const rowH = (height - 46) / Math.max(1, n), colour = degreeColours[panel.dim];
+    const svg = el("svg", { class: "barcode", width: width, height: height, viewBox: "0 0 " + width + " " + height,
+      "data-row-height": rowH }, parent);
     const t0 = run.facts.t0, t1 = zoomedEnd(run, panel);
     const zoomed = t1 < run.facts.t_end;
     const [sx] = axes(svg, [20, 8, width - 36, height - 46], [t0, t1], [0, 1],
       zoomed ? "MCS " + fmt(t0) + "–" + fmt(t1) + " of " + fmt(t0) + "–" + fmt(run.facts.t_end) + " (zoomed to the joins)" : "MCS", "", true, true);
-    const rowH = (height - 46) / Math.max(1, n), colour = degreeColours[panel.dim];
+    const rects = [], spans = [];
     panel.pairs.forEach((p, j) => {
       const x0 = sx(p[0]), x1 = p[1] === null ? sx(t1) : sx(p[1]);
       // At least 2 px wide, so that a class living a moment can be pointed at.
-      const r = el("rect", { class: "bar", x: x0, y: 8 + j * rowH, width: Math.max(2, x1 - x0), height: Math.max(0.8, rowH * 0.8),
+      const w = Math.max(2, x1 - x0);
+      rects.push(el("rect", { class: "bar", x: x0, y: 8 + j * rowH, width: w, height: Math.max(0.8, rowH * 0.8),
         fill: colour, "fill-opacity": p[1] !== null ? 1 : p.length > 6 && p[6] === null ? 0.12 : 0.3, "data-run": ri, "data-panel": pi, "data-pair": j,
-        "data-birth-cell": p[2], "data-death-cell": p[3] === null ? "" : p[3] }, svg);
-      hover(r, pairText(run, panel, p));
+        "data-birth-cell": p[2], "data-death-cell": p[3] === null ? "" : p[3] }, svg));
+      spans.push([x0, x0 + w]);
       // A never-filled loop or cavity is solid for as long as its ring or shell stayed whole.
       if (p.length > 6 && p[6] !== null && p[6] > p[0])
         el("rect", { class: "bar-whole", x: x0, y: 8 + j * rowH, width: Math.max(1, Math.min(sx(p[6]), x1) - x0),
           height: Math.max(0.8, rowH * 0.8), fill: colour, "pointer-events": "none", "data-pair": j }, svg);
     });
+    let pointed = null;
+    const point = (j, e) => {
+      if (j !== pointed) {
+        if (pointed !== null) rects[pointed].classList.remove("pointed");
+        if (j !== null) rects[j].classList.add("pointed");
+        pointed = j;
+      }
+      if (j === null) hideTip();
+      else showTip(e, pairText(run, panel, panel.pairs[j]));
+    };
+    svg.addEventListener("mousemove", (e) => {
+      // The pointer's pixel is taken at its centre: a row at least a pixel tall holds one such centre.
+      const box = svg.getBoundingClientRect();
+      const x = (e.clientX + 0.5 - box.left) * (width / box.width), y = (e.clientY + 0.5 - box.top) * (height / box.height);
+      const j = Math.floor((y - 8) / rowH);
+      point(j >= 0 && j < n && x >= spans[j][0] - 4 && x <= spans[j][1] + 4 ? j : null, e);
+    });
+    svg.addEventListener("mouseleave", () => point(null));
     return svg;
   }
 

@@ -2,7 +2,8 @@
 """`medusa report` in a real browser (headless Chromium through Selenium, network off by a dead proxy):
 no SEVERE console message; one panel per type and degree; in each panel as many bars as
 `medusa barcode --format csv --filtration forward` has pairs of that type and degree (capped by
---max-bars); hovering bars shows the birth and death times and the CC3D ids of the cells that formed
+--max-bars), each in a row at least a pixel tall; a pointer in a bar's row names that bar (not an
+overlapping neighbour) with the birth and death times and the CC3D ids of the cells that formed
 and killed the class, checked against the store itself (h5py: /persistence, /cells, /input); the
 CROCKER plot of a sweep next to the store is shown; a panel with more classes than --max-bars draws those
 seen longest in the tissue, and a never-filled loop or cavity is solid until its ring or shell broke
@@ -37,7 +38,7 @@ from PIL import Image
 from selenium import webdriver
 from selenium.webdriver.chrome.options import Options
 from selenium.webdriver.chrome.service import Service
-from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.actions.action_builder import ActionBuilder
 
 from report_classes_check import check_classes
 
@@ -372,17 +373,39 @@ try:
                     overlays, cut = check_seen_bars(driver, panel, ri, f"{name}.h5", key, failures, f"{page} {name} {key}")
                     seen_overlays += overlays
                     seen_cuts += cut
-                # Hover the first, middle and last bar of each panel; check the tooltip against the store.
-                for bar in {0: bars[0], 1: bars[len(bars) // 2], 2: bars[-1]}.values() if bars else []:
-                    ActionChains(driver).move_to_element(bar).perform()
+                # Every bar has a row of at least a pixel, so the pointer can reach each one.
+                if bars and float(panel.find_element("css selector", "svg.barcode").get_attribute("data-row-height")) < 1:
+                    failures.append(f"{page} {name} {key}: {len(bars)} bars in rows less than a pixel apart")
+                # Hover the first, middle and last bar of each panel, and the middle one's neighbours, each
+                # at a pixel of its own row (rows are at least a pixel tall, so one pixel's centre lies in
+                # each): the tooltip must name that bar, marked as pointed at, and agree with the store.
+                middle = len(bars) // 2
+                chosen = sorted({0, max(0, middle - 1), middle, min(len(bars) - 1, middle + 1), len(bars) - 1}) if bars else []
+                row = float(panel.find_element("css selector", "svg.barcode").get_attribute("data-row-height")) if bars else 0
+                for j in chosen:
+                    bar = bars[j]
+                    driver.execute_script("arguments[0].scrollIntoView({block: 'center'});", bar)
+                    left, top, width = driver.execute_script(
+                        "const r = arguments[0].getBoundingClientRect(); return [r.left, r.top, r.width];", bar)
+                    x, y = math.floor(left + width / 2), math.ceil(top - 0.5)
+                    if not y + 0.5 < top + row:
+                        failures.append(f"{page} {name} {key}: no pixel centre in the row of bar {j} (top {top}, rows {row} px)")
+                        continue
+                    actions = ActionBuilder(driver)
+                    actions.pointer_action.move_to_location(x, y)
+                    actions.perform()
                     tip = driver.find_element("id", "tooltip")
                     text = tip.text
                     m = re.search(r"birth: MCS (\S+) \(medusa cell (\d+), an? [\w-]+ of CC3D cells? ([\d, ]+)\)", text)
                     if not tip.is_displayed() or not m:
-                        failures.append(f"{page} {name} {key}: tooltip not shown or unreadable: {text!r}")
+                        failures.append(f"{page} {name} {key}: bar {j}: tooltip not shown or unreadable: {text!r}")
                         continue
                     birth, cell = float(m.group(1)), int(m.group(2))
                     ids = sorted(int(x) for x in m.group(3).split(","))
+                    pointed = [b.get_attribute("data-pair") for b in panel.find_elements("css selector", ".bar.pointed")]
+                    if pointed != [str(j)] or int(bar.get_attribute("data-birth-cell")) != cell:
+                        failures.append(f"{page} {name} {key}: pointer in the row of bar {j}, bars marked {pointed}, "
+                                        f"tooltip for medusa cell {cell}, the bar's {bar.get_attribute('data-birth-cell')}")
                     candidates = store.pairs.get((key[0], key[1], cell), [])
                     if not candidates or not any(close(birth, b) for b, _, _, _ in candidates):
                         failures.append(f"{page} {name} {key}: no stored pair born at MCS {birth} in cell {cell}")
