@@ -51,6 +51,25 @@ void check_output_folder(const std::string& path) {
                      (std::filesystem::exists(folder, ec) ? " is not a folder" : " does not exist"));
 }
 
+void check_output_prefix(const std::string& prefix, const std::string& first_output) {
+  const std::string hint = "; -o takes the start of the output names, such as results/run1";
+  if (!prefix.empty() && prefix.back() == '/')
+    throw UsageError("output prefix " + prefix + " ends in '/': the outputs would be hidden files such as " +
+                     first_output + hint);
+  std::error_code ec;
+  const std::filesystem::file_type type = std::filesystem::status(prefix, ec).type();
+  const char* kind =
+      type == std::filesystem::file_type::character || type == std::filesystem::file_type::block ? "a device"
+      : type == std::filesystem::file_type::fifo                                                 ? "a FIFO"
+      : type == std::filesystem::file_type::socket                                               ? "a socket"
+                                                                                                 : nullptr;
+  if (kind != nullptr)
+    throw UsageError("output prefix " + prefix + " is " + kind +
+                     ": the outputs would be written beside it, as " + first_output + " and the others" +
+                     hint);
+  check_output_folder(first_output);
+}
+
 void check_output_path(const std::string& path) {
   check_output_folder(path);
   refuse_to_replace_hdf5(regular_output_name(path));

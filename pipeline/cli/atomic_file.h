@@ -16,6 +16,12 @@ void refuse_to_replace_hdf5(const std::string& path);
 // Before a command's work, what it would otherwise find only when writing: StoreError when the folder
 // `path` is to be written in does not exist (or is not a folder).
 void check_output_folder(const std::string& path);
+// For a command whose -o is a prefix (`curves`, `sweep`, `compare`): UsageError when the prefix ends
+// in '/' (the outputs would be hidden files named `.curves.csv`) or is itself a device, FIFO or
+// socket, such as /dev/null, a reader's way of asking for no output that would write
+// /dev/null.curves.csv and the rest beside it; then check_output_folder on `first_output`.
+void check_output_prefix(const std::string& prefix, const std::string& first_output);
+
 // check_output_folder, then regular_output_name (a device, FIFO, socket, folder or a link to one is a
 // UsageError), then refuse_to_replace_hdf5.
 void check_output_path(const std::string& path);

@@ -175,7 +175,7 @@ void compare_command(const CompareArguments& args) {
   if (args.essential && args.ignore_essential)
     throw CLI::ParseError("--essential and --ignore-essential exclude each other", 2);
   const ComparisonMetric metric(args.metric, !args.essential);
-  check_output_folder(args.prefix + ".distances.csv");
+  check_output_prefix(args.prefix, args.prefix + ".distances.csv");
   const std::vector<std::string> names = run_names(args.stores);
   const bool single = args.type_given || args.dim_given;
 

@@ -111,7 +111,8 @@ template <class Sample> const Sample& just_after_first(const std::vector<Sample>
 }
 
 void curves_command(const CurvesArguments& args) {
-  check_output_folder((args.prefix.empty() ? store_stem(args.store) : args.prefix) + ".curves.csv");
+  const std::string prefix = args.prefix.empty() ? store_stem(args.store) : args.prefix;
+  check_output_prefix(prefix, prefix + ".curves.csv");
   const medusa::Medusa medusa = medusa::read_store(args.store);
   check_interrupted();
   std::vector<TypeCurves> all;
@@ -158,7 +159,6 @@ void curves_command(const CurvesArguments& args) {
       medusa.input.frame_times.empty() ? 0.0 : static_cast<double>(medusa.input.frame_times.front());
   const double t_end =
       medusa.input.frame_times.empty() ? 0.0 : static_cast<double>(medusa.input.frame_times.back());
-  const std::string prefix = args.prefix.empty() ? store_stem(args.store) : args.prefix;
   const std::string csv = prefix + ".curves.csv", svg = prefix + ".curves.svg";
   const std::string sorting_csv = prefix + ".sorting.csv", sorting_svg = prefix + ".sorting.svg";
   std::cout

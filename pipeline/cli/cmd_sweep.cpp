@@ -89,7 +89,8 @@ std::string radius_warning(const RadiusResult& r) {
 }
 
 void sweep_command(const SweepArguments& args) {
-  check_output_folder((args.prefix.empty() ? input_stem(args.input) : args.prefix) + ".crocker.csv");
+  const std::string prefix = args.prefix.empty() ? input_stem(args.input) : args.prefix;
+  check_output_prefix(prefix, prefix + ".crocker.csv");
   const std::vector<std::string> radii = all_radii(args);
   if (radii.empty())
     throw CLI::RequiredError("--radii A:B:STEP or --radius R");
@@ -151,8 +152,6 @@ void sweep_command(const SweepArguments& args) {
       summary << "  warning: " << w << "\n";
     }
   }
-
-  const std::string prefix = args.prefix.empty() ? input_stem(args.input) : args.prefix;
   const std::vector<std::string> outputs = {prefix + ".crocker.csv", prefix + ".crocker.svg",
                                             prefix + ".sweep.txt"};
   try {

@@ -138,6 +138,27 @@ def check_written(medusa, csv, work):
             assert f.read() != "old\n", f"{name} did not write through {link}"
         names = listing(work)
     assert checked == 3 * len(commands) - 1
+    # The commands whose -o is a prefix: a device or FIFO named as the prefix, or a prefix ending in '/',
+    # would have them write /dev/null.curves.csv (as root, into /dev) or hidden files.
+    os.mkfifo(os.path.join(work, "fifo"))
+    os.makedirs(os.path.join(work, "out"))
+    names = listing(work)
+    prefixed = {
+        "curves": (["curves", "s.h5"], ".curves.csv"),
+        "sweep": (["sweep", "s.h5", "--radius", "3"], ".crocker.csv"),
+        "compare": (["compare", "s.h5", "s.h5"], ".distances.csv"),
+    }
+    for name, (args, first) in prefixed.items():
+        for prefix, fragment in [("/dev/null", "is a device"), ("fifo", "is a FIFO"), ("out/", "ends in '/'")]:
+            result = subprocess.run([medusa, *args, "-o", prefix], cwd=work, capture_output=True, text=True, timeout=120)
+            print("$", name, "-o", prefix, "->", result.returncode, result.stderr.strip()[-300:])
+            refused(result, fragment)
+            assert prefix + first in result.stderr, f"{name}: the refusal does not name {prefix}{first}"
+            assert listing(work) == names and not os.listdir(os.path.join(work, "out")), f"files changed: {listing(work)}"
+            assert not [f for f in os.listdir("/dev") if f.startswith("null.")], "an output was written in /dev"
+            assert stat.S_ISCHR(os.stat("/dev/null").st_mode)
+            checked += 1
+    assert checked == 3 * len(commands) - 1 + 3 * len(prefixed)
     print(f"{checked} unsafe outputs refused")
 
 
