@@ -2,6 +2,9 @@
 #include "medusa/io/gzip_reader.h"
 
 #include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
 #include <zlib.h>
 
 using namespace medusa;
@@ -73,6 +76,41 @@ TEST_CASE("A truncated gzip file is an error naming the file", "[io][gzip]") {
     }
   });
   CHECK_THAT(m, Contains(path) && Contains("truncated"));
+}
+
+TEST_CASE("A gzip file cut short hands out its whole lines before the cut and names the line where they stop",
+          "[io][gzip]") {
+  // 5,000 lines decode to less than the reader's first request, so the cut meets the first read; 20,000
+  // lines meet it at a later one.
+  const int count = GENERATE(5000, 20000);
+  CAPTURE(count);
+  io::test::TempDir dir;
+  std::string text;
+  std::vector<std::string> lines;
+  for (int k = 0; k < count; ++k) {
+    lines.push_back("row " + std::to_string(k) + "," + std::to_string(k * 7919 % 10007));
+    text += lines.back() + "\n";
+  }
+  write_gzip(dir.file("whole.csv.gz"), text);
+  std::ifstream whole(dir.file("whole.csv.gz"), std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(whole)), std::istreambuf_iterator<char>());
+  // Cut at 60% of the compressed bytes: the lines decoded before the cut come out before the error.
+  std::ofstream(dir.file("cut.csv.gz"), std::ios::binary) << bytes.substr(0, bytes.size() * 3 / 5);
+  GzipReader in(dir.file("cut.csv.gz"));
+  std::size_t read = 0;
+  const std::string m = io::test::input_error([&] {
+    std::string line;
+    while (in.next_line(line)) {
+      REQUIRE(read < lines.size());
+      REQUIRE(line == lines[read]);
+      ++read;
+    }
+  });
+  CAPTURE(m, read);
+  CHECK(read > lines.size() / 3);
+  CHECK(read < lines.size());
+  CHECK_THAT(m, Contains("cut.csv.gz") && Contains("truncated") &&
+                    Contains("near line " + std::to_string(read + 1)));
 }
 
 TEST_CASE("A corrupt gzip file is an error naming the file", "[io][gzip]") {

@@ -43,6 +43,8 @@ void GzipReader::fail(const std::string& why) const {
 }
 
 bool GzipReader::fill() {
+  if (!pending_error_.empty())
+    fail(pending_error_);
   if (eof_)
     return false;
   if (pos_ > 0) {
@@ -56,10 +58,16 @@ bool GzipReader::fill() {
   int err = Z_OK;
   const char* message = gzerror(gz(file_), &err);
   // zlib reports a truncated stream as Z_BUF_ERROR ("unexpected end of file") and a corrupt one as
-  // Z_DATA_ERROR; both must stop the reader rather than pass as an early end of file.
-  if (got < 0 || (err != Z_OK && err != Z_STREAM_END))
-    fail(std::string("corrupt or truncated gzip data (") + (err == Z_ERRNO ? std::strerror(errno) : message) +
-         ")");
+  // Z_DATA_ERROR; both must stop the reader rather than pass as an early end of file. The bytes
+  // decoded before the damage are handed out first, so the error names the line where the data stop,
+  // not the first line of the last block read.
+  if (got < 0 || (err != Z_OK && err != Z_STREAM_END)) {
+    const std::string why = std::string("corrupt or truncated gzip data (") +
+                            (err == Z_ERRNO ? std::strerror(errno) : message) + ")";
+    if (got <= 0)
+      fail(why);
+    pending_error_ = why;
+  }
   if (got == 0) {
     eof_ = true;
     return false;

@@ -44,6 +44,7 @@ private:
   std::int64_t line_ = 1;      // line of the cursor
   std::int64_t last_line_ = 0; // line of the last item returned
   bool eof_ = false;
+  std::string pending_error_; // a zlib error met after some bytes were decoded: raised at the next fill
 };
 
 } // namespace medusa::io
